@@ -1,0 +1,110 @@
+//! Speed of every triangle model, side by side, in one run: Mpix/s is criterion's
+//! element throughput (elements = covered pixels of the workload).
+//!
+//! Workloads: (a) 10k medium triangles at 1024x1024, (b) 100k small triangles at
+//! 1024x1024, (c) one triangle covering half of 4096x4096. The exact models are measured
+//! on a prefix of (a) and (b) and on a 512x512 version of (c) — per pixel their cost does
+//! not depend on the workload size, and the full workloads would take minutes per sample.
+//!
+//! `cargo bench --bench models`
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use rasterproof::convention::{Preset, Target};
+use rasterproof::coverage::CountBuffer;
+use rasterproof::geom::{Point, Triangle};
+use rasterproof::model::{prepare, Model};
+
+/// A small deterministic generator (xorshift64*), so every run draws the same scenes.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
+    }
+
+    /// Uniform in `0..n` subpixels (n small: modulo bias is irrelevant here).
+    fn below(&mut self, n: i64) -> i64 {
+        i64::try_from(self.next() % n.unsigned_abs()).unwrap()
+    }
+}
+
+/// `n` triangles on the 1/256 grid of a `side` canvas, vertices within `spread` px of a
+/// random centre.
+fn triangles(n: usize, side: i64, spread: i64, seed: u64) -> Vec<Triangle> {
+    let mut rng = Rng(seed);
+    let g = 256;
+    (0..n)
+        .map(|_| {
+            let (cx, cy) = (rng.below(side * g), rng.below(side * g));
+            let mut vertex = || {
+                let x = (cx + rng.below(2 * spread * g) - spread * g).clamp(0, side * g);
+                let y = (cy + rng.below(2 * spread * g) - spread * g).clamp(0, side * g);
+                Point::from_fractions(x, g, y, g)
+            };
+            Triangle::new(vertex(), vertex(), vertex())
+        })
+        .collect()
+}
+
+fn half_canvas(side: i64) -> Vec<Triangle> {
+    vec![Triangle::new(
+        Point::from_ints(0, 0),
+        Point::from_ints(side, 0),
+        Point::from_ints(0, side),
+    )]
+}
+
+fn covered(model: Model, tris: &[Triangle], target: &Target) -> u64 {
+    let prepared = prepare(model, tris, &target.convention).unwrap();
+    let mut sink = CountBuffer::new(target.width, target.height);
+    prepared.rasterize_into(target, &mut sink);
+    sink.total()
+}
+
+fn bench_workload(
+    c: &mut Criterion,
+    name: &str,
+    side: u32,
+    full: &[Triangle],
+    exact_subset: &[Triangle],
+    exact_side: u32,
+) {
+    let mut group = c.benchmark_group(name);
+    group.sample_size(10);
+    for model in Model::ALL {
+        let is_exact = matches!(model, Model::Exact | Model::ExactSnapped);
+        let (tris, side) = if is_exact {
+            (exact_subset, exact_side)
+        } else {
+            (full, side)
+        };
+        let target = Target::new(side, side, Preset::D3d11.convention()).unwrap();
+        let pixels = covered(model, tris, &target);
+        group.throughput(Throughput::Elements(pixels));
+        let prepared = prepare(model, tris, &target.convention).unwrap();
+        let mut sink = CountBuffer::new(side, side);
+        let label = if is_exact {
+            format!("{model} ({} tris, {side}px)", tris.len())
+        } else {
+            model.to_string()
+        };
+        group.bench_function(BenchmarkId::from_parameter(label), |b| {
+            b.iter(|| prepared.rasterize_into(&target, &mut sink));
+        });
+    }
+    group.finish();
+}
+
+fn models(c: &mut Criterion) {
+    let medium = triangles(10_000, 1024, 24, 1);
+    bench_workload(c, "a_medium_10k_1024", 1024, &medium, &medium[..100], 1024);
+    let small = triangles(100_000, 1024, 4, 2);
+    bench_workload(c, "b_small_100k_1024", 1024, &small, &small[..2000], 1024);
+    bench_workload(c, "c_half_4096", 4096, &half_canvas(4096), &half_canvas(512), 512);
+}
+
+criterion_group!(benches, models);
+criterion_main!(benches);

@@ -1,0 +1,78 @@
+//! Invariant 3: two models agree pixel for pixel (fixed == exact-snapped; float against
+//! exact, where the differences are the float trade).
+
+use std::fmt::Write as _;
+
+use super::explain::explain_sample;
+use super::Violation;
+use crate::convention::Target;
+use crate::coverage::Coverage;
+use crate::geom::Triangle;
+
+/// One pixel where two coverages differ.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct PixelDiff {
+    /// Column.
+    pub x: u32,
+    /// Row.
+    pub y: u32,
+    /// Owners in the reference.
+    pub reference: Vec<u32>,
+    /// Owners in the candidate.
+    pub candidate: Vec<u32>,
+}
+
+/// Every pixel whose owner lists differ, row-major.
+pub fn diff(reference: &Coverage, candidate: &Coverage) -> Vec<PixelDiff> {
+    let mut keys: Vec<(u32, u32)> = reference
+        .iter()
+        .chain(candidate.iter())
+        .map(|(x, y, _)| (y, x))
+        .collect();
+    keys.sort_unstable();
+    keys.dedup();
+    keys.into_iter()
+        .filter_map(|(y, x)| {
+            let (a, b) = (reference.owners(x, y), candidate.owners(x, y));
+            (a != b).then(|| PixelDiff {
+                x,
+                y,
+                reference: a.to_vec(),
+                candidate: b.to_vec(),
+            })
+        })
+        .collect()
+}
+
+/// `candidate` equals `reference` pixel for pixel. The violation names the first differing
+/// pixel and explains it with the exact edge values of each triangle involved (computed
+/// on `triangles`, the form the reference model saw).
+pub fn check_agreement(
+    reference_name: &str,
+    reference: &Coverage,
+    candidate_name: &str,
+    candidate: &Coverage,
+    triangles: &[Triangle],
+    target: &Target,
+) -> Result<(), Violation> {
+    let diffs = diff(reference, candidate);
+    let Some(d) = diffs.first() else {
+        return Ok(());
+    };
+    let mut msg = format!(
+        "{} differing pixels; first ({}, {}): {reference_name} {:?}, {candidate_name} {:?}",
+        diffs.len(),
+        d.x,
+        d.y,
+        d.reference,
+        d.candidate
+    );
+    let mut involved: Vec<u32> = d.reference.iter().chain(&d.candidate).copied().collect();
+    involved.dedup();
+    for id in involved {
+        if let Some(t) = triangles.get(id as usize) {
+            let _ = write!(msg, "\n  triangle {id}: {}", explain_sample(t, d.x, d.y, target));
+        }
+    }
+    Err(Violation::new("agreement", msg))
+}

@@ -1,0 +1,40 @@
+//! Invariant checkers. Each `check_*` returns `Result<(), Violation>`; the violation
+//! explains the failure exactly (pixel, triangle, exact edge values). Public and always
+//! compiled: they are what users run on their own rasterizers' output.
+
+mod agreement;
+mod barycentric;
+mod explain;
+mod invariance;
+mod watertight;
+
+use std::fmt;
+
+pub use agreement::{check_agreement, diff, PixelDiff};
+pub use barycentric::{check_barycentric_exact, check_barycentric_fixed, float_sum_error_ulps};
+pub use explain::explain_sample;
+pub use invariance::{check_rotation_and_winding, check_translation};
+pub use watertight::{check_no_double_cover, check_watertight};
+
+/// A broken invariant, with an exact explanation.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Violation {
+    /// Which invariant (`"watertight"`, `"agreement"`, ...).
+    pub invariant: &'static str,
+    /// What exactly went wrong.
+    pub message: String,
+}
+
+impl Violation {
+    fn new(invariant: &'static str, message: String) -> Violation {
+        Violation { invariant, message }
+    }
+}
+
+impl fmt::Display for Violation {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} violated: {}", self.invariant, self.message)
+    }
+}
+
+impl std::error::Error for Violation {}

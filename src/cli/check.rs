@@ -1,0 +1,292 @@
+//! `rasterproof check`: the invariant suite on random cases.
+
+use std::collections::BTreeMap;
+use std::path::Path;
+use std::process::ExitCode;
+
+use indicatif::{ProgressBar, ProgressStyle};
+use proptest::strategy::{Strategy, ValueTree};
+use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+use rasterproof::check::{
+    check_agreement, check_barycentric_exact, check_barycentric_fixed, check_rotation_and_winding, check_translation,
+    check_watertight, Violation,
+};
+use rasterproof::convention::{Preset, Target, MAX_CANVAS};
+use rasterproof::geom::{Point, Triangle};
+use rasterproof::model::{render, Model};
+use rasterproof::scene::Scene;
+use rasterproof::strategy::{any_triangle, delaunay_mesh, tie_heavy_mesh, Mesh};
+
+/// Canvas side of the ordinary cases.
+const CANVAS: u32 = 32;
+
+/// One generated case.
+struct Case {
+    mesh: Mesh,
+    /// A far-from-origin mesh on a fine 2^-16 px grid, for the float models only (snapping
+    /// it to 8 bits could fold thin triangles, so it is no input for the snapped models).
+    fine_mesh: Mesh,
+    mesh_canvas: u32,
+    mesh_family: &'static str,
+    triangle: Triangle,
+    shift: (i64, i64),
+    preset: Preset,
+}
+
+/// One checker's verdict.
+struct Outcome {
+    invariant: &'static str,
+    model: Model,
+    result: Result<(), Violation>,
+    /// The triangles and canvas to write out if it failed.
+    triangles: Vec<Triangle>,
+    canvas: u32,
+}
+
+fn runner_for(seed: u64, case: u64) -> TestRunner {
+    let mut bytes = [0u8; 32];
+    bytes[..8].copy_from_slice(&seed.to_le_bytes());
+    bytes[8..16].copy_from_slice(&case.to_le_bytes());
+    TestRunner::new_with_rng(Config::default(), TestRng::from_seed(RngAlgorithm::ChaCha, &bytes))
+}
+
+fn draw<T: std::fmt::Debug>(runner: &mut TestRunner, s: impl Strategy<Value = T>) -> Result<T, String> {
+    Ok(s.new_tree(runner)
+        .map_err(|e| format!("case generation failed: {e}"))?
+        .current())
+}
+
+fn generate(seed: u64, k: u64) -> Result<Case, String> {
+    let mut runner = runner_for(seed, k);
+    let far = i64::from(MAX_CANVAS) - 48;
+    let (mesh, mesh_canvas, mesh_family) = match k % 3 {
+        0 => (
+            draw(&mut runner, delaunay_mesh([0, 0], i64::from(CANVAS), 8, 16))?,
+            CANVAS,
+            "random mesh",
+        ),
+        1 => (draw(&mut runner, tie_heavy_mesh(CANVAS, 16))?, CANVAS, "tie-heavy mesh"),
+        _ => (
+            draw(&mut runner, delaunay_mesh([far, far], 48, 8, 16))?,
+            MAX_CANVAS,
+            "far-from-origin mesh",
+        ),
+    };
+    let fine_mesh = draw(&mut runner, delaunay_mesh([far, far], 48, 16, 24))?;
+    let triangle = draw(&mut runner, any_triangle(CANVAS))?;
+    let shift = draw(&mut runner, (-5i64..=5, -5i64..=5))?;
+    let preset = draw(&mut runner, proptest::sample::select(vec![Preset::D3d11, Preset::Gl]))?;
+    Ok(Case {
+        mesh,
+        fine_mesh,
+        mesh_canvas,
+        mesh_family,
+        triangle,
+        shift,
+        preset,
+    })
+}
+
+fn target(side: u32, preset: Preset) -> Target {
+    Target::new(side, side, preset.convention()).expect("suite canvases are valid")
+}
+
+fn run_case(c: &Case) -> Vec<Outcome> {
+    let mut out = Vec::new();
+    let tri_target = target(CANVAS, c.preset);
+    let tri = std::slice::from_ref(&c.triangle);
+    let mut push = |invariant, model, result, triangles: &[Triangle], canvas| {
+        out.push(Outcome {
+            invariant,
+            model,
+            result,
+            triangles: triangles.to_vec(),
+            canvas,
+        });
+    };
+
+    // 1. barycentrics: exact sums at a few samples, integer sums where the envelope allows.
+    let samples = [(0u32, 0u32), (CANVAS / 2, CANVAS / 3), (CANVAS - 1, CANVAS - 1)];
+    let exact_sum = samples.iter().try_for_each(|&(x, y)| {
+        let p = Point::from_fractions(2 * i64::from(x) + 1, 2, 2 * i64::from(y) + 1, 2);
+        check_barycentric_exact(&c.triangle, &p)
+    });
+    push("barycentric sum", Model::Exact, exact_sum, tri, CANVAS);
+    if let Ok(f) = c.triangle.snapped(&tri_target.convention).to_fixed() {
+        let sum = samples
+            .iter()
+            .try_for_each(|&(x, y)| check_barycentric_fixed(&f, x, y, &tri_target));
+        push("integer edge sum", Model::Fixed, sum, tri, CANVAS);
+    }
+
+    // 2. watertight meshes, and 3. agreement on them: the snapped models against
+    // exact-snapped, the float models against exact (the scene as written).
+    let meshes = [
+        (
+            &c.mesh,
+            c.mesh_canvas,
+            "",
+            &[
+                Model::ExactSnapped,
+                Model::Fixed,
+                Model::Float32,
+                Model::Float64,
+                Model::Float32Naive,
+            ][..],
+        ),
+        (&c.fine_mesh, MAX_CANVAS, " fine", &[Model::Float32, Model::Float64][..]),
+    ];
+    for (mesh, side, tag, models) in meshes {
+        let mesh_target = target(side, c.preset);
+        let reference_exact = render(Model::Exact, &mesh.triangles, &mesh_target);
+        let reference_snapped = render(Model::ExactSnapped, &mesh.triangles, &mesh_target);
+        for &model in models {
+            let (watertight, agreement) = match render(model, &mesh.triangles, &mesh_target) {
+                Err(e) => {
+                    let v = Violation {
+                        invariant: "watertight",
+                        message: e.to_string(),
+                    };
+                    (Err(v.clone()), Err(v))
+                }
+                Ok(cov) => {
+                    let (name, reference) = match model {
+                        Model::ExactSnapped | Model::Fixed => ("exact-snapped", &reference_snapped),
+                        _ => ("exact", &reference_exact),
+                    };
+                    let agreement = match reference {
+                        Ok(r) => check_agreement(name, r, model.name(), &cov, &mesh.triangles, &mesh_target),
+                        Err(e) => Err(Violation {
+                            invariant: "agreement",
+                            message: e.to_string(),
+                        }),
+                    };
+                    (
+                        check_watertight(&mesh.triangles, &mesh.outline, &cov, &mesh_target),
+                        agreement,
+                    )
+                }
+            };
+            let (w_name, a_name) = if tag.is_empty() {
+                ("watertight", "agreement (mesh)")
+            } else {
+                ("watertight (fine mesh)", "agreement (fine mesh)")
+            };
+            push(w_name, model, watertight, &mesh.triangles, side);
+            push(a_name, model, agreement, &mesh.triangles, side);
+        }
+    }
+
+    // 3. agreement on a single random triangle (every family).
+    if let Ok(reference) = render(Model::ExactSnapped, tri, &tri_target) {
+        let result = render(Model::Fixed, tri, &tri_target)
+            .map_err(|e| Violation {
+                invariant: "agreement",
+                message: e.to_string(),
+            })
+            .and_then(|cov| check_agreement("exact-snapped", &reference, "fixed", &cov, tri, &tri_target));
+        push("agreement (triangle)", Model::Fixed, result, tri, CANVAS);
+    }
+
+    // 4. invariance.
+    for model in [Model::ExactSnapped, Model::Fixed, Model::Float32] {
+        push(
+            "rotation/winding",
+            model,
+            check_rotation_and_winding(model, &c.triangle, &tri_target),
+            tri,
+            CANVAS,
+        );
+    }
+    for model in [Model::ExactSnapped, Model::Fixed] {
+        let (dx, dy) = c.shift;
+        push(
+            "translation",
+            model,
+            check_translation(model, &c.triangle, dx, dy, &tri_target),
+            tri,
+            CANVAS,
+        );
+    }
+    out
+}
+
+/// Models whose violations fail the run (the float models' violations are the measured trade).
+fn must_hold(model: Model) -> bool {
+    matches!(model, Model::Exact | Model::ExactSnapped | Model::Fixed)
+}
+
+pub fn run(cases: u64, seed: u64, out: Option<&Path>, quiet: bool) -> Result<ExitCode, String> {
+    if let Some(dir) = out {
+        std::fs::create_dir_all(dir).map_err(|e| format!("--out {}: cannot create: {e}", dir.display()))?;
+    }
+    let bar = if quiet {
+        ProgressBar::hidden()
+    } else {
+        ProgressBar::new(cases)
+    };
+    bar.set_style(
+        ProgressStyle::with_template("{bar:40} {pos}/{len} cases, {elapsed} ({eta} left)").expect("static template"),
+    );
+    let mut tally: BTreeMap<(&'static str, &'static str), (u64, u64)> = BTreeMap::new();
+    let mut fatal = 0u64;
+    let mut families: BTreeMap<(&'static str, &'static str), u64> = BTreeMap::new();
+    for k in 0..cases {
+        let case = generate(seed, k)?;
+        for o in run_case(&case) {
+            let entry = tally.entry((o.invariant, o.model.name())).or_default();
+            entry.0 += 1;
+            if let Err(v) = &o.result {
+                entry.1 += 1;
+                if o.invariant == "watertight" || o.invariant == "agreement (mesh)" {
+                    *families.entry((case.mesh_family, o.model.name())).or_default() += 1;
+                }
+                if must_hold(o.model) {
+                    fatal += 1;
+                    bar.suspend(|| eprintln!("case {k}: {} ({}): {v}", o.invariant, o.model));
+                }
+                if let Some(dir) = out {
+                    write_case(dir, k, &o, case.preset, v)?;
+                }
+            }
+        }
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    println!("rasterproof check: {cases} cases, seed {seed}, presets d3d11/gl");
+    println!(
+        "{:<24} {:<14} {:>7} {:>10}",
+        "invariant", "model", "cases", "violations"
+    );
+    for ((invariant, model), (n, bad)) in &tally {
+        println!("{invariant:<24} {model:<14} {n:>7} {bad:>10}");
+    }
+    if !families.is_empty() {
+        println!("mesh violations by family:");
+        for ((family, model), n) in &families {
+            println!("  {family:<22} {model:<14} {n:>5}");
+        }
+    }
+    if fatal > 0 {
+        println!("FAILED: {fatal} violations by the exact or fixed model");
+        Ok(ExitCode::from(1))
+    } else {
+        println!("ok: the exact and fixed models hold every invariant");
+        Ok(ExitCode::SUCCESS)
+    }
+}
+
+fn write_case(dir: &Path, k: u64, o: &Outcome, preset: Preset, v: &Violation) -> Result<(), String> {
+    let slug: String = o
+        .invariant
+        .chars()
+        .map(|ch| if ch.is_ascii_alphanumeric() { ch } else { '-' })
+        .collect();
+    let stem = dir.join(format!("case-{k}-{slug}-{}", o.model.name()));
+    let mut scene = Scene::new(o.canvas, o.canvas, o.triangles.clone());
+    scene.preset = preset;
+    let json = stem.with_extension("json");
+    std::fs::write(&json, scene.to_json()).map_err(|e| format!("{}: cannot write: {e}", json.display()))?;
+    let txt = stem.with_extension("txt");
+    std::fs::write(&txt, format!("{v}\n")).map_err(|e| format!("{}: cannot write: {e}", txt.display()))
+}

@@ -1,0 +1,202 @@
+//! Geometry: exact points and triangles, their snapped forms, and the fixed-point
+//! triangle that the integer models take (inside the envelope by construction).
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
+
+use crate::convention::Convention;
+use crate::num::exact::dyadic;
+use crate::num::fixed::snap;
+use crate::num::{EnvelopeError, SubPixel};
+
+/// A point with exact rational coordinates, in pixels.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct Point {
+    /// x, to the right.
+    pub x: BigRational,
+    /// y, downwards.
+    pub y: BigRational,
+}
+
+impl Point {
+    /// A point from two rationals.
+    pub fn new(x: BigRational, y: BigRational) -> Point {
+        Point { x, y }
+    }
+
+    /// A point from integers.
+    pub fn from_ints(x: i64, y: i64) -> Point {
+        Point::new(BigRational::from_integer(x.into()), BigRational::from_integer(y.into()))
+    }
+
+    /// A point from fractions `xn/xd, yn/yd` (denominators non-zero).
+    pub fn from_fractions(xn: i64, xd: i64, yn: i64, yd: i64) -> Point {
+        Point::new(
+            BigRational::new(xn.into(), xd.into()),
+            BigRational::new(yn.into(), yd.into()),
+        )
+    }
+}
+
+/// A triangle with exact vertices, in the order given (either winding).
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct Triangle {
+    /// The three vertices.
+    pub v: [Point; 3],
+}
+
+impl Triangle {
+    /// A triangle from three points.
+    pub fn new(a: Point, b: Point, c: Point) -> Triangle {
+        Triangle { v: [a, b, c] }
+    }
+
+    /// The same triangle with vertices rotated: (v1, v2, v0).
+    pub fn rotated(&self) -> Triangle {
+        let [a, b, c] = self.v.clone();
+        Triangle::new(b, c, a)
+    }
+
+    /// The same triangle with the opposite winding: (v0, v2, v1).
+    pub fn reversed(&self) -> Triangle {
+        let [a, b, c] = self.v.clone();
+        Triangle::new(a, c, b)
+    }
+
+    /// The triangle moved by whole pixels.
+    pub fn translated(&self, dx: i64, dy: i64) -> Triangle {
+        let (dx, dy) = (
+            BigRational::from_integer(dx.into()),
+            BigRational::from_integer(dy.into()),
+        );
+        Triangle {
+            v: self.v.clone().map(|p| Point::new(p.x + &dx, p.y + &dy)),
+        }
+    }
+
+    /// The vertices snapped to the convention's grid.
+    pub fn snapped(&self, convention: &Convention) -> SnappedTriangle {
+        let s = |x: &BigRational| snap(x, convention.subpixel_bits, convention.rounding);
+        SnappedTriangle {
+            v: self.v.clone().map(|p| [s(&p.x), s(&p.y)]),
+            bits: convention.subpixel_bits,
+        }
+    }
+
+    /// The vertices rounded to the nearest f32 (num-rational's conversion), as glam vectors.
+    /// `None` when a coordinate does not fit f32.
+    pub fn to_f32(&self) -> Option<[glam::Vec2; 3]> {
+        let mut out = [glam::Vec2::ZERO; 3];
+        for (o, p) in out.iter_mut().zip(&self.v) {
+            let (x, y) = (p.x.to_f32()?, p.y.to_f32()?);
+            if !x.is_finite() || !y.is_finite() {
+                return None;
+            }
+            *o = glam::Vec2::new(x, y);
+        }
+        Some(out)
+    }
+
+    /// The vertices rounded to the nearest f64, as glam vectors. `None` when a coordinate
+    /// does not fit f64.
+    pub fn to_f64(&self) -> Option<[glam::DVec2; 3]> {
+        let mut out = [glam::DVec2::ZERO; 3];
+        for (o, p) in out.iter_mut().zip(&self.v) {
+            let (x, y) = (p.x.to_f64()?, p.y.to_f64()?);
+            if !x.is_finite() || !y.is_finite() {
+                return None;
+            }
+            *o = glam::DVec2::new(x, y);
+        }
+        Some(out)
+    }
+}
+
+/// A triangle snapped to a 2^-bits grid: integer subpixels of any size.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SnappedTriangle {
+    /// `[x, y]` of each vertex in subpixels.
+    pub v: [[BigInt; 2]; 3],
+    /// The grid: 2^-bits pixel.
+    pub bits: u32,
+}
+
+impl SnappedTriangle {
+    /// The snapped triangle as exact rationals (for the `exact-snapped` model).
+    pub fn to_exact(&self) -> Triangle {
+        Triangle {
+            v: self
+                .v
+                .clone()
+                .map(|[x, y]| Point::new(dyadic(&x, self.bits), dyadic(&y, self.bits))),
+        }
+    }
+
+    /// The snapped triangle in the integer models' form; an error names the first vertex
+    /// coordinate outside the envelope as `(vertex, axis, error)`.
+    pub fn to_fixed(&self) -> Result<FixedTriangle, (usize, char, EnvelopeError)> {
+        let mut v = [[SubPixel::new(0).expect("0 is inside the envelope"); 2]; 3];
+        for (k, [x, y]) in self.v.iter().enumerate() {
+            v[k][0] = SubPixel::try_from_bigint(x, self.bits).map_err(|e| (k, 'x', e))?;
+            v[k][1] = SubPixel::try_from_bigint(y, self.bits).map_err(|e| (k, 'y', e))?;
+        }
+        Ok(FixedTriangle { v, bits: self.bits })
+    }
+}
+
+/// A triangle in subpixels, inside the integer models' envelope by construction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FixedTriangle {
+    /// `[x, y]` of each vertex.
+    pub v: [[SubPixel; 2]; 3],
+    /// The grid: 2^-bits pixel.
+    pub bits: u32,
+}
+
+impl FixedTriangle {
+    /// The vertices as plain i64 pairs.
+    pub fn coords(&self) -> [[i64; 2]; 3] {
+        self.v.map(|[x, y]| [x.get(), y.get()])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::convention::Preset;
+
+    #[test]
+    fn snapping_a_triangle_and_back() {
+        let t = Triangle::new(
+            Point::from_fractions(1, 3, 0, 1),
+            Point::from_fractions(10, 1, 1, 512),
+            Point::from_fractions(-3, 2, 5, 1),
+        );
+        let s = t.snapped(&Preset::D3d11.convention());
+        assert_eq!(s.v[0], [BigInt::from(85), BigInt::from(0)]);
+        assert_eq!(s.v[1], [BigInt::from(2560), BigInt::from(0)]); // 1/512 -> 0.5 -> even 0
+        assert_eq!(s.v[2], [BigInt::from(-384), BigInt::from(1280)]);
+        let cts = t.snapped(&Preset::Cts.convention());
+        assert_eq!(cts.v[1][1], BigInt::from(1)); // half away from zero
+        assert_eq!(s.to_exact().v[0].x, BigRational::new(85.into(), 256.into()));
+    }
+
+    #[test]
+    fn envelope_is_checked_per_vertex() {
+        let far = 1i64 << 21; // 2^21 px = 2^29 subpixels: inside, exactly at the edge
+        let t = Triangle::new(
+            Point::from_ints(far, 0),
+            Point::from_ints(0, -far),
+            Point::from_ints(0, 0),
+        );
+        assert!(t.snapped(&Convention::default()).to_fixed().is_ok());
+        let t = Triangle::new(
+            Point::from_ints(0, 0),
+            Point::from_fractions(far * 256 + 1, 256, 0, 1),
+            Point::from_ints(0, 1),
+        );
+        let (vertex, axis, _) = t.snapped(&Convention::default()).to_fixed().unwrap_err();
+        assert_eq!((vertex, axis), (1, 'x'));
+    }
+}

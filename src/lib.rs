@@ -1,0 +1,58 @@
+//! # rasterproof
+//!
+//! An exact-arithmetic reference rasterizer and a property-tested verification harness for
+//! 2D rasterization. It computes, with no rounding error anywhere, which pixels a scene
+//! covers under a stated convention, carries the classic algorithms in exact, integer and
+//! float forms side by side, and checks their invariants.
+//!
+//! ## Conventions
+//!
+//! - Window space: x right, y down, origin top-left; pixel (i, j) is `[i, i+1) x [j, j+1)`,
+//!   sampled at `(i + 1/2, j + 1/2)` (or `(i, j)`, D3D9 style).
+//! - Scene numbers are exact rationals (`0.1` is 1/10).
+//! - Hardware-style models snap vertices to a 2^-S pixel grid (S = 8 by default),
+//!   round-to-nearest, ties to even (or half away from zero, as the Khronos CTS does).
+//! - Edge function `E(p) = (p.x - a.x)(b.y - a.y) - (p.y - a.y)(b.x - a.x)`; triangles of
+//!   either winding are oriented so the interior is `E > 0`; zero-area triangles cover
+//!   nothing.
+//! - Tie rule: a sample with `E == 0` is inside only on an inclusive edge; top-left (D3D11
+//!   §3.4.2.1) or bottom-left (GL seen in a y-down image). Top-left is "the sample moved
+//!   right by ε and down by ε²".
+//! - Presets: `d3d11`, `vulkan`, `gl`, `cts` ([`convention::Preset`]).
+//!
+//! ## Quick start
+//!
+//! ```
+//! use rasterproof::convention::{Preset, Target};
+//! use rasterproof::geom::{Point, Triangle};
+//! use rasterproof::model::{render, Model};
+//! // Two triangles sharing the diagonal of a 4x4 square: every pixel is owned once.
+//! let (a, b, c, d) = (Point::from_ints(0, 0), Point::from_ints(4, 0), Point::from_ints(4, 4), Point::from_ints(0, 4));
+//! let mesh = [Triangle::new(a.clone(), b, c.clone()), Triangle::new(a, c, d)];
+//! let target = Target::new(4, 4, Preset::D3d11.convention()).unwrap();
+//! let coverage = render(Model::Fixed, &mesh, &target).unwrap();
+//! assert_eq!(coverage.covered_pixels(), 16);
+//! assert_eq!(coverage.double_covered().count(), 0);
+//! ```
+//!
+//! ## Features
+//! - `proptest`: the strategies in `strategy` (random triangles, spade meshes, tie-heavy
+//!   inputs) for your own property tests.
+//! - `cli` (default): the `rasterproof` command; implies `proptest`.
+
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+#![warn(clippy::cast_possible_truncation, clippy::cast_possible_wrap)]
+
+pub mod check;
+pub mod convention;
+pub mod coverage;
+pub mod edge;
+pub mod geom;
+pub mod interp;
+pub mod model;
+pub mod num;
+pub mod scene;
+#[cfg(feature = "proptest")]
+pub mod strategy;
+pub mod tri;

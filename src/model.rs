@@ -1,0 +1,286 @@
+//! The closed set of models the CLI and the harness pick from at run time, and the one
+//! place that turns a scene's exact triangles into each model's input form.
+
+use std::fmt;
+
+use glam::{DVec2, Vec2};
+use image::RgbImage;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+
+use crate::convention::{Convention, Target};
+use crate::coverage::{primitive_colour, Coverage, CoverageSink};
+use crate::geom::{FixedTriangle, Point, Triangle};
+use crate::interp::{barycentric_fixed, gouraud_exact, gouraud_f32, gouraud_f64, to_channel, Rgb};
+use crate::num::EnvelopeError;
+use crate::tri::float::FloatRule;
+use crate::tri::{exact, fixed, float};
+
+/// A triangle model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Model {
+    /// The oracle on the scene as written (no snapping).
+    Exact,
+    /// The oracle on the snapped scene.
+    ExactSnapped,
+    /// Incremental i64 edge functions with block traversal, on the snapped scene.
+    Fixed,
+    /// Scratchapixel in f32 with the tie rule applied to float values.
+    Float32,
+    /// Scratchapixel in f64 with the tie rule applied to float values.
+    Float64,
+    /// Scratchapixel in f32 with the naive `w >= 0` test.
+    Float32Naive,
+    /// Scratchapixel in f64 with the naive `w >= 0` test.
+    Float64Naive,
+}
+
+impl Model {
+    /// Every model.
+    pub const ALL: [Model; 7] = [
+        Model::Exact,
+        Model::ExactSnapped,
+        Model::Fixed,
+        Model::Float32,
+        Model::Float64,
+        Model::Float32Naive,
+        Model::Float64Naive,
+    ];
+
+    /// The name used on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Model::Exact => "exact",
+            Model::ExactSnapped => "exact-snapped",
+            Model::Fixed => "fixed",
+            Model::Float32 => "float32",
+            Model::Float64 => "float64",
+            Model::Float32Naive => "float32-naive",
+            Model::Float64Naive => "float64-naive",
+        }
+    }
+
+    /// Parses a name written by [`Model::name`].
+    pub fn from_name(name: &str) -> Option<Model> {
+        Model::ALL.into_iter().find(|m| m.name() == name)
+    }
+
+    /// The coordinate range over which the model is exact, in words.
+    pub fn envelope(self) -> &'static str {
+        match self {
+            Model::Exact | Model::ExactSnapped => "unbounded (arbitrary precision)",
+            Model::Fixed => "|snapped coordinate| <= 2^29 subpixels (2^21 px at 8 bits)",
+            Model::Float32 | Model::Float32Naive => "none: inexact; refuses coordinates beyond f32",
+            Model::Float64 | Model::Float64Naive => "none: inexact; refuses coordinates beyond f64",
+        }
+    }
+}
+
+impl fmt::Display for Model {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// A triangle the chosen model cannot take.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ModelError {
+    /// A snapped coordinate outside the integer envelope.
+    Envelope {
+        /// Triangle index.
+        triangle: usize,
+        /// Vertex index (0-2).
+        vertex: usize,
+        /// `'x'` or `'y'`.
+        axis: char,
+        /// The value and the limit.
+        error: EnvelopeError,
+    },
+    /// A coordinate that does not fit the float type.
+    FloatRange {
+        /// Triangle index.
+        triangle: usize,
+        /// The model.
+        model: Model,
+    },
+}
+
+impl fmt::Display for ModelError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ModelError::Envelope {
+                triangle,
+                vertex,
+                axis,
+                error,
+            } => write!(f, "triangles[{triangle}].v[{vertex}].{axis}: {error}"),
+            ModelError::FloatRange { triangle, model } => write!(
+                f,
+                "triangles[{triangle}]: a coordinate does not fit the {model} model's float type"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for ModelError {}
+
+/// A scene's triangles converted for one model (the conversion is where errors happen;
+/// rasterizing a prepared scene cannot fail).
+#[derive(Debug, Clone)]
+pub enum Prepared {
+    /// Exact triangles (as written, or snapped and converted back).
+    Exact(Vec<Triangle>),
+    /// Fixed-point triangles inside the envelope.
+    Fixed(Vec<FixedTriangle>),
+    /// f32 triangles and the float rule.
+    F32(Vec<[Vec2; 3]>, FloatRule),
+    /// f64 triangles and the float rule.
+    F64(Vec<[DVec2; 3]>, FloatRule),
+}
+
+/// Converts `triangles` for `model`; the first triangle it cannot take is the error.
+pub fn prepare(model: Model, triangles: &[Triangle], conv: &Convention) -> Result<Prepared, ModelError> {
+    Ok(match model {
+        Model::Exact => Prepared::Exact(triangles.to_vec()),
+        Model::ExactSnapped => Prepared::Exact(triangles.iter().map(|t| t.snapped(conv).to_exact()).collect()),
+        Model::Fixed => Prepared::Fixed(
+            triangles
+                .iter()
+                .enumerate()
+                .map(|(k, t)| {
+                    t.snapped(conv)
+                        .to_fixed()
+                        .map_err(|(vertex, axis, error)| ModelError::Envelope {
+                            triangle: k,
+                            vertex,
+                            axis,
+                            error,
+                        })
+                })
+                .collect::<Result<_, _>>()?,
+        ),
+        Model::Float32 | Model::Float32Naive => Prepared::F32(
+            triangles
+                .iter()
+                .enumerate()
+                .map(|(k, t)| t.to_f32().ok_or(ModelError::FloatRange { triangle: k, model }))
+                .collect::<Result<_, _>>()?,
+            float_rule(model),
+        ),
+        Model::Float64 | Model::Float64Naive => Prepared::F64(
+            triangles
+                .iter()
+                .enumerate()
+                .map(|(k, t)| t.to_f64().ok_or(ModelError::FloatRange { triangle: k, model }))
+                .collect::<Result<_, _>>()?,
+            float_rule(model),
+        ),
+    })
+}
+
+fn float_rule(model: Model) -> FloatRule {
+    match model {
+        Model::Float32Naive | Model::Float64Naive => FloatRule::Naive,
+        _ => FloatRule::TieRule,
+    }
+}
+
+/// Triangle ids are their indices.
+fn id_of(k: usize) -> u32 {
+    u32::try_from(k).expect("scene triangle counts fit u32")
+}
+
+impl Prepared {
+    /// Rasterizes every triangle into `sink`, triangle k with id k.
+    pub fn rasterize_into<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S) {
+        match self {
+            Prepared::Exact(ts) => ts
+                .iter()
+                .enumerate()
+                .for_each(|(k, t)| exact::rasterize(t, id_of(k), target, sink)),
+            Prepared::Fixed(ts) => ts
+                .iter()
+                .enumerate()
+                .for_each(|(k, t)| fixed::rasterize(t, id_of(k), target, sink)),
+            Prepared::F32(ts, rule) => ts
+                .iter()
+                .enumerate()
+                .for_each(|(k, t)| float::rasterize_f32(t, id_of(k), target, *rule, sink)),
+            Prepared::F64(ts, rule) => ts
+                .iter()
+                .enumerate()
+                .for_each(|(k, t)| float::rasterize_f64(t, id_of(k), target, *rule, sink)),
+        }
+    }
+
+    /// The Gouraud colour of triangle `k` at the sample of pixel `(x, y)`, computed in the
+    /// model's own arithmetic (exact rationals; exact integer edge values over twice the
+    /// area for `fixed`; f32 / f64 barycentrics for the float models).
+    pub fn shade(&self, k: usize, colours: &[Rgb; 3], x: u32, y: u32, target: &Target) -> Rgb {
+        let centre = target.convention.pixel_centre.offset_f64();
+        match self {
+            Prepared::Exact(ts) => {
+                let c = target.convention.pixel_centre.offset();
+                let p = Point::new(
+                    BigRational::from_integer(BigInt::from(x)) + &c,
+                    BigRational::from_integer(BigInt::from(y)) + &c,
+                );
+                gouraud_exact(&ts[k], colours, &p).map_or([0; 3], |c| c.each_ref().map(to_channel))
+            }
+            Prepared::Fixed(ts) => {
+                let b = barycentric_fixed(&ts[k], x, y, target);
+                if b.area2 == 0 {
+                    return [0; 3];
+                }
+                std::array::from_fn(|ch| {
+                    let sum: i128 = (0..3).map(|i| i128::from(b.w[i]) * i128::from(colours[i][ch])).sum();
+                    to_channel(&BigRational::new(sum.into(), b.area2.into()))
+                })
+            }
+            #[allow(clippy::cast_possible_truncation)] // pixel centres < 2^15: exact in f32
+            Prepared::F32(ts, _) => {
+                let p = Vec2::new((f64::from(x) + centre) as f32, (f64::from(y) + centre) as f32);
+                gouraud_f32(&ts[k], colours, p).unwrap_or([0; 3])
+            }
+            Prepared::F64(ts, _) => {
+                let p = DVec2::new(f64::from(x) + centre, f64::from(y) + centre);
+                gouraud_f64(&ts[k], colours, p).unwrap_or([0; 3])
+            }
+        }
+    }
+
+    /// The interpolated-colour picture: each covered pixel takes the colour of its
+    /// highest-numbered (last drawn) triangle; a triangle without colours shows its
+    /// coverage colour.
+    pub fn colour_image(&self, coverage: &Coverage, colours: &[Option<[Rgb; 3]>], target: &Target) -> RgbImage {
+        let mut img = RgbImage::new(target.width, target.height);
+        for (x, y, ids) in coverage.iter() {
+            let Some(&top) = ids.last() else { continue };
+            let k = top as usize;
+            let rgb = match colours.get(k).copied().flatten() {
+                Some(c) => self.shade(k, &c, x, y, target),
+                None => primitive_colour(top),
+            };
+            img.put_pixel(x, y, image::Rgb(rgb));
+        }
+        img
+    }
+}
+
+/// Renders `triangles` with `model` into a fresh [`Coverage`].
+///
+/// ```
+/// use rasterproof::convention::{Convention, Target};
+/// use rasterproof::geom::{Point, Triangle};
+/// use rasterproof::model::{render, Model};
+/// let t = Triangle::new(Point::from_ints(0, 0), Point::from_ints(8, 0), Point::from_ints(0, 8));
+/// let target = Target::new(8, 8, Convention::default()).unwrap();
+/// let exact = render(Model::ExactSnapped, &[t.clone()], &target).unwrap();
+/// assert_eq!(render(Model::Fixed, &[t], &target).unwrap(), exact);
+/// ```
+pub fn render(model: Model, triangles: &[Triangle], target: &Target) -> Result<Coverage, ModelError> {
+    let prepared = prepare(model, triangles, &target.convention)?;
+    let mut coverage = Coverage::new(target.width, target.height);
+    prepared.rasterize_into(target, &mut coverage);
+    Ok(coverage)
+}

@@ -1,0 +1,289 @@
+//! Exact rational scene numbers (num-rational `BigRational`): parsing of decimals and
+//! fractions exactly as written, and rounding to an integer with a stated tie rule.
+
+use std::fmt;
+
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
+
+/// The longest number text accepted, in characters. Longer texts are refused so that a
+/// hostile scene cannot make the exact model allocate without bound.
+pub const MAX_NUMBER_LEN: usize = 256;
+
+/// The largest decimal exponent magnitude accepted (`1e300` is fine, `1e1000` is not),
+/// for the same reason as [`MAX_NUMBER_LEN`].
+pub const MAX_EXPONENT: i64 = 400;
+
+/// How a value exactly halfway between two integers is rounded.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Rounding {
+    /// Round half to even (IEEE 754 default; D3D11, Vulkan and Mesa snap this way).
+    NearestEven,
+    /// Round half away from zero (the Khronos CTS reference rasterizer).
+    HalfAwayFromZero,
+}
+
+impl Rounding {
+    /// The name used in scene files and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Rounding::NearestEven => "nearest-even",
+            Rounding::HalfAwayFromZero => "half-away",
+        }
+    }
+
+    /// Parses a name written by [`Rounding::name`].
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "nearest-even" => Some(Rounding::NearestEven),
+            "half-away" => Some(Rounding::HalfAwayFromZero),
+            _ => None,
+        }
+    }
+}
+
+/// Why a text is not an exact scene number.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum NumberError {
+    /// The text is empty.
+    Empty,
+    /// The text is longer than [`MAX_NUMBER_LEN`].
+    TooLong(usize),
+    /// The text is not a decimal (`-12.5e3`) nor a fraction (`1/3`); `NaN` and `inf` land here.
+    NotANumber,
+    /// A fraction with a zero denominator (`1/0`).
+    ZeroDenominator,
+    /// A decimal exponent beyond [`MAX_EXPONENT`].
+    ExponentOutOfRange,
+}
+
+impl fmt::Display for NumberError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            NumberError::Empty => write!(f, "is empty"),
+            NumberError::TooLong(n) => {
+                write!(f, "is {n} characters long (at most {MAX_NUMBER_LEN})")
+            }
+            NumberError::NotANumber => write!(
+                f,
+                "is not a finite number (expected a decimal like -12.5 or 1e3, or a fraction like 1/3)"
+            ),
+            NumberError::ZeroDenominator => write!(f, "has a zero denominator"),
+            NumberError::ExponentOutOfRange => {
+                write!(f, "has an exponent beyond +-{MAX_EXPONENT}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for NumberError {}
+
+/// Parses a decimal (`12`, `-0.1`, `1.5e-3`) or a fraction (`1/3`, `-7/2`) exactly.
+///
+/// `0.1` is exactly 1/10: nothing passes through f64.
+///
+/// ```
+/// use rasterproof::num::parse_rational;
+/// use num_rational::BigRational;
+/// let tenth = parse_rational("0.1").unwrap();
+/// assert_eq!(tenth, BigRational::new(1.into(), 10.into()));
+/// assert_eq!(parse_rational("-7/2").unwrap(), BigRational::new((-7).into(), 2.into()));
+/// assert!(parse_rational("NaN").is_err());
+/// assert!(parse_rational("1/0").is_err());
+/// ```
+pub fn parse_rational(text: &str) -> Result<BigRational, NumberError> {
+    if text.is_empty() {
+        return Err(NumberError::Empty);
+    }
+    if text.len() > MAX_NUMBER_LEN {
+        return Err(NumberError::TooLong(text.len()));
+    }
+    match text.split_once('/') {
+        Some((num, den)) => {
+            let num = parse_integer(num, true)?;
+            let den = parse_integer(den, false)?;
+            if den.is_zero() {
+                return Err(NumberError::ZeroDenominator);
+            }
+            Ok(BigRational::new(num, den))
+        }
+        None => parse_decimal(text),
+    }
+}
+
+/// An optionally signed run of ASCII digits.
+fn parse_integer(text: &str, signed: bool) -> Result<BigInt, NumberError> {
+    let (negative, digits) = split_sign(text);
+    if (!signed && digits.len() != text.len()) || !all_digits(digits) {
+        return Err(NumberError::NotANumber);
+    }
+    let magnitude: BigInt = digits.parse().map_err(|_| NumberError::NotANumber)?;
+    Ok(if negative { -magnitude } else { magnitude })
+}
+
+fn split_sign(text: &str) -> (bool, &str) {
+    if let Some(rest) = text.strip_prefix('-') {
+        (true, rest)
+    } else if let Some(rest) = text.strip_prefix('+') {
+        (false, rest)
+    } else {
+        (false, text)
+    }
+}
+
+fn all_digits(text: &str) -> bool {
+    !text.is_empty() && text.bytes().all(|b| b.is_ascii_digit())
+}
+
+/// `[+-]? digits [. digits]? ([eE] [+-]? digits)?`, with digits on at least one side of the point.
+fn parse_decimal(text: &str) -> Result<BigRational, NumberError> {
+    let (negative, body) = split_sign(text);
+    let (mantissa, exponent) = match body.find(['e', 'E']) {
+        Some(at) => (&body[..at], Some(&body[at + 1..])),
+        None => (body, None),
+    };
+    let (int_part, frac_part) = match mantissa.split_once('.') {
+        Some((i, f)) => (i, f),
+        None => (mantissa, ""),
+    };
+    let digits_ok = |s: &str| s.is_empty() || all_digits(s);
+    if (int_part.is_empty() && frac_part.is_empty()) || !digits_ok(int_part) || !digits_ok(frac_part) {
+        return Err(NumberError::NotANumber);
+    }
+    let mut exp: i64 = match exponent {
+        None => 0,
+        Some(e) => {
+            let (neg, digits) = split_sign(e);
+            if !all_digits(digits) {
+                return Err(NumberError::NotANumber);
+            }
+            // MAX_NUMBER_LEN bounds the digit count, so 300 digits could still overflow i64:
+            // parse as BigInt and compare.
+            let value: BigInt = digits.parse().map_err(|_| NumberError::NotANumber)?;
+            if value > BigInt::from(MAX_EXPONENT) {
+                return Err(NumberError::ExponentOutOfRange);
+            }
+            let value = i64::try_from(value).map_err(|_| NumberError::ExponentOutOfRange)?;
+            if neg {
+                -value
+            } else {
+                value
+            }
+        }
+    };
+    let all: String = format!("{int_part}{frac_part}");
+    let mut numerator: BigInt = all.parse().map_err(|_| NumberError::NotANumber)?;
+    exp -= i64::try_from(frac_part.len()).map_err(|_| NumberError::TooLong(text.len()))?;
+    if negative {
+        numerator = -numerator;
+    }
+    let ten = BigInt::from(10);
+    let scale = num_traits::pow(ten, usize::try_from(exp.unsigned_abs()).unwrap_or(usize::MAX));
+    Ok(if exp >= 0 {
+        BigRational::from_integer(numerator * scale)
+    } else {
+        BigRational::new(numerator, scale)
+    })
+}
+
+/// Rounds `x` to the nearest integer; a value exactly halfway is decided by `rounding`.
+///
+/// ```
+/// use rasterproof::num::{exact::round_to_integer, parse_rational, Rounding};
+/// let r = |s: &str, m| round_to_integer(&parse_rational(s).unwrap(), m).to_string();
+/// assert_eq!(r("2.5", Rounding::NearestEven), "2");
+/// assert_eq!(r("2.5", Rounding::HalfAwayFromZero), "3");
+/// assert_eq!(r("-2.5", Rounding::HalfAwayFromZero), "-3");
+/// assert_eq!(r("-2.5", Rounding::NearestEven), "-2");
+/// ```
+pub fn round_to_integer(x: &BigRational, rounding: Rounding) -> BigInt {
+    let floor = x.floor().to_integer();
+    let frac = x - BigRational::from_integer(floor.clone());
+    let half = BigRational::new(BigInt::one(), BigInt::from(2));
+    match frac.cmp(&half) {
+        std::cmp::Ordering::Less => floor,
+        std::cmp::Ordering::Greater => floor + 1,
+        std::cmp::Ordering::Equal => match rounding {
+            Rounding::NearestEven => {
+                if floor.is_even() {
+                    floor
+                } else {
+                    floor + 1
+                }
+            }
+            Rounding::HalfAwayFromZero => {
+                if x.is_negative() {
+                    floor
+                } else {
+                    floor + 1
+                }
+            }
+        },
+    }
+}
+
+/// `numerator / 2^bits` as an exact rational.
+pub fn dyadic(numerator: &BigInt, bits: u32) -> BigRational {
+    BigRational::new(numerator.clone(), BigInt::one() << bits)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(n: i64, d: i64) -> BigRational {
+        BigRational::new(n.into(), d.into())
+    }
+
+    #[test]
+    fn decimals_are_exact() {
+        assert_eq!(parse_rational("491.407").unwrap(), q(491_407, 1000));
+        assert_eq!(parse_rational("-0.5").unwrap(), q(-1, 2));
+        assert_eq!(parse_rational("1.5e-3").unwrap(), q(15, 10_000));
+        assert_eq!(parse_rational("25E2").unwrap(), q(2500, 1));
+        assert_eq!(parse_rational(".5").unwrap(), q(1, 2));
+        assert_eq!(parse_rational("+3").unwrap(), q(3, 1));
+    }
+
+    #[test]
+    fn fractions_are_exact() {
+        assert_eq!(parse_rational("1/3").unwrap(), q(1, 3));
+        assert_eq!(parse_rational("6/4").unwrap(), q(3, 2));
+        assert_eq!(parse_rational("-1/3").unwrap(), q(-1, 3));
+    }
+
+    #[test]
+    fn non_numbers_are_refused() {
+        for bad in [
+            "NaN", "inf", "-inf", "Infinity", "", "1/", "/2", "1/-2", "1.2.3", "e5", "1e", "0x10", " 1", "1 ", "--1",
+            ".",
+        ] {
+            assert!(parse_rational(bad).is_err(), "{bad:?} accepted");
+        }
+        assert_eq!(parse_rational("1/0"), Err(NumberError::ZeroDenominator));
+        assert_eq!(parse_rational("1e401"), Err(NumberError::ExponentOutOfRange));
+        assert_eq!(
+            parse_rational("1e99999999999999999999999"),
+            Err(NumberError::ExponentOutOfRange)
+        );
+        assert!(matches!(
+            parse_rational(&"1".repeat(300)),
+            Err(NumberError::TooLong(300))
+        ));
+    }
+
+    #[test]
+    fn rounding_ties() {
+        let r = |n, d, m| round_to_integer(&q(n, d), m);
+        assert_eq!(r(1, 2, Rounding::NearestEven), BigInt::from(0));
+        assert_eq!(r(3, 2, Rounding::NearestEven), BigInt::from(2));
+        assert_eq!(r(1, 2, Rounding::HalfAwayFromZero), BigInt::from(1));
+        assert_eq!(r(-1, 2, Rounding::HalfAwayFromZero), BigInt::from(-1));
+        assert_eq!(r(-1, 2, Rounding::NearestEven), BigInt::from(0));
+        assert_eq!(r(7, 3, Rounding::NearestEven), BigInt::from(2));
+        assert_eq!(r(-7, 3, Rounding::NearestEven), BigInt::from(-2));
+        assert_eq!(r(-8, 3, Rounding::HalfAwayFromZero), BigInt::from(-3));
+    }
+}

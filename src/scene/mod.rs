@@ -1,0 +1,184 @@
+//! Scene files (JSON): the canvas, the convention and the primitives, every coordinate
+//! read exactly as written. See [`parse::parse_scene`] for the format and its errors.
+
+pub mod parse;
+
+use std::fmt;
+use std::fmt::Write as _;
+
+use num_rational::BigRational;
+
+use crate::convention::{Convention, PixelCentre, Preset, Rounding, Target, TieRule};
+use crate::geom::Triangle;
+use crate::interp::Rgb;
+
+pub use parse::{parse_scene, parse_scene_bytes};
+
+/// Choices a scene makes on top of its preset.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Overrides {
+    /// `subpixel_bits`.
+    pub subpixel_bits: Option<u32>,
+    /// `rounding`.
+    pub rounding: Option<Rounding>,
+    /// `tie_rule`.
+    pub tie_rule: Option<TieRule>,
+    /// `pixel_centre`.
+    pub pixel_centre: Option<PixelCentre>,
+}
+
+impl Overrides {
+    /// `preset`'s convention with these overrides applied.
+    pub fn apply(&self, preset: Preset) -> Convention {
+        let base = preset.convention();
+        Convention {
+            preset,
+            subpixel_bits: self.subpixel_bits.unwrap_or(base.subpixel_bits),
+            rounding: self.rounding.unwrap_or(base.rounding),
+            tie_rule: self.tie_rule.unwrap_or(base.tie_rule),
+            pixel_centre: self.pixel_centre.unwrap_or(base.pixel_centre),
+        }
+    }
+}
+
+/// A triangle of a scene, with optional vertex colours.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SceneTriangle {
+    /// The exact triangle.
+    pub triangle: Triangle,
+    /// `colors`: one RGB per vertex.
+    pub colours: Option<[Rgb; 3]>,
+}
+
+/// A parsed, validated scene.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Scene {
+    /// Canvas width, `1..=16384`.
+    pub width: u32,
+    /// Canvas height, `1..=16384`.
+    pub height: u32,
+    /// `preset` (default `d3d11`).
+    pub preset: Preset,
+    /// The scene's own overrides of the preset.
+    pub overrides: Overrides,
+    /// `triangles`, ids 0.. in file order.
+    pub triangles: Vec<SceneTriangle>,
+}
+
+impl Scene {
+    /// A scene with the default preset and no overrides.
+    pub fn new(width: u32, height: u32, triangles: Vec<Triangle>) -> Scene {
+        Scene {
+            width,
+            height,
+            preset: Preset::D3d11,
+            overrides: Overrides::default(),
+            triangles: triangles
+                .into_iter()
+                .map(|triangle| SceneTriangle {
+                    triangle,
+                    colours: None,
+                })
+                .collect(),
+        }
+    }
+
+    /// The convention: the preset with the scene's overrides.
+    pub fn convention(&self) -> Convention {
+        self.overrides.apply(self.preset)
+    }
+
+    /// The canvas and convention. Parsing validated both, so this cannot fail for a parsed
+    /// scene; a hand-built one with a bad size gets `None`.
+    pub fn target(&self) -> Option<Target> {
+        Target::new(self.width, self.height, self.convention())
+    }
+
+    /// The exact triangles, in id order.
+    pub fn triangles(&self) -> Vec<Triangle> {
+        self.triangles.iter().map(|t| t.triangle.clone()).collect()
+    }
+
+    /// The vertex colours, in id order.
+    pub fn colours(&self) -> Vec<Option<[Rgb; 3]>> {
+        self.triangles.iter().map(|t| t.colours).collect()
+    }
+
+    /// The scene as a scene file, every coordinate an exact string (`"7/3"`), so that
+    /// parsing it again gives the same scene.
+    pub fn to_json(&self) -> String {
+        let mut s = format!(
+            "{{\n  \"width\": {},\n  \"height\": {},\n  \"preset\": \"{}\",\n",
+            self.width,
+            self.height,
+            self.preset.name()
+        );
+        let o = &self.overrides;
+        if let Some(b) = o.subpixel_bits {
+            let _ = writeln!(s, "  \"subpixel_bits\": {b},");
+        }
+        if let Some(r) = o.rounding {
+            let _ = writeln!(s, "  \"rounding\": \"{}\",", r.name());
+        }
+        if let Some(t) = o.tie_rule {
+            let _ = writeln!(s, "  \"tie_rule\": \"{}\",", t.name());
+        }
+        if let Some(c) = o.pixel_centre {
+            let _ = writeln!(
+                s,
+                "  \"pixel_centre\": {},",
+                if c == PixelCentre::Half { "0.5" } else { "0" }
+            );
+        }
+        s.push_str("  \"triangles\": [");
+        for (k, t) in self.triangles.iter().enumerate() {
+            s.push_str(if k == 0 { "\n    " } else { ",\n    " });
+            let v: Vec<String> = t
+                .triangle
+                .v
+                .iter()
+                .map(|p| format!("[\"{}\", \"{}\"]", exact_text(&p.x), exact_text(&p.y)))
+                .collect();
+            let _ = write!(s, "{{\"v\": [{}]", v.join(", "));
+            if let Some(c) = t.colours {
+                let c: Vec<String> = c.iter().map(|c| format!("[{}, {}, {}]", c[0], c[1], c[2])).collect();
+                let _ = write!(s, ", \"colors\": [{}]", c.join(", "));
+            }
+            s.push('}');
+        }
+        s.push_str("\n  ]\n}\n");
+        s
+    }
+}
+
+/// An exact rational as scene text: `"3"` or `"-7/2"`.
+pub fn exact_text(x: &BigRational) -> String {
+    if x.is_integer() {
+        x.numer().to_string()
+    } else {
+        format!("{}/{}", x.numer(), x.denom())
+    }
+}
+
+/// Bad scene input: which file, which field, what value, and why.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SceneError {
+    /// The file (or `<stdin>`, `<bytes>`).
+    pub source: String,
+    /// The field path, e.g. `triangles[2].v[1][0]`; empty for whole-file errors.
+    pub field: String,
+    /// What is wrong, with the offending value.
+    pub message: String,
+}
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.field.is_empty() {
+            write!(f, "{}: {}", self.source, self.message)
+        } else {
+            write!(f, "{}: {}: {}", self.source, self.field, self.message)
+        }
+    }
+}
+
+impl std::error::Error for SceneError {}

@@ -1,0 +1,394 @@
+//! Parsing scene files. The format:
+//!
+//! ```json
+//! {
+//!   "width": 64, "height": 48,
+//!   "preset": "d3d11",
+//!   "subpixel_bits": 8, "rounding": "nearest-even", "tie_rule": "top-left", "pixel_centre": 0.5,
+//!   "triangles": [
+//!     {"v": [[0, 0], ["1/3", 10.25], [40, "7e1"]], "colors": [[255,0,0],[0,255,0],[0,0,255]]}
+//!   ]
+//! }
+//! ```
+//!
+//! Only `width` and `height` are required. A coordinate is a JSON number read exactly as
+//! written (`0.1` is 1/10, never an f64) or a string with a decimal or a fraction. Unknown
+//! fields are errors (a typo must not silently change the convention). Every error names
+//! the file, the field path and the value.
+
+use num_rational::BigRational;
+use serde_json::{Map, Value};
+
+use super::{Overrides, Scene, SceneError, SceneTriangle};
+use crate::convention::{PixelCentre, Preset, Rounding, TieRule, MAX_CANVAS};
+use crate::geom::{Point, Triangle};
+use crate::interp::Rgb;
+use crate::num::{parse_rational, MAX_SUBPIXEL_BITS};
+
+/// The most triangles a scene may hold (ids must fit u32; memory stays bounded).
+pub const MAX_TRIANGLES: usize = 10_000_000;
+
+/// Parses raw bytes (they must be UTF-8).
+pub fn parse_scene_bytes(bytes: &[u8], source: &str) -> Result<Scene, SceneError> {
+    let text = std::str::from_utf8(bytes).map_err(|e| SceneError {
+        source: source.to_string(),
+        field: String::new(),
+        message: format!("not UTF-8 text ({e})"),
+    })?;
+    parse_scene(text, source)
+}
+
+/// Parses a scene file's text; `source` names the file in errors.
+///
+/// ```
+/// use rasterproof::scene::parse_scene;
+/// let s = parse_scene(r#"{"width": 4, "height": 4, "triangles": [{"v": [[0,0],[4,0],["1/3",4]]}]}"#, "a.json").unwrap();
+/// assert_eq!(s.triangles.len(), 1);
+/// let err = parse_scene(r#"{"width": 4, "height": 4, "triangles": [{"v": [[0,0],[4,"NaN"],[0,4]]}]}"#, "a.json").unwrap_err();
+/// assert_eq!(err.to_string(), "a.json: triangles[0].v[1][1]: \"NaN\" is not a finite number (expected a decimal like -12.5 or 1e3, or a fraction like 1/3)");
+/// ```
+pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
+    let p = Parser { source };
+    let value: Value = serde_json::from_str(text).map_err(|e| p.err("", format!("malformed JSON: {e}")))?;
+    let Value::Object(root) = &value else {
+        return Err(p.err("", format!("the top level must be an object, found {}", kind(&value))));
+    };
+    p.known_fields(
+        root,
+        "",
+        &[
+            "width",
+            "height",
+            "preset",
+            "subpixel_bits",
+            "rounding",
+            "tie_rule",
+            "pixel_centre",
+            "triangles",
+        ],
+    )?;
+    let width = p.canvas_side(root, "width")?;
+    let height = p.canvas_side(root, "height")?;
+    let preset = match root.get("preset") {
+        None => Preset::D3d11,
+        Some(v) => {
+            let name = p.string(v, "preset")?;
+            Preset::from_name(name).ok_or_else(|| {
+                p.err(
+                    "preset",
+                    format!("unknown preset {name:?} (expected one of d3d11, vulkan, gl, cts)"),
+                )
+            })?
+        }
+    };
+    let overrides = p.overrides(root)?;
+    let triangles = match root.get("triangles") {
+        None => Vec::new(),
+        Some(v) => p.triangles(v)?,
+    };
+    Ok(Scene {
+        width,
+        height,
+        preset,
+        overrides,
+        triangles,
+    })
+}
+
+struct Parser<'a> {
+    source: &'a str,
+}
+
+fn kind(v: &Value) -> &'static str {
+    match v {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
+}
+
+/// A value shown in an error, shortened so a huge value cannot flood the terminal.
+fn show(v: &Value) -> String {
+    let s = v.to_string();
+    if s.chars().count() > 60 {
+        format!("{}...", s.chars().take(60).collect::<String>())
+    } else {
+        s
+    }
+}
+
+impl Parser<'_> {
+    fn err(&self, field: &str, message: String) -> SceneError {
+        SceneError {
+            source: self.source.to_string(),
+            field: field.to_string(),
+            message,
+        }
+    }
+
+    fn known_fields(&self, obj: &Map<String, Value>, at: &str, known: &[&str]) -> Result<(), SceneError> {
+        for key in obj.keys() {
+            if !known.contains(&key.as_str()) {
+                let field = if at.is_empty() {
+                    key.clone()
+                } else {
+                    format!("{at}.{key}")
+                };
+                return Err(self.err(&field, format!("unknown field (expected one of: {})", known.join(", "))));
+            }
+        }
+        Ok(())
+    }
+
+    fn string<'v>(&self, v: &'v Value, field: &str) -> Result<&'v str, SceneError> {
+        v.as_str()
+            .ok_or_else(|| self.err(field, format!("expected a string, found {} {}", kind(v), show(v))))
+    }
+
+    /// A non-negative integer written as a JSON number without fraction or exponent.
+    fn integer(&self, v: &Value, field: &str) -> Result<u64, SceneError> {
+        v.as_u64()
+            .ok_or_else(|| self.err(field, format!("expected a non-negative integer, found {}", show(v))))
+    }
+
+    fn canvas_side(&self, root: &Map<String, Value>, field: &str) -> Result<u32, SceneError> {
+        let v = root
+            .get(field)
+            .ok_or_else(|| self.err(field, "missing (required)".to_string()))?;
+        let n = self.integer(v, field)?;
+        if n == 0 || n > u64::from(MAX_CANVAS) {
+            return Err(self.err(field, format!("{n} is outside 1..={MAX_CANVAS}")));
+        }
+        Ok(u32::try_from(n).expect("checked against MAX_CANVAS"))
+    }
+
+    fn overrides(&self, root: &Map<String, Value>) -> Result<Overrides, SceneError> {
+        let mut o = Overrides::default();
+        if let Some(v) = root.get("subpixel_bits") {
+            let n = self.integer(v, "subpixel_bits")?;
+            if !(1..=u64::from(MAX_SUBPIXEL_BITS)).contains(&n) {
+                return Err(self.err("subpixel_bits", format!("{n} is outside 1..={MAX_SUBPIXEL_BITS}")));
+            }
+            o.subpixel_bits = Some(u32::try_from(n).expect("checked range"));
+        }
+        if let Some(v) = root.get("rounding") {
+            let name = self.string(v, "rounding")?;
+            o.rounding = Some(Rounding::from_name(name).ok_or_else(|| {
+                self.err(
+                    "rounding",
+                    format!("unknown rounding {name:?} (expected nearest-even or half-away)"),
+                )
+            })?);
+        }
+        if let Some(v) = root.get("tie_rule") {
+            let name = self.string(v, "tie_rule")?;
+            o.tie_rule = Some(TieRule::from_name(name).ok_or_else(|| {
+                self.err(
+                    "tie_rule",
+                    format!("unknown tie rule {name:?} (expected top-left or bottom-left)"),
+                )
+            })?);
+        }
+        if let Some(v) = root.get("pixel_centre") {
+            let c = self.coordinate(v, "pixel_centre")?;
+            o.pixel_centre = Some(if c == BigRational::new(1.into(), 2.into()) {
+                PixelCentre::Half
+            } else if c == BigRational::from_integer(0.into()) {
+                PixelCentre::Corner
+            } else {
+                return Err(self.err("pixel_centre", format!("{} is not 0.5 or 0", show(v))));
+            });
+        }
+        Ok(o)
+    }
+
+    /// An exact number: a JSON number as written, or a string with a decimal or fraction.
+    fn coordinate(&self, v: &Value, field: &str) -> Result<BigRational, SceneError> {
+        let text = match v {
+            // With serde_json's arbitrary_precision, a number keeps the text it was written as.
+            Value::Number(n) => n.to_string(),
+            Value::String(s) => s.clone(),
+            _ => {
+                return Err(self.err(
+                    field,
+                    format!("expected a number or a numeric string, found {} {}", kind(v), show(v)),
+                ))
+            }
+        };
+        parse_rational(&text).map_err(|e| self.err(field, format!("{} {e}", show(v))))
+    }
+
+    fn array<'v>(&self, v: &'v Value, field: &str) -> Result<&'v Vec<Value>, SceneError> {
+        v.as_array()
+            .ok_or_else(|| self.err(field, format!("expected an array, found {} {}", kind(v), show(v))))
+    }
+
+    fn triangles(&self, v: &Value) -> Result<Vec<SceneTriangle>, SceneError> {
+        let list = self.array(v, "triangles")?;
+        if list.len() > MAX_TRIANGLES {
+            return Err(self.err(
+                "triangles",
+                format!("{} triangles, at most {MAX_TRIANGLES}", list.len()),
+            ));
+        }
+        list.iter()
+            .enumerate()
+            .map(|(k, t)| self.triangle(t, &format!("triangles[{k}]")))
+            .collect()
+    }
+
+    fn triangle(&self, v: &Value, at: &str) -> Result<SceneTriangle, SceneError> {
+        let Value::Object(obj) = v else {
+            return Err(self.err(
+                at,
+                format!("expected an object with \"v\", found {} {}", kind(v), show(v)),
+            ));
+        };
+        self.known_fields(obj, at, &["v", "colors"])?;
+        let vf = format!("{at}.v");
+        let verts = self.array(
+            obj.get("v").ok_or_else(|| self.err(&vf, "missing (required)".into()))?,
+            &vf,
+        )?;
+        if verts.len() != 3 {
+            return Err(self.err(
+                &vf,
+                format!("a triangle needs exactly 3 vertices, found {}", verts.len()),
+            ));
+        }
+        let mut points = Vec::with_capacity(3);
+        for (i, p) in verts.iter().enumerate() {
+            let pf = format!("{vf}[{i}]");
+            let xy = self.array(p, &pf)?;
+            if xy.len() != 2 {
+                return Err(self.err(&pf, format!("a vertex is [x, y], found {} values", xy.len())));
+            }
+            let x = self.coordinate(&xy[0], &format!("{pf}[0]"))?;
+            let y = self.coordinate(&xy[1], &format!("{pf}[1]"))?;
+            points.push(Point::new(x, y));
+        }
+        let [a, b, c]: [Point; 3] = points.try_into().expect("three vertices checked");
+        let colours = match obj.get("colors") {
+            None => None,
+            Some(cv) => Some(self.colours(cv, &format!("{at}.colors"))?),
+        };
+        Ok(SceneTriangle {
+            triangle: Triangle::new(a, b, c),
+            colours,
+        })
+    }
+
+    fn colours(&self, v: &Value, at: &str) -> Result<[Rgb; 3], SceneError> {
+        let list = self.array(v, at)?;
+        if list.len() != 3 {
+            return Err(self.err(at, format!("expected 3 colours (one per vertex), found {}", list.len())));
+        }
+        let mut out = [[0u8; 3]; 3];
+        for (i, c) in list.iter().enumerate() {
+            let cf = format!("{at}[{i}]");
+            let rgb = self.array(c, &cf)?;
+            if rgb.len() != 3 {
+                return Err(self.err(&cf, format!("a colour is [r, g, b], found {} values", rgb.len())));
+            }
+            for (ch, value) in rgb.iter().enumerate() {
+                let f = format!("{cf}[{ch}]");
+                out[i][ch] = value
+                    .as_u64()
+                    .and_then(|n| u8::try_from(n).ok())
+                    .ok_or_else(|| self.err(&f, format!("{} is not an integer in 0..=255", show(value))))?;
+            }
+        }
+        Ok(out)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn err(text: &str) -> String {
+        parse_scene(text, "s.json").unwrap_err().to_string()
+    }
+
+    const TRI: &str = r#"{"v": [[0,0],[4,0],[0,4]]}"#;
+
+    fn scene_with(tri: &str) -> String {
+        format!(r#"{{"width": 8, "height": 8, "triangles": [{tri}]}}"#)
+    }
+
+    #[test]
+    fn numbers_are_read_as_written() {
+        let s = parse_scene(
+            &scene_with(r#"{"v": [[0.1, 1e2], ["1/3", "-2.5"], [491.407, 3]]}"#),
+            "s",
+        )
+        .unwrap();
+        let v = &s.triangles[0].triangle.v;
+        assert_eq!(v[0].x, BigRational::new(1.into(), 10.into()));
+        assert_eq!(v[0].y, BigRational::from_integer(100.into()));
+        assert_eq!(v[1].x, BigRational::new(1.into(), 3.into()));
+        assert_eq!(v[2].x, BigRational::new(491_407.into(), 1000.into()));
+    }
+
+    #[test]
+    fn bad_inputs_name_field_and_value() {
+        assert!(err("{").starts_with("s.json: malformed JSON"));
+        assert!(err("[]").contains("top level must be an object"));
+        assert_eq!(err(r#"{"height": 3}"#), "s.json: width: missing (required)");
+        assert_eq!(
+            err(r#"{"width": 0, "height": 3}"#),
+            "s.json: width: 0 is outside 1..=16384"
+        );
+        assert_eq!(
+            err(r#"{"width": 16385, "height": 3}"#),
+            "s.json: width: 16385 is outside 1..=16384"
+        );
+        assert!(err(r#"{"width": "8", "height": 3}"#).contains("width: expected a non-negative integer, found \"8\""));
+        assert!(err(r#"{"width": 8, "height": 8, "preset": "dx9"}"#).contains("preset: unknown preset \"dx9\""));
+        assert!(err(&scene_with(r#"{"v": [[0,0],[4,0]]}"#))
+            .contains("triangles[0].v: a triangle needs exactly 3 vertices, found 2"));
+        assert!(err(&scene_with(r#"{"v": [[0,0],[4,"inf"],[0,4]]}"#))
+            .contains("triangles[0].v[1][1]: \"inf\" is not a finite number"));
+        assert!(err(&scene_with(r#"{"v": [[0,0],[4,"1/0"],[0,4]]}"#))
+            .contains("triangles[0].v[1][1]: \"1/0\" has a zero denominator"));
+        assert!(err(&scene_with(
+            r#"{"v": [[0,0],[4,0],[0,4]], "colors": [[0,0,0],[0,256,0],[0,0,0]]}"#
+        ))
+        .contains("triangles[0].colors[1][1]: 256 is not an integer in 0..=255"));
+        assert!(err(&scene_with(r#"{"v": [[0,0],[4,0],[0,4]], "colour": []}"#))
+            .contains("triangles[0].colour: unknown field"));
+        assert!(err(r#"{"width": 8, "height": 8, "tie_rule": "top-right"}"#).contains("tie_rule: unknown tie rule"));
+        assert!(
+            err(r#"{"width": 8, "height": 8, "subpixel_bits": 17}"#).contains("subpixel_bits: 17 is outside 1..=16")
+        );
+        assert!(
+            err(r#"{"width": 8, "height": 8, "pixel_centre": 0.25}"#).contains("pixel_centre: 0.25 is not 0.5 or 0")
+        );
+        assert!(err(&scene_with(r#"{"v": [[0,0],[4,0],[0,null]]}"#))
+            .contains("triangles[0].v[2][1]: expected a number or a numeric string, found null"));
+        assert!(err(&scene_with(r#"{"v": [[0,0],[4,0],[0,1e999]]}"#)).contains("exponent"));
+    }
+
+    #[test]
+    fn round_trip_through_to_json() {
+        let text = r#"{"width": 9, "height": 7, "preset": "gl", "rounding": "half-away", "pixel_centre": 0,
+            "triangles": [{"v": [["1/3",0.5],[4,0],[0,"-7/2"]], "colors": [[1,2,3],[4,5,6],[7,8,9]]}, TRI]}"#
+            .replace("TRI", TRI);
+        let s = parse_scene(&text, "s").unwrap();
+        assert_eq!(s.convention().tie_rule, TieRule::BottomLeft);
+        assert_eq!(s.convention().rounding, Rounding::HalfAwayFromZero);
+        let again = parse_scene(&s.to_json(), "again").unwrap();
+        assert_eq!(again, s);
+    }
+
+    #[test]
+    fn non_utf8_is_an_error() {
+        assert!(parse_scene_bytes(&[0xff, 0xfe], "b")
+            .unwrap_err()
+            .to_string()
+            .contains("not UTF-8"));
+    }
+}

@@ -1,0 +1,110 @@
+//! Float rasterizers with glam (Scratchapixel style, seed 003): bounding box, three float
+//! edge functions per sample. [`FloatRule::Naive`] is the seed's `w >= 0` test (samples on
+//! a shared edge go to both triangles); [`FloatRule::TieRule`] applies the convention's
+//! inclusive flags to the float values. Neither is exact: rounding in the products moves
+//! samples across edges, and the harness counts how often.
+
+use glam::{DVec2, Vec2};
+
+use crate::convention::Target;
+use crate::coverage::CoverageSink;
+use crate::edge::float::{edge_f32, edge_f64, is_inclusive};
+use crate::tri::PixelRange;
+
+/// How a float model decides a sample with `w == 0`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FloatRule {
+    /// `w >= 0` on all edges (seed 003 as written).
+    Naive,
+    /// `w > 0`, or `w == 0` on an edge the tie rule makes inclusive.
+    TieRule,
+}
+
+macro_rules! float_rasterizer {
+    ($name:ident, $vec:ty, $float:ty, $edge:ident, $doc:literal) => {
+        #[doc = $doc]
+        pub fn $name<S: CoverageSink + ?Sized>(
+            tri: &[$vec; 3],
+            id: u32,
+            target: &Target,
+            rule: FloatRule,
+            sink: &mut S,
+        ) {
+            let [v0, mut v1, mut v2] = *tri;
+            let area = $edge(v0, v1, v2);
+            if area == 0.0 || !area.is_finite() {
+                return;
+            }
+            if area < 0.0 {
+                std::mem::swap(&mut v1, &mut v2);
+            }
+            let conv = &target.convention;
+            let inclusive = |a: $vec, b: $vec| match rule {
+                FloatRule::Naive => true,
+                FloatRule::TieRule => is_inclusive(
+                    [f64::from(a.x), f64::from(a.y)],
+                    [f64::from(b.x), f64::from(b.y)],
+                    conv.tie_rule,
+                ),
+            };
+            let incl = [inclusive(v1, v2), inclusive(v2, v0), inclusive(v0, v1)];
+            let centre = conv.pixel_centre.offset_f64();
+            let min = v0.min(v1).min(v2);
+            let max = v0.max(v1).max(v2);
+            let lo = [
+                index_ceil(f64::from(min.x) - centre),
+                index_ceil(f64::from(min.y) - centre),
+            ];
+            let hi = [
+                index_floor(f64::from(max.x) - centre),
+                index_floor(f64::from(max.y) - centre),
+            ];
+            let Some(range) = PixelRange::clamped(lo, hi, target.width, target.height) else {
+                return;
+            };
+            let passes = |w: $float, inclusive: bool| w > 0.0 || (w == 0.0 && inclusive);
+            #[allow(clippy::cast_possible_truncation)] // canvas indices < 2^14 and 0.5: exact in f32
+            for j in range.y0..=range.y1 {
+                for i in range.x0..=range.x1 {
+                    let p = <$vec>::new(
+                        (f64::from(i) + centre) as $float,
+                        (f64::from(j) + centre) as $float,
+                    );
+                    let w0 = $edge(v1, v2, p);
+                    let w1 = $edge(v2, v0, p);
+                    let w2 = $edge(v0, v1, p);
+                    if passes(w0, incl[0]) && passes(w1, incl[1]) && passes(w2, incl[2]) {
+                        sink.cover(i, j, id);
+                    }
+                }
+            }
+        }
+    };
+}
+
+float_rasterizer!(
+    rasterize_f32,
+    Vec2,
+    f32,
+    edge_f32,
+    "Scratchapixel's rasterizer in f32. Vertices as given (not snapped)."
+);
+float_rasterizer!(
+    rasterize_f64,
+    DVec2,
+    f64,
+    edge_f64,
+    "Scratchapixel's rasterizer in f64. Vertices as given (not snapped)."
+);
+
+/// `ceil(v)` as a pixel index, saturating (any saturated value is off the canvas).
+#[allow(clippy::cast_possible_truncation)] // `as` saturates; out-of-range means off-canvas
+fn index_ceil(v: f64) -> i64 {
+    v.ceil().clamp(-1e18, 1e18) as i64
+}
+
+/// `floor(v)` as a pixel index, saturating.
+#[allow(clippy::cast_possible_truncation)]
+fn index_floor(v: f64) -> i64 {
+    v.floor().clamp(-1e18, 1e18) as i64
+}

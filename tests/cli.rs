@@ -1,0 +1,242 @@
+//! The command line: the JSON machine interface against the independent oracle, bad input
+//! (exit code 2, one clear line, no panic), and the check command.
+
+mod common;
+
+use assert_cmd::Command;
+use common::{parse_coverage_json, Conv, Rule};
+use num_rational::BigRational;
+use proptest::strategy::{Strategy, ValueTree};
+use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+use rasterproof::scene::Scene;
+use rasterproof::strategy::tie_heavy_triangle;
+
+fn bin() -> Command {
+    Command::cargo_bin("rasterproof").unwrap()
+}
+
+fn write(dir: &tempdir::Dir, name: &str, text: &str) -> std::path::PathBuf {
+    let p = dir.path().join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+mod tempdir {
+    /// A folder under the target dir, removed on drop.
+    pub struct Dir(std::path::PathBuf);
+    impl Dir {
+        pub fn new(tag: &str) -> Dir {
+            let p = std::env::temp_dir().join(format!("rasterproof-cli-{tag}-{}", std::process::id()));
+            std::fs::create_dir_all(&p).unwrap();
+            Dir(p)
+        }
+        pub fn path(&self) -> &std::path::Path {
+            &self.0
+        }
+    }
+    impl Drop for Dir {
+        fn drop(&mut self) {
+            let _ = std::fs::remove_dir_all(&self.0);
+        }
+    }
+}
+
+/// `render --format json` agrees with the independent oracle (tests/common) on seeded
+/// tie-heavy scenes, for d3d11 and gl, with exact-snapped and fixed alike.
+#[test]
+fn json_output_matches_the_independent_oracle() {
+    let dir = tempdir::Dir::new("json");
+    let mut runner = TestRunner::new_with_rng(Config::default(), TestRng::from_seed(RngAlgorithm::ChaCha, &[7; 32]));
+    let strategy = proptest::collection::vec(tie_heavy_triangle(10), 1..6);
+    for case in 0..12 {
+        let tris = strategy.new_tree(&mut runner).unwrap().current();
+        let scene = Scene::new(10, 10, tris.clone());
+        let path = write(&dir, &format!("s{case}.json"), &scene.to_json());
+        let raw: Vec<[[BigRational; 2]; 3]> = tris.iter().map(|t| t.v.clone().map(|p| [p.x, p.y])).collect();
+        for (preset, rule) in [("d3d11", Rule::TopLeft), ("gl", Rule::BottomLeft)] {
+            let expected = common::render(
+                &raw,
+                10,
+                10,
+                Conv {
+                    rule,
+                    bits: 8,
+                    half_away: false,
+                },
+            );
+            for model in ["exact-snapped", "fixed"] {
+                let out = bin()
+                    .args([
+                        "render",
+                        path.to_str().unwrap(),
+                        "--format",
+                        "json",
+                        "--preset",
+                        preset,
+                        "--model",
+                        model,
+                    ])
+                    .output()
+                    .unwrap();
+                assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+                let (w, h, got) = parse_coverage_json(std::str::from_utf8(&out.stdout).unwrap());
+                assert_eq!((w, h), (10, 10));
+                assert_eq!(got, expected, "case {case} {preset} {model}:\n{}", scene.to_json());
+            }
+        }
+    }
+}
+
+/// The exact byte format of the machine interface, on the hand-derived square of
+/// tests/golden.rs cut down to 2x2: T0 = (0,0)(2,0)(2,2) owns the diagonal.
+#[test]
+fn json_format_is_exact() {
+    let dir = tempdir::Dir::new("format");
+    let p = write(
+        &dir,
+        "sq.json",
+        r#"{"width": 2, "height": 3, "triangles": [{"v": [[0,0],[2,0],[2,2]]}, {"v": [[0,0],[2,2],[0,2]]}]}"#,
+    );
+    bin()
+        .args(["render", p.to_str().unwrap(), "--format", "json"])
+        .assert()
+        .success()
+        .stdout("{\"width\":2,\"height\":3,\"pixels\":[[0,0,[0]],[1,0,[0]],[0,1,[1]],[1,1,[0]]]}\n");
+}
+
+#[test]
+fn render_writes_pngs_and_names_the_preset() {
+    let dir = tempdir::Dir::new("png");
+    let cov = dir.path().join("cov.png");
+    let col = dir.path().join("col.png");
+    let out = bin()
+        .args([
+            "render",
+            "examples/scenes/seed003.json",
+            "--model",
+            "fixed",
+            "-o",
+            cov.to_str().unwrap(),
+        ])
+        .args(["--colors-out", col.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("model fixed, preset d3d11"), "{text}");
+    assert!(text.contains("58311 pixels covered"), "{text}");
+    let img = image::open(&col).unwrap().to_rgb8();
+    assert_eq!(img.dimensions(), (512, 512));
+    // (489, 410) is the last pixel of column 489 (see tests/golden.rs): near v0, mostly red.
+    let px = img.get_pixel(489, 410).0;
+    assert!(px[0] > 200 && px[1] < 30, "{px:?}");
+    assert_eq!(image::open(&cov).unwrap().to_rgb8().get_pixel(0, 0).0, [0, 0, 0]);
+}
+
+/// Each bad input: exit code 2, one line on stderr naming the field and value, no panic.
+#[test]
+fn bad_inputs_exit_2_with_a_clear_line() {
+    let dir = tempdir::Dir::new("bad");
+    let tri = |v: &str| format!(r#"{{"width": 8, "height": 8, "triangles": [{{"v": {v}}}]}}"#);
+    let far = 1i64 << 21;
+    let cases: Vec<(String, &str, &str)> = vec![
+        ("{\"width\": 8,".into(), "exact-snapped", "malformed JSON"),
+        (r#"{"height": 8}"#.into(), "exact-snapped", "width: missing"),
+        (r#"{"width": "8", "height": 8}"#.into(), "exact-snapped", "width: expected a non-negative integer, found \"8\""),
+        (tri(r#"[[0,0],[4,"NaN"],[0,4]]"#), "exact-snapped", "triangles[0].v[1][1]: \"NaN\" is not a finite number"),
+        (tri(r#"[[0,0],[4,"inf"],[0,4]]"#), "exact", "triangles[0].v[1][1]: \"inf\""),
+        (tri(r#"[[0,0],[4,"1/0"],[0,4]]"#), "exact", "\"1/0\" has a zero denominator"),
+        (r#"{"width": 0, "height": 8}"#.into(), "exact", "width: 0 is outside 1..=16384"),
+        (r#"{"width": 8, "height": 16385}"#.into(), "exact", "height: 16385 is outside 1..=16384"),
+        (tri(r#"[[0,0],[4,0],[0,4],[1,1]]"#), "exact", "triangles[0].v: a triangle needs exactly 3 vertices, found 4"),
+        (
+            r#"{"width": 8, "height": 8, "triangles": [{"v": [[0,0],[4,0],[0,4]], "colors": [[0,0,0],[300,0,0],[0,0,0]]}]}"#.into(),
+            "exact",
+            "triangles[0].colors[1][0]: 300 is not an integer in 0..=255",
+        ),
+        (tri(&format!("[[0,0],[4,0],[{},4]]", far + 1)), "fixed", "triangles[0].v[2].x: 2097153 px"),
+        (r#"{"width": 8, "height": 8, "preset": "dx9"}"#.into(), "exact", "preset: unknown preset \"dx9\""),
+        (tri("[[0,0],[4,0],[1e39,4]]"), "float32", "triangles[0]: a coordinate does not fit the float32 model's float type"),
+    ];
+    for (k, (text, model, needle)) in cases.iter().enumerate() {
+        let p = write(&dir, &format!("bad{k}.json"), text);
+        let out = bin()
+            .args(["render", p.to_str().unwrap(), "--model", model])
+            .output()
+            .unwrap();
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(out.status.code(), Some(2), "case {k}: {err}");
+        assert!(err.contains(needle), "case {k}: {err:?} lacks {needle:?}");
+        assert!(
+            err.contains(&format!("bad{k}.json")),
+            "case {k}: the file is not named: {err}"
+        );
+        assert_eq!(err.lines().count(), 1, "case {k}: {err}");
+        assert!(!err.contains("panicked"));
+    }
+    // unknown model and preset on the command line
+    let ok = write(&dir, "ok.json", &tri("[[0,0],[4,0],[0,4]]"));
+    for (args, needle) in [
+        (vec!["--model", "float16"], "--model: unknown model \"float16\""),
+        (vec!["--preset", "metal"], "--preset: unknown preset \"metal\""),
+    ] {
+        let out = bin()
+            .args(["render", ok.to_str().unwrap()])
+            .args(&args)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2));
+        assert!(String::from_utf8(out.stderr).unwrap().contains(needle));
+    }
+    // a missing file
+    let out = bin().args(["render", "no/such/scene.json"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8(out.stderr)
+        .unwrap()
+        .contains("no/such/scene.json: cannot read"));
+}
+
+/// `check` on a few cases: the exact and fixed models hold everything (exit 0), the table
+/// lists every invariant, and failing float cases are written as scene files that parse.
+#[test]
+fn check_runs_the_suite() {
+    let dir = tempdir::Dir::new("check");
+    let out = bin()
+        .args([
+            "check",
+            "--cases",
+            "12",
+            "--seed",
+            "3",
+            "--quiet",
+            "--out",
+            dir.path().to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(out.status.success(), "{text}\n{}", String::from_utf8_lossy(&out.stderr));
+    for needle in [
+        "watertight",
+        "agreement (mesh)",
+        "agreement (triangle)",
+        "rotation/winding",
+        "translation",
+        "barycentric sum",
+        "integer edge sum",
+    ] {
+        assert!(text.contains(needle), "{needle} missing:\n{text}");
+    }
+    assert!(text.contains("ok: the exact and fixed models hold every invariant"));
+    for entry in std::fs::read_dir(dir.path()).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "json") {
+            let text = std::fs::read_to_string(&path).unwrap();
+            assert!(
+                rasterproof::scene::parse_scene(&text, "case").is_ok(),
+                "{}",
+                path.display()
+            );
+        }
+    }
+}
