@@ -10,7 +10,14 @@ use num_traits::{One, Signed, Zero};
 
 /// The longest number text accepted, in characters. Longer texts are refused so that a
 /// hostile scene cannot make the exact model allocate without bound.
-pub const MAX_NUMBER_LEN: usize = 256;
+pub const MAX_NUMBER_LEN: usize = 4096;
+
+/// The most bits the numerator and the denominator of an accepted number may have, once
+/// reduced (4096 bits is about 1233 decimal digits: `1e400` fits, a 2000-digit fraction
+/// does not). This bounds the value, not just its text, so that every accepted number's
+/// exact text (`n/d`, at most 2 * 1234 + 2 characters) is itself accepted: scene files
+/// written by the crate always parse again.
+pub const MAX_BITS: u64 = 4096;
 
 /// The largest decimal exponent magnitude accepted (`1e300` is fine, `1e1000` is not),
 /// for the same reason as [`MAX_NUMBER_LEN`].
@@ -57,6 +64,8 @@ pub enum NumberError {
     ZeroDenominator,
     /// A decimal exponent beyond [`MAX_EXPONENT`].
     ExponentOutOfRange,
+    /// A numerator or denominator beyond [`MAX_BITS`] bits.
+    TooPrecise,
 }
 
 impl fmt::Display for NumberError {
@@ -73,6 +82,9 @@ impl fmt::Display for NumberError {
             NumberError::ZeroDenominator => write!(f, "has a zero denominator"),
             NumberError::ExponentOutOfRange => {
                 write!(f, "has an exponent beyond +-{MAX_EXPONENT}")
+            }
+            NumberError::TooPrecise => {
+                write!(f, "needs more than {MAX_BITS} bits of numerator or denominator")
             }
         }
     }
@@ -100,17 +112,21 @@ pub fn parse_rational(text: &str) -> Result<BigRational, NumberError> {
     if text.len() > MAX_NUMBER_LEN {
         return Err(NumberError::TooLong(text.len()));
     }
-    match text.split_once('/') {
+    let value = match text.split_once('/') {
         Some((num, den)) => {
             let num = parse_integer(num, true)?;
             let den = parse_integer(den, false)?;
             if den.is_zero() {
                 return Err(NumberError::ZeroDenominator);
             }
-            Ok(BigRational::new(num, den))
+            BigRational::new(num, den)
         }
-        None => parse_decimal(text),
+        None => parse_decimal(text)?,
+    };
+    if value.numer().bits() > MAX_BITS || value.denom().bits() > MAX_BITS {
+        return Err(NumberError::TooPrecise);
     }
+    Ok(value)
 }
 
 /// An optionally signed run of ASCII digits.
@@ -269,9 +285,32 @@ mod tests {
             Err(NumberError::ExponentOutOfRange)
         );
         assert!(matches!(
-            parse_rational(&"1".repeat(300)),
-            Err(NumberError::TooLong(300))
+            parse_rational(&"1".repeat(5000)),
+            Err(NumberError::TooLong(5000))
         ));
+        assert_eq!(parse_rational(&"7".repeat(1300)), Err(NumberError::TooPrecise));
+        assert_eq!(
+            parse_rational(&format!("0.{}", "3".repeat(1300))),
+            Err(NumberError::TooPrecise)
+        );
+    }
+
+    /// Whatever is accepted writes back as `n/d` text that is accepted again (the fuzzer's
+    /// scene_parse round trip found the opposite with a 256-character limit on the text).
+    #[test]
+    fn accepted_values_round_trip_as_fractions() {
+        let worst = [
+            "1e400".to_string(),
+            "-1e-400".to_string(),
+            format!("0.{}", "3".repeat(1200)),
+            format!("{}e-10", "9".repeat(1230)),
+            format!("1/{}", "7".repeat(1233)),
+        ];
+        for text in worst {
+            let v = parse_rational(&text).unwrap_or_else(|e| panic!("{text}: {e}"));
+            let back = format!("{}/{}", v.numer(), v.denom());
+            assert_eq!(parse_rational(&back).as_ref(), Ok(&v), "{text}");
+        }
     }
 
     #[test]

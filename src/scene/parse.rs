@@ -384,6 +384,17 @@ mod tests {
         assert_eq!(again, s);
     }
 
+    /// Found by the scene_parse fuzz target: `1e300` parsed, but its exact text (301 digits)
+    /// was refused when the written scene was read back.
+    #[test]
+    fn fuzz_case_01_huge_exponent_round_trip() {
+        for coord in ["1e300", "1e-300", "\"0.33333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333333\""] {
+            let text = scene_with(&format!(r#"{{"v": [[0, 0], [1, 0], [0, {coord}]]}}"#));
+            let s = parse_scene(&text, "s").unwrap();
+            assert_eq!(parse_scene(&s.to_json(), "again").unwrap(), s, "{coord}");
+        }
+    }
+
     #[test]
     fn non_utf8_is_an_error() {
         assert!(parse_scene_bytes(&[0xff, 0xfe], "b")
