@@ -9,7 +9,7 @@ use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use rasterproof::check::{
     check_agreement, check_barycentric_exact, check_barycentric_fixed, check_rotation_and_winding, check_translation,
-    check_watertight, Violation,
+    check_watertight, float_sum_error_ulps, Violation,
 };
 use rasterproof::convention::{Preset, Target, MAX_CANVAS};
 use rasterproof::geom::{Point, Triangle};
@@ -91,7 +91,9 @@ fn target(side: u32, preset: Preset) -> Target {
     Target::new(side, side, preset.convention()).expect("suite canvases are valid")
 }
 
-fn run_case(c: &Case) -> Vec<Outcome> {
+/// Runs every checker on one case; also returns the f32 barycentric sum errors (ulps of 1)
+/// measured at the case's samples.
+fn run_case(c: &Case) -> (Vec<Outcome>, Vec<f64>) {
     let mut out = Vec::new();
     let tri_target = target(CANVAS, c.preset);
     let tri = std::slice::from_ref(&c.triangle);
@@ -112,6 +114,13 @@ fn run_case(c: &Case) -> Vec<Outcome> {
         check_barycentric_exact(&c.triangle, &p)
     });
     push("barycentric sum", Model::Exact, exact_sum, tri, CANVAS);
+    let ulps: Vec<f64> = samples
+        .iter()
+        .filter_map(|&(x, y)| {
+            let p = Point::from_fractions(2 * i64::from(x) + 1, 2, 2 * i64::from(y) + 1, 2);
+            float_sum_error_ulps(&c.triangle, &p)
+        })
+        .collect();
     if let Ok(f) = c.triangle.snapped(&tri_target.convention).to_fixed() {
         let sum = samples
             .iter()
@@ -208,7 +217,7 @@ fn run_case(c: &Case) -> Vec<Outcome> {
             CANVAS,
         );
     }
-    out
+    (out, ulps)
 }
 
 /// Models whose violations fail the run (the float models' violations are the measured trade).
@@ -231,9 +240,12 @@ pub fn run(cases: u64, seed: u64, out: Option<&Path>, quiet: bool) -> Result<Exi
     let mut tally: BTreeMap<(&'static str, &'static str), (u64, u64)> = BTreeMap::new();
     let mut fatal = 0u64;
     let mut families: BTreeMap<(&'static str, &'static str), u64> = BTreeMap::new();
+    let mut ulps: Vec<f64> = Vec::new();
     for k in 0..cases {
         let case = generate(seed, k)?;
-        for o in run_case(&case) {
+        let (outcomes, errors) = run_case(&case);
+        ulps.extend(errors);
+        for o in outcomes {
             let entry = tally.entry((o.invariant, o.model.name())).or_default();
             entry.0 += 1;
             if let Err(v) = &o.result {
@@ -266,6 +278,17 @@ pub fn run(cases: u64, seed: u64, out: Option<&Path>, quiet: bool) -> Result<Exi
         for ((family, model), n) in &families {
             println!("  {family:<22} {model:<14} {n:>5}");
         }
+    }
+    if !ulps.is_empty() {
+        ulps.sort_by(f64::total_cmp);
+        let mean = ulps.iter().sum::<f64>() / ulps.len() as f64;
+        println!(
+            "float32 barycentric sum error, ulps of 1 ({} samples): median {:.1}, mean {:.1}, max {:.1}",
+            ulps.len(),
+            ulps[ulps.len() / 2],
+            mean,
+            ulps[ulps.len() - 1]
+        );
     }
     if fatal > 0 {
         println!("FAILED: {fatal} violations by the exact or fixed model");
