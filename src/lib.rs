@@ -50,6 +50,7 @@ pub mod coverage;
 pub mod edge;
 pub mod geom;
 pub mod interp;
+pub mod line;
 pub mod model;
 pub mod num;
 pub mod scene;

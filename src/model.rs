@@ -12,7 +12,11 @@ use crate::convention::{Convention, Target};
 use crate::coverage::{primitive_colour, Coverage, CoverageSink};
 use crate::geom::{FixedTriangle, Point, Triangle};
 use crate::interp::{barycentric_fixed, gouraud_exact, gouraud_f32, gouraud_f64, to_channel, Rgb};
+use crate::line::diamond::FixedSegment;
+use crate::line::{self, BresenhamTie, Line, LineRule};
+use crate::num::exact::dyadic;
 use crate::num::EnvelopeError;
+use crate::num::SubPixel;
 use crate::tri::float::FloatRule;
 use crate::tri::{exact, fixed, float};
 
@@ -60,9 +64,15 @@ impl Model {
         }
     }
 
-    /// Parses a name written by [`Model::name`].
+    /// Parses a name written by [`Model::name`], or a line model's alias: `bresenham`
+    /// (= `fixed`), `dda32` (= `float32`), `dda64` (= `float64`).
     pub fn from_name(name: &str) -> Option<Model> {
-        Model::ALL.into_iter().find(|m| m.name() == name)
+        match name {
+            "bresenham" => Some(Model::Fixed),
+            "dda32" => Some(Model::Float32),
+            "dda64" => Some(Model::Float64),
+            _ => Model::ALL.into_iter().find(|m| m.name() == name),
+        }
     }
 
     /// The coordinate range over which the model is exact, in words.
@@ -103,6 +113,29 @@ pub enum ModelError {
         /// The model.
         model: Model,
     },
+    /// A diamond-exit line endpoint outside the integer envelope.
+    LineEnvelope {
+        /// Line index (among the lines).
+        line: usize,
+        /// `"from"` or `"to"`.
+        end: &'static str,
+        /// `'x'` or `'y'`.
+        axis: char,
+        /// The value and the limit.
+        error: EnvelopeError,
+    },
+    /// A Bresenham line whose endpoints are not integers within ±2^24.
+    LineEndpoints {
+        /// Line index (among the lines).
+        line: usize,
+    },
+    /// A float model asked for a diamond-exit line (it has only the DDA).
+    NoFloatDiamond {
+        /// Line index (among the lines).
+        line: usize,
+        /// The model.
+        model: Model,
+    },
 }
 
 impl fmt::Display for ModelError {
@@ -117,6 +150,20 @@ impl fmt::Display for ModelError {
             ModelError::FloatRange { triangle, model } => write!(
                 f,
                 "triangles[{triangle}]: a coordinate does not fit the {model} model's float type"
+            ),
+            ModelError::LineEnvelope {
+                line,
+                end,
+                axis,
+                error,
+            } => write!(f, "lines[{line}].{end}.{axis}: {error}"),
+            ModelError::LineEndpoints { line } => write!(
+                f,
+                "lines[{line}]: a Bresenham line needs integer pixel endpoints within +-2^24"
+            ),
+            ModelError::NoFloatDiamond { line, model } => write!(
+                f,
+                "lines[{line}]: the {model} model draws lines with the DDA only; use exact, exact-snapped or fixed for \"rule\": \"diamond\""
             ),
         }
     }
@@ -282,5 +329,109 @@ pub fn render(model: Model, triangles: &[Triangle], target: &Target) -> Result<C
     let prepared = prepare(model, triangles, &target.convention)?;
     let mut coverage = Coverage::new(target.width, target.height);
     prepared.rasterize_into(target, &mut coverage);
+    Ok(coverage)
+}
+
+/// A line converted for one model.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum PreparedLine {
+    /// Bresenham, drawn by the exact ideal-line reference.
+    IdealBresenham([i64; 2], [i64; 2], BresenhamTie),
+    /// Bresenham, integer.
+    Bresenham([i64; 2], [i64; 2], BresenhamTie),
+    /// The f32 DDA.
+    Dda32([i64; 2], [i64; 2]),
+    /// The f64 DDA.
+    Dda64([i64; 2], [i64; 2]),
+    /// Diamond-exit, the plain exact reading (endpoints as written or snapped).
+    DiamondExact(Point, Point),
+    /// Diamond-exit, integer.
+    DiamondFixed(FixedSegment),
+}
+
+/// Converts `lines` for `model`; the first line it cannot take is the error.
+pub fn prepare_lines(model: Model, lines: &[Line], conv: &Convention) -> Result<Vec<PreparedLine>, ModelError> {
+    lines
+        .iter()
+        .enumerate()
+        .map(|(k, l)| match l.rule {
+            LineRule::Bresenham(tie) => {
+                let (a, b) = l.pixel_endpoints().ok_or(ModelError::LineEndpoints { line: k })?;
+                Ok(match model {
+                    Model::Exact | Model::ExactSnapped => PreparedLine::IdealBresenham(a, b, tie),
+                    Model::Fixed => PreparedLine::Bresenham(a, b, tie),
+                    Model::Float32 | Model::Float32Naive => PreparedLine::Dda32(a, b),
+                    Model::Float64 | Model::Float64Naive => PreparedLine::Dda64(a, b),
+                })
+            }
+            LineRule::Diamond => {
+                let snap = |p: &Point| {
+                    let s = |v| crate::num::fixed::snap(v, conv.subpixel_bits, conv.rounding);
+                    [s(&p.x), s(&p.y)]
+                };
+                match model {
+                    Model::Exact => Ok(PreparedLine::DiamondExact(l.from.clone(), l.to.clone())),
+                    Model::ExactSnapped => {
+                        let back = |[x, y]: [num_bigint::BigInt; 2]| {
+                            Point::new(dyadic(&x, conv.subpixel_bits), dyadic(&y, conv.subpixel_bits))
+                        };
+                        Ok(PreparedLine::DiamondExact(back(snap(&l.from)), back(snap(&l.to))))
+                    }
+                    Model::Fixed => {
+                        let fixed = |p: &Point, end: &'static str| -> Result<[SubPixel; 2], ModelError> {
+                            let [x, y] = snap(p);
+                            let f = |v: &num_bigint::BigInt, axis| {
+                                SubPixel::try_from_bigint(v, conv.subpixel_bits).map_err(|error| {
+                                    ModelError::LineEnvelope {
+                                        line: k,
+                                        end,
+                                        axis,
+                                        error,
+                                    }
+                                })
+                            };
+                            Ok([f(&x, 'x')?, f(&y, 'y')?])
+                        };
+                        Ok(PreparedLine::DiamondFixed(FixedSegment {
+                            a: fixed(&l.from, "from")?,
+                            b: fixed(&l.to, "to")?,
+                            bits: conv.subpixel_bits,
+                        }))
+                    }
+                    _ => Err(ModelError::NoFloatDiamond { line: k, model }),
+                }
+            }
+        })
+        .collect()
+}
+
+impl PreparedLine {
+    /// Draws the line with id `id`.
+    pub fn draw<S: CoverageSink + ?Sized>(&self, id: u32, target: &Target, sink: &mut S) {
+        match self {
+            PreparedLine::IdealBresenham(a, b, tie) => line::exact::draw_bresenham(*a, *b, *tie, id, target, sink),
+            PreparedLine::Bresenham(a, b, tie) => line::bresenham::draw(*a, *b, *tie, id, target, sink),
+            PreparedLine::Dda32(a, b) => line::dda::draw(&line::dda::pixels_f32(*a, *b), id, target, sink),
+            PreparedLine::Dda64(a, b) => line::dda::draw(&line::dda::pixels_f64(*a, *b), id, target, sink),
+            PreparedLine::DiamondExact(a, b) => line::exact::draw_diamond(a, b, id, target, sink),
+            PreparedLine::DiamondFixed(seg) => line::diamond::draw(seg, id, target, sink),
+        }
+    }
+}
+
+/// Renders triangles (ids `0..`) then lines (ids after the triangles) with `model`.
+pub fn render_primitives(
+    model: Model,
+    triangles: &[Triangle],
+    lines: &[Line],
+    target: &Target,
+) -> Result<Coverage, ModelError> {
+    let prepared = prepare(model, triangles, &target.convention)?;
+    let lines = prepare_lines(model, lines, &target.convention)?;
+    let mut coverage = Coverage::new(target.width, target.height);
+    prepared.rasterize_into(target, &mut coverage);
+    for (k, l) in lines.iter().enumerate() {
+        l.draw(id_of(triangles.len() + k), target, &mut coverage);
+    }
     Ok(coverage)
 }

@@ -5,7 +5,7 @@ use std::process::ExitCode;
 
 use rasterproof::convention::Preset;
 use rasterproof::coverage::Coverage;
-use rasterproof::model::{prepare, Model};
+use rasterproof::model::{prepare, prepare_lines, Model};
 use rasterproof::scene::parse_scene_bytes;
 
 /// What `render` was asked to do.
@@ -59,10 +59,15 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let target = scene
         .target()
         .ok_or_else(|| format!("{name}: invalid canvas or convention"))?;
-    let prepared =
-        prepare(model, &scene.triangles(), &target.convention).map_err(|e| format!("{name}: {e} (model {model})"))?;
+    let fail = |e: rasterproof::model::ModelError| format!("{name}: {e} (model {model})");
+    let prepared = prepare(model, &scene.triangles(), &target.convention).map_err(fail)?;
+    let lines = prepare_lines(model, &scene.lines, &target.convention).map_err(fail)?;
     let mut coverage = Coverage::new(target.width, target.height);
     prepared.rasterize_into(&target, &mut coverage);
+    for (k, line) in lines.iter().enumerate() {
+        let id = u32::try_from(scene.triangles.len() + k).map_err(|_| format!("{name}: too many primitives"))?;
+        line.draw(id, &target, &mut coverage);
+    }
 
     if let Some(path) = &o.out {
         coverage

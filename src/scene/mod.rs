@@ -11,6 +11,7 @@ use num_rational::BigRational;
 use crate::convention::{Convention, PixelCentre, Preset, Rounding, Target, TieRule};
 use crate::geom::Triangle;
 use crate::interp::Rgb;
+use crate::line::{Line, LineRule};
 
 pub use parse::{parse_scene, parse_scene_bytes};
 
@@ -63,6 +64,8 @@ pub struct Scene {
     pub overrides: Overrides,
     /// `triangles`, ids 0.. in file order.
     pub triangles: Vec<SceneTriangle>,
+    /// `lines`, ids after the triangles, in file order.
+    pub lines: Vec<Line>,
 }
 
 impl Scene {
@@ -80,6 +83,7 @@ impl Scene {
                     colours: None,
                 })
                 .collect(),
+            lines: Vec::new(),
         }
     }
 
@@ -146,7 +150,21 @@ impl Scene {
             }
             s.push('}');
         }
-        s.push_str("\n  ]\n}\n");
+        s.push_str("\n  ]");
+        if !self.lines.is_empty() {
+            s.push_str(",\n  \"lines\": [");
+            for (k, l) in self.lines.iter().enumerate() {
+                s.push_str(if k == 0 { "\n    " } else { ",\n    " });
+                let pt = |p: &crate::geom::Point| format!("[\"{}\", \"{}\"]", exact_text(&p.x), exact_text(&p.y));
+                let rule = match l.rule {
+                    LineRule::Bresenham(tie) => format!("\"rule\": \"bresenham\", \"tie\": \"{}\"", tie.name()),
+                    LineRule::Diamond => "\"rule\": \"diamond\"".to_string(),
+                };
+                let _ = write!(s, "{{\"from\": {}, \"to\": {}, {rule}}}", pt(&l.from), pt(&l.to));
+            }
+            s.push_str("\n  ]");
+        }
+        s.push_str("\n}\n");
         s
     }
 }

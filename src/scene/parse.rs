@@ -7,22 +7,30 @@
 //!   "subpixel_bits": 8, "rounding": "nearest-even", "tie_rule": "top-left", "pixel_centre": 0.5,
 //!   "triangles": [
 //!     {"v": [[0, 0], ["1/3", 10.25], [40, "7e1"]], "colors": [[255,0,0],[0,255,0],[0,0,255]]}
+//!   ],
+//!   "lines": [
+//!     {"from": [5, 8], "to": [9, 11], "rule": "bresenham", "tie": "stay"},
+//!     {"from": ["0.5", 3], "to": [17.25, "9/4"], "rule": "diamond"}
 //!   ]
 //! }
 //! ```
 //!
-//! Only `width` and `height` are required. A coordinate is a JSON number read exactly as
+//! Only `width` and `height` are required. Lines: `rule` is `bresenham` (default; integer
+//! pixel endpoints within ±2^24, `tie` `stay` (seed 001, default) or `step` (seed 002)) or
+//! `diamond` (any endpoints). A coordinate is a JSON number read exactly as
 //! written (`0.1` is 1/10, never an f64) or a string with a decimal or a fraction. Unknown
 //! fields are errors (a typo must not silently change the convention). Every error names
 //! the file, the field path and the value.
 
 use num_rational::BigRational;
+use num_traits::Signed;
 use serde_json::{Map, Value};
 
 use super::{Overrides, Scene, SceneError, SceneTriangle};
 use crate::convention::{PixelCentre, Preset, Rounding, TieRule, MAX_CANVAS};
 use crate::geom::{Point, Triangle};
 use crate::interp::Rgb;
+use crate::line::{BresenhamTie, Line, LineRule, MAX_BRESENHAM_COORD};
 use crate::num::{parse_rational, MAX_SUBPIXEL_BITS};
 
 /// The most triangles a scene may hold (ids must fit u32; memory stays bounded).
@@ -65,6 +73,7 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
             "tie_rule",
             "pixel_centre",
             "triangles",
+            "lines",
         ],
     )?;
     let width = p.canvas_side(root, "width")?;
@@ -86,12 +95,20 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
         None => Vec::new(),
         Some(v) => p.triangles(v)?,
     };
+    let lines = match root.get("lines") {
+        None => Vec::new(),
+        Some(v) => p.lines(v)?,
+    };
+    if triangles.len() + lines.len() > MAX_TRIANGLES {
+        return Err(p.err("", format!("more than {MAX_TRIANGLES} primitives")));
+    }
     Ok(Scene {
         width,
         height,
         preset,
         overrides,
         triangles,
+        lines,
     })
 }
 
@@ -279,6 +296,102 @@ impl Parser<'_> {
             triangle: Triangle::new(a, b, c),
             colours,
         })
+    }
+
+    fn lines(&self, v: &Value) -> Result<Vec<Line>, SceneError> {
+        let list = self.array(v, "lines")?;
+        if list.len() > MAX_TRIANGLES {
+            return Err(self.err("lines", format!("{} lines, at most {MAX_TRIANGLES}", list.len())));
+        }
+        list.iter()
+            .enumerate()
+            .map(|(k, l)| self.line(l, &format!("lines[{k}]")))
+            .collect()
+    }
+
+    fn point(&self, v: Option<&Value>, at: &str) -> Result<Point, SceneError> {
+        let v = v.ok_or_else(|| self.err(at, "missing (required)".into()))?;
+        let xy = self.array(v, at)?;
+        if xy.len() != 2 {
+            return Err(self.err(at, format!("a point is [x, y], found {} values", xy.len())));
+        }
+        Ok(Point::new(
+            self.coordinate(&xy[0], &format!("{at}[0]"))?,
+            self.coordinate(&xy[1], &format!("{at}[1]"))?,
+        ))
+    }
+
+    fn line(&self, v: &Value, at: &str) -> Result<Line, SceneError> {
+        let Value::Object(obj) = v else {
+            return Err(self.err(
+                at,
+                format!(
+                    "expected an object with \"from\" and \"to\", found {} {}",
+                    kind(v),
+                    show(v)
+                ),
+            ));
+        };
+        self.known_fields(obj, at, &["from", "to", "rule", "tie"])?;
+        let from = self.point(obj.get("from"), &format!("{at}.from"))?;
+        let to = self.point(obj.get("to"), &format!("{at}.to"))?;
+        let rule_name = match obj.get("rule") {
+            None => "bresenham",
+            Some(r) => self.string(r, &format!("{at}.rule"))?,
+        };
+        let tie = match obj.get("tie") {
+            None => BresenhamTie::Stay,
+            Some(t) => {
+                let name = self.string(t, &format!("{at}.tie"))?;
+                BresenhamTie::from_name(name).ok_or_else(|| {
+                    self.err(
+                        &format!("{at}.tie"),
+                        format!("unknown tie {name:?} (expected stay or step)"),
+                    )
+                })?
+            }
+        };
+        let rule = match rule_name {
+            "bresenham" => LineRule::Bresenham(tie),
+            "diamond" => {
+                if obj.contains_key("tie") {
+                    return Err(self.err(
+                        &format!("{at}.tie"),
+                        "only Bresenham lines have a tie convention".into(),
+                    ));
+                }
+                LineRule::Diamond
+            }
+            other => {
+                return Err(self.err(
+                    &format!("{at}.rule"),
+                    format!("unknown rule {other:?} (expected bresenham or diamond)"),
+                ))
+            }
+        };
+        if let LineRule::Bresenham(_) = rule {
+            for (end, p) in [("from", &from), ("to", &to)] {
+                for (axis, c) in [(0, &p.x), (1, &p.y)] {
+                    let field = format!("{at}.{end}[{axis}]");
+                    if !c.is_integer() {
+                        return Err(self.err(&field, format!(
+                            "{} is not an integer: a Bresenham line joins pixel addresses (use \"rule\": \"diamond\" for fractional endpoints)",
+                            crate::scene::exact_text(c)
+                        )));
+                    }
+                    if c.abs() > BigRational::from_integer(MAX_BRESENHAM_COORD.into()) {
+                        return Err(self.err(
+                            &field,
+                            format!(
+                                "{} is outside +-2^24, the Bresenham envelope (it walks every step)",
+                                crate::scene::exact_text(c)
+                            ),
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(Line { from, to, rule })
     }
 
     fn colours(&self, v: &Value, at: &str) -> Result<[Rgb; 3], SceneError> {
