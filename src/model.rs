@@ -344,7 +344,7 @@ pub enum PreparedLine {
     /// The f64 DDA.
     Dda64([i64; 2], [i64; 2]),
     /// Diamond-exit, the plain exact reading (endpoints as written or snapped).
-    DiamondExact(Point, Point),
+    DiamondExact(Box<(Point, Point)>),
     /// Diamond-exit, integer.
     DiamondFixed(FixedSegment),
 }
@@ -370,12 +370,15 @@ pub fn prepare_lines(model: Model, lines: &[Line], conv: &Convention) -> Result<
                     [s(&p.x), s(&p.y)]
                 };
                 match model {
-                    Model::Exact => Ok(PreparedLine::DiamondExact(l.from.clone(), l.to.clone())),
+                    Model::Exact => Ok(PreparedLine::DiamondExact(Box::new((l.from.clone(), l.to.clone())))),
                     Model::ExactSnapped => {
                         let back = |[x, y]: [num_bigint::BigInt; 2]| {
                             Point::new(dyadic(&x, conv.subpixel_bits), dyadic(&y, conv.subpixel_bits))
                         };
-                        Ok(PreparedLine::DiamondExact(back(snap(&l.from)), back(snap(&l.to))))
+                        Ok(PreparedLine::DiamondExact(Box::new((
+                            back(snap(&l.from)),
+                            back(snap(&l.to)),
+                        ))))
                     }
                     Model::Fixed => {
                         let fixed = |p: &Point, end: &'static str| -> Result<[SubPixel; 2], ModelError> {
@@ -413,7 +416,7 @@ impl PreparedLine {
             PreparedLine::Bresenham(a, b, tie) => line::bresenham::draw(*a, *b, *tie, id, target, sink),
             PreparedLine::Dda32(a, b) => line::dda::draw(&line::dda::pixels_f32(*a, *b), id, target, sink),
             PreparedLine::Dda64(a, b) => line::dda::draw(&line::dda::pixels_f64(*a, *b), id, target, sink),
-            PreparedLine::DiamondExact(a, b) => line::exact::draw_diamond(a, b, id, target, sink),
+            PreparedLine::DiamondExact(ends) => line::exact::draw_diamond(&ends.0, &ends.1, id, target, sink),
             PreparedLine::DiamondFixed(seg) => line::diamond::draw(seg, id, target, sink),
         }
     }
