@@ -6,6 +6,7 @@ mod agreement;
 mod barycentric;
 mod explain;
 mod invariance;
+mod line;
 mod watertight;
 
 use std::fmt;
@@ -14,6 +15,10 @@ pub use agreement::{check_agreement, diff, PixelDiff};
 pub use barycentric::{check_barycentric_exact, check_barycentric_fixed, float_sum_error_ulps};
 pub use explain::explain_sample;
 pub use invariance::{check_rotation_and_winding, check_translation};
+pub use line::{
+    check_diamond_agreement, check_line_pixels, check_line_reference, check_line_symmetry, line_departures,
+    SymmetryReport,
+};
 pub use watertight::{check_no_double_cover, check_watertight};
 
 /// A broken invariant, with an exact explanation.

@@ -207,3 +207,32 @@ pub fn delaunay_mesh(origin: [i64; 2], extent: i64, bits: u32, max_points: usize
 pub fn tie_heavy_mesh(canvas: u32, max_points: usize) -> BoxedStrategy<Mesh> {
     delaunay_mesh([0, 0], i64::from(canvas), 1, max_points)
 }
+
+/// Integer pixel endpoints `(from, to)` with coordinates in `-margin..side + margin`, all
+/// octants, zero-length lines included.
+pub fn pixel_line(side: i64, margin: i64) -> BoxedStrategy<([i64; 2], [i64; 2])> {
+    let c = -margin..side + margin;
+    ((c.clone(), c.clone()), (c.clone(), c))
+        .prop_map(|((a, b), (x, y))| ([a, b], [x, y]))
+        .boxed()
+}
+
+/// Integer pixel endpoints around `origin` with a major length of up to `max_len`: the
+/// family for measuring the DDA's departures by length and magnitude.
+pub fn long_pixel_line(origin: i64, max_len: i64) -> BoxedStrategy<([i64; 2], [i64; 2])> {
+    (prop::array::uniform2(-max_len..=max_len), prop::array::uniform2(-max_len..=max_len))
+        .prop_map(move |(a, b)| ([origin + a[0], origin + a[1]], [origin + b[0], origin + b[1]]))
+        .boxed()
+}
+
+/// A diamond-exit line on a `side` canvas with tie-heavy endpoints (pixel centres,
+/// corners, diamond corners at half pixels, k/512).
+pub fn diamond_line(side: u32) -> BoxedStrategy<crate::line::Line> {
+    (prop::array::uniform4(tie_heavy_coordinate(side)),)
+        .prop_map(|([a, b, c, d],)| crate::line::Line {
+            from: Point::new(a, b),
+            to: Point::new(c, d),
+            rule: crate::line::LineRule::Diamond,
+        })
+        .boxed()
+}
