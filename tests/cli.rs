@@ -104,6 +104,70 @@ fn json_format_is_exact() {
         .stdout("{\"width\":2,\"height\":3,\"pixels\":[[0,0,[0]],[1,0,[0]],[0,1,[1]],[1,1,[0]]]}\n");
 }
 
+/// Lines in the JSON output: ids after the triangles; seed 001's example by hand.
+#[test]
+fn lines_render_after_triangles() {
+    let dir = tempdir::Dir::new("lines");
+    let p = write(
+        &dir,
+        "l.json",
+        r#"{"width": 12, "height": 12, "triangles": [{"v": [[0,0],[2,0],[0,2]]}], "lines": [{"from": [5, 8], "to": [9, 11]}]}"#,
+    );
+    // At x = 7 the ideal line is at y = 9.5 exactly: Bresenham's default tie (stay) keeps
+    // y = 9; the DDA's floor(y + 1/2) rounds the exactly representable 9.5 up to 10.
+    for (model, seventh) in [("exact", 9), ("bresenham", 9), ("dda32", 10), ("dda64", 10)] {
+        bin()
+            .args(["render", p.to_str().unwrap(), "--format", "json", "--model", model])
+            .assert()
+            .success()
+            .stdout(format!(
+                "{{\"width\":12,\"height\":12,\"pixels\":[[0,0,[0]],[5,8,[1]],[6,9,[1]],[7,{seventh},[1]],[8,10,[1]],[9,11,[1]]]}}\n"
+            ));
+    }
+    let bad = write(
+        &dir,
+        "frac.json",
+        r#"{"width": 12, "height": 12, "lines": [{"from": [0.5, 8], "to": [9, 11]}]}"#,
+    );
+    let out = bin().args(["render", bad.to_str().unwrap()]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.contains("lines[0].from[0]: 1/2 is not an integer"), "{err}");
+    let far = write(
+        &dir,
+        "far.json",
+        r#"{"width": 12, "height": 12, "lines": [{"from": [16777217, 8], "to": [9, 11]}]}"#,
+    );
+    let out = bin().args(["render", far.to_str().unwrap()]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8(out.stderr)
+        .unwrap()
+        .contains("lines[0].from[0]: 16777217 is outside +-2^24"));
+    let missing = write(
+        &dir,
+        "missing.json",
+        r#"{"width": 12, "height": 12, "lines": [{"from": [1, 8]}]}"#,
+    );
+    let out = bin().args(["render", missing.to_str().unwrap()]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8(out.stderr)
+        .unwrap()
+        .contains("lines[0].to: missing (required)"));
+    let diamond_far = write(
+        &dir,
+        "dfar.json",
+        r#"{"width": 12, "height": 12, "lines": [{"from": [0, 0], "to": [2097153, 1], "rule": "diamond"}]}"#,
+    );
+    let out = bin()
+        .args(["render", diamond_far.to_str().unwrap(), "--model", "fixed"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8(out.stderr)
+        .unwrap()
+        .contains("lines[0].to.x: 2097153 px"));
+}
+
 #[test]
 fn render_writes_pngs_and_names_the_preset() {
     let dir = tempdir::Dir::new("png");

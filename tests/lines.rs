@@ -43,7 +43,13 @@ fn seed001_worked_example() {
     bresenham::walk([5, 8], [9, 11], BresenhamTie::Stay, |p, d| steps.push((p, d)));
     assert_eq!(
         steps,
-        vec![([5, 8], Some(2)), ([6, 9], Some(0)), ([7, 9], Some(6)), ([8, 10], Some(4)), ([9, 11], None)]
+        vec![
+            ([5, 8], Some(2)),
+            ([6, 9], Some(0)),
+            ([7, 9], Some(6)),
+            ([8, 10], Some(4)),
+            ([9, 11], None)
+        ]
     );
     // Seed 002's convention steps at the tie instead: (7, 10) after (6, 9)... no: the tie is
     // the decision *after* (6, 9), so (7, 9) becomes (7, 10).
@@ -62,15 +68,41 @@ fn seed001_worked_example() {
 #[test]
 fn seed001_demonstrations_in_all_reflections() {
     let cases: [([i64; 2], [i64; 2], BresenhamTie, Vec<[i64; 2]>); 4] = [
-        ([0, 4], [4, 2], BresenhamTie::Stay, vec![[0, 4], [1, 4], [2, 3], [3, 3], [4, 2]]),
-        ([0, 4], [4, 2], BresenhamTie::Step, vec![[0, 4], [1, 3], [2, 3], [3, 2], [4, 2]]),
-        ([1, 2], [3, 6], BresenhamTie::Stay, vec![[1, 2], [1, 3], [2, 4], [2, 5], [3, 6]]),
-        ([1, 2], [3, 6], BresenhamTie::Step, vec![[1, 2], [2, 3], [2, 4], [3, 5], [3, 6]]),
+        (
+            [0, 4],
+            [4, 2],
+            BresenhamTie::Stay,
+            vec![[0, 4], [1, 4], [2, 3], [3, 3], [4, 2]],
+        ),
+        (
+            [0, 4],
+            [4, 2],
+            BresenhamTie::Step,
+            vec![[0, 4], [1, 3], [2, 3], [3, 2], [4, 2]],
+        ),
+        (
+            [1, 2],
+            [3, 6],
+            BresenhamTie::Stay,
+            vec![[1, 2], [1, 3], [2, 4], [2, 5], [3, 6]],
+        ),
+        (
+            [1, 2],
+            [3, 6],
+            BresenhamTie::Step,
+            vec![[1, 2], [2, 3], [2, 4], [3, 5], [3, 6]],
+        ),
     ];
     for (a, b, tie, expected) in cases {
         for t in reflections() {
             let want: Vec<[i64; 2]> = expected.iter().map(|&p| t(p)).collect();
-            assert_eq!(bresenham::pixels(t(a), t(b), tie), want, "{a:?} -> {b:?} {tie:?} reflected to {:?} -> {:?}", t(a), t(b));
+            assert_eq!(
+                bresenham::pixels(t(a), t(b), tie),
+                want,
+                "{a:?} -> {b:?} {tie:?} reflected to {:?} -> {:?}",
+                t(a),
+                t(b)
+            );
         }
     }
 }
@@ -80,9 +112,19 @@ fn zero_length_lines() {
     assert_eq!(bresenham::pixels([3, 3], [3, 3], BresenhamTie::Stay), vec![[3, 3]]);
     let target = Target::new(8, 8, Preset::D3d11.convention()).unwrap();
     let p = Point::from_fractions(7, 2, 7, 2);
-    let point = Line { from: p.clone(), to: p, rule: LineRule::Diamond };
+    let point = Line {
+        from: p.clone(),
+        to: p,
+        rule: LineRule::Diamond,
+    };
     for model in [Model::Exact, Model::ExactSnapped, Model::Fixed] {
-        assert_eq!(render_primitives(model, &[], &[point.clone()], &target).unwrap().covered_pixels(), 0, "{model}");
+        assert_eq!(
+            render_primitives(model, &[], &[point.clone()], &target)
+                .unwrap()
+                .covered_pixels(),
+            0,
+            "{model}"
+        );
     }
 }
 

@@ -8,14 +8,18 @@ use indicatif::{ProgressBar, ProgressStyle};
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use rasterproof::check::{
-    check_agreement, check_barycentric_exact, check_barycentric_fixed, check_rotation_and_winding, check_translation,
-    check_watertight, float_sum_error_ulps, Violation,
+    check_agreement, check_barycentric_exact, check_barycentric_fixed, check_diamond_agreement, check_line_pixels,
+    check_line_reference, check_line_symmetry, check_rotation_and_winding, check_translation, check_watertight,
+    float_sum_error_ulps, Violation,
 };
 use rasterproof::convention::{Preset, Target, MAX_CANVAS};
 use rasterproof::geom::{Point, Triangle};
+use rasterproof::line::{bresenham, dda, BresenhamTie, Line, LineRule};
 use rasterproof::model::{render, Model};
 use rasterproof::scene::Scene;
-use rasterproof::strategy::{any_triangle, delaunay_mesh, tie_heavy_mesh, Mesh};
+use rasterproof::strategy::{
+    any_triangle, delaunay_mesh, diamond_line, long_pixel_line, pixel_line, tie_heavy_mesh, Mesh,
+};
 
 /// Canvas side of the ordinary cases.
 const CANVAS: u32 = 32;
@@ -26,6 +30,12 @@ struct Case {
     /// A far-from-origin mesh on a fine 2^-16 px grid, for the float models only (snapping
     /// it to 8 bits could fold thin triangles, so it is no input for the snapped models).
     fine_mesh: Mesh,
+    /// A Bresenham line on and around the canvas.
+    line: ([i64; 2], [i64; 2]),
+    /// A diamond-exit line with tie-heavy endpoints.
+    diamond: Line,
+    /// A line up to 1000 px long, around 0, 2^16, 2^20 or 2^23, for the DDA.
+    long_line: ([i64; 2], [i64; 2]),
     mesh_canvas: u32,
     mesh_family: &'static str,
     triangle: Triangle,
@@ -37,9 +47,12 @@ struct Case {
 struct Outcome {
     invariant: &'static str,
     model: Model,
+    /// The model's name in the table (`bresenham`, `dda32`... for lines).
+    label: &'static str,
     result: Result<(), Violation>,
-    /// The triangles and canvas to write out if it failed.
+    /// The primitives and canvas to write out if it failed.
     triangles: Vec<Triangle>,
+    lines: Vec<Line>,
     canvas: u32,
 }
 
@@ -74,11 +87,21 @@ fn generate(seed: u64, k: u64) -> Result<Case, String> {
     };
     let fine_mesh = draw(&mut runner, delaunay_mesh([far, far], 48, 16, 24))?;
     let triangle = draw(&mut runner, any_triangle(CANVAS))?;
+    let line = draw(&mut runner, pixel_line(i64::from(CANVAS), 8))?;
+    let diamond = draw(&mut runner, diamond_line(CANVAS))?;
+    let origin = draw(
+        &mut runner,
+        proptest::sample::select(vec![0i64, 1 << 16, 1 << 20, 1 << 23]),
+    )?;
+    let long_line = draw(&mut runner, long_pixel_line(origin, 500))?;
     let shift = draw(&mut runner, (-5i64..=5, -5i64..=5))?;
     let preset = draw(&mut runner, proptest::sample::select(vec![Preset::D3d11, Preset::Gl]))?;
     Ok(Case {
         mesh,
         fine_mesh,
+        line,
+        diamond,
+        long_line,
         mesh_canvas,
         mesh_family,
         triangle,
@@ -97,12 +120,14 @@ fn run_case(c: &Case) -> (Vec<Outcome>, Vec<f64>) {
     let mut out = Vec::new();
     let tri_target = target(CANVAS, c.preset);
     let tri = std::slice::from_ref(&c.triangle);
-    let mut push = |invariant, model, result, triangles: &[Triangle], canvas| {
+    let mut push = |invariant, model: Model, result, triangles: &[Triangle], canvas| {
         out.push(Outcome {
             invariant,
             model,
+            label: model.name(),
             result,
             triangles: triangles.to_vec(),
+            lines: Vec::new(),
             canvas,
         });
     };
@@ -217,7 +242,75 @@ fn run_case(c: &Case) -> (Vec<Outcome>, Vec<f64>) {
             CANVAS,
         );
     }
+    line_checks(c, &mut out);
     (out, ulps)
+}
+
+/// Invariant 5: Bresenham (both ties), its reversal, diamond-exit agreement, and the DDA's
+/// departures (the float trade for lines).
+fn line_checks(c: &Case, out: &mut Vec<Outcome>) {
+    let as_line = |(a, b): ([i64; 2], [i64; 2]), tie| Line {
+        from: Point::from_ints(a[0], a[1]),
+        to: Point::from_ints(b[0], b[1]),
+        rule: LineRule::Bresenham(tie),
+    };
+    let mut push = |invariant, model: Model, label, result, line: Line| {
+        out.push(Outcome {
+            invariant,
+            model,
+            label,
+            result,
+            triangles: Vec::new(),
+            lines: vec![line],
+            canvas: CANVAS,
+        });
+    };
+    for tie in [BresenhamTie::Stay, BresenhamTie::Step] {
+        let (a, b) = c.line;
+        let pixels = bresenham::pixels(a, b, tie);
+        let label = if tie == BresenhamTie::Stay {
+            "bresenham/stay"
+        } else {
+            "bresenham/step"
+        };
+        push(
+            "line pixels",
+            Model::Fixed,
+            label,
+            check_line_pixels(a, b, &pixels),
+            as_line(c.line, tie),
+        );
+        push(
+            "line reference",
+            Model::Fixed,
+            label,
+            check_line_reference(a, b, tie, &pixels),
+            as_line(c.line, tie),
+        );
+        let symmetry = check_line_symmetry(a, b, tie).map(|_| ());
+        push("line symmetry", Model::Fixed, label, symmetry, as_line(c.line, tie));
+    }
+    let target = target(CANVAS, c.preset);
+    push(
+        "diamond agreement",
+        Model::Fixed,
+        "diamond",
+        check_diamond_agreement(&c.diamond, &target),
+        c.diamond.clone(),
+    );
+    let (a, b) = c.long_line;
+    for (model, label, pixels) in [
+        (Model::Float32, "dda32", dda::pixels_f32(a, b)),
+        (Model::Float64, "dda64", dda::pixels_f64(a, b)),
+    ] {
+        push(
+            "line pixels (long)",
+            model,
+            label,
+            check_line_pixels(a, b, &pixels),
+            as_line(c.long_line, BresenhamTie::Stay),
+        );
+    }
 }
 
 /// Models whose violations fail the run (the float models' violations are the measured trade).
@@ -246,16 +339,16 @@ pub fn run(cases: u64, seed: u64, out: Option<&Path>, quiet: bool) -> Result<Exi
         let (outcomes, errors) = run_case(&case);
         ulps.extend(errors);
         for o in outcomes {
-            let entry = tally.entry((o.invariant, o.model.name())).or_default();
+            let entry = tally.entry((o.invariant, o.label)).or_default();
             entry.0 += 1;
             if let Err(v) = &o.result {
                 entry.1 += 1;
                 if o.invariant == "watertight" || o.invariant == "agreement (mesh)" {
-                    *families.entry((case.mesh_family, o.model.name())).or_default() += 1;
+                    *families.entry((case.mesh_family, o.label)).or_default() += 1;
                 }
                 if must_hold(o.model) {
                     fatal += 1;
-                    bar.suspend(|| eprintln!("case {k}: {} ({}): {v}", o.invariant, o.model));
+                    bar.suspend(|| eprintln!("case {k}: {} ({}): {v}", o.invariant, o.label));
                 }
                 if let Some(dir) = out {
                     write_case(dir, k, &o, case.preset, v)?;
@@ -305,8 +398,10 @@ fn write_case(dir: &Path, k: u64, o: &Outcome, preset: Preset, v: &Violation) ->
         .chars()
         .map(|ch| if ch.is_ascii_alphanumeric() { ch } else { '-' })
         .collect();
-    let stem = dir.join(format!("case-{k}-{slug}-{}", o.model.name()));
+    let label: String = o.label.chars().map(|ch| if ch == '/' { '-' } else { ch }).collect();
+    let stem = dir.join(format!("case-{k}-{slug}-{label}"));
     let mut scene = Scene::new(o.canvas, o.canvas, o.triangles.clone());
+    scene.lines = o.lines.clone();
     scene.preset = preset;
     let json = stem.with_extension("json");
     std::fs::write(&json, scene.to_json()).map_err(|e| format!("{}: cannot write: {e}", json.display()))?;

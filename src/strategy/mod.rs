@@ -220,7 +220,10 @@ pub fn pixel_line(side: i64, margin: i64) -> BoxedStrategy<([i64; 2], [i64; 2])>
 /// Integer pixel endpoints around `origin` with a major length of up to `max_len`: the
 /// family for measuring the DDA's departures by length and magnitude.
 pub fn long_pixel_line(origin: i64, max_len: i64) -> BoxedStrategy<([i64; 2], [i64; 2])> {
-    (prop::array::uniform2(-max_len..=max_len), prop::array::uniform2(-max_len..=max_len))
+    (
+        prop::array::uniform2(-max_len..=max_len),
+        prop::array::uniform2(-max_len..=max_len),
+    )
         .prop_map(move |(a, b)| ([origin + a[0], origin + a[1]], [origin + b[0], origin + b[1]]))
         .boxed()
 }
