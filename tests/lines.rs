@@ -16,9 +16,12 @@ use rasterproof::strategy::{diamond_line, long_pixel_line, pixel_line};
 
 const TIES: [BresenhamTie; 2] = [BresenhamTie::Stay, BresenhamTie::Step];
 
+/// A symmetry of the pixel grid.
+type Reflection = Box<dyn Fn([i64; 2]) -> [i64; 2]>;
+
 /// The 8 symmetries of the square grid: (x, y) -> (±x, ±y), optionally swapped.
-fn reflections() -> Vec<Box<dyn Fn([i64; 2]) -> [i64; 2]>> {
-    let mut out: Vec<Box<dyn Fn([i64; 2]) -> [i64; 2]>> = Vec::new();
+fn reflections() -> Vec<Reflection> {
+    let mut out: Vec<Reflection> = Vec::new();
     for swap in [false, true] {
         for sx in [1, -1] {
             for sy in [1, -1] {
@@ -67,7 +70,8 @@ fn seed001_worked_example() {
 ///   stay: (1,2) (1,3) (2,4) (2,5) (3,6); step: (1,2) (2,3) (2,4) (3,5) (3,6).
 #[test]
 fn seed001_demonstrations_in_all_reflections() {
-    let cases: [([i64; 2], [i64; 2], BresenhamTie, Vec<[i64; 2]>); 4] = [
+    type Case = ([i64; 2], [i64; 2], BresenhamTie, Vec<[i64; 2]>);
+    let cases: [Case; 4] = [
         (
             [0, 4],
             [4, 2],
@@ -119,7 +123,7 @@ fn zero_length_lines() {
     };
     for model in [Model::Exact, Model::ExactSnapped, Model::Fixed] {
         assert_eq!(
-            render_primitives(model, &[], &[point.clone()], &target)
+            render_primitives(model, &[], std::slice::from_ref(&point), &target)
                 .unwrap()
                 .covered_pixels(),
             0,
@@ -135,7 +139,7 @@ fn diamond(a: (i64, i64, i64, i64), target: &Target) -> Vec<(u32, u32)> {
         to: Point::from_fractions(x1, 2, y1, 2),
         rule: LineRule::Diamond,
     };
-    let exact = render_primitives(Model::Exact, &[], &[line.clone()], target).unwrap();
+    let exact = render_primitives(Model::Exact, &[], std::slice::from_ref(&line), target).unwrap();
     let fixed = render_primitives(Model::Fixed, &[], &[line], target).unwrap();
     assert_eq!(exact, fixed);
     exact.iter().map(|(x, y, _)| (x, y)).collect()
@@ -216,7 +220,7 @@ proptest! {
         let tie = if stay { BresenhamTie::Stay } else { BresenhamTie::Step };
         let line = Line { from: Point::from_ints(a[0], a[1]), to: Point::from_ints(b[0], b[1]), rule: LineRule::Bresenham(tie) };
         let target = Target::new(24, 24, Preset::D3d11.convention()).unwrap();
-        let exact = render_primitives(Model::Exact, &[], &[line.clone()], &target).unwrap();
+        let exact = render_primitives(Model::Exact, &[], std::slice::from_ref(&line), &target).unwrap();
         let fixed = render_primitives(Model::Fixed, &[], &[line], &target).unwrap();
         prop_assert_eq!(exact, fixed);
     }
