@@ -50,26 +50,24 @@ pub fn barycentric_exact(t: &Triangle, p: &Point) -> Option<[BigRational; 3]> {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct FixedBarycentrics {
     /// `[E(v1,v2,p), E(v2,v0,p), E(v0,v1,p)]` in subpixel² units.
-    pub w: [i64; 3],
+    pub w: [i128; 3],
     /// `E(v0,v1,v2)`: `w[0] + w[1] + w[2] == area2`, always.
-    pub area2: i64,
+    pub area2: i128,
 }
 
-/// The integer edge values at the sample of pixel `(x, y)`. Inside the envelope (the
-/// triangle is a [`FixedTriangle`], the pixel on a canvas of at most 16384) nothing overflows.
+/// The integer edge values at the sample of pixel `(x, y)`, in i128: for any `u32` pixel
+/// (on the canvas or not) and a [`FixedTriangle`], |values| < 2^100, so nothing overflows.
+/// (On the canvas they also fit the i64 the `fixed` model steps with.)
 pub fn barycentric_fixed(t: &FixedTriangle, x: u32, y: u32, target: &Target) -> FixedBarycentrics {
     let conv = &target.convention;
-    let one = 1i64 << conv.subpixel_bits;
-    let c = conv.pixel_centre.offset_subpixels(conv.subpixel_bits);
-    let p = [i64::from(x) * one + c, i64::from(y) * one + c];
-    let [v0, v1, v2] = t.coords();
+    let one = 1i128 << conv.subpixel_bits;
+    let c = i128::from(conv.pixel_centre.offset_subpixels(conv.subpixel_bits));
+    let p = [i128::from(x) * one + c, i128::from(y) * one + c];
+    let [v0, v1, v2] = t.coords().map(|v| v.map(i128::from));
+    let e = |a: [i128; 2], b: [i128; 2], p: [i128; 2]| (p[0] - a[0]) * (b[1] - a[1]) - (p[1] - a[1]) * (b[0] - a[0]);
     FixedBarycentrics {
-        w: [
-            fixed::edge_function(v1, v2, p),
-            fixed::edge_function(v2, v0, p),
-            fixed::edge_function(v0, v1, p),
-        ],
-        area2: fixed::area2(t),
+        w: [e(v1, v2, p), e(v2, v0, p), e(v0, v1, p)],
+        area2: i128::from(fixed::area2(t)),
     }
 }
 

@@ -280,7 +280,7 @@ impl Prepared {
                     return [0; 3];
                 }
                 std::array::from_fn(|ch| {
-                    let sum: i128 = (0..3).map(|i| i128::from(b.w[i]) * i128::from(colours[i][ch])).sum();
+                    let sum: i128 = (0..3).map(|i| b.w[i] * i128::from(colours[i][ch])).sum();
                     to_channel(&BigRational::new(sum.into(), b.area2.into()))
                 })
             }
@@ -414,8 +414,8 @@ impl PreparedLine {
         match self {
             PreparedLine::IdealBresenham(a, b, tie) => line::exact::draw_bresenham(*a, *b, *tie, id, target, sink),
             PreparedLine::Bresenham(a, b, tie) => line::bresenham::draw(*a, *b, *tie, id, target, sink),
-            PreparedLine::Dda32(a, b) => line::dda::draw(&line::dda::pixels_f32(*a, *b), id, target, sink),
-            PreparedLine::Dda64(a, b) => line::dda::draw(&line::dda::pixels_f64(*a, *b), id, target, sink),
+            PreparedLine::Dda32(a, b) => line::dda::draw(*a, *b, line::dda::DdaFloat::F32, id, target, sink),
+            PreparedLine::Dda64(a, b) => line::dda::draw(*a, *b, line::dda::DdaFloat::F64, id, target, sink),
             PreparedLine::DiamondExact(ends) => line::exact::draw_diamond(&ends.0, &ends.1, id, target, sink),
             PreparedLine::DiamondFixed(seg) => line::diamond::draw(seg, id, target, sink),
         }

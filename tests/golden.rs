@@ -239,3 +239,40 @@ fn horizontal_shared_edge_follows_the_eps_squared_term() {
         }
     }
 }
+
+/// Review finds (named regressions): an exact diamond-exit line with an endpoint at the i64
+/// limits must not overflow, and one far beyond the canvas must not scan the whole canvas;
+/// the public integer-barycentric checker must not overflow for an off-canvas pixel.
+#[test]
+fn review_case_01_exact_diamond_line_at_i64_limits() {
+    use rasterproof::model::render_primitives;
+    for (a, b) in [
+        ("\"-9223372036854775808\"", "3"),
+        ("3", "\"9223372036854775807\""),
+        ("\"1e19\"", "\"1e20\""),
+    ] {
+        let text = format!(
+            r#"{{"width": 400, "height": 400, "lines": [{{"from": [{a}, "1/2"], "to": [{b}, "5/2"], "rule": "diamond"}}]}}"#
+        );
+        let s = parse_scene(&text, "s.json").unwrap();
+        let target = s.target().unwrap();
+        let c = render_primitives(Model::Exact, &[], &s.lines, &target).unwrap();
+        // Only lines that cross the canvas cover anything; none of these is near row 0..3 of
+        // columns < 400 except the first two, which do cross it.
+        assert!(c.covered_pixels() <= 400, "{a} -> {b}");
+    }
+}
+
+#[test]
+fn review_case_02_barycentric_checker_off_canvas() {
+    let mut conv = Preset::D3d11.convention();
+    conv.subpixel_bits = 16;
+    let target = Target::new(16, 16, conv).unwrap();
+    let t = Triangle::new(
+        Point::from_ints(0, -8192),
+        Point::from_ints(1, 8192),
+        Point::from_ints(-8192, 0),
+    );
+    let f = t.snapped(&conv).to_fixed().unwrap();
+    assert!(rasterproof::check::check_barycentric_fixed(&f, 1_000_000, u32::MAX, &target).is_ok());
+}

@@ -36,8 +36,8 @@ pub fn check_barycentric_exact(t: &Triangle, p: &Point) -> Result<(), Violation>
 /// The integer edge values at the sample of `(x, y)` sum to exactly twice the area.
 pub fn check_barycentric_fixed(t: &FixedTriangle, x: u32, y: u32, target: &Target) -> Result<(), Violation> {
     let b = barycentric_fixed(t, x, y, target);
-    let sum = i128::from(b.w[0]) + i128::from(b.w[1]) + i128::from(b.w[2]);
-    if sum == i128::from(b.area2) {
+    let sum = b.w[0] + b.w[1] + b.w[2];
+    if sum == b.area2 {
         Ok(())
     } else {
         Err(Violation::new(

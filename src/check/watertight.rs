@@ -104,10 +104,9 @@ fn outline_edges(outline: &[Point], target: &Target) -> Vec<ExactEdge> {
 }
 
 fn bbox(outline: &[Point], target: &Target) -> Option<(u32, u32, u32, u32)> {
-    use num_traits::ToPrimitive;
     let c = target.convention.pixel_centre.offset();
-    let lo = |v: &BigRational| (v - &c).ceil().to_integer().to_i64().unwrap_or(i64::MIN);
-    let hi = |v: &BigRational| (v - &c).floor().to_integer().to_i64().unwrap_or(i64::MAX);
+    let lo = |v: &BigRational| crate::tri::saturating_index((v - &c).ceil().to_integer());
+    let hi = |v: &BigRational| crate::tri::saturating_index((v - &c).floor().to_integer());
     let min_x = outline.iter().map(|p| &p.x).min()?;
     let max_x = outline.iter().map(|p| &p.x).max()?;
     let min_y = outline.iter().map(|p| &p.y).min()?;

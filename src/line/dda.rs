@@ -7,10 +7,12 @@ use crate::convention::Target;
 use crate::coverage::CoverageSink;
 
 macro_rules! dda {
-    ($name:ident, $float:ty, $doc:literal) => {
+    ($walk:ident, $pixels:ident, $float:ty, $doc:literal) => {
         #[doc = $doc]
+        ///
+        /// Calls `visit` with each pixel, from `from` to `to`; endpoints within ±2^24.
         #[allow(clippy::cast_possible_truncation, clippy::cast_precision_loss)] // coordinates within ±2^24
-        pub fn $name(from: [i64; 2], to: [i64; 2]) -> Vec<[i64; 2]> {
+        pub fn $walk(from: [i64; 2], to: [i64; 2], mut visit: impl FnMut([i64; 2])) {
             let axes = Axes::of(from, to);
             let (mut major, minor0) = axes.split(from);
             let m: $float = if axes.major_len == 0 {
@@ -19,31 +21,58 @@ macro_rules! dda {
                 (axes.minor_sign * axes.minor_len) as $float / axes.major_len as $float
             };
             let mut minor = minor0 as $float;
-            let mut out = Vec::with_capacity(usize::try_from(axes.major_len + 1).unwrap_or(0));
             for _ in 0..=axes.major_len {
-                out.push(axes.join(major, (minor + 0.5).floor() as i64));
+                visit(axes.join(major, (minor + 0.5).floor() as i64));
                 minor += m;
                 major += axes.major_sign;
             }
+        }
+
+        #[doc = $doc]
+        ///
+        /// The pixels in order.
+        pub fn $pixels(from: [i64; 2], to: [i64; 2]) -> Vec<[i64; 2]> {
+            let mut out = Vec::new();
+            $walk(from, to, |p| out.push(p));
             out
         }
     };
 }
 
 dda!(
+    walk_f32,
     pixels_f32,
     f32,
     "The DDA in f32: `minor += m` per step, pixel `floor(minor + 1/2)`."
 );
 dda!(
+    walk_f64,
     pixels_f64,
     f64,
     "The DDA in f64: `minor += m` per step, pixel `floor(minor + 1/2)`."
 );
 
-/// Draws `pixels` (from [`pixels_f32`] or [`pixels_f64`]) into `sink`, skipping those off the canvas.
-pub fn draw<S: CoverageSink + ?Sized>(pixels: &[[i64; 2]], id: u32, target: &Target, sink: &mut S) {
-    for &p in pixels {
-        cover_if_on_canvas(p, id, target, sink);
+/// Which float the DDA runs in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DdaFloat {
+    /// f32.
+    F32,
+    /// f64.
+    F64,
+}
+
+/// Draws the DDA line into `sink`, skipping pixels off the canvas (no allocation).
+pub fn draw<S: CoverageSink + ?Sized>(
+    from: [i64; 2],
+    to: [i64; 2],
+    float: DdaFloat,
+    id: u32,
+    target: &Target,
+    sink: &mut S,
+) {
+    let mut visit = |p| cover_if_on_canvas(p, id, target, sink);
+    match float {
+        DdaFloat::F32 => walk_f32(from, to, &mut visit),
+        DdaFloat::F64 => walk_f64(from, to, &mut visit),
     }
 }

@@ -47,8 +47,15 @@ fn less(t0: (i128, i128), t1: (i128, i128)) -> bool {
 }
 
 /// Whether the segment draws pixel `(i, j)`.
+///
+/// # Panics
+/// When `seg` was snapped to another grid than `target`'s subpixel bits.
 pub fn exits(seg: &FixedSegment, i: i64, j: i64, target: &Target) -> bool {
     let conv = &target.convention;
+    assert_eq!(
+        seg.bits, conv.subpixel_bits,
+        "segment snapped to another grid than the target's"
+    );
     let one = 1i128 << conv.subpixel_bits;
     let c = i128::from(conv.pixel_centre.offset_subpixels(conv.subpixel_bits));
     let (cx, cy) = (i128::from(i) * one + c, i128::from(j) * one + c);
@@ -92,8 +99,15 @@ pub fn exits(seg: &FixedSegment, i: i64, j: i64, target: &Target) -> bool {
 
 /// Draws the segment: for each step of its major axis across the canvas, tests the five
 /// pixels nearest the line.
+///
+/// # Panics
+/// When `seg` was snapped to another grid than `target`'s subpixel bits.
 pub fn draw<S: CoverageSink + ?Sized>(seg: &FixedSegment, id: u32, target: &Target, sink: &mut S) {
     let conv = &target.convention;
+    assert_eq!(
+        seg.bits, conv.subpixel_bits,
+        "segment snapped to another grid than the target's"
+    );
     let one = 1i64 << conv.subpixel_bits;
     let c = conv.pixel_centre.offset_subpixels(conv.subpixel_bits);
     let [ax, ay] = seg.a.map(SubPixel::get);

@@ -14,6 +14,7 @@ use super::{cover_if_on_canvas, Axes, BresenhamTie};
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::geom::Point;
+use crate::tri::saturating_index;
 
 /// One step of the ideal line.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -214,8 +215,8 @@ pub fn diamond_exits(a: &Point, b: &Point, i: i64, j: i64, target: &Target) -> b
 /// Draws a diamond-exit line with the plain exact reading: every pixel of the segment's
 /// bounding box (grown by one) on the canvas is tested.
 pub fn draw_diamond<S: CoverageSink + ?Sized>(a: &Point, b: &Point, id: u32, target: &Target, sink: &mut S) {
-    let lo = |u: &BigRational, v: &BigRational| u.min(v).floor().to_integer().to_i64().unwrap_or(i64::MIN / 2) - 1;
-    let hi = |u: &BigRational, v: &BigRational| u.max(v).ceil().to_integer().to_i64().unwrap_or(i64::MAX / 2) + 1;
+    let lo = |u: &BigRational, v: &BigRational| saturating_index(u.min(v).floor().to_integer()).saturating_sub(1);
+    let hi = |u: &BigRational, v: &BigRational| saturating_index(u.max(v).ceil().to_integer()).saturating_add(1);
     let Some(range) = crate::tri::PixelRange::clamped(
         [lo(&a.x, &b.x), lo(&a.y, &b.y)],
         [hi(&a.x, &b.x), hi(&a.y, &b.y)],

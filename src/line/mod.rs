@@ -116,7 +116,15 @@ pub struct Axes {
 
 impl Axes {
     /// The axes of the line `from -> to`.
+    ///
+    /// # Panics
+    /// When a coordinate is outside ±[`MAX_BRESENHAM_COORD`], the envelope of every
+    /// major-axis walk ([`Line::pixel_endpoints`] and the scene parser check it first).
     pub fn of(from: [i64; 2], to: [i64; 2]) -> Axes {
+        assert!(
+            from.iter().chain(&to).all(|c| c.abs() <= MAX_BRESENHAM_COORD),
+            "line endpoints {from:?} -> {to:?} outside the +-2^24 envelope"
+        );
         let (dx, dy) = (to[0] - from[0], to[1] - from[1]);
         let x_major = dx.abs() >= dy.abs();
         let (major, minor) = if x_major { (dx, dy) } else { (dy, dx) };

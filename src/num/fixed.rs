@@ -8,7 +8,9 @@
 //! subpixel bits). An edge function `E = (px - ax)*dy - (py - ay)*dx` then has
 //! `|p - a| < 2^30 + 2^29` and `|dx|, |dy| <= 2^30`, so
 //! `|E| < 2 * 1.5 * 2^30 * 2^30 = 3 * 2^60 < 2^62`: every edge value of every sample
-//! on the canvas, and every increment between them, fits an i64 with a bit to spare.
+//! on the canvas, and every increment between them, fits an i64 with a bit to spare. (The
+//! incremental stepper also computes, and discards, the value one sample past the canvas
+//! edge: `p < (16384 + 1) * 2^16` keeps it below `3.1 * 2^60`.)
 //! The unit tests below check this bound right at its edge.
 
 use std::fmt;

@@ -33,11 +33,13 @@ impl fmt::Display for Width {
 /// The bits an edge value can need when every coordinate (vertex or sample) has
 /// magnitude at most `max_abs` subpixels, sign included.
 ///
-/// `|p - a| <= 2m`, `|dx|, |dy| <= 2m`, so `|E| <= 8 m^2`: that many magnitude bits plus one
-/// for the sign.
+/// `E(p)` is twice the signed area of the triangle (a, b, p), whose vertices lie in a square
+/// of side 2m; such a triangle has area at most half the square, so `|E| <= 4 m^2`. Each of
+/// the two products `(p.x - a.x)(b.y - a.y)` is at most `(2m)^2 = 4 m^2` too. That many
+/// magnitude bits plus one for the sign.
 pub fn edge_value_bits(max_abs: &BigInt) -> u64 {
     let m = max_abs.abs();
-    let bound: BigInt = m.clone() * m * 8;
+    let bound: BigInt = m.clone() * m * 4;
     bound.bits() + 1
 }
 
@@ -47,7 +49,8 @@ pub fn edge_value_bits(max_abs: &BigInt) -> u64 {
 /// use rasterproof::num::plan::{plan, Width};
 /// // A 256x256 canvas at 8 subpixel bits: 2^16 subpixels.
 /// assert_eq!(plan(&(1i64 << 16).into()), Width::I64);
-/// assert_eq!(plan(&(1i64 << 13).into()), Width::I32);
+/// // A 64x64 canvas at 8 bits fits i32.
+/// assert_eq!(plan(&(1i64 << 14).into()), Width::I32);
 /// ```
 pub fn plan(max_abs: &BigInt) -> Width {
     match edge_value_bits(max_abs) {
@@ -62,27 +65,35 @@ pub fn plan(max_abs: &BigInt) -> Width {
 mod tests {
     use super::*;
 
-    /// Hand check at the boundary: m = 2^13 gives 8 m^2 = 2^29, 30 bits + sign = 31 <= 32;
-    /// m = 2^14 gives 2^31, 33 bits: too wide for i32.
+    /// Hand check at the boundaries. i32 holds |E| < 2^31, so 4 m^2 < 2^31, m < 2^14.5:
+    /// 4 * 23170^2 = 2147395600 < 2^31 = 2147483648 <= 4 * 23171^2 = 2147580964.
+    /// i64: 4 m^2 < 2^63, m < 2^30.5 ~ 1518500249.98.
     #[test]
     fn boundaries_by_hand() {
-        assert_eq!(edge_value_bits(&BigInt::from(1 << 13)), 31);
-        assert_eq!(plan(&BigInt::from(1 << 13)), Width::I32);
-        assert_eq!(plan(&BigInt::from(1 << 14)), Width::I64);
-        assert_eq!(plan(&BigInt::from(1i64 << 29)), Width::I64);
-        assert_eq!(plan(&BigInt::from(1i64 << 30)), Width::I128);
+        assert_eq!(edge_value_bits(&BigInt::from(1 << 14)), 32);
+        assert_eq!(plan(&BigInt::from(23170)), Width::I32);
+        assert_eq!(plan(&BigInt::from(23171)), Width::I64);
+        assert_eq!(plan(&BigInt::from(1_518_500_249i64)), Width::I64);
+        assert_eq!(plan(&BigInt::from(1_518_500_250i64)), Width::I128);
         assert_eq!(plan(&(BigInt::from(1) << 70)), Width::Big);
     }
 
-    /// The bound is attained: the worst-case edge value for m really needs the planned bits.
+    /// The bound is attained: a = (-m, -m), b = (m, -m), p = (m, m) give
+    /// E = (2m)(0) - (2m)(2m) = -4 m^2, which needs exactly the planned bits (two's
+    /// complement: -2^k needs k + 1 bits, so for m a power of two one bit is to spare,
+    /// and one more than m needs it all).
     #[test]
-    fn worst_case_needs_the_planned_bits() {
-        for m in [3i128, 1000, 1 << 13, (1 << 14) + 5, 1 << 29] {
-            // a = (-m, -m), b = (m, m - 2m) ... choose p = (m, -m), a = (-m, m), b = (m, -m)+(0,2m)
-            let (ax, ay, bx, by, px, py) = (-m, m, m, -m, m, m);
+    fn worst_case_is_attained() {
+        for m in [3i128, 1000, 1 << 14, (1 << 14) + 1, 1 << 29, (1 << 30) + 1] {
+            let (ax, ay, bx, by, px, py) = (-m, -m, m, -m, m, m);
             let e = (px - ax) * (by - ay) - (py - ay) * (bx - ax);
-            let needed = 128 - e.unsigned_abs().leading_zeros() + 1;
-            assert!(u64::from(needed) <= edge_value_bits(&BigInt::from(m)), "m={m} e={e}");
+            assert_eq!(e, -4 * m * m);
+            let magnitude_bits = 128 - e.unsigned_abs().leading_zeros();
+            assert_eq!(
+                u64::from(magnitude_bits) + 1,
+                edge_value_bits(&BigInt::from(m)),
+                "m={m}"
+            );
         }
     }
 }

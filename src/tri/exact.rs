@@ -4,13 +4,12 @@
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::ToPrimitive;
 
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::edge::exact::triangle_edges;
 use crate::geom::{Point, Triangle};
-use crate::tri::PixelRange;
+use crate::tri::{saturating_index, PixelRange};
 
 /// Covers every pixel whose sample is inside `tri` under `target`'s convention.
 ///
@@ -65,21 +64,12 @@ fn sample_range(tri: &Triangle, target: &Target) -> Option<PixelRange> {
     let (min_x, max_x) = (xs.clone().min()?, xs.max()?);
     let (min_y, max_y) = (ys.clone().min()?, ys.max()?);
     // sample i + c >= min  <=>  i >= ceil(min - c);  i + c <= max  <=>  i <= floor(max - c)
-    let lo = |m: &BigRational| clamp_to_i64((m - &centre).ceil().to_integer());
-    let hi = |m: &BigRational| clamp_to_i64((m - &centre).floor().to_integer());
+    let lo = |m: &BigRational| saturating_index((m - &centre).ceil().to_integer());
+    let hi = |m: &BigRational| saturating_index((m - &centre).floor().to_integer());
     PixelRange::clamped(
         [lo(min_x), lo(min_y)],
         [hi(max_x), hi(max_y)],
         target.width,
         target.height,
     )
-}
-
-/// Saturates a huge index: anything beyond i64 is far off any canvas either way.
-fn clamp_to_i64(v: BigInt) -> i64 {
-    v.to_i64().unwrap_or(if v.sign() == num_bigint::Sign::Minus {
-        i64::MIN
-    } else {
-        i64::MAX
-    })
 }

@@ -17,6 +17,10 @@ pub const BLOCK: u32 = 8;
 /// Covers every pixel whose sample is inside `tri` (already snapped, inside the envelope).
 /// Equal, pixel for pixel, to [`crate::tri::exact::rasterize`] on the same snapped triangle.
 ///
+/// # Panics
+/// When `tri` was snapped to another grid than `target`'s subpixel bits (a caller bug:
+/// the coordinates would be read in the wrong unit).
+///
 /// ```
 /// use rasterproof::convention::{Convention, Target};
 /// use rasterproof::coverage::Coverage;
@@ -31,7 +35,10 @@ pub const BLOCK: u32 = 8;
 /// ```
 pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target: &Target, sink: &mut S) {
     let conv = &target.convention;
-    debug_assert_eq!(tri.bits, conv.subpixel_bits, "triangle snapped to another grid");
+    assert_eq!(
+        tri.bits, conv.subpixel_bits,
+        "triangle snapped to another grid than the target's"
+    );
     let Some(edges) = triangle_edges(tri, conv.tie_rule) else {
         return;
     };

@@ -7,6 +7,17 @@ pub mod exact;
 pub mod fixed;
 pub mod float;
 
+/// A pixel index from an exact integer, saturating by sign: anything beyond i64 is far off
+/// any canvas either way, on the side its sign says.
+pub(crate) fn saturating_index(v: num_bigint::BigInt) -> i64 {
+    use num_traits::ToPrimitive;
+    v.to_i64().unwrap_or(if v.sign() == num_bigint::Sign::Minus {
+        i64::MIN
+    } else {
+        i64::MAX
+    })
+}
+
 /// An inclusive rectangle of pixels `x0..=x1`, `y0..=y1` on the canvas.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct PixelRange {
