@@ -173,7 +173,7 @@ fn print_table(title: &str, tallies: &BTreeMap<String, Tally>) {
     }
 }
 
-const CASES: usize = 2000;
+const CASES: usize = 1200;
 
 #[test]
 fn line_drawing_midpoint_is_our_step_convention() {
