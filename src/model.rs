@@ -18,7 +18,7 @@ use crate::num::exact::dyadic;
 use crate::num::EnvelopeError;
 use crate::num::SubPixel;
 use crate::tri::float::FloatRule;
-use crate::tri::{exact, fixed, float};
+use crate::tri::{exact, fixed, float, scanline};
 
 /// A triangle model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -29,6 +29,8 @@ pub enum Model {
     ExactSnapped,
     /// Incremental i64 edge functions with block traversal, on the snapped scene.
     Fixed,
+    /// Edge walking: spans per scanline from an exact integer DDA, on the snapped scene.
+    Scanline,
     /// Scratchapixel in f32 with the tie rule applied to float values.
     Float32,
     /// Scratchapixel in f64 with the tie rule applied to float values.
@@ -41,10 +43,11 @@ pub enum Model {
 
 impl Model {
     /// Every model.
-    pub const ALL: [Model; 7] = [
+    pub const ALL: [Model; 8] = [
         Model::Exact,
         Model::ExactSnapped,
         Model::Fixed,
+        Model::Scanline,
         Model::Float32,
         Model::Float64,
         Model::Float32Naive,
@@ -57,6 +60,7 @@ impl Model {
             Model::Exact => "exact",
             Model::ExactSnapped => "exact-snapped",
             Model::Fixed => "fixed",
+            Model::Scanline => "scanline",
             Model::Float32 => "float32",
             Model::Float64 => "float64",
             Model::Float32Naive => "float32-naive",
@@ -79,7 +83,7 @@ impl Model {
     pub fn envelope(self) -> &'static str {
         match self {
             Model::Exact | Model::ExactSnapped => "unbounded (arbitrary precision)",
-            Model::Fixed => "|snapped coordinate| <= 2^29 subpixels (2^21 px at 8 bits)",
+            Model::Fixed | Model::Scanline => "|snapped coordinate| <= 2^29 subpixels (2^21 px at 8 bits)",
             Model::Float32 | Model::Float32Naive => "none: inexact; refuses coordinates beyond f32",
             Model::Float64 | Model::Float64Naive => "none: inexact; refuses coordinates beyond f64",
         }
@@ -179,6 +183,8 @@ pub enum Prepared {
     Exact(Vec<Triangle>),
     /// Fixed-point triangles inside the envelope.
     Fixed(Vec<FixedTriangle>),
+    /// Fixed-point triangles for the scanline (edge-walking) model.
+    Scanline(Vec<FixedTriangle>),
     /// f32 triangles and the float rule.
     F32(Vec<[Vec2; 3]>, FloatRule),
     /// f64 triangles and the float rule.
@@ -190,22 +196,8 @@ pub fn prepare(model: Model, triangles: &[Triangle], conv: &Convention) -> Resul
     Ok(match model {
         Model::Exact => Prepared::Exact(triangles.to_vec()),
         Model::ExactSnapped => Prepared::Exact(triangles.iter().map(|t| t.snapped(conv).to_exact()).collect()),
-        Model::Fixed => Prepared::Fixed(
-            triangles
-                .iter()
-                .enumerate()
-                .map(|(k, t)| {
-                    t.snapped(conv)
-                        .to_fixed()
-                        .map_err(|(vertex, axis, error)| ModelError::Envelope {
-                            triangle: k,
-                            vertex,
-                            axis,
-                            error,
-                        })
-                })
-                .collect::<Result<_, _>>()?,
-        ),
+        Model::Fixed => Prepared::Fixed(fixed_triangles(triangles, conv)?),
+        Model::Scanline => Prepared::Scanline(fixed_triangles(triangles, conv)?),
         Model::Float32 | Model::Float32Naive => Prepared::F32(
             triangles
                 .iter()
@@ -223,6 +215,24 @@ pub fn prepare(model: Model, triangles: &[Triangle], conv: &Convention) -> Resul
             float_rule(model),
         ),
     })
+}
+
+/// Snaps every triangle and checks it against the integer envelope.
+fn fixed_triangles(triangles: &[Triangle], conv: &Convention) -> Result<Vec<FixedTriangle>, ModelError> {
+    triangles
+        .iter()
+        .enumerate()
+        .map(|(k, t)| {
+            t.snapped(conv)
+                .to_fixed()
+                .map_err(|(vertex, axis, error)| ModelError::Envelope {
+                    triangle: k,
+                    vertex,
+                    axis,
+                    error,
+                })
+        })
+        .collect()
 }
 
 fn float_rule(model: Model) -> FloatRule {
@@ -249,6 +259,10 @@ impl Prepared {
                 .iter()
                 .enumerate()
                 .for_each(|(k, t)| fixed::rasterize(t, id_of(k), target, sink)),
+            Prepared::Scanline(ts) => ts
+                .iter()
+                .enumerate()
+                .for_each(|(k, t)| scanline::rasterize(t, id_of(k), target, sink)),
             Prepared::F32(ts, rule) => ts
                 .iter()
                 .enumerate()
@@ -274,7 +288,7 @@ impl Prepared {
                 );
                 gouraud_exact(&ts[k], colours, &p).map_or([0; 3], |c| c.each_ref().map(to_channel))
             }
-            Prepared::Fixed(ts) => {
+            Prepared::Fixed(ts) | Prepared::Scanline(ts) => {
                 let b = barycentric_fixed(&ts[k], x, y, target);
                 if b.area2 == 0 {
                     return [0; 3];
@@ -359,7 +373,7 @@ pub fn prepare_lines(model: Model, lines: &[Line], conv: &Convention) -> Result<
                 let (a, b) = l.pixel_endpoints().ok_or(ModelError::LineEndpoints { line: k })?;
                 Ok(match model {
                     Model::Exact | Model::ExactSnapped => PreparedLine::IdealBresenham(a, b, tie),
-                    Model::Fixed => PreparedLine::Bresenham(a, b, tie),
+                    Model::Fixed | Model::Scanline => PreparedLine::Bresenham(a, b, tie),
                     Model::Float32 | Model::Float32Naive => PreparedLine::Dda32(a, b),
                     Model::Float64 | Model::Float64Naive => PreparedLine::Dda64(a, b),
                 })
@@ -380,7 +394,7 @@ pub fn prepare_lines(model: Model, lines: &[Line], conv: &Convention) -> Result<
                             back(snap(&l.to)),
                         ))))
                     }
-                    Model::Fixed => {
+                    Model::Fixed | Model::Scanline => {
                         let fixed = |p: &Point, end: &'static str| -> Result<[SubPixel; 2], ModelError> {
                             let [x, y] = snap(p);
                             let f = |v: &num_bigint::BigInt, axis| {

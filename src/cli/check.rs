@@ -163,6 +163,7 @@ fn run_case(c: &Case) -> (Vec<Outcome>, Vec<f64>) {
             &[
                 Model::ExactSnapped,
                 Model::Fixed,
+                Model::Scanline,
                 Model::Float32,
                 Model::Float64,
                 Model::Float32Naive,
@@ -185,7 +186,7 @@ fn run_case(c: &Case) -> (Vec<Outcome>, Vec<f64>) {
                 }
                 Ok(cov) => {
                     let (name, reference) = match model {
-                        Model::ExactSnapped | Model::Fixed => ("exact-snapped", &reference_snapped),
+                        Model::ExactSnapped | Model::Fixed | Model::Scanline => ("exact-snapped", &reference_snapped),
                         _ => ("exact", &reference_exact),
                     };
                     let agreement = match reference {
@@ -213,13 +214,15 @@ fn run_case(c: &Case) -> (Vec<Outcome>, Vec<f64>) {
 
     // 3. agreement on a single random triangle (every family).
     if let Ok(reference) = render(Model::ExactSnapped, tri, &tri_target) {
-        let result = render(Model::Fixed, tri, &tri_target)
-            .map_err(|e| Violation {
-                invariant: "agreement",
-                message: e.to_string(),
-            })
-            .and_then(|cov| check_agreement("exact-snapped", &reference, "fixed", &cov, tri, &tri_target));
-        push("agreement (triangle)", Model::Fixed, result, tri, CANVAS);
+        for model in [Model::Fixed, Model::Scanline] {
+            let result = render(model, tri, &tri_target)
+                .map_err(|e| Violation {
+                    invariant: "agreement",
+                    message: e.to_string(),
+                })
+                .and_then(|cov| check_agreement("exact-snapped", &reference, model.name(), &cov, tri, &tri_target));
+            push("agreement (triangle)", model, result, tri, CANVAS);
+        }
     }
 
     // 4. invariance.
@@ -315,7 +318,10 @@ fn line_checks(c: &Case, out: &mut Vec<Outcome>) {
 
 /// Models whose violations fail the run (the float models' violations are the measured trade).
 fn must_hold(model: Model) -> bool {
-    matches!(model, Model::Exact | Model::ExactSnapped | Model::Fixed)
+    matches!(
+        model,
+        Model::Exact | Model::ExactSnapped | Model::Fixed | Model::Scanline
+    )
 }
 
 pub fn run(cases: u64, seed: u64, out: Option<&Path>, quiet: bool) -> Result<ExitCode, String> {
@@ -384,10 +390,10 @@ pub fn run(cases: u64, seed: u64, out: Option<&Path>, quiet: bool) -> Result<Exi
         );
     }
     if fatal > 0 {
-        println!("FAILED: {fatal} violations by the exact or fixed model");
+        println!("FAILED: {fatal} violations by an exact or integer model (exact, exact-snapped, fixed, scanline)");
         Ok(ExitCode::from(1))
     } else {
-        println!("ok: the exact and fixed models hold every invariant");
+        println!("ok: the exact and integer models (exact, exact-snapped, fixed, scanline) hold every invariant");
         Ok(ExitCode::SUCCESS)
     }
 }

@@ -13,7 +13,8 @@ use rasterproof::scene::parse_scene_bytes;
 pub struct Options {
     /// The scene file (JSON).
     scene: PathBuf,
-    /// exact, exact-snapped (default), fixed, float32, float64, float32-naive, float64-naive.
+    /// exact, exact-snapped (default), fixed (alias bresenham), scanline, float32 (alias dda32),
+    /// float64 (alias dda64), float32-naive, float64-naive.
     #[arg(long, default_value = "exact-snapped")]
     model: String,
     /// Override the scene's preset: d3d11, vulkan, gl, cts (the scene's explicit

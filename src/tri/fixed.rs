@@ -102,7 +102,7 @@ pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target:
 }
 
 /// The pixels whose sample lies in the triangle's bounding box, on the canvas.
-fn sample_range(tri: &FixedTriangle, one: i64, centre: i64, target: &Target) -> Option<PixelRange> {
+pub(crate) fn sample_range(tri: &FixedTriangle, one: i64, centre: i64, target: &Target) -> Option<PixelRange> {
     let v = tri.coords();
     let min = |axis: usize| v.iter().map(|p| p[axis]).min().expect("three vertices");
     let max = |axis: usize| v.iter().map(|p| p[axis]).max().expect("three vertices");

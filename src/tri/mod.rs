@@ -6,6 +6,7 @@
 pub mod exact;
 pub mod fixed;
 pub mod float;
+pub mod scanline;
 
 /// A pixel index from an exact integer, saturating by sign: anything beyond i64 is far off
 /// any canvas either way, on the side its sign says.
