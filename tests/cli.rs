@@ -291,7 +291,9 @@ fn check_runs_the_suite() {
     ] {
         assert!(text.contains(needle), "{needle} missing:\n{text}");
     }
-    assert!(text.contains("ok: the exact and integer models (exact, exact-snapped, fixed, scanline) hold every invariant"));
+    assert!(
+        text.contains("ok: the exact and integer models (exact, exact-snapped, fixed, scanline) hold every invariant")
+    );
     for entry in std::fs::read_dir(dir.path()).unwrap() {
         let path = entry.unwrap().path();
         if path.extension().is_some_and(|e| e == "json") {
