@@ -30,22 +30,9 @@ const SIDE: u32 = 1024;
 const LINES: usize = 100_000;
 const EXACT_LINES: usize = 1000;
 
-/// A small deterministic generator (xorshift64*), so every run draws the same lines.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
-    }
-
-    /// Uniform in `lo..=hi` (modulo bias is irrelevant here).
-    fn range(&mut self, lo: i64, hi: i64) -> i64 {
-        lo + i64::try_from(self.next() % (hi - lo + 1).unsigned_abs()).unwrap()
-    }
-}
+#[path = "../tests/common/rng.rs"]
+mod rng;
+use rng::Rng;
 
 /// `n` lines: start on the canvas, major length 1..=1000, minor length 0..=major, random
 /// signs and major axis.

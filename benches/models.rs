@@ -14,22 +14,9 @@ use rasterproof::coverage::CountBuffer;
 use rasterproof::geom::{Point, Triangle};
 use rasterproof::model::{prepare, Model};
 
-/// A small deterministic generator (xorshift64*), so every run draws the same scenes.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
-    }
-
-    /// Uniform in `0..n` subpixels (n small: modulo bias is irrelevant here).
-    fn below(&mut self, n: i64) -> i64 {
-        i64::try_from(self.next() % n.unsigned_abs()).unwrap()
-    }
-}
+#[path = "../tests/common/rng.rs"]
+mod rng;
+use rng::Rng;
 
 /// `n` triangles on the 1/256 grid of a `side` canvas, vertices within `spread` px of a
 /// random centre.

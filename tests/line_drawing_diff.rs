@@ -25,23 +25,9 @@ use num_traits::{Signed, ToPrimitive};
 use rasterproof::line::exact::{ideal, IdealLine};
 use rasterproof::line::{bresenham, Axes, BresenhamTie};
 
-/// xorshift64*: deterministic, so every run draws the same lines.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
-    }
-
-    /// Uniform in `lo..=hi` (modulo bias irrelevant at these sizes).
-    fn range(&mut self, lo: i64, hi: i64) -> i64 {
-        let n = u64::try_from(hi - lo + 1).unwrap();
-        lo + i64::try_from(self.next() % n).unwrap()
-    }
-}
+#[path = "common/rng.rs"]
+mod rng;
+use rng::Rng;
 
 /// `n` lines: a start within ±300, a major length in 0..200, a minor length in
 /// 0..=major (a quarter of them chosen to make exact ties likely: major even, minor odd),

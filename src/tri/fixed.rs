@@ -34,17 +34,13 @@ pub const BLOCK: u32 = 8;
 /// assert_eq!(a, b);
 /// ```
 pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target: &Target, sink: &mut S) {
-    let conv = &target.convention;
-    assert_eq!(
-        tri.bits, conv.subpixel_bits,
-        "triangle snapped to another grid than the target's"
-    );
-    let Some(edges) = triangle_edges(tri, conv.tie_rule) else {
-        return;
-    };
-    let one = 1i64 << conv.subpixel_bits;
-    let centre = conv.pixel_centre.offset_subpixels(conv.subpixel_bits);
-    let Some(range) = sample_range(tri, one, centre, target) else {
+    let Some(Setup {
+        edges,
+        one,
+        centre,
+        range,
+    }) = setup(tri, target)
+    else {
         return;
     };
     let sample = |x: u32, y: u32| [i64::from(x) * one + centre, i64::from(y) * one + centre];
@@ -101,8 +97,43 @@ pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target:
     }
 }
 
+/// The per-triangle setup shared by the integer rasterizers.
+pub(crate) struct Setup {
+    /// The oriented edges with their tie-rule biases.
+    pub edges: [FixedEdge; 3],
+    /// One pixel in subpixels, 2^S.
+    pub one: i64,
+    /// The sample's offset in the pixel, in subpixels.
+    pub centre: i64,
+    /// The pixels whose sample lies in the bounding box, on the canvas.
+    pub range: PixelRange,
+}
+
+/// Orients `tri` and finds its pixel range; `None` when it covers nothing (zero area, or
+/// off the canvas).
+///
+/// # Panics
+/// When `tri` was snapped to another grid than `target`'s subpixel bits.
+pub(crate) fn setup(tri: &FixedTriangle, target: &Target) -> Option<Setup> {
+    let conv = &target.convention;
+    assert_eq!(
+        tri.bits, conv.subpixel_bits,
+        "triangle snapped to another grid than the target's"
+    );
+    let edges = triangle_edges(tri, conv.tie_rule)?;
+    let one = 1i64 << conv.subpixel_bits;
+    let centre = conv.pixel_centre.offset_subpixels(conv.subpixel_bits);
+    let range = sample_range(tri, one, centre, target)?;
+    Some(Setup {
+        edges,
+        one,
+        centre,
+        range,
+    })
+}
+
 /// The pixels whose sample lies in the triangle's bounding box, on the canvas.
-pub(crate) fn sample_range(tri: &FixedTriangle, one: i64, centre: i64, target: &Target) -> Option<PixelRange> {
+fn sample_range(tri: &FixedTriangle, one: i64, centre: i64, target: &Target) -> Option<PixelRange> {
     let v = tri.coords();
     let min = |axis: usize| v.iter().map(|p| p[axis]).min().expect("three vertices");
     let max = |axis: usize| v.iter().map(|p| p[axis]).max().expect("three vertices");

@@ -13,9 +13,9 @@
 
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
-use crate::edge::fixed::{triangle_edges, FixedEdge};
+use crate::edge::fixed::FixedEdge;
 use crate::geom::FixedTriangle;
-use crate::tri::fixed::sample_range;
+use crate::tri::fixed::{setup, Setup};
 
 /// One edge's bound on the pixel index `i`, walked down the rows: the bound is
 /// `ceil(value / d)` (a left edge: `i >= bound`) or `floor(value / d)` (a right edge:
@@ -108,20 +108,16 @@ impl Walker {
 /// # Panics
 /// When `tri` was snapped to another grid than `target`'s subpixel bits.
 pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target: &Target, sink: &mut S) {
-    let conv = &target.convention;
-    assert_eq!(
-        tri.bits, conv.subpixel_bits,
-        "triangle snapped to another grid than the target's"
-    );
-    let Some(edges) = triangle_edges(tri, conv.tie_rule) else {
+    let Some(Setup {
+        edges,
+        one,
+        centre,
+        range,
+    }) = setup(tri, target)
+    else {
         return;
     };
-    let one = 1i64 << conv.subpixel_bits;
-    let c = conv.pixel_centre.offset_subpixels(conv.subpixel_bits);
-    let Some(range) = sample_range(tri, one, c, target) else {
-        return;
-    };
-    let (one, c) = (i128::from(one), i128::from(c));
+    let (one, c) = (i128::from(one), i128::from(centre));
     let sy0 = i128::from(range.y0) * one + c;
     let mut walkers: Vec<Walker> = edges
         .iter()
