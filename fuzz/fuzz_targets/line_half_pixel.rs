@@ -18,9 +18,12 @@ use std::collections::HashSet;
 
 use arbitrary::Arbitrary;
 use libfuzzer_sys::fuzz_target;
+
+mod common;
+use common::{convention, snap_i128, PresetChoice};
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use rasterproof::convention::{PixelCentre, Preset, Rounding, Target};
+use rasterproof::convention::Target;
 use rasterproof::geom::Point;
 use rasterproof::line::{bresenham, BresenhamTie, Line, LineRule};
 use rasterproof::model::{render_primitives, Model, ModelError};
@@ -33,13 +36,6 @@ const MAX_COORD: i64 = 2000;
 enum Tie {
     Stay,
     Step,
-}
-
-#[derive(Debug, Clone, Copy, Arbitrary)]
-enum PresetChoice {
-    D3d11,
-    Gl,
-    Cts,
 }
 
 /// One diamond-line coordinate: `num / 2^(den_exp % 11)` pixels, placed by `mode`.
@@ -151,39 +147,8 @@ impl Coord {
     }
 }
 
-/// `num / den * 2^bits` rounded to an integer, ties by `rounding`, in plain i128.
-fn snap_i128(num: i128, den: i128, bits: u32, rounding: Rounding) -> i128 {
-    let scaled = num << bits;
-    let (q, r) = (scaled.div_euclid(den), scaled.rem_euclid(den));
-    match (2 * r).cmp(&den) {
-        std::cmp::Ordering::Less => q,
-        std::cmp::Ordering::Greater => q + 1,
-        std::cmp::Ordering::Equal => match rounding {
-            Rounding::NearestEven => q + (q & 1),
-            Rounding::HalfAwayFromZero => {
-                if q >= 0 {
-                    q + 1
-                } else {
-                    q
-                }
-            }
-        },
-    }
-}
-
 fn check_diamond(input: &Input) {
-    let mut conv = match input.preset {
-        PresetChoice::D3d11 => Preset::D3d11,
-        PresetChoice::Gl => Preset::Gl,
-        PresetChoice::Cts => Preset::Cts,
-    }
-    .convention();
-    if let Some(b) = input.bits {
-        conv.subpixel_bits = 1 + u32::from(b % 16);
-    }
-    if input.corner {
-        conv.pixel_centre = PixelCentre::Corner;
-    }
+    let conv = convention(input.preset, input.bits, input.corner);
     let bits = conv.subpixel_bits;
     let (w, h) = (1 + u32::from(input.width % 24), 1 + u32::from(input.height % 24));
     let target = Target::new(w, h, conv).expect("sides 1..=24 and bits 1..=16 are valid");

@@ -7,19 +7,15 @@
 
 use arbitrary::Arbitrary;
 use libfuzzer_sys::fuzz_target;
+
+mod common;
+use common::{convention, snap_i128, PresetChoice};
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use rasterproof::convention::{PixelCentre, Preset, Rounding, Target};
+use rasterproof::convention::Target;
 use rasterproof::geom::{Point, Triangle};
 use rasterproof::model::{render, Model, ModelError};
 use rasterproof::num::fixed::MAX_SUBPIXEL_MAGNITUDE;
-
-#[derive(Debug, Clone, Copy, Arbitrary)]
-enum PresetChoice {
-    D3d11,
-    Gl,
-    Cts,
-}
 
 /// One coordinate: `num / den` pixels, placed according to `mode`.
 #[derive(Debug, Clone, Copy, Arbitrary)]
@@ -72,40 +68,8 @@ impl Coord {
     }
 }
 
-/// `num / den * 2^bits` rounded to an integer, ties by `rounding`, in plain i128.
-fn snap_i128(num: i128, den: i128, bits: u32, rounding: Rounding) -> i128 {
-    let scaled = num << bits;
-    let (q, r) = (scaled.div_euclid(den), scaled.rem_euclid(den));
-    match (2 * r).cmp(&den) {
-        std::cmp::Ordering::Less => q,
-        std::cmp::Ordering::Greater => q + 1,
-        std::cmp::Ordering::Equal => match rounding {
-            Rounding::NearestEven => q + (q & 1),
-            // The value is q + 1/2: positive exactly when q >= 0.
-            Rounding::HalfAwayFromZero => {
-                if q >= 0 {
-                    q + 1
-                } else {
-                    q
-                }
-            }
-        },
-    }
-}
-
 fuzz_target!(|input: Input| {
-    let mut conv = match input.preset {
-        PresetChoice::D3d11 => Preset::D3d11,
-        PresetChoice::Gl => Preset::Gl,
-        PresetChoice::Cts => Preset::Cts,
-    }
-    .convention();
-    if let Some(b) = input.bits {
-        conv.subpixel_bits = 1 + u32::from(b % 16);
-    }
-    if input.corner {
-        conv.pixel_centre = PixelCentre::Corner;
-    }
+    let conv = convention(input.preset, input.bits, input.corner);
     let bits = conv.subpixel_bits;
     let (w, h) = (1 + u32::from(input.width % 48), 1 + u32::from(input.height % 48));
     let target = Target::new(w, h, conv).expect("sides 1..=48 and bits 1..=16 are valid");

@@ -51,11 +51,20 @@ fn less(t0: (i128, i128), t1: (i128, i128)) -> bool {
 /// # Panics
 /// When `seg` was snapped to another grid than `target`'s subpixel bits.
 pub fn exits(seg: &FixedSegment, i: i64, j: i64, target: &Target) -> bool {
-    let conv = &target.convention;
+    assert_same_grid(seg, target);
+    exits_on_grid(seg, i, j, target)
+}
+
+fn assert_same_grid(seg: &FixedSegment, target: &Target) {
     assert_eq!(
-        seg.bits, conv.subpixel_bits,
+        seg.bits, target.convention.subpixel_bits,
         "segment snapped to another grid than the target's"
     );
+}
+
+/// [`exits`] without the grid check: `draw` checks once per segment, not per pixel.
+fn exits_on_grid(seg: &FixedSegment, i: i64, j: i64, target: &Target) -> bool {
+    let conv = &target.convention;
     let one = 1i128 << conv.subpixel_bits;
     let c = i128::from(conv.pixel_centre.offset_subpixels(conv.subpixel_bits));
     let (cx, cy) = (i128::from(i) * one + c, i128::from(j) * one + c);
@@ -103,11 +112,8 @@ pub fn exits(seg: &FixedSegment, i: i64, j: i64, target: &Target) -> bool {
 /// # Panics
 /// When `seg` was snapped to another grid than `target`'s subpixel bits.
 pub fn draw<S: CoverageSink + ?Sized>(seg: &FixedSegment, id: u32, target: &Target, sink: &mut S) {
+    assert_same_grid(seg, target);
     let conv = &target.convention;
-    assert_eq!(
-        seg.bits, conv.subpixel_bits,
-        "segment snapped to another grid than the target's"
-    );
     let one = 1i64 << conv.subpixel_bits;
     let c = conv.pixel_centre.offset_subpixels(conv.subpixel_bits);
     let [ax, ay] = seg.a.map(SubPixel::get);
@@ -142,7 +148,7 @@ pub fn draw<S: CoverageSink + ?Sized>(seg: &FixedSegment, id: u32, target: &Targ
         let near = i64::try_from(near).expect("inside the envelope");
         for m in (near - 2).max(0)..=(near + 2).min(i64::from(side_min) - 1) {
             let (i, j) = if x_major { (k, m) } else { (m, k) };
-            if exits(seg, i, j, target) {
+            if exits_on_grid(seg, i, j, target) {
                 cover_if_on_canvas([i, j], id, target, sink);
             }
         }

@@ -119,21 +119,19 @@ pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target:
     };
     let (one, c) = (i128::from(one), i128::from(centre));
     let sy0 = i128::from(range.y0) * one + c;
-    let mut walkers: Vec<Walker> = edges
-        .iter()
-        .filter(|e| e.dy != 0)
-        .map(|e| Walker::new(e, sy0, one, c))
-        .collect();
-    let horizontal: Vec<&FixedEdge> = edges.iter().filter(|e| e.dy == 0).collect();
+    // Per edge: a walker for a sloped edge, or the edge itself for a horizontal one.
+    let mut walkers: [Option<Walker>; 3] = edges.map(|e| (e.dy != 0).then(|| Walker::new(&e, sy0, one, c)));
+    let horizontal: [Option<FixedEdge>; 3] = edges.map(|e| (e.dy == 0).then_some(e));
     for j in range.y0..=range.y1 {
         let sy = i128::from(j) * one + c;
         // A horizontal edge: inside iff -(sy - ay) dx - bias >= 0, the same for the whole row.
         let row_open = horizontal
             .iter()
+            .flatten()
             .all(|e| -(sy - i128::from(e.a[1])) * i128::from(e.dx) - i128::from(e.bias) >= 0);
         let mut lo = i128::from(range.x0);
         let mut hi = i128::from(range.x1);
-        for w in &walkers {
+        for w in walkers.iter().flatten() {
             if w.left {
                 lo = lo.max(w.q);
             } else {
@@ -145,6 +143,6 @@ pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target:
             let hi = u32::try_from(hi).expect("clamped to the canvas range");
             sink.cover_span(j, lo, hi, id);
         }
-        walkers.iter_mut().for_each(Walker::step);
+        walkers.iter_mut().flatten().for_each(Walker::step);
     }
 }
