@@ -48,6 +48,7 @@ pub mod check;
 pub mod convention;
 pub mod coverage;
 pub mod edge;
+pub mod fill;
 pub mod geom;
 pub mod interp;
 pub mod line;

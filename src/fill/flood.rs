@@ -1,0 +1,1 @@
+//! Flood fill on a raster (seed 002). Work in progress.
