@@ -161,6 +161,166 @@ impl FixedTriangle {
     }
 }
 
+/// How a polygon's winding number decides which samples are inside.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum FillRule {
+    /// Inside where the winding number is not zero (SVG's and Canvas 2D's default).
+    NonZero,
+    /// Inside where the winding number is odd.
+    EvenOdd,
+}
+
+impl FillRule {
+    /// The name used in scene files.
+    pub fn name(self) -> &'static str {
+        match self {
+            FillRule::NonZero => "nonzero",
+            FillRule::EvenOdd => "even-odd",
+        }
+    }
+
+    /// Parses a name written by [`FillRule::name`].
+    pub fn from_name(name: &str) -> Option<FillRule> {
+        [FillRule::NonZero, FillRule::EvenOdd]
+            .into_iter()
+            .find(|r| r.name() == name)
+    }
+
+    /// Whether a sample with winding number `w` is inside.
+    pub fn inside(self, w: i64) -> bool {
+        match self {
+            FillRule::NonZero => w != 0,
+            FillRule::EvenOdd => w.rem_euclid(2) == 1,
+        }
+    }
+}
+
+/// A polygon with exact vertices: an outline and holes, each a closed contour (the last
+/// vertex joins the first), in either orientation.
+///
+/// Its region is decided by the winding number of the moved sample (the tie rule's ε
+/// reading, [`crate::convention::TieRule`]) with each contour's orientation normalised
+/// first: the outline counts +1 around its interior and every hole -1 (a contour is
+/// reversed when its signed area says so; a zero-area contour is taken as written). Holes
+/// are therefore holes under both fill rules, and even-odd and nonzero agree on a simple
+/// polygon; they differ where a self-intersecting outline winds twice.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct Polygon {
+    /// The outer contour.
+    pub outline: Vec<Point>,
+    /// The holes.
+    pub holes: Vec<Vec<Point>>,
+    /// Even-odd or nonzero.
+    pub fill_rule: FillRule,
+}
+
+impl Polygon {
+    /// A polygon without holes.
+    pub fn new(outline: Vec<Point>, fill_rule: FillRule) -> Polygon {
+        Polygon {
+            outline,
+            holes: Vec::new(),
+            fill_rule,
+        }
+    }
+
+    /// The outline, then the holes.
+    pub fn contours(&self) -> impl Iterator<Item = &[Point]> + '_ {
+        std::iter::once(self.outline.as_slice()).chain(self.holes.iter().map(Vec::as_slice))
+    }
+
+    /// The polygon moved by whole pixels.
+    pub fn translated(&self, dx: i64, dy: i64) -> Polygon {
+        let (dx, dy) = (
+            BigRational::from_integer(dx.into()),
+            BigRational::from_integer(dy.into()),
+        );
+        let mv = |c: &Vec<Point>| -> Vec<Point> { c.iter().map(|p| Point::new(&p.x + &dx, &p.y + &dy)).collect() };
+        Polygon {
+            outline: mv(&self.outline),
+            holes: self.holes.iter().map(mv).collect(),
+            fill_rule: self.fill_rule,
+        }
+    }
+
+    /// The polygon with every vertex snapped to the convention's grid, as exact rationals
+    /// again (the `exact-snapped` model's input).
+    pub fn snapped_exact(&self, convention: &Convention) -> Polygon {
+        let bits = convention.subpixel_bits;
+        let s = |x: &BigRational| dyadic(&snap(x, bits, convention.rounding), bits);
+        let mv = |c: &Vec<Point>| -> Vec<Point> { c.iter().map(|p| Point::new(s(&p.x), s(&p.y))).collect() };
+        Polygon {
+            outline: mv(&self.outline),
+            holes: self.holes.iter().map(mv).collect(),
+            fill_rule: self.fill_rule,
+        }
+    }
+
+    /// The snapped polygon in the integer models' form; an error names the first vertex
+    /// coordinate outside the envelope as `(contour, vertex, axis, error)`, contour 0
+    /// being the outline and `k` the hole `k - 1`.
+    pub fn to_fixed(&self, convention: &Convention) -> Result<FixedPolygon, (usize, usize, char, EnvelopeError)> {
+        let bits = convention.subpixel_bits;
+        let mut contours = Vec::with_capacity(1 + self.holes.len());
+        for (k, contour) in self.contours().enumerate() {
+            let mut out = Vec::with_capacity(contour.len());
+            for (i, p) in contour.iter().enumerate() {
+                let f = |x: &BigRational, axis| {
+                    SubPixel::try_from_bigint(&snap(x, bits, convention.rounding), bits)
+                        .map(SubPixel::get)
+                        .map_err(|e| (k, i, axis, e))
+                };
+                out.push([f(&p.x, 'x')?, f(&p.y, 'y')?]);
+            }
+            contours.push(out);
+        }
+        Ok(FixedPolygon {
+            contours,
+            fill_rule: self.fill_rule,
+            bits,
+        })
+    }
+}
+
+/// A polygon in subpixels, every coordinate inside the integer models' envelope
+/// (`|v| <= 2^29`) by construction.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct FixedPolygon {
+    contours: Vec<Vec<[i64; 2]>>,
+    /// Even-odd or nonzero.
+    pub fill_rule: FillRule,
+    /// The grid: 2^-bits pixel.
+    pub bits: u32,
+}
+
+impl FixedPolygon {
+    /// A polygon from contours in subpixels (the first is the outline, the rest holes);
+    /// `None` when a coordinate is outside the envelope or there is no outline.
+    pub fn new(contours: Vec<Vec<[i64; 2]>>, fill_rule: FillRule, bits: u32) -> Option<FixedPolygon> {
+        let inside = contours.iter().flatten().flatten().all(|&v| SubPixel::new(v).is_some());
+        (inside && !contours.is_empty()).then_some(FixedPolygon {
+            contours,
+            fill_rule,
+            bits,
+        })
+    }
+
+    /// The outline, then the holes: `[x, y]` subpixels.
+    pub fn contours(&self) -> &[Vec<[i64; 2]>] {
+        &self.contours
+    }
+
+    /// The polygon as exact rationals (for the oracle).
+    pub fn to_exact(&self) -> Polygon {
+        let pt = |&[x, y]: &[i64; 2]| Point::new(dyadic(&x.into(), self.bits), dyadic(&y.into(), self.bits));
+        Polygon {
+            outline: self.contours[0].iter().map(pt).collect(),
+            holes: self.contours[1..].iter().map(|c| c.iter().map(pt).collect()).collect(),
+            fill_rule: self.fill_rule,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -10,7 +10,9 @@ use num_rational::BigRational;
 
 use crate::convention::{Convention, Target};
 use crate::coverage::{primitive_colour, Coverage, CoverageSink};
-use crate::geom::{FixedTriangle, Point, Triangle};
+use crate::fill;
+use crate::fill::triangulate::{triangulate, TriangulateError};
+use crate::geom::{FixedPolygon, FixedTriangle, Point, Polygon, Triangle};
 use crate::interp::{barycentric_fixed, gouraud_exact, gouraud_f32, gouraud_f64, to_channel, Rgb};
 use crate::line::diamond::FixedSegment;
 use crate::line::{self, BresenhamTie, Line, LineRule};
@@ -140,6 +142,33 @@ pub enum ModelError {
         /// The model.
         model: Model,
     },
+    /// A snapped polygon vertex outside the integer envelope.
+    PolygonEnvelope {
+        /// Polygon index (among the polygons).
+        polygon: usize,
+        /// 0 for the outline, `k` for hole `k - 1`.
+        contour: usize,
+        /// Vertex index within the contour.
+        vertex: usize,
+        /// `'x'` or `'y'`.
+        axis: char,
+        /// The value and the limit.
+        error: EnvelopeError,
+    },
+    /// The `fixed` model triangulates polygons; this one cannot be triangulated.
+    Triangulate {
+        /// Polygon index (among the polygons).
+        polygon: usize,
+        /// Why.
+        error: TriangulateError,
+    },
+    /// A float model asked for a polygon (polygons are filled by exact and integer models).
+    NoFloatPolygon {
+        /// Polygon index (among the polygons).
+        polygon: usize,
+        /// The model.
+        model: Model,
+    },
 }
 
 impl fmt::Display for ModelError {
@@ -168,6 +197,23 @@ impl fmt::Display for ModelError {
             ModelError::NoFloatDiamond { line, model } => write!(
                 f,
                 "lines[{line}]: the {model} model draws lines with the DDA only; use exact, exact-snapped or fixed for \"rule\": \"diamond\""
+            ),
+            ModelError::PolygonEnvelope {
+                polygon,
+                contour,
+                vertex,
+                axis,
+                error,
+            } => match contour {
+                0 => write!(f, "polygons[{polygon}].v[{vertex}].{axis}: {error}"),
+                k => write!(f, "polygons[{polygon}].holes[{}][{vertex}].{axis}: {error}", k - 1),
+            },
+            ModelError::Triangulate { polygon, error } => {
+                write!(f, "polygons[{polygon}]: cannot triangulate for the fixed model: {error}")
+            }
+            ModelError::NoFloatPolygon { polygon, model } => write!(
+                f,
+                "polygons[{polygon}]: the {model} model has no polygon fill; use exact, exact-snapped, scanline or fixed"
             ),
         }
     }
@@ -436,19 +482,80 @@ impl PreparedLine {
     }
 }
 
-/// Renders triangles (ids `0..`) then lines (ids after the triangles) with `model`.
+/// A polygon converted for one model.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum PreparedPolygon {
+    /// The oracle's input: the polygon as written (`exact`) or snapped (`exact-snapped`).
+    Exact(Polygon),
+    /// The scanline filler's input.
+    Scanline(FixedPolygon),
+    /// The `fixed` model's input: the snapped polygon's triangulation.
+    Triangles(Vec<FixedTriangle>),
+}
+
+/// Converts `polygons` for `model`; the first polygon it cannot take is the error.
+pub fn prepare_polygons(
+    model: Model,
+    polygons: &[Polygon],
+    conv: &Convention,
+) -> Result<Vec<PreparedPolygon>, ModelError> {
+    polygons
+        .iter()
+        .enumerate()
+        .map(|(k, p)| {
+            let fixed = || {
+                p.to_fixed(conv)
+                    .map_err(|(contour, vertex, axis, error)| ModelError::PolygonEnvelope {
+                        polygon: k,
+                        contour,
+                        vertex,
+                        axis,
+                        error,
+                    })
+            };
+            Ok(match model {
+                Model::Exact => PreparedPolygon::Exact(p.clone()),
+                Model::ExactSnapped => PreparedPolygon::Exact(p.snapped_exact(conv)),
+                Model::Scanline => PreparedPolygon::Scanline(fixed()?),
+                Model::Fixed => PreparedPolygon::Triangles(
+                    triangulate(&fixed()?).map_err(|error| ModelError::Triangulate { polygon: k, error })?,
+                ),
+                _ => return Err(ModelError::NoFloatPolygon { polygon: k, model }),
+            })
+        })
+        .collect()
+}
+
+impl PreparedPolygon {
+    /// Fills the polygon with id `id`.
+    pub fn fill<S: CoverageSink + ?Sized>(&self, id: u32, target: &Target, sink: &mut S) {
+        match self {
+            PreparedPolygon::Exact(p) => fill::polygon::rasterize_exact(p, id, target, sink),
+            PreparedPolygon::Scanline(p) => fill::polygon::rasterize(p, id, target, sink),
+            PreparedPolygon::Triangles(ts) => ts.iter().for_each(|t| fixed::rasterize(t, id, target, sink)),
+        }
+    }
+}
+
+/// Renders triangles (ids `0..`), then lines, then polygons (ids after the triangles and
+/// lines, in that order) with `model`.
 pub fn render_primitives(
     model: Model,
     triangles: &[Triangle],
     lines: &[Line],
+    polygons: &[Polygon],
     target: &Target,
 ) -> Result<Coverage, ModelError> {
     let prepared = prepare(model, triangles, &target.convention)?;
     let lines = prepare_lines(model, lines, &target.convention)?;
+    let polygons = prepare_polygons(model, polygons, &target.convention)?;
     let mut coverage = Coverage::new(target.width, target.height);
     prepared.rasterize_into(target, &mut coverage);
     for (k, l) in lines.iter().enumerate() {
         l.draw(id_of(triangles.len() + k), target, &mut coverage);
+    }
+    for (k, p) in polygons.iter().enumerate() {
+        p.fill(id_of(triangles.len() + lines.len() + k), target, &mut coverage);
     }
     Ok(coverage)
 }

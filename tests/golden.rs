@@ -256,7 +256,7 @@ fn review_case_01_exact_diamond_line_at_i64_limits() {
         );
         let s = parse_scene(&text, "s.json").unwrap();
         let target = s.target().unwrap();
-        let c = render_primitives(Model::Exact, &[], &s.lines, &target).unwrap();
+        let c = render_primitives(Model::Exact, &[], &s.lines, &[], &target).unwrap();
         // Only lines that cross the canvas cover anything; none of these is near row 0..3 of
         // columns < 400 except the first two, which do cross it.
         assert!(c.covered_pixels() <= 400, "{a} -> {b}");

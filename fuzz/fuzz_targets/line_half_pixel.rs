@@ -167,8 +167,8 @@ fn check_diamond(input: &Input) {
 
     let lines = std::slice::from_ref(&line);
     let exact =
-        render_primitives(Model::ExactSnapped, &[], lines, &target).expect("exact-snapped takes every diamond line");
-    match render_primitives(Model::Fixed, &[], lines, &target) {
+        render_primitives(Model::ExactSnapped, &[], lines, &[], &target).expect("exact-snapped takes every diamond line");
+    match render_primitives(Model::Fixed, &[], lines, &[], &target) {
         Ok(fixed) => {
             assert_eq!(first_outside, None, "fixed accepted a coordinate beyond 2^29 subpixels");
             assert_eq!(

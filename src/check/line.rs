@@ -174,8 +174,9 @@ pub fn check_diamond_agreement(line: &Line, target: &Target) -> Result<(), Viola
         return Ok(());
     }
     let lines = std::slice::from_ref(line);
-    let render =
-        |m| render_primitives(m, &[], lines, target).map_err(|e| Violation::new("diamond agreement", e.to_string()));
+    let render = |m| {
+        render_primitives(m, &[], lines, &[], target).map_err(|e| Violation::new("diamond agreement", e.to_string()))
+    };
     let (exact, fixed) = (render(Model::ExactSnapped)?, render(Model::Fixed)?);
     match diff(&exact, &fixed).first() {
         None => Ok(()),

@@ -5,7 +5,7 @@ use std::process::ExitCode;
 
 use rasterproof::convention::Preset;
 use rasterproof::coverage::Coverage;
-use rasterproof::model::{prepare, prepare_lines, Model};
+use rasterproof::model::{prepare, prepare_lines, prepare_polygons, Model};
 use rasterproof::scene::parse_scene_bytes;
 
 /// What `render` was asked to do.
@@ -14,7 +14,8 @@ pub struct Options {
     /// The scene file (JSON).
     scene: PathBuf,
     /// exact, exact-snapped (default), fixed (alias bresenham), scanline, float32 (alias dda32),
-    /// float64 (alias dda64), float32-naive, float64-naive.
+    /// float64 (alias dda64), float32-naive, float64-naive. Polygons: exact, exact-snapped,
+    /// scanline (active edge table), fixed (triangulated; simple polygons only).
     #[arg(long, default_value = "exact-snapped")]
     model: String,
     /// Override the scene's preset: d3d11, vulkan, gl, cts (the scene's explicit
@@ -63,11 +64,15 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let fail = |e: rasterproof::model::ModelError| format!("{name}: {e} (model {model})");
     let prepared = prepare(model, &scene.triangles(), &target.convention).map_err(fail)?;
     let lines = prepare_lines(model, &scene.lines, &target.convention).map_err(fail)?;
+    let polygons = prepare_polygons(model, &scene.polygons, &target.convention).map_err(fail)?;
     let mut coverage = Coverage::new(target.width, target.height);
     prepared.rasterize_into(&target, &mut coverage);
+    let id = |k: usize| u32::try_from(k).map_err(|_| format!("{name}: too many primitives"));
     for (k, line) in lines.iter().enumerate() {
-        let id = u32::try_from(scene.triangles.len() + k).map_err(|_| format!("{name}: too many primitives"))?;
-        line.draw(id, &target, &mut coverage);
+        line.draw(id(scene.triangles.len() + k)?, &target, &mut coverage);
+    }
+    for (k, polygon) in polygons.iter().enumerate() {
+        polygon.fill(id(scene.triangles.len() + lines.len() + k)?, &target, &mut coverage);
     }
 
     if let Some(path) = &o.out {

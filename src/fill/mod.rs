@@ -3,3 +3,5 @@
 //! Delaunay triangulation).
 
 pub mod flood;
+pub mod polygon;
+pub mod triangulate;

@@ -2,6 +2,7 @@
 //! documented envelope ([`fixed`]), and precision planning ([`plan`]): the cheapest
 //! integer width that is provably exact for a scene's bounds.
 
+pub mod dda;
 pub mod exact;
 pub mod fixed;
 pub mod plan;

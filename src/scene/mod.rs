@@ -9,7 +9,7 @@ use std::fmt::Write as _;
 use num_rational::BigRational;
 
 use crate::convention::{Convention, PixelCentre, Preset, Rounding, Target, TieRule};
-use crate::geom::Triangle;
+use crate::geom::{Point, Polygon, Triangle};
 use crate::interp::Rgb;
 use crate::line::{Line, LineRule};
 
@@ -66,6 +66,8 @@ pub struct Scene {
     pub triangles: Vec<SceneTriangle>,
     /// `lines`, ids after the triangles, in file order.
     pub lines: Vec<Line>,
+    /// `polygons`, ids after the triangles and the lines, in file order.
+    pub polygons: Vec<Polygon>,
 }
 
 impl Scene {
@@ -84,6 +86,7 @@ impl Scene {
                 })
                 .collect(),
             lines: Vec::new(),
+            polygons: Vec::new(),
         }
     }
 
@@ -137,12 +140,7 @@ impl Scene {
         s.push_str("  \"triangles\": [");
         for (k, t) in self.triangles.iter().enumerate() {
             s.push_str(if k == 0 { "\n    " } else { ",\n    " });
-            let v: Vec<String> = t
-                .triangle
-                .v
-                .iter()
-                .map(|p| format!("[\"{}\", \"{}\"]", exact_text(&p.x), exact_text(&p.y)))
-                .collect();
+            let v: Vec<String> = t.triangle.v.iter().map(pt).collect();
             let _ = write!(s, "{{\"v\": [{}]", v.join(", "));
             if let Some(c) = t.colours {
                 let c: Vec<String> = c.iter().map(|c| format!("[{}, {}, {}]", c[0], c[1], c[2])).collect();
@@ -155,7 +153,6 @@ impl Scene {
             s.push_str(",\n  \"lines\": [");
             for (k, l) in self.lines.iter().enumerate() {
                 s.push_str(if k == 0 { "\n    " } else { ",\n    " });
-                let pt = |p: &crate::geom::Point| format!("[\"{}\", \"{}\"]", exact_text(&p.x), exact_text(&p.y));
                 let rule = match l.rule {
                     LineRule::Bresenham(tie) => format!("\"rule\": \"bresenham\", \"tie\": \"{}\"", tie.name()),
                     LineRule::Diamond => "\"rule\": \"diamond\"".to_string(),
@@ -164,9 +161,28 @@ impl Scene {
             }
             s.push_str("\n  ]");
         }
+        if !self.polygons.is_empty() {
+            s.push_str(",\n  \"polygons\": [");
+            let contour = |c: &[Point]| format!("[{}]", c.iter().map(pt).collect::<Vec<_>>().join(", "));
+            for (k, p) in self.polygons.iter().enumerate() {
+                s.push_str(if k == 0 { "\n    " } else { ",\n    " });
+                let _ = write!(s, "{{\"v\": {}", contour(&p.outline));
+                if !p.holes.is_empty() {
+                    let holes: Vec<String> = p.holes.iter().map(|h| contour(h)).collect();
+                    let _ = write!(s, ", \"holes\": [{}]", holes.join(", "));
+                }
+                let _ = write!(s, ", \"fill_rule\": \"{}\"}}", p.fill_rule.name());
+            }
+            s.push_str("\n  ]");
+        }
         s.push_str("\n}\n");
         s
     }
+}
+
+/// A point as scene text: `["3", "-7/2"]`.
+fn pt(p: &Point) -> String {
+    format!("[\"{}\", \"{}\"]", exact_text(&p.x), exact_text(&p.y))
 }
 
 /// An exact rational as scene text: `"3"` or `"-7/2"`.

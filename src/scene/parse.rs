@@ -11,13 +11,18 @@
 //!   "lines": [
 //!     {"from": [5, 8], "to": [9, 11], "rule": "bresenham", "tie": "stay"},
 //!     {"from": ["0.5", 3], "to": [17.25, "9/4"], "rule": "diamond"}
+//!   ],
+//!   "polygons": [
+//!     {"v": [[0, 0], [40, 0], [40, 30], [0, 30]], "holes": [[[10, 10], [20, 10], [15, 20]]], "fill_rule": "nonzero"}
 //!   ]
 //! }
 //! ```
 //!
 //! Only `width` and `height` are required. Lines: `rule` is `bresenham` (default; integer
 //! pixel endpoints within ±2^24, `tie` `stay` (seed 001, default) or `step` (seed 002)) or
-//! `diamond` (any endpoints). A coordinate is a JSON number read exactly as
+//! `diamond` (any endpoints). Polygons: an outline `v` and optional `holes`, each at least
+//! 3 vertices, no hole vertex outside the outline, `fill_rule` `nonzero` (default) or
+//! `even-odd`; ids after the triangles and lines. A coordinate is a JSON number read exactly as
 //! written (`0.1` is 1/10, never an f64) or a string with a decimal or a fraction. Unknown
 //! fields are errors (a typo must not silently change the convention). Every error names
 //! the file, the field path and the value.
@@ -28,13 +33,18 @@ use serde_json::{Map, Value};
 
 use super::{Overrides, Scene, SceneError, SceneTriangle};
 use crate::convention::{PixelCentre, Preset, Rounding, TieRule, MAX_CANVAS};
-use crate::geom::{Point, Triangle};
+use crate::fill::polygon::{locate_exact, Location};
+use crate::geom::{FillRule, Point, Polygon, Triangle};
 use crate::interp::Rgb;
 use crate::line::{BresenhamTie, Line, LineRule, MAX_BRESENHAM_COORD};
 use crate::num::{parse_rational, MAX_SUBPIXEL_BITS};
 
 /// The most triangles a scene may hold (ids must fit u32; memory stays bounded).
 pub const MAX_TRIANGLES: usize = 10_000_000;
+
+/// The most vertices one polygon may have, outline and holes together (the check that
+/// every hole vertex lies inside the outline is quadratic in it).
+pub const MAX_POLYGON_VERTICES: usize = 16_384;
 
 /// Parses raw bytes (they must be UTF-8).
 pub fn parse_scene_bytes(bytes: &[u8], source: &str) -> Result<Scene, SceneError> {
@@ -74,6 +84,7 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
             "pixel_centre",
             "triangles",
             "lines",
+            "polygons",
         ],
     )?;
     let width = p.canvas_side(root, "width")?;
@@ -99,7 +110,11 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
         None => Vec::new(),
         Some(v) => p.lines(v)?,
     };
-    if triangles.len() + lines.len() > MAX_TRIANGLES {
+    let polygons = match root.get("polygons") {
+        None => Vec::new(),
+        Some(v) => p.polygons(v)?,
+    };
+    if triangles.len() + lines.len() + polygons.len() > MAX_TRIANGLES {
         return Err(p.err("", format!("more than {MAX_TRIANGLES} primitives")));
     }
     Ok(Scene {
@@ -109,6 +124,7 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
         overrides,
         triangles,
         lines,
+        polygons,
     })
 }
 
@@ -392,6 +408,97 @@ impl Parser<'_> {
             }
         }
         Ok(Line { from, to, rule })
+    }
+
+    fn polygons(&self, v: &Value) -> Result<Vec<Polygon>, SceneError> {
+        let list = self.array(v, "polygons")?;
+        if list.len() > MAX_TRIANGLES {
+            return Err(self.err("polygons", format!("{} polygons, at most {MAX_TRIANGLES}", list.len())));
+        }
+        list.iter()
+            .enumerate()
+            .map(|(k, p)| self.polygon(p, &format!("polygons[{k}]")))
+            .collect()
+    }
+
+    fn contour(&self, v: &Value, at: &str) -> Result<Vec<Point>, SceneError> {
+        let list = self.array(v, at)?;
+        if list.len() < 3 {
+            return Err(self.err(
+                at,
+                format!("a polygon contour needs at least 3 vertices, found {}", list.len()),
+            ));
+        }
+        if list.len() > MAX_POLYGON_VERTICES {
+            return Err(self.err(
+                at,
+                format!("{} vertices, at most {MAX_POLYGON_VERTICES} per polygon", list.len()),
+            ));
+        }
+        list.iter()
+            .enumerate()
+            .map(|(i, p)| self.point(Some(p), &format!("{at}[{i}]")))
+            .collect()
+    }
+
+    fn polygon(&self, v: &Value, at: &str) -> Result<Polygon, SceneError> {
+        let Value::Object(obj) = v else {
+            return Err(self.err(
+                at,
+                format!("expected an object with \"v\", found {} {}", kind(v), show(v)),
+            ));
+        };
+        self.known_fields(obj, at, &["v", "holes", "fill_rule"])?;
+        let vf = format!("{at}.v");
+        let outline = self.contour(
+            obj.get("v").ok_or_else(|| self.err(&vf, "missing (required)".into()))?,
+            &vf,
+        )?;
+        let mut holes = Vec::new();
+        if let Some(h) = obj.get("holes") {
+            let hf = format!("{at}.holes");
+            for (k, hole) in self.array(h, &hf)?.iter().enumerate() {
+                holes.push(self.contour(hole, &format!("{hf}[{k}]"))?);
+            }
+        }
+        let total = outline.len() + holes.iter().map(Vec::len).sum::<usize>();
+        if total > MAX_POLYGON_VERTICES {
+            return Err(self.err(
+                at,
+                format!("{total} vertices in the outline and holes, at most {MAX_POLYGON_VERTICES} per polygon"),
+            ));
+        }
+        let fill_rule = match obj.get("fill_rule") {
+            None => FillRule::NonZero,
+            Some(r) => {
+                let name = self.string(r, &format!("{at}.fill_rule"))?;
+                FillRule::from_name(name).ok_or_else(|| {
+                    self.err(
+                        &format!("{at}.fill_rule"),
+                        format!("unknown fill rule {name:?} (expected nonzero or even-odd)"),
+                    )
+                })?
+            }
+        };
+        for (k, hole) in holes.iter().enumerate() {
+            for (i, p) in hole.iter().enumerate() {
+                if locate_exact(p, &outline) == Location::Outside {
+                    return Err(self.err(
+                        &format!("{at}.holes[{k}][{i}]"),
+                        format!(
+                            "({}, {}) lies outside the outline {vf}",
+                            crate::scene::exact_text(&p.x),
+                            crate::scene::exact_text(&p.y)
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(Polygon {
+            outline,
+            holes,
+            fill_rule,
+        })
     }
 
     fn colours(&self, v: &Value, at: &str) -> Result<[Rgb; 3], SceneError> {

@@ -5,6 +5,8 @@
 //! Coordinates are exact rationals. Grid coordinates are multiples of 2^-8 px (the default
 //! subpixel grid) unless a family says otherwise.
 
+pub mod polygon;
+
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use proptest::prelude::*;

@@ -9,7 +9,7 @@ use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::edge::exact::triangle_edges;
 use crate::geom::{Point, Triangle};
-use crate::tri::{saturating_index, PixelRange};
+use crate::tri::exact_sample_range;
 
 /// Covers every pixel whose sample is inside `tri` under `target`'s convention.
 ///
@@ -38,7 +38,7 @@ pub fn rasterize<S: CoverageSink + ?Sized>(tri: &Triangle, id: u32, target: &Tar
     let Some(edges) = triangle_edges(tri, target.convention.tie_rule) else {
         return; // zero area: covers nothing
     };
-    let Some(range) = sample_range(tri, target) else {
+    let Some(range) = exact_sample_range(tri.v.iter(), target) else {
         return;
     };
     let centre = target.convention.pixel_centre.offset();
@@ -53,23 +53,4 @@ pub fn rasterize<S: CoverageSink + ?Sized>(tri: &Triangle, id: u32, target: &Tar
             }
         }
     }
-}
-
-/// The pixels whose sample lies in the triangle's bounding box (closed), on the canvas.
-/// Only a speed-up: no sample outside this box can be inside the triangle.
-fn sample_range(tri: &Triangle, target: &Target) -> Option<PixelRange> {
-    let centre = target.convention.pixel_centre.offset();
-    let xs = tri.v.iter().map(|p| &p.x);
-    let ys = tri.v.iter().map(|p| &p.y);
-    let (min_x, max_x) = (xs.clone().min()?, xs.max()?);
-    let (min_y, max_y) = (ys.clone().min()?, ys.max()?);
-    // sample i + c >= min  <=>  i >= ceil(min - c);  i + c <= max  <=>  i <= floor(max - c)
-    let lo = |m: &BigRational| saturating_index((m - &centre).ceil().to_integer());
-    let hi = |m: &BigRational| saturating_index((m - &centre).floor().to_integer());
-    PixelRange::clamped(
-        [lo(min_x), lo(min_y)],
-        [hi(max_x), hi(max_y)],
-        target.width,
-        target.height,
-    )
 }

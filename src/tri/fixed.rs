@@ -9,7 +9,7 @@ use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::edge::fixed::{triangle_edges, FixedEdge};
 use crate::geom::FixedTriangle;
-use crate::tri::PixelRange;
+use crate::tri::{fixed_sample_range, PixelRange};
 
 /// Block side, in pixels (the L of seed 000's `E(x+L, y) = E + L dY`).
 pub const BLOCK: u32 = 8;
@@ -123,22 +123,11 @@ pub(crate) fn setup(tri: &FixedTriangle, target: &Target) -> Option<Setup> {
     let edges = triangle_edges(tri, conv.tie_rule)?;
     let one = 1i64 << conv.subpixel_bits;
     let centre = conv.pixel_centre.offset_subpixels(conv.subpixel_bits);
-    let range = sample_range(tri, one, centre, target)?;
+    let range = fixed_sample_range(tri.coords().into_iter(), one, centre, target)?;
     Some(Setup {
         edges,
         one,
         centre,
         range,
     })
-}
-
-/// The pixels whose sample lies in the triangle's bounding box, on the canvas.
-fn sample_range(tri: &FixedTriangle, one: i64, centre: i64, target: &Target) -> Option<PixelRange> {
-    let v = tri.coords();
-    let min = |axis: usize| v.iter().map(|p| p[axis]).min().expect("three vertices");
-    let max = |axis: usize| v.iter().map(|p| p[axis]).max().expect("three vertices");
-    // i * one + centre >= min  <=>  i >= ceil((min - centre) / one)
-    let lo = |axis| -(-(min(axis) - centre)).div_euclid(one);
-    let hi = |axis| (max(axis) - centre).div_euclid(one);
-    PixelRange::clamped([lo(0), lo(1)], [hi(0), hi(1)], target.width, target.height)
 }

@@ -8,6 +8,11 @@ pub mod fixed;
 pub mod float;
 pub mod scanline;
 
+use num_rational::BigRational;
+
+use crate::convention::Target;
+use crate::geom::Point;
+
 /// A pixel index from an exact integer, saturating by sign: anything beyond i64 is far off
 /// any canvas either way, on the side its sign says.
 pub(crate) fn saturating_index(v: num_bigint::BigInt) -> i64 {
@@ -51,4 +56,46 @@ impl PixelRange {
             y1: to_u32(clamp(hi[1], height)),
         })
     }
+}
+
+/// The pixels whose sample lies in the closed bounding box of `points` (exact), on the
+/// canvas; `None` when empty. Only a speed-up for the oracles: no sample outside the box
+/// can be inside the primitive.
+pub(crate) fn exact_sample_range<'a, I>(points: I, target: &Target) -> Option<PixelRange>
+where
+    I: Iterator<Item = &'a Point> + Clone,
+{
+    let centre = target.convention.pixel_centre.offset();
+    let xs = points.clone().map(|p| &p.x);
+    let ys = points.map(|p| &p.y);
+    let (min_x, max_x) = (xs.clone().min()?, xs.max()?);
+    let (min_y, max_y) = (ys.clone().min()?, ys.max()?);
+    // sample i + c >= min  <=>  i >= ceil(min - c);  i + c <= max  <=>  i <= floor(max - c)
+    let lo = |m: &BigRational| saturating_index((m - &centre).ceil().to_integer());
+    let hi = |m: &BigRational| saturating_index((m - &centre).floor().to_integer());
+    PixelRange::clamped(
+        [lo(min_x), lo(min_y)],
+        [hi(max_x), hi(max_y)],
+        target.width,
+        target.height,
+    )
+}
+
+/// The pixels whose sample lies in the closed bounding box of `points` (subpixels, one
+/// pixel = `one`, sample offset `centre`), on the canvas; `None` when empty.
+pub(crate) fn fixed_sample_range<I>(points: I, one: i64, centre: i64, target: &Target) -> Option<PixelRange>
+where
+    I: Iterator<Item = [i64; 2]> + Clone,
+{
+    let min = |axis: usize| points.clone().map(|p| p[axis]).min();
+    let max = |axis: usize| points.clone().map(|p| p[axis]).max();
+    // i * one + centre >= min  <=>  i >= ceil((min - centre) / one)
+    let lo = |m: i64| -(-(m - centre)).div_euclid(one);
+    let hi = |m: i64| (m - centre).div_euclid(one);
+    PixelRange::clamped(
+        [lo(min(0)?), lo(min(1)?)],
+        [hi(max(0)?), hi(max(1)?)],
+        target.width,
+        target.height,
+    )
 }

@@ -15,22 +15,16 @@ use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::edge::fixed::FixedEdge;
 use crate::geom::FixedTriangle;
+use crate::num::dda::CeilDda;
 use crate::tri::fixed::{setup, Setup};
 
-/// One edge's bound on the pixel index `i`, walked down the rows: the bound is
-/// `ceil(value / d)` (a left edge: `i >= bound`) or `floor(value / d)` (a right edge:
-/// `i <= bound`), kept as quotient `q` and remainder `r` with `0 <= r < d`.
+/// One edge's bound on the pixel index `i`, walked down the rows: `ceil(value / d)` (a
+/// left edge: `i >= bound`) or `floor(value / d)` (a right edge: `i <= bound`), both as
+/// a [`CeilDda`] (a floor is the ceil of `value - (d - 1)`).
 #[derive(Debug, Clone, Copy)]
 struct Walker {
     left: bool,
-    /// The bound for the current row.
-    q: i128,
-    /// left: `value = q d - r`; right: `value = q d + r`.
-    r: i128,
-    d: i128,
-    /// The per-row increment of `value`, as `step_q d + step_r` with `0 <= step_r < d`.
-    step_q: i128,
-    step_r: i128,
+    bound: CeilDda,
 }
 
 impl Walker {
@@ -46,46 +40,15 @@ impl Walker {
         // i (one dy) >= n - c dy.
         let n = i128::from(e.bias) + ax * dy + (sy - ay) * dx - c * dy;
         let left = dy > 0;
-        // left: i >= n / (one dy); right (dy < 0): i <= (-n) / (one |dy|).
-        let (value, d, inc) = if left {
-            (n, one * dy, one * dx)
+        // left: i >= ceil(n / (one dy)); right (dy < 0): i <= floor(-n / (one |dy|)).
+        // Per row, sy grows by one, so n grows by one dx.
+        let bound = if left {
+            CeilDda::new(n, one * dx, one * dy)
         } else {
-            (-n, -one * dy, -one * dx)
+            let d = -one * dy;
+            CeilDda::new(-n - (d - 1), -one * dx, d)
         };
-        let (q, r) = if left {
-            let q = -(-value).div_euclid(d); // ceil
-            (q, q * d - value)
-        } else {
-            (value.div_euclid(d), value.rem_euclid(d))
-        };
-        Walker {
-            left,
-            q,
-            r,
-            d,
-            step_q: inc.div_euclid(d),
-            step_r: inc.rem_euclid(d),
-        }
-    }
-
-    /// Advances to the next row: `value += step_q d + step_r`.
-    fn step(&mut self) {
-        self.q += self.step_q;
-        if self.left {
-            // value = q d - r  ->  q d - (r - step_r)
-            self.r -= self.step_r;
-            if self.r < 0 {
-                self.r += self.d;
-                self.q += 1;
-            }
-        } else {
-            // value = q d + r  ->  q d + (r + step_r)
-            self.r += self.step_r;
-            if self.r >= self.d {
-                self.r -= self.d;
-                self.q += 1;
-            }
-        }
+        Walker { left, bound }
     }
 }
 
@@ -133,9 +96,9 @@ pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target:
         let mut hi = i128::from(range.x1);
         for w in walkers.iter().flatten() {
             if w.left {
-                lo = lo.max(w.q);
+                lo = lo.max(w.bound.get());
             } else {
-                hi = hi.min(w.q);
+                hi = hi.min(w.bound.get());
             }
         }
         if row_open && lo <= hi {
@@ -143,6 +106,6 @@ pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target:
             let hi = u32::try_from(hi).expect("clamped to the canvas range");
             sink.cover_span(j, lo, hi, id);
         }
-        walkers.iter_mut().flatten().for_each(Walker::step);
+        walkers.iter_mut().flatten().for_each(|w| w.bound.step());
     }
 }

@@ -1,0 +1,354 @@
+//! Polygon fill (issue 5): the scanline filler equals the exact oracle on every polygon
+//! family and convention; the oracle's fill of a triangle equals the triangle oracle
+//! (the tie rule's ε reading carries over); a simple polygon's fill is the disjoint union
+//! of its triangulation's coverage; even-odd and nonzero agree on simple polygons and
+//! differ where a contour winds twice. Goldens derived by hand.
+
+mod common;
+
+use common::config;
+use proptest::prelude::*;
+use rasterproof::check::{check_agreement, check_no_double_cover, diff};
+use rasterproof::convention::{PixelCentre, Preset, Target};
+use rasterproof::coverage::Coverage;
+use rasterproof::fill::polygon::{rasterize, rasterize_exact};
+use rasterproof::fill::triangulate::{triangulate, validate, TriangulateError};
+use rasterproof::geom::{FillRule, FixedPolygon, Point, Polygon, Triangle};
+use rasterproof::model::{render_primitives, Model};
+use rasterproof::strategy::any_triangle;
+use rasterproof::strategy::polygon::{any_polygon, simple_polygon, stellated_polygon};
+
+fn pts(v: &[(i64, i64)]) -> Vec<Point> {
+    v.iter().map(|&(x, y)| Point::from_ints(x, y)).collect()
+}
+
+fn fill(poly: &Polygon, target: &Target, model: Model) -> Coverage {
+    render_primitives(model, &[], &[], std::slice::from_ref(poly), target).unwrap()
+}
+
+/// The pixels of row `y`, as column numbers.
+fn row(c: &Coverage, y: u32) -> Vec<u32> {
+    c.iter().filter(|&(_, py, _)| py == y).map(|(x, _, _)| x).collect()
+}
+
+fn target_with(side: u32, preset: Preset, bits: u32, corner: bool) -> Target {
+    let mut conv = preset.convention();
+    conv.subpixel_bits = bits;
+    if corner {
+        conv.pixel_centre = PixelCentre::Corner;
+    }
+    Target::new(side, side, conv).unwrap()
+}
+
+/// The pentagram of the doc examples: vertices (50,0) (79,90) (2,35) (98,35) (21,90).
+fn pentagram(rule: FillRule) -> Polygon {
+    Polygon::new(pts(&[(50, 0), (79, 90), (2, 35), (98, 35), (21, 90)]), rule)
+}
+
+/// By hand, samples at pixel centres. Row 10 (y = 10.5) crosses only the two edges from
+/// the top vertex (50, 0): x = 50 -+ 29 * 10.5 / 90 = 50 -+ 3.383, so samples 47.5..=52.5:
+/// pixels 47..=52, winding 1, under both rules.
+/// Row 50 (y = 50.5) crosses four edges: (79,90)->(2,35) at 2 + 77 * 15.5 / 55 = 23.7,
+/// (21,90)->(50,0) at 50 - 29 * 50.5 / 90 = 33.727.., (50,0)->(79,90) at 66.272.., and
+/// (98,35)->(21,90) at 98 - 21.7 = 76.3. The winding is 1, 2, 1 between them: nonzero
+/// fills samples 24.5..=75.5 (pixels 24..=75), even-odd only 24..=33 and 66..=75.
+#[test]
+fn pentagram_by_hand() {
+    let target = Target::new(100, 100, Preset::D3d11.convention()).unwrap();
+    for model in [Model::Exact, Model::ExactSnapped, Model::Scanline] {
+        let nonzero = fill(&pentagram(FillRule::NonZero), &target, model);
+        let even_odd = fill(&pentagram(FillRule::EvenOdd), &target, model);
+        assert_eq!(row(&nonzero, 10), (47..=52).collect::<Vec<_>>(), "{model}");
+        assert_eq!(row(&even_odd, 10), (47..=52).collect::<Vec<_>>(), "{model}");
+        assert_eq!(row(&nonzero, 50), (24..=75).collect::<Vec<_>>(), "{model}");
+        assert_eq!(
+            row(&even_odd, 50),
+            (24..=33).chain(66..=75).collect::<Vec<_>>(),
+            "{model}"
+        );
+        // The centre: in nonzero, not in even-odd.
+        assert_eq!(nonzero.owners(50, 50), &[0]);
+        assert!(even_odd.owners(50, 50).is_empty());
+    }
+}
+
+/// A 10x10 square with a 4x4 square hole at (3,3)-(7,7), both wound the same way: the
+/// hole is still a hole under nonzero (contours are normalised), 100 - 16 = 84 pixels.
+/// The L-shape (0,0) (6,0) (6,2) (2,2) (2,6) (0,6): a 6x2 bar and a 2x4 leg, 12 + 8 = 20.
+#[test]
+fn hole_and_concave_by_hand() {
+    let target = Target::new(12, 12, Preset::D3d11.convention()).unwrap();
+    let square = |a: i64, b: i64| pts(&[(a, a), (b, a), (b, b), (a, b)]);
+    for rule in [FillRule::NonZero, FillRule::EvenOdd] {
+        let mut p = Polygon::new(square(0, 10), rule);
+        p.holes.push(square(3, 7));
+        for model in [Model::Exact, Model::Scanline, Model::Fixed] {
+            let c = fill(&p, &target, model);
+            assert_eq!(c.covered_pixels(), 84, "{model} {rule:?}");
+            assert!(c.owners(5, 5).is_empty() && c.owners(2, 5) == [0] && c.owners(7, 5) == [0]);
+        }
+        let l = Polygon::new(pts(&[(0, 0), (6, 0), (6, 2), (2, 2), (2, 6), (0, 6)]), rule);
+        for model in [Model::Exact, Model::Scanline, Model::Fixed] {
+            assert_eq!(fill(&l, &target, model).covered_pixels(), 20, "{model} {rule:?}");
+        }
+    }
+}
+
+/// Samples on the outline follow the tie rule: a 4x4 square from (0.5, 0.5) to
+/// (4.5, 4.5) has samples on all four sides. Top-left owns its top and left sides: rows
+/// and columns 0..=3, 16 pixels at (0..=3, 0..=3). Bottom-left owns the bottom and left:
+/// rows 1..=4.
+#[test]
+fn outline_samples_follow_the_tie_rule() {
+    let p = Polygon::new(
+        vec![
+            Point::from_fractions(1, 2, 1, 2),
+            Point::from_fractions(9, 2, 1, 2),
+            Point::from_fractions(9, 2, 9, 2),
+            Point::from_fractions(1, 2, 9, 2),
+        ],
+        FillRule::NonZero,
+    );
+    for (preset, rows) in [(Preset::D3d11, 0..=3), (Preset::Gl, 1..=4)] {
+        let target = Target::new(8, 8, preset.convention()).unwrap();
+        for model in [Model::Exact, Model::Scanline, Model::Fixed] {
+            let c = fill(&p, &target, model);
+            let expected: Vec<(u32, u32)> = rows.clone().flat_map(|y| (0..=3).map(move |x| (x, y))).collect();
+            let got: Vec<(u32, u32)> = c.iter().map(|(x, y, _)| (x, y)).collect();
+            assert_eq!(got, expected, "{preset:?} {model}");
+        }
+    }
+}
+
+#[test]
+fn triangulation_refuses_what_it_cannot_take() {
+    let poly = |contours: Vec<Vec<[i64; 2]>>| FixedPolygon::new(contours, FillRule::NonZero, 8).unwrap();
+    let not_simple = |p: &FixedPolygon| matches!(triangulate(p), Err(TriangulateError::NotSimple { .. }));
+    // bow tie; figure eight touching at a vertex; a spike folding back along an edge;
+    // a vertex on a non-adjacent edge
+    assert!(not_simple(&poly(vec![vec![[0, 0], [8, 8], [8, 0], [0, 8]]])));
+    assert!(not_simple(&poly(vec![vec![
+        [0, 0],
+        [4, 4],
+        [8, 0],
+        [8, 8],
+        [4, 4],
+        [0, 8]
+    ]])));
+    assert!(not_simple(&poly(vec![vec![[0, 0], [8, 0], [4, 0], [4, 8]]])));
+    assert!(not_simple(&poly(vec![vec![[0, 0], [8, 0], [8, 8], [4, 0], [0, 8]]])));
+    // holes: outside, inside another hole, crossing the outline
+    let outline = vec![[0, 0], [100, 0], [100, 100], [0, 100]];
+    let tri = |x: i64, y: i64, s: i64| vec![[x, y], [x + s, y], [x, y + s]];
+    assert_eq!(
+        triangulate(&poly(vec![outline.clone(), tri(200, 200, 10)])),
+        Err(TriangulateError::HoleOutside { hole: 0 })
+    );
+    assert_eq!(
+        triangulate(&poly(vec![outline.clone(), tri(10, 10, 60), tri(20, 20, 5)])),
+        Err(TriangulateError::HoleInHole { hole: 1, other: 0 })
+    );
+    assert!(not_simple(&poly(vec![outline.clone(), tri(90, 50, 30)])));
+    // too many vertices
+    let many: Vec<[i64; 2]> = (0..9000).map(|k| [k, k * k % 7919]).collect();
+    assert!(matches!(
+        triangulate(&poly(vec![many])),
+        Err(TriangulateError::TooManyVertices { vertices: 9000 })
+    ));
+    // Degenerate outlines cover nothing and triangulate to nothing: all collinear, or
+    // fewer than 3 distinct vertices after snapping merged them.
+    assert_eq!(triangulate(&poly(vec![vec![[0, 0], [4, 4], [8, 8]]])), Ok(vec![]));
+    assert_eq!(triangulate(&poly(vec![vec![[0, 0], [0, 0], [8, 8]]])), Ok(vec![]));
+    // A hole with no area removes nothing: the square still triangulates.
+    assert_eq!(
+        triangulate(&poly(vec![outline, vec![[10, 10], [20, 20], [30, 30]]]))
+            .unwrap()
+            .len(),
+        2
+    );
+}
+
+/// Triangles from a triangulation, all with id 0, and each with its own id.
+fn triangulation_coverage(tris: &[rasterproof::geom::FixedTriangle], target: &Target) -> (Coverage, Coverage) {
+    let (mut union, mut each) = (
+        Coverage::new(target.width, target.height),
+        Coverage::new(target.width, target.height),
+    );
+    for (k, t) in tris.iter().enumerate() {
+        rasterproof::tri::fixed::rasterize(t, 0, target, &mut union);
+        rasterproof::tri::fixed::rasterize(t, u32::try_from(k).unwrap(), target, &mut each);
+    }
+    (union, each)
+}
+
+/// Triangles on the half-pixel grid of an 8x8 canvas: horizontal and vertical edges
+/// through sample rows and columns, vertices on samples — the ties, often.
+fn half_grid_triangle() -> impl Strategy<Value = Triangle> {
+    prop::array::uniform6(-2i64..=18).prop_map(|c| {
+        let p = |x: i64, y: i64| Point::from_fractions(x, 2, y, 2);
+        Triangle::new(p(c[0], c[1]), p(c[2], c[3]), p(c[4], c[5]))
+    })
+}
+
+proptest! {
+    #![proptest_config(config("proptest-regressions/polygons.txt"))]
+
+    /// The same on the half-pixel grid of a small canvas, where most triangles have a
+    /// sample on an edge or a vertex.
+    #[test]
+    fn triangle_as_polygon_equals_triangle_at_ties(
+        t in half_grid_triangle(),
+        preset in prop::sample::select(Preset::ALL.to_vec()),
+        corner in any::<bool>(),
+    ) {
+        let target = target_with(8, preset, 8, corner);
+        let poly = Polygon::new(t.v.to_vec(), FillRule::NonZero);
+        let (mut a, mut b) = (Coverage::new(8, 8), Coverage::new(8, 8));
+        rasterproof::tri::exact::rasterize(&t, 0, &target, &mut a);
+        rasterize_exact(&poly, 0, &target, &mut b);
+        prop_assert_eq!(diff(&a, &b), vec![]);
+    }
+
+    /// The active-edge-table filler equals the oracle on the same snapped polygon: simple,
+    /// with holes, tangled, stellated, tie-heavy; both fill rules; every preset; 1..=10
+    /// subpixel bits; centre and corner samples.
+    #[test]
+    fn scanline_equals_oracle(
+        poly in any_polygon(32, 12),
+        preset in prop::sample::select(Preset::ALL.to_vec()),
+        bits in 1u32..=10,
+        corner in any::<bool>(),
+    ) {
+        let target = target_with(32, preset, bits, corner);
+        let exact = fill(&poly, &target, Model::ExactSnapped);
+        let scan = fill(&poly, &target, Model::Scanline);
+        check_agreement("exact-snapped", &exact, "scanline", &scan, &[], &target)
+            .map_err(|v| TestCaseError::fail(format!("{v}\n{poly:?}")))?;
+    }
+
+    /// The polygon oracle on a triangle equals the triangle oracle (the tie rule's ε
+    /// reading is the same rule), either winding, either fill rule, unsnapped.
+    #[test]
+    fn triangle_as_polygon_equals_triangle(
+        t in any_triangle(24),
+        preset in prop::sample::select(Preset::ALL.to_vec()),
+        reversed in any::<bool>(),
+        even_odd in any::<bool>(),
+    ) {
+        let t = if reversed { t.reversed() } else { t };
+        let target = Target::new(24, 24, preset.convention()).unwrap();
+        let rule = if even_odd { FillRule::EvenOdd } else { FillRule::NonZero };
+        let poly = Polygon::new(t.v.to_vec(), rule);
+        let (mut a, mut b) = (Coverage::new(24, 24), Coverage::new(24, 24));
+        rasterproof::tri::exact::rasterize(&t, 0, &target, &mut a);
+        rasterize_exact(&poly, 0, &target, &mut b);
+        prop_assert_eq!(diff(&a, &b), vec![]);
+    }
+
+    /// A simple polygon's fill is the union of its triangulation's coverage, pixel for
+    /// pixel, and no pixel is covered by two of its triangles; even-odd equals nonzero.
+    #[test]
+    fn fill_is_the_union_of_the_triangulation(
+        poly in simple_polygon(40, 14),
+        preset in prop::sample::select(Preset::ALL.to_vec()),
+    ) {
+        let target = Target::new(40, 40, preset.convention()).unwrap();
+        let fixed = poly.to_fixed(&target.convention).unwrap();
+        prop_assume!(validate(&fixed).is_ok()); // grid rounding can fold a tiny star
+        let tris = triangulate(&fixed).unwrap();
+        let (union, each) = triangulation_coverage(&tris, &target);
+        let filled = fill(&poly, &target, Model::ExactSnapped);
+        check_agreement("polygon fill", &filled, "union of the triangulation", &union, &[], &target)
+            .map_err(|v| TestCaseError::fail(v.to_string()))?;
+        check_no_double_cover(&each).map_err(|v| TestCaseError::fail(v.to_string()))?;
+        let other = Polygon {
+            fill_rule: match poly.fill_rule {
+                FillRule::NonZero => FillRule::EvenOdd,
+                FillRule::EvenOdd => FillRule::NonZero,
+            },
+            ..poly.clone()
+        };
+        prop_assert_eq!(diff(&filled, &fill(&other, &target, Model::Scanline)), vec![]);
+    }
+
+    /// On stellated polygons the rules differ exactly where the winding number is even
+    /// and non-zero: even-odd is a subset of nonzero, and where they differ the oracle's
+    /// winding number is 2 or -2 (for these stars, never more).
+    #[test]
+    fn rules_differ_where_the_contour_winds_twice(star in stellated_polygon(40, 1)) {
+        let target = Target::new(40, 40, Preset::D3d11.convention()).unwrap();
+        let nonzero = fill(&Polygon { fill_rule: FillRule::NonZero, ..star.clone() }, &target, Model::Scanline);
+        let even_odd = fill(&Polygon { fill_rule: FillRule::EvenOdd, ..star.clone() }, &target, Model::Scanline);
+        let snapped = star.snapped_exact(&target.convention);
+        for d in diff(&nonzero, &even_odd) {
+            prop_assert!(d.candidate.is_empty(), "even-odd covers ({}, {}) where nonzero does not", d.x, d.y);
+            let sample = Point::from_fractions(2 * i64::from(d.x) + 1, 2, 2 * i64::from(d.y) + 1, 2);
+            let w = rasterproof::fill::polygon::winding_number_exact(&sample, &snapped, target.convention.tie_rule);
+            prop_assert_eq!(w.abs(), 2);
+        }
+    }
+
+    /// The `fixed` model (triangulation) equals the scanline model on simple polygons.
+    #[test]
+    fn fixed_equals_scanline_on_simple_polygons(poly in simple_polygon(32, 10), bits in 1u32..=8) {
+        let target = target_with(32, Preset::Gl, bits, false);
+        let fixed = poly.to_fixed(&target.convention).unwrap();
+        prop_assume!(validate(&fixed).is_ok());
+        prop_assert_eq!(diff(&fill(&poly, &target, Model::Scanline), &fill(&poly, &target, Model::Fixed)), vec![]);
+    }
+}
+
+/// The integer filler directly, far from the origin and at the envelope edge: a big
+/// square reaching 2^21 px (2^29 subpixels at 8 bits) covers the whole canvas.
+#[test]
+fn scanline_at_the_envelope_edge() {
+    let far = 1i64 << 21;
+    let p = Polygon::new(
+        pts(&[(-far, -far), (far, -far), (far, far), (-far, far)]),
+        FillRule::NonZero,
+    );
+    let target = Target::new(16, 16, Preset::D3d11.convention()).unwrap();
+    let fixed = p.to_fixed(&target.convention).unwrap();
+    let mut c = Coverage::new(16, 16);
+    rasterize(&fixed, 0, &target, &mut c);
+    assert_eq!(c.covered_pixels(), 256);
+    // A slanted edge from far away through the canvas: agrees with the oracle.
+    let p = Polygon::new(pts(&[(-far, -far), (far, -far + 7), (3, 9)]), FillRule::EvenOdd);
+    let exact = fill(&p, &target, Model::ExactSnapped);
+    assert!(exact.covered_pixels() > 0);
+    assert_eq!(diff(&exact, &fill(&p, &target, Model::Scanline)), vec![]);
+    // One subpixel further is refused, naming the vertex.
+    let beyond = Polygon::new(
+        vec![
+            Point::from_ints(0, 0),
+            Point::from_fractions(far * 256 + 1, 256, 0, 1),
+            Point::from_ints(0, 4),
+        ],
+        FillRule::NonZero,
+    );
+    let err = render_primitives(Model::Scanline, &[], &[], &[beyond], &target).unwrap_err();
+    assert!(err.to_string().starts_with("polygons[0].v[1].x: "), "{err}");
+}
+
+/// Triangles, lines and polygons in one render: ids in that order.
+#[test]
+fn polygon_ids_follow_triangles_and_lines() {
+    let target = Target::new(16, 16, Preset::D3d11.convention()).unwrap();
+    let tri = Triangle::new(Point::from_ints(0, 0), Point::from_ints(4, 0), Point::from_ints(0, 4));
+    let line = rasterproof::line::Line {
+        from: Point::from_ints(8, 0),
+        to: Point::from_ints(8, 3),
+        rule: rasterproof::line::LineRule::Bresenham(rasterproof::line::BresenhamTie::Stay),
+    };
+    let poly = Polygon::new(pts(&[(10, 10), (14, 10), (14, 14), (10, 14)]), FillRule::NonZero);
+    let c = render_primitives(Model::Scanline, &[tri], &[line], &[poly], &target).unwrap();
+    assert_eq!(c.owners(0, 0), &[0]);
+    assert_eq!(c.owners(8, 1), &[1]);
+    assert_eq!(c.owners(12, 12), &[2]);
+    let err = render_primitives(Model::Float32, &[], &[], &[pentagram(FillRule::NonZero)], &target).unwrap_err();
+    assert!(
+        err.to_string()
+            .contains("polygons[0]: the float32 model has no polygon fill"),
+        "{err}"
+    );
+}
