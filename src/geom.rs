@@ -159,6 +159,15 @@ impl FixedTriangle {
     pub fn coords(&self) -> [[i64; 2]; 3] {
         self.v.map(|[x, y]| [x.get(), y.get()])
     }
+
+    /// The triangle as exact rationals (for the oracle).
+    pub fn to_exact(&self) -> Triangle {
+        Triangle {
+            v: self
+                .coords()
+                .map(|[x, y]| Point::new(dyadic(&x.into(), self.bits), dyadic(&y.into(), self.bits))),
+        }
+    }
 }
 
 /// How a polygon's winding number decides which samples are inside.

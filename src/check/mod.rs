@@ -5,6 +5,8 @@
 mod agreement;
 mod barycentric;
 mod explain;
+#[cfg(feature = "proptest")]
+pub mod harness;
 mod invariance;
 mod line;
 mod watertight;
