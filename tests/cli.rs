@@ -197,11 +197,42 @@ fn render_writes_pngs_and_names_the_preset() {
     assert_eq!(image::open(&cov).unwrap().to_rgb8().get_pixel(0, 0).0, [0, 0, 0]);
 }
 
+/// Polygons in the JSON output, ids after triangles and lines; the 3x3 square with a
+/// 1x1 hole counted by hand: 9 - 1 = 8 pixels, all models that fill polygons agree.
+#[test]
+fn polygons_render_after_triangles_and_lines() {
+    let dir = tempdir::Dir::new("polygons");
+    let p = write(
+        &dir,
+        "p.json",
+        r#"{"width": 6, "height": 6, "triangles": [{"v": [[0,0],[1,0],[0,1]]}], "lines": [{"from": [5, 0], "to": [5, 0]}],
+            "polygons": [{"v": [[2,2],[5,2],[5,5],[2,5]], "holes": [[[3,3],[4,3],[4,4],[3,4]]], "fill_rule": "even-odd"}]}"#,
+    );
+    // The triangle (0,0) (1,0) (0,1) holds no sample (its hypotenuse passes through
+    // (0.5, 0.5): a right edge, excluded); the line is one pixel.
+    let ring: Vec<String> = [(2, 2), (3, 2), (4, 2), (2, 3), (4, 3), (2, 4), (3, 4), (4, 4)]
+        .iter()
+        .map(|(x, y)| format!("[{x},{y},[2]]"))
+        .collect();
+    let expected = format!(
+        "{{\"width\":6,\"height\":6,\"pixels\":[[5,0,[1]],{}]}}\n",
+        ring.join(",")
+    );
+    for model in ["exact", "exact-snapped", "scanline", "fixed"] {
+        bin()
+            .args(["render", p.to_str().unwrap(), "--format", "json", "--model", model])
+            .assert()
+            .success()
+            .stdout(expected.clone());
+    }
+}
+
 /// Each bad input: exit code 2, one line on stderr naming the field and value, no panic.
 #[test]
 fn bad_inputs_exit_2_with_a_clear_line() {
     let dir = tempdir::Dir::new("bad");
     let tri = |v: &str| format!(r#"{{"width": 8, "height": 8, "triangles": [{{"v": {v}}}]}}"#);
+    let poly = |body: &str| format!(r#"{{"width": 8, "height": 8, "polygons": [{{{body}}}]}}"#);
     let far = 1i64 << 21;
     let cases: Vec<(String, &str, &str)> = vec![
         ("{\"width\": 8,".into(), "exact-snapped", "malformed JSON"),
@@ -221,6 +252,23 @@ fn bad_inputs_exit_2_with_a_clear_line() {
         (tri(&format!("[[0,0],[4,0],[{},4]]", far + 1)), "fixed", "triangles[0].v[2].x: 2097153 px"),
         (r#"{"width": 8, "height": 8, "preset": "dx9"}"#.into(), "exact", "preset: unknown preset \"dx9\""),
         (tri("[[0,0],[4,0],[1e39,4]]"), "float32", "triangles[0]: a coordinate does not fit the float32 model's float type"),
+        (poly(r#""v": [[0,0],[4,0]]"#), "exact", "polygons[0].v: a polygon contour needs at least 3 vertices, found 2"),
+        (
+            poly(r#""v": [[0,0],[4,0],[4,4]], "holes": [[[1,1],[2,1]]]"#),
+            "exact",
+            "polygons[0].holes[0]: a polygon contour needs at least 3 vertices, found 2",
+        ),
+        (
+            poly(r#""v": [[0,0],[8,0],[8,8],[0,8]], "holes": [[[1,1],[2,1],[9,2]]]"#),
+            "scanline",
+            "polygons[0].holes[0][2]: (9, 2) lies outside the outline polygons[0].v",
+        ),
+        (poly(r#""v": [[0,0],[8,0],[0,8]], "fill_rule": "winding""#), "exact", "polygons[0].fill_rule: unknown fill rule \"winding\""),
+        (poly(r#""v": [[0,0],[8,0],["NaN",8]]"#), "exact", "polygons[0].v[2][0]: \"NaN\" is not a finite number"),
+        (poly(r#""v": [[0,0],[8,8],[8,0],[0,8]]"#), "fixed", "polygons[0]: cannot triangulate for the fixed model: not a simple polygon: outline edge 0 and outline edge 2 meet at (4, 4) px"),
+        (poly(r#""v": [[0,0],[8,0],[0,8]]"#), "float64", "polygons[0]: the float64 model has no polygon fill"),
+        (poly(&format!(r#""v": [[0,0],[8,0],[0,{}]]"#, far + 1)), "scanline", "polygons[0].v[2].y: 2097153 px"),
+        (poly(r#""v": [[0,0],[8,0],[0,8]], "colour": 3"#), "exact", "polygons[0].colour: unknown field"),
     ];
     for (k, (text, model, needle)) in cases.iter().enumerate() {
         let p = write(&dir, &format!("bad{k}.json"), text);
@@ -288,6 +336,8 @@ fn check_runs_the_suite() {
         "translation",
         "barycentric sum",
         "integer edge sum",
+        "polygon agreement",
+        "triangulation",
     ] {
         assert!(text.contains(needle), "{needle} missing:\n{text}");
     }

@@ -5,6 +5,7 @@
 mod agreement;
 mod barycentric;
 mod explain;
+mod fill;
 #[cfg(feature = "proptest")]
 pub mod harness;
 mod invariance;
@@ -16,6 +17,7 @@ use std::fmt;
 pub use agreement::{check_agreement, diff, PixelDiff};
 pub use barycentric::{check_barycentric_exact, check_barycentric_fixed, float_sum_error_ulps};
 pub use explain::explain_sample;
+pub use fill::check_triangulation;
 pub use invariance::{check_rotation_and_winding, check_translation};
 pub use line::{
     check_diamond_agreement, check_line_pixels, check_line_reference, check_line_symmetry, line_departures,

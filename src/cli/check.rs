@@ -9,14 +9,16 @@ use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use rasterproof::check::{
     check_agreement, check_barycentric_exact, check_barycentric_fixed, check_diamond_agreement, check_line_pixels,
-    check_line_reference, check_line_symmetry, check_rotation_and_winding, check_translation, check_watertight,
-    float_sum_error_ulps, Violation,
+    check_line_reference, check_line_symmetry, check_rotation_and_winding, check_translation, check_triangulation,
+    check_watertight, float_sum_error_ulps, Violation,
 };
 use rasterproof::convention::{Preset, Target, MAX_CANVAS};
-use rasterproof::geom::{Point, Triangle};
+use rasterproof::fill::triangulate::{triangulate, validate};
+use rasterproof::geom::{FixedTriangle, Point, Polygon, Triangle};
 use rasterproof::line::{bresenham, dda, BresenhamTie, Line, LineRule};
-use rasterproof::model::{render, Model};
+use rasterproof::model::{render, render_primitives, Model};
 use rasterproof::scene::Scene;
+use rasterproof::strategy::polygon::{any_polygon, simple_polygon};
 use rasterproof::strategy::{
     any_triangle, delaunay_mesh, diamond_line, long_pixel_line, pixel_line, tie_heavy_mesh, Mesh,
 };
@@ -41,6 +43,10 @@ struct Case {
     triangle: Triangle,
     shift: (i64, i64),
     preset: Preset,
+    /// Any polygon: simple, with a hole, tangled, stellated, tie-heavy.
+    polygon: Polygon,
+    /// A simple polygon (star-shaped, maybe with a hole), for the triangulation.
+    simple: Polygon,
 }
 
 /// One checker's verdict.
@@ -53,6 +59,7 @@ struct Outcome {
     /// The primitives and canvas to write out if it failed.
     triangles: Vec<Triangle>,
     lines: Vec<Line>,
+    polygons: Vec<Polygon>,
     canvas: u32,
 }
 
@@ -96,6 +103,8 @@ fn generate(seed: u64, k: u64) -> Result<Case, String> {
     let long_line = draw(&mut runner, long_pixel_line(origin, 500))?;
     let shift = draw(&mut runner, (-5i64..=5, -5i64..=5))?;
     let preset = draw(&mut runner, proptest::sample::select(vec![Preset::D3d11, Preset::Gl]))?;
+    let polygon = draw(&mut runner, any_polygon(CANVAS, 12))?;
+    let simple = draw(&mut runner, simple_polygon(CANVAS, 12))?;
     Ok(Case {
         mesh,
         fine_mesh,
@@ -107,6 +116,8 @@ fn generate(seed: u64, k: u64) -> Result<Case, String> {
         triangle,
         shift,
         preset,
+        polygon,
+        simple,
     })
 }
 
@@ -128,6 +139,7 @@ fn run_case(c: &Case) -> (Vec<Outcome>, Vec<f64>) {
             result,
             triangles: triangles.to_vec(),
             lines: Vec::new(),
+            polygons: Vec::new(),
             canvas,
         });
     };
@@ -246,7 +258,54 @@ fn run_case(c: &Case) -> (Vec<Outcome>, Vec<f64>) {
         );
     }
     line_checks(c, &mut out);
+    polygon_checks(c, &mut out);
     (out, ulps)
+}
+
+/// Invariant 7: the scanline filler equals the oracle on any polygon; a simple polygon's
+/// triangulation covers exactly its fill, once (the `fixed` model's route).
+fn polygon_checks(c: &Case, out: &mut Vec<Outcome>) {
+    let target = target(CANVAS, c.preset);
+    let mut push = |invariant, model: Model, result, polygon: &Polygon| {
+        out.push(Outcome {
+            invariant,
+            model,
+            label: model.name(),
+            result,
+            triangles: Vec::new(),
+            lines: Vec::new(),
+            polygons: vec![polygon.clone()],
+            canvas: CANVAS,
+        });
+    };
+    let fill = |model, p: &Polygon| {
+        render_primitives(model, &[], &[], std::slice::from_ref(p), &target).map_err(|e| Violation {
+            invariant: "polygon agreement",
+            message: e.to_string(),
+        })
+    };
+    let agreement = fill(Model::ExactSnapped, &c.polygon).and_then(|reference| {
+        let scan = fill(Model::Scanline, &c.polygon)?;
+        check_agreement("exact-snapped", &reference, "scanline", &scan, &[], &target)
+    });
+    push("polygon agreement", Model::Scanline, agreement, &c.polygon);
+    // Grid rounding can fold a tiny star: only simple polygons are triangulated.
+    let Ok(fixed) = c.simple.to_fixed(&target.convention) else {
+        return;
+    };
+    if validate(&fixed).is_err() {
+        return;
+    }
+    let result = triangulate(&fixed)
+        .map_err(|e| Violation {
+            invariant: "triangulation",
+            message: e.to_string(),
+        })
+        .and_then(|tris| {
+            let tris: Vec<Triangle> = tris.iter().map(FixedTriangle::to_exact).collect();
+            check_triangulation(&fixed.to_exact(), &tris, &target)
+        });
+    push("triangulation", Model::Fixed, result, &c.simple);
 }
 
 /// Invariant 5: Bresenham (both ties), its reversal, diamond-exit agreement, and the DDA's
@@ -265,6 +324,7 @@ fn line_checks(c: &Case, out: &mut Vec<Outcome>) {
             result,
             triangles: Vec::new(),
             lines: vec![line],
+            polygons: Vec::new(),
             canvas: CANVAS,
         });
     };
@@ -408,6 +468,7 @@ fn write_case(dir: &Path, k: u64, o: &Outcome, preset: Preset, v: &Violation) ->
     let stem = dir.join(format!("case-{k}-{slug}-{label}"));
     let mut scene = Scene::new(o.canvas, o.canvas, o.triangles.clone());
     scene.lines = o.lines.clone();
+    scene.polygons = o.polygons.clone();
     scene.preset = preset;
     let json = stem.with_extension("json");
     std::fs::write(&json, scene.to_json()).map_err(|e| format!("{}: cannot write: {e}", json.display()))?;

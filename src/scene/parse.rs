@@ -595,11 +595,15 @@ mod tests {
     #[test]
     fn round_trip_through_to_json() {
         let text = r#"{"width": 9, "height": 7, "preset": "gl", "rounding": "half-away", "pixel_centre": 0,
-            "triangles": [{"v": [["1/3",0.5],[4,0],[0,"-7/2"]], "colors": [[1,2,3],[4,5,6],[7,8,9]]}, TRI]}"#
+            "triangles": [{"v": [["1/3",0.5],[4,0],[0,"-7/2"]], "colors": [[1,2,3],[4,5,6],[7,8,9]]}, TRI],
+            "polygons": [{"v": [[0,0],[10,0],["21/2",10],[0,10]], "holes": [[[1,1],[2,1],[1,"2.5"]]], "fill_rule": "even-odd"},
+                         {"v": [[0,0],[3,0],[0,3]]}]}"#
             .replace("TRI", TRI);
         let s = parse_scene(&text, "s").unwrap();
         assert_eq!(s.convention().tie_rule, TieRule::BottomLeft);
         assert_eq!(s.convention().rounding, Rounding::HalfAwayFromZero);
+        assert_eq!(s.polygons[0].holes[0][2].y, BigRational::new(5.into(), 2.into()));
+        assert_eq!(s.polygons[1].fill_rule, crate::geom::FillRule::NonZero);
         let again = parse_scene(&s.to_json(), "again").unwrap();
         assert_eq!(again, s);
     }
