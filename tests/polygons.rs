@@ -352,3 +352,26 @@ fn polygon_ids_follow_triangles_and_lines() {
         "{err}"
     );
 }
+
+/// Found by the polygon_fill fuzz target: an outline with no area (two of its three
+/// vertices coincide) and a hole with area. The winding rule fills the hole's inside
+/// (the outline adds 0, the hole -1); triangulation returned no triangles. A hole with
+/// area cannot lie inside an outline without area, so it is refused as outside.
+#[test]
+fn fuzz_case_01_hole_of_a_degenerate_outline() {
+    let mut p = Polygon::new(pts(&[(9, 9), (9, 9), (-1, -6)]), FillRule::NonZero);
+    p.holes.push(pts(&[(9, 9), (5, -3), (-8, -8)]));
+    let target = Target::new(16, 16, Preset::D3d11.convention()).unwrap();
+    let fixed = p.to_fixed(&target.convention).unwrap();
+    assert_eq!(triangulate(&fixed), Err(TriangulateError::HoleOutside { hole: 0 }));
+    // The winding rule indeed fills the hole's inside: pixel (0, 0) (sample (0.5, 0.5)).
+    assert_eq!(fill(&p, &target, Model::Scanline).owners(0, 0), &[0]);
+    // And the scene parser refuses it: (5, -3) lies outside the outline.
+    let text =
+        r#"{"width": 16, "height": 16, "polygons": [{"v": [[9,9],[9,9],[-1,-6]], "holes": [[[9,9],[5,-3],[-8,-8]]]}]}"#;
+    let err = rasterproof::scene::parse_scene(text, "f.json").unwrap_err().to_string();
+    assert!(
+        err.contains("polygons[0].holes[0][1]: (5, -3) lies outside the outline"),
+        "{err}"
+    );
+}

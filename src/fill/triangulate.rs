@@ -157,8 +157,8 @@ struct Contour {
 }
 
 /// Checks that `poly` is simple and its holes are properly placed (see the module docs);
-/// returns its contours with repeated consecutive vertices merged and zero-area contours
-/// dropped (when the outline has no area, nothing is returned: the polygon is empty).
+/// a polygon whose outline has no area is empty, and then any hole with area lies
+/// outside it.
 ///
 /// # Errors
 /// The first problem found.
@@ -184,12 +184,17 @@ fn validate_contours(poly: &FixedPolygon) -> Result<Vec<Contour>, TriangulateErr
         }
         let collinear = points.len() < 3 || points.iter().all(|&p| orient(points[0], points[1], p) == 0);
         if collinear {
-            if index == 0 {
-                return Ok(Vec::new()); // no area: the whole polygon covers nothing
-            }
-            continue; // a hole without area removes nothing
+            // No area: covers nothing as an outline, removes nothing as a hole.
+            continue;
         }
         contours.push(Contour { index, points });
+    }
+    if contours.first().is_some_and(|c| c.index != 0) {
+        // The outline has no area, so any hole with area lies outside it (and the
+        // winding rule would fill that hole).
+        return Err(TriangulateError::HoleOutside {
+            hole: contours[0].index - 1,
+        });
     }
     check_simple(&contours, poly.bits)?;
     check_holes(&contours)?;

@@ -1,6 +1,8 @@
 //! What the fuzz targets share: the convention an input picks, and an independent i128
 //! snapping to check the crate's against.
 
+#![allow(dead_code)] // each target uses a part
+
 use arbitrary::Arbitrary;
 use rasterproof::convention::{Convention, PixelCentre, Preset, Rounding};
 
