@@ -45,6 +45,7 @@
 #![warn(clippy::cast_possible_truncation, clippy::cast_possible_wrap)]
 
 pub mod check;
+pub mod clip;
 pub mod convention;
 pub mod coverage;
 pub mod edge;

@@ -5,6 +5,7 @@
 //! Coordinates are exact rationals. Grid coordinates are multiples of 2^-8 px (the default
 //! subpixel grid) unless a family says otherwise.
 
+pub mod clip;
 pub mod polygon;
 
 use num_bigint::BigInt;

@@ -1,0 +1,175 @@
+//! Clipping (seed 002): points against half-planes, segments against an axis-aligned
+//! window (Cohen-Sutherland), polygons against a convex window (Sutherland-Hodgman),
+//! each exact (BigRational) and in f32 / f64.
+//!
+//! # Samples on the window's boundary
+//!
+//! The clipped geometry keeps the window's boundary (points on it are inside, seed
+//! 002). What a rasterizer then covers follows the tie rule's ε reading: a sample on
+//! the window's boundary belongs to the clipped polygon exactly when its moved sample
+//! `p + (ε, ±ε²)` lies inside the window, so
+//! `raster(clip(P, W)) == raster(P) ∩ raster(W)` pixel for pixel, with `raster(W)` the
+//! window filled as a polygon (top-left: samples on its left and top sides are in, on
+//! its right and bottom sides out). Property test: `tests/clip.rs`.
+
+pub mod cohen_sutherland;
+pub mod halfplane;
+pub mod sutherland_hodgman;
+
+use std::fmt;
+
+use num_rational::BigRational;
+use num_traits::{Signed, Zero};
+
+use crate::edge::exact::edge_function;
+use crate::geom::Point;
+use halfplane::HalfPlane;
+
+/// An axis-aligned rectangle `[xmin, xmax] x [ymin, ymax]`, `xmin < xmax`, `ymin < ymax`.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct Rect {
+    /// Left.
+    pub xmin: BigRational,
+    /// Top (y down).
+    pub ymin: BigRational,
+    /// Right.
+    pub xmax: BigRational,
+    /// Bottom.
+    pub ymax: BigRational,
+}
+
+/// A clip window: a rectangle, or a strictly convex polygon in either orientation.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub enum Window {
+    /// Axis-aligned.
+    Rect(Box<Rect>),
+    /// Strictly convex, vertices in order.
+    Convex(Vec<Point>),
+}
+
+/// A window that is not a window.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum WindowError {
+    /// `min >= max` on an axis.
+    Empty {
+        /// `'x'` or `'y'`.
+        axis: char,
+        /// The minimum, as exact text.
+        min: String,
+        /// The maximum, as exact text.
+        max: String,
+    },
+    /// Fewer than 3 vertices.
+    TooFewVertices(usize),
+    /// Not strictly convex: a vertex on or beyond the line of edge `edge`.
+    NotConvex {
+        /// The edge (from vertex `edge` to `edge + 1`).
+        edge: usize,
+        /// The offending vertex.
+        vertex: usize,
+    },
+}
+
+impl fmt::Display for WindowError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            WindowError::Empty { axis, min, max } => {
+                write!(f, "empty window: {axis}min {min} >= {axis}max {max}")
+            }
+            WindowError::TooFewVertices(n) => write!(f, "a convex window needs at least 3 vertices, found {n}"),
+            WindowError::NotConvex { edge, vertex } => write!(
+                f,
+                "not a strictly convex polygon: vertex {vertex} is on or beyond the line of edge {edge} (vertices {edge} -> {})",
+                edge + 1
+            ),
+        }
+    }
+}
+
+impl std::error::Error for WindowError {}
+
+impl Window {
+    /// The rectangle `[xmin, xmax] x [ymin, ymax]`.
+    ///
+    /// # Errors
+    /// When it is empty (`xmin >= xmax` or `ymin >= ymax`).
+    pub fn rect(
+        xmin: BigRational,
+        ymin: BigRational,
+        xmax: BigRational,
+        ymax: BigRational,
+    ) -> Result<Window, WindowError> {
+        for (axis, min, max) in [('x', &xmin, &xmax), ('y', &ymin, &ymax)] {
+            if min >= max {
+                return Err(WindowError::Empty {
+                    axis,
+                    min: crate::scene::exact_text(min),
+                    max: crate::scene::exact_text(max),
+                });
+            }
+        }
+        Ok(Window::Rect(Box::new(Rect { xmin, ymin, xmax, ymax })))
+    }
+
+    /// A strictly convex polygon: for every edge, every other vertex lies strictly on the
+    /// same side of its line (one side for all edges), so no three vertices are collinear,
+    /// none repeats and the outline does not wind twice.
+    ///
+    /// # Errors
+    /// Fewer than 3 vertices, or the first vertex that breaks strict convexity.
+    pub fn convex(points: Vec<Point>) -> Result<Window, WindowError> {
+        let n = points.len();
+        if n < 3 {
+            return Err(WindowError::TooFewVertices(n));
+        }
+        let mut side: Option<bool> = None;
+        for i in 0..n {
+            let (a, b) = (&points[i], &points[(i + 1) % n]);
+            for (k, p) in points.iter().enumerate() {
+                if k == i || k == (i + 1) % n {
+                    continue;
+                }
+                let e = edge_function(a, b, p);
+                let positive = e.is_positive();
+                if e.is_zero() || side.is_some_and(|s| s != positive) {
+                    return Err(WindowError::NotConvex { edge: i, vertex: k });
+                }
+                side = Some(positive);
+            }
+        }
+        Ok(Window::Convex(points))
+    }
+
+    /// The window's vertices in order (a rectangle from its top-left corner).
+    pub fn outline(&self) -> Vec<Point> {
+        match self {
+            Window::Rect(r) => vec![
+                Point::new(r.xmin.clone(), r.ymin.clone()),
+                Point::new(r.xmax.clone(), r.ymin.clone()),
+                Point::new(r.xmax.clone(), r.ymax.clone()),
+                Point::new(r.xmin.clone(), r.ymax.clone()),
+            ],
+            Window::Convex(p) => p.clone(),
+        }
+    }
+
+    /// The half-planes whose intersection is the window (boundary included).
+    pub fn half_planes(&self) -> Vec<HalfPlane> {
+        let outline = self.outline();
+        let n = outline.len();
+        // Orientation: the third vertex's side of the first edge says where the inside is.
+        let positive = edge_function(&outline[0], &outline[1], &outline[2]).is_positive();
+        (0..n)
+            .map(|i| {
+                let (a, b) = (&outline[i], &outline[(i + 1) % n]);
+                let (p, q) = if positive { (a, b) } else { (b, a) };
+                HalfPlane::inside_of_edge(p, q).expect("distinct consecutive vertices")
+            })
+            .collect()
+    }
+
+    /// Whether `p` is in the window (boundary included), exactly.
+    pub fn contains(&self, p: &Point) -> bool {
+        self.half_planes().iter().all(|h| h.contains(p))
+    }
+}
