@@ -59,8 +59,9 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     })?;
 
     let mut summary = format!(
-        "{name}: {} pixels in the {connectivity} region of ({}, {}) ({}x{} image)",
+        "{name}: {} pixel{} in the {connectivity} region of ({}, {}) ({}x{} image)",
         region.len(),
+        if region.len() == 1 { "" } else { "s" },
         at.0,
         at.1,
         image.width(),

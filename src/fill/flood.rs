@@ -24,13 +24,14 @@
 
 use std::collections::VecDeque;
 use std::fmt;
-use std::io::{BufRead, BufReader, Cursor, Seek};
-use std::path::Path;
 
-use image::codecs::png::PngDecoder;
-use image::{DynamicImage, ImageDecoder, ImageError, Rgba, RgbaImage};
+use image::{Rgba, RgbaImage};
 
-use crate::convention::MAX_CANVAS;
+mod png;
+mod region;
+
+pub use png::{decode_png, decode_png_within, load_png, PngError, MAX_IMAGE_SIDE};
+pub use region::{Pixels, Region};
 
 /// Which neighbours of a pixel are adjacent to it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -115,179 +116,6 @@ impl fmt::Display for SeedOutside {
 }
 
 impl std::error::Error for SeedOutside {}
-
-/// A set of pixels of a `width` x `height` image, one bit per pixel.
-///
-/// # Guarantees
-/// - [`Region::len`] is the number of pixels in the set.
-/// - [`Region::iter`] yields each pixel once, in row-major order (y, then x), all inside
-///   `width` x `height`.
-///
-/// Two regions are equal when they have the same size and the same pixels. `Debug` draws
-/// a region of at most 64x64 pixels as rows of `#` (in) and `.` (out).
-#[derive(Clone, PartialEq, Eq)]
-pub struct Region {
-    width: u32,
-    height: u32,
-    /// Bit `i % 64` of word `i / 64` is pixel `i = y * width + x`.
-    words: Vec<u64>,
-    len: usize,
-}
-
-impl Region {
-    /// The empty region of a `width` x `height` image.
-    pub fn empty(width: u32, height: u32) -> Region {
-        let pixels = width as usize * height as usize;
-        Region {
-            width,
-            height,
-            words: vec![0; pixels.div_ceil(64)],
-            len: 0,
-        }
-    }
-
-    /// The pixels `(x, y)` of a `width` x `height` image for which `inside(x, y)` holds.
-    ///
-    /// ```
-    /// use rasterproof::fill::flood::Region;
-    /// let diagonal = Region::from_fn(3, 3, |x, y| x == y);
-    /// assert_eq!(diagonal.len(), 3);
-    /// assert!(diagonal.contains(2, 2) && !diagonal.contains(2, 1));
-    /// ```
-    pub fn from_fn(width: u32, height: u32, mut inside: impl FnMut(u32, u32) -> bool) -> Region {
-        let mut region = Region::empty(width, height);
-        for y in 0..height {
-            for x in 0..width {
-                if inside(x, y) {
-                    region.insert(region.index(x, y));
-                }
-            }
-        }
-        region
-    }
-
-    /// The image width.
-    pub fn width(&self) -> u32 {
-        self.width
-    }
-
-    /// The image height.
-    pub fn height(&self) -> u32 {
-        self.height
-    }
-
-    /// The number of pixels in the region.
-    pub fn len(&self) -> usize {
-        self.len
-    }
-
-    /// True when the region has no pixel.
-    pub fn is_empty(&self) -> bool {
-        self.len == 0
-    }
-
-    /// Whether `(x, y)` is in the region (false outside the image).
-    pub fn contains(&self, x: u32, y: u32) -> bool {
-        x < self.width && y < self.height && self.bit(self.index(x, y))
-    }
-
-    /// The pixels `(x, y)`, row-major: by y, then by x.
-    pub fn iter(&self) -> Pixels<'_> {
-        Pixels {
-            region: self,
-            word: 0,
-            bits: self.words.first().copied().unwrap_or(0),
-        }
-    }
-
-    /// Whether every pixel of `self` is in `other` (false when the sizes differ).
-    pub fn is_subset_of(&self, other: &Region) -> bool {
-        (self.width, self.height) == (other.width, other.height)
-            && self.words.iter().zip(&other.words).all(|(a, b)| a & !b == 0)
-    }
-
-    fn index(&self, x: u32, y: u32) -> usize {
-        y as usize * self.width as usize + x as usize
-    }
-
-    fn bit(&self, i: usize) -> bool {
-        self.words[i / 64] >> (i % 64) & 1 == 1
-    }
-
-    /// Adds pixel `i`; it must not be in the region yet.
-    fn insert(&mut self, i: usize) {
-        debug_assert!(!self.bit(i), "pixel {i} inserted twice");
-        self.words[i / 64] |= 1 << (i % 64);
-        self.len += 1;
-    }
-
-    /// Adds pixels `start..end` (by index), none of them in the region yet.
-    fn insert_range(&mut self, start: usize, end: usize) {
-        let mut i = start;
-        while i < end {
-            let (word, bit) = (i / 64, i % 64);
-            let n = (64 - bit).min(end - i);
-            let mask = if n == 64 { u64::MAX } else { ((1u64 << n) - 1) << bit };
-            debug_assert_eq!(self.words[word] & mask, 0, "a pixel of {start}..{end} inserted twice");
-            self.words[word] |= mask;
-            i += n;
-        }
-        self.len += end - start;
-    }
-}
-
-impl fmt::Debug for Region {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "Region {}x{}, {} pixels", self.width, self.height, self.len)?;
-        if self.width <= 64 && self.height <= 64 {
-            for y in 0..self.height {
-                f.write_str("\n")?;
-                for x in 0..self.width {
-                    f.write_str(if self.contains(x, y) { "#" } else { "." })?;
-                }
-            }
-        }
-        Ok(())
-    }
-}
-
-/// The pixels of a [`Region`], row-major. Made by [`Region::iter`].
-#[derive(Debug, Clone)]
-pub struct Pixels<'a> {
-    region: &'a Region,
-    /// The word being read and its bits not yet yielded.
-    word: usize,
-    bits: u64,
-}
-
-impl Iterator for Pixels<'_> {
-    type Item = (u32, u32);
-
-    fn next(&mut self) -> Option<(u32, u32)> {
-        while self.bits == 0 {
-            self.word += 1;
-            self.bits = *self.region.words.get(self.word)?;
-        }
-        let i = self.word * 64 + self.bits.trailing_zeros() as usize;
-        self.bits &= self.bits - 1;
-        let width = self.region.width as usize;
-        // i < width * height, so both quotients fit the u32 sides.
-        let (x, y) = (i % width, i / width);
-        Some((
-            u32::try_from(x).expect("x < width"),
-            u32::try_from(y).expect("y < height"),
-        ))
-    }
-}
-
-impl<'a> IntoIterator for &'a Region {
-    type Item = (u32, u32);
-    type IntoIter = Pixels<'a>;
-
-    fn into_iter(self) -> Pixels<'a> {
-        self.iter()
-    }
-}
 
 fn check_seed(image: &RgbaImage, seed: (u32, u32)) -> Result<(), SeedOutside> {
     let (width, height) = image.dimensions();
@@ -509,10 +337,19 @@ impl SpanFill<'_> {
 /// Sets every pixel of `region` that lies inside `image` to `colour`.
 pub fn paint(image: &mut RgbaImage, region: &Region, colour: Rgba<u8>) {
     let (width, height) = image.dimensions();
-    for (x, y) in region {
-        if x < width && y < height {
-            image.put_pixel(x, y, colour);
+    if (width, height) != (region.width(), region.height()) {
+        for (x, y) in region {
+            if x < width && y < height {
+                image.put_pixel(x, y, colour);
+            }
         }
+        return;
+    }
+    // Same size: write the RGBA bytes of each index directly.
+    let raw: &mut [u8] = image;
+    let mut pixels = region.iter();
+    while let Some(i) = pixels.next_index() {
+        raw[4 * i..4 * i + 4].copy_from_slice(&colour.0);
     }
 }
 
@@ -548,244 +385,23 @@ pub fn flood_fill(
     Ok(region.len())
 }
 
-/// The largest width and height [`load_png`] and [`decode_png`] accept: the crate's
-/// [`MAX_CANVAS`]. An image at the limit takes 1 GiB as 8-bit RGBA (2 GiB more while a
-/// 16-bit PNG is being converted).
-pub const MAX_IMAGE_SIDE: u32 = MAX_CANVAS;
-
-/// The PNG signature every PNG file starts with.
-const PNG_SIGNATURE: [u8; 8] = [0x89, b'P', b'N', b'G', b'\r', b'\n', 0x1a, b'\n'];
-
-/// Why a PNG could not be loaded. `Display` names the file and what is wrong.
-#[derive(Debug)]
-pub enum PngError {
-    /// The file could not be opened or read.
-    Unreadable {
-        /// The file.
-        file: String,
-        /// The I/O error.
-        error: std::io::Error,
-    },
-    /// The file is empty.
-    Empty {
-        /// The file.
-        file: String,
-    },
-    /// The data does not start with the PNG signature.
-    NotPng {
-        /// The file.
-        file: String,
-    },
-    /// The data ends before the image does.
-    Truncated {
-        /// The file.
-        file: String,
-        /// The decoder's message.
-        detail: String,
-    },
-    /// The data is not a valid PNG (bad chunk, checksum, compressed data, header).
-    Corrupt {
-        /// The file.
-        file: String,
-        /// The decoder's message.
-        detail: String,
-    },
-    /// The image is wider or taller than the limit.
-    TooLarge {
-        /// The file.
-        file: String,
-        /// The width the header states.
-        width: u32,
-        /// The height the header states.
-        height: u32,
-        /// The largest side accepted.
-        limit: u32,
-    },
-}
-
-impl fmt::Display for PngError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            PngError::Unreadable { file, error } => write!(f, "{file}: cannot read: {error}"),
-            PngError::Empty { file } => write!(f, "{file}: not a PNG file (the file is empty)"),
-            PngError::NotPng { file } => write!(f, "{file}: not a PNG file (it does not start with the PNG signature)"),
-            PngError::Truncated { file, detail } => write!(f, "{file}: truncated PNG: the data ends early ({detail})"),
-            PngError::Corrupt { file, detail } => write!(f, "{file}: corrupt PNG: {detail}"),
-            PngError::TooLarge {
-                file,
-                width,
-                height,
-                limit,
-            } => write!(
-                f,
-                "{file}: the image is {width}x{height}, larger than the limit of {limit} pixels per side"
-            ),
-        }
-    }
-}
-
-impl std::error::Error for PngError {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            PngError::Unreadable { error, .. } => Some(error),
-            _ => None,
-        }
-    }
-}
-
-/// Reads a PNG file as 8-bit RGBA, at most [`MAX_IMAGE_SIDE`] pixels per side. Errors
-/// name the file (as `path` displays). See [`decode_png`] for the conversion.
-pub fn load_png(path: &Path) -> Result<RgbaImage, PngError> {
-    let file = path.display().to_string();
-    let opened = std::fs::File::open(path).map_err(|error| PngError::Unreadable {
-        file: file.clone(),
-        error,
-    })?;
-    decode(BufReader::new(opened), &file, MAX_IMAGE_SIDE)
-}
-
-/// Decodes PNG bytes as 8-bit RGBA, at most [`MAX_IMAGE_SIDE`] pixels per side; `file`
-/// names the source in errors. Never panics.
-///
-/// Every PNG colour type is accepted and converted: grey and palette images expand to RGB,
-/// a missing alpha becomes 255, and 16-bit channels are rounded to 8 bits, so two 16-bit
-/// colours that round alike become one colour (and one region).
-///
-/// ```
-/// use rasterproof::fill::flood::decode_png;
-/// let err = decode_png(b"GIF89a...", "cat.gif").unwrap_err();
-/// assert_eq!(err.to_string(), "cat.gif: not a PNG file (it does not start with the PNG signature)");
-/// ```
-pub fn decode_png(bytes: &[u8], file: &str) -> Result<RgbaImage, PngError> {
-    decode_png_within(bytes, file, MAX_IMAGE_SIDE)
-}
-
-/// As [`decode_png`], with at most `max_side` pixels per side (for callers with less
-/// memory to spend, such as the fuzz target).
-pub fn decode_png_within(bytes: &[u8], file: &str, max_side: u32) -> Result<RgbaImage, PngError> {
-    decode(Cursor::new(bytes), file, max_side)
-}
-
-/// The PNG decoder's own allocations besides the image (text, ICC profile and other
-/// metadata chunks, row buffers). 64 MiB is far above what real metadata needs and keeps
-/// a hostile file from asking for gigabytes of chunk data.
-const METADATA_BUDGET: u64 = 64 << 20;
-
-fn decode<R: BufRead + Seek>(mut reader: R, file: &str, max_side: u32) -> Result<RgbaImage, PngError> {
-    let mut signature = [0u8; 8];
-    let mut got = 0;
-    while got < signature.len() {
-        match reader.read(&mut signature[got..]) {
-            Ok(0) => break,
-            Ok(n) => got += n,
-            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
-            Err(error) => {
-                return Err(PngError::Unreadable {
-                    file: file.to_string(),
-                    error,
-                })
-            }
-        }
-    }
-    if got == 0 {
-        return Err(PngError::Empty { file: file.to_string() });
-    }
-    if signature[..got] != PNG_SIGNATURE[..got] {
-        return Err(PngError::NotPng { file: file.to_string() });
-    }
-    if got < signature.len() {
-        return Err(PngError::Truncated {
-            file: file.to_string(),
-            detail: format!("{got} of the 8 signature bytes"),
-        });
-    }
-    reader.rewind().map_err(|error| PngError::Unreadable {
-        file: file.to_string(),
-        error,
-    })?;
-    let fail = |e: ImageError| classify(e, file);
-    let mut limits = image::Limits::no_limits();
-    limits.max_alloc = Some(METADATA_BUDGET);
-    let decoder = PngDecoder::with_limits(reader, limits).map_err(fail)?;
-    let (width, height) = decoder.dimensions();
-    if width > max_side || height > max_side {
-        return Err(PngError::TooLarge {
-            file: file.to_string(),
-            width,
-            height,
-            limit: max_side,
-        });
-    }
-    let image = DynamicImage::from_decoder(decoder).map_err(fail)?;
-    Ok(match image {
-        DynamicImage::ImageRgba8(rgba) => rgba,
-        other => other.to_rgba8(),
-    })
-}
-
-/// Sorts a decoder error: the png crate reports data that stops early (anywhere, from the
-/// header to the last chunk) as an I/O error of kind `UnexpectedEof`.
-fn classify(error: ImageError, file: &str) -> PngError {
-    let file = file.to_string();
-    match error {
-        ImageError::IoError(e) if e.kind() == std::io::ErrorKind::UnexpectedEof => PngError::Truncated {
-            file,
-            detail: e.to_string(),
-        },
-        ImageError::IoError(error) => PngError::Unreadable { file, error },
-        other => PngError::Corrupt {
-            file,
-            detail: other.to_string(),
-        },
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    /// A region of another size paints only the pixels inside the image.
     #[test]
-    fn region_bits_span_word_boundaries() {
-        let mut r = Region::empty(130, 1);
-        r.insert_range(60, 129);
-        assert_eq!(r.len(), 69);
-        assert_eq!(r.iter().count(), 69);
-        assert_eq!(r.iter().next(), Some((60, 0)));
-        assert_eq!(r.iter().last(), Some((128, 0)));
-        assert!(!r.contains(59, 0) && !r.contains(129, 0) && r.contains(64, 0));
-        assert_eq!(r, Region::from_fn(130, 1, |x, _| (60..129).contains(&x)));
-    }
-
-    #[test]
-    fn empty_image_regions() {
-        let r = Region::empty(0, 5);
-        assert!(r.is_empty());
-        assert_eq!(r.iter().next(), None);
-        assert!(!r.contains(0, 0));
-    }
-
-    /// Every cut of a valid PNG before its final chunk (IEND, 12 bytes) is reported as
-    /// truncated, never as corrupt or as a panic.
-    #[test]
-    fn every_cut_png_is_truncated() {
-        let img = RgbaImage::from_fn(40, 30, |x, y| {
-            Rgba([
-                (x * 7 % 256).try_into().unwrap(),
-                (y * 5 % 256).try_into().unwrap(),
-                0,
-                255,
-            ])
-        });
-        let mut bytes = Vec::new();
-        img.write_to(&mut Cursor::new(&mut bytes), image::ImageFormat::Png)
-            .unwrap();
-        assert_eq!(decode_png(&bytes, "a.png").unwrap(), img);
-        for n in 1..bytes.len() - 12 {
-            match decode_png(&bytes[..n], "a.png") {
-                Err(PngError::Truncated { file, .. }) => assert_eq!(file, "a.png"),
-                other => panic!("cut at {n} of {}: {other:?}", bytes.len()),
-            }
-        }
-        assert!(matches!(decode_png(&[], "a.png"), Err(PngError::Empty { .. })));
+    fn paint_clips_a_region_of_another_size() {
+        let (black, red) = (Rgba([0, 0, 0, 255]), Rgba([255, 0, 0, 255]));
+        let mut img = RgbaImage::from_pixel(3, 2, black);
+        paint(&mut img, &Region::from_fn(4, 4, |x, y| x == y), red);
+        let painted: Vec<(u32, u32)> = img
+            .enumerate_pixels()
+            .filter(|p| *p.2 == red)
+            .map(|p| (p.0, p.1))
+            .collect();
+        assert_eq!(painted, [(0, 0), (1, 1)]);
+        paint(&mut img, &Region::from_fn(3, 2, |x, _| x == 2), red);
+        assert_eq!(img.pixels().filter(|p| **p == red).count(), 4);
     }
 }
