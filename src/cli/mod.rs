@@ -1,4 +1,5 @@
 //! Subcommands of the binary.
 
 pub mod check;
+pub mod flood;
 pub mod render;

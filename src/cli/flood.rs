@@ -1,0 +1,165 @@
+//! `rasterproof flood`: the region of one pixel's colour in a PNG, optionally recoloured.
+
+use std::io::Write as _;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use image::Rgba;
+use rasterproof::fill::flood::{load_png, paint, span_region, Connectivity, Region, MAX_IMAGE_SIDE};
+
+/// What `flood` was asked to do.
+#[derive(clap::Args)]
+pub struct Options {
+    /// The image (PNG, any colour type, read as 8-bit RGBA; at most 16384 pixels per side).
+    image: PathBuf,
+    /// The seed pixel X,Y (0-based; x right, y down from the top-left corner).
+    #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+    at: String,
+    /// 4 (up, down, left, right) or 8 (also the diagonals).
+    #[arg(long, value_name = "4|8", default_value = "4")]
+    connectivity: String,
+    /// The fill colour for --out: R,G,B (opaque) or R,G,B,A, each 0..=255. Default 255,0,0
+    /// (opaque red).
+    #[arg(
+        long = "color",
+        value_name = "R,G,B",
+        default_value = "255,0,0",
+        allow_hyphen_values = true
+    )]
+    color: String,
+    /// Write the image with the region recoloured (PNG, 8-bit RGBA).
+    #[arg(short = 'o', long = "out")]
+    out: Option<PathBuf>,
+    /// Output format on stdout.
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+}
+
+/// How `flood` reports on stdout.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// A one-line summary: pixel count, connectivity, seed, file.
+    Text,
+    /// `{"width":W,"height":H,"at":[x,y],"connectivity":4,"pixels":[[x,y],...]}`, the
+    /// region's pixels row-major (by y, then x).
+    Json,
+}
+
+pub fn run(o: &Options) -> Result<ExitCode, String> {
+    let at = parse_at(&o.at)?;
+    let connectivity = parse_connectivity(&o.connectivity)?;
+    let colour = parse_colour(&o.color)?;
+    let name = o.image.display().to_string();
+    let mut image = load_png(&o.image).map_err(|e| e.to_string())?;
+    let region = span_region(&image, at, connectivity).map_err(|e| {
+        format!(
+            "--at: {},{} is outside the image {name} ({}x{}: x must be in 0..{}, y in 0..{})",
+            e.seed.0, e.seed.1, e.width, e.height, e.width, e.height
+        )
+    })?;
+
+    let mut summary = format!(
+        "{name}: {} pixel{} in the {connectivity} region of ({}, {}) ({}x{} image)",
+        region.len(),
+        if region.len() == 1 { "" } else { "s" },
+        at.0,
+        at.1,
+        image.width(),
+        image.height()
+    );
+    if let Some(path) = &o.out {
+        paint(&mut image, &region, colour);
+        image
+            .save_with_format(path, image::ImageFormat::Png)
+            .map_err(|e| format!("{}: cannot write PNG: {e}", path.display()))?;
+        let [r, g, b, a] = colour.0;
+        summary.push_str(&format!(", recoloured {r},{g},{b},{a} into {}", path.display()));
+    }
+    match o.format {
+        Format::Json => {
+            write_stdout(|out| write_json(out, &region, at, connectivity))?;
+            eprintln!("{summary}");
+        }
+        Format::Text => write_stdout(|out| writeln!(out, "{summary}"))?,
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `X,Y` as two non-negative integers.
+fn parse_at(text: &str) -> Result<(u32, u32), String> {
+    let bad = || {
+        format!(
+            "--at: {text:?} is not X,Y (two integers from 0 to {}, e.g. 3,4)",
+            MAX_IMAGE_SIDE - 1
+        )
+    };
+    let parts = integers(text).ok_or_else(bad)?;
+    match parts[..] {
+        [x, y] => Ok((
+            u32::try_from(x).map_err(|_| bad())?,
+            u32::try_from(y).map_err(|_| bad())?,
+        )),
+        _ => Err(bad()),
+    }
+}
+
+fn parse_connectivity(text: &str) -> Result<Connectivity, String> {
+    text.trim()
+        .parse::<u32>()
+        .ok()
+        .and_then(Connectivity::from_number)
+        .ok_or_else(|| format!("--connectivity: {text:?} is not 4 or 8"))
+}
+
+/// `R,G,B` (alpha 255) or `R,G,B,A`, each 0..=255.
+fn parse_colour(text: &str) -> Result<Rgba<u8>, String> {
+    let bad = || format!("--color: {text:?} is not R,G,B or R,G,B,A (integers 0..=255, e.g. 255,0,0)");
+    let parts = integers(text).ok_or_else(bad)?;
+    let channel = |v: u64| u8::try_from(v).map_err(|_| bad());
+    match parts[..] {
+        [r, g, b] => Ok(Rgba([channel(r)?, channel(g)?, channel(b)?, 255])),
+        [r, g, b, a] => Ok(Rgba([channel(r)?, channel(g)?, channel(b)?, channel(a)?])),
+        _ => Err(bad()),
+    }
+}
+
+/// Comma-separated non-negative integers (spaces around each allowed); `None` if any part
+/// is not one.
+fn integers(text: &str) -> Option<Vec<u64>> {
+    text.split(',').map(|part| part.trim().parse::<u64>().ok()).collect()
+}
+
+fn write_json(
+    out: &mut dyn std::io::Write,
+    region: &Region,
+    at: (u32, u32),
+    connectivity: Connectivity,
+) -> std::io::Result<()> {
+    write!(
+        out,
+        "{{\"width\":{},\"height\":{},\"at\":[{},{}],\"connectivity\":{},\"pixels\":[",
+        region.width(),
+        region.height(),
+        at.0,
+        at.1,
+        connectivity.number()
+    )?;
+    for (k, (x, y)) in region.iter().enumerate() {
+        if k > 0 {
+            out.write_all(b",")?;
+        }
+        write!(out, "[{x},{y}]")?;
+    }
+    out.write_all(b"]}\n")
+}
+
+/// Writes to stdout through a buffer; a closed pipe (`| head`) ends quietly instead of
+/// panicking.
+fn write_stdout(body: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>) -> Result<(), String> {
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    match body(&mut out).and_then(|()| out.flush()) {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        Err(e) => Err(format!("cannot write to stdout: {e}")),
+    }
+}
