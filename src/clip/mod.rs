@@ -14,6 +14,7 @@
 
 pub mod cohen_sutherland;
 pub mod halfplane;
+pub mod homogeneous;
 pub mod sutherland_hodgman;
 
 use std::fmt;
