@@ -55,6 +55,7 @@ pub mod interp;
 pub mod line;
 pub mod model;
 pub mod num;
+pub mod render;
 pub mod scene;
 #[cfg(feature = "proptest")]
 pub mod strategy;

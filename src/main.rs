@@ -24,6 +24,8 @@ struct Args {
 enum Command {
     /// Render a scene file with one model.
     Render(cli::render::Options),
+    /// Clip a scene's primitives against its clip window; print them exactly.
+    Clip(cli::clip::Options),
     /// Flood fill: the 4- or 8-connected region of one pixel's colour in a PNG.
     Flood(cli::flood::Options),
     /// Run the invariant suite on random cases.
@@ -47,6 +49,7 @@ fn main() -> ExitCode {
     let args = Args::parse();
     let result = match args.command {
         Command::Render(options) => cli::render::run(&options),
+        Command::Clip(options) => cli::clip::run(&options),
         Command::Flood(options) => cli::flood::run(&options),
         Command::Check {
             cases,

@@ -162,6 +162,20 @@ pub enum ModelError {
         /// Why.
         error: TriangulateError,
     },
+    /// A clip-space triangle the model cannot take after clipping and projection.
+    ClipSpace {
+        /// Index among the clip-space triangles.
+        triangle: usize,
+        /// Why.
+        message: String,
+    },
+    /// A scene value that does not fit the float model's type.
+    FloatScene {
+        /// Which value (`clip`, `viewport`, `triangles[3]`, ...).
+        what: String,
+        /// The model.
+        model: Model,
+    },
     /// A float model asked for a polygon (polygons are filled by exact and integer models).
     NoFloatPolygon {
         /// Polygon index (among the polygons).
@@ -210,6 +224,10 @@ impl fmt::Display for ModelError {
             },
             ModelError::Triangulate { polygon, error } => {
                 write!(f, "polygons[{polygon}]: cannot triangulate for the fixed model: {error}")
+            }
+            ModelError::ClipSpace { triangle, message } => write!(f, "clip_space_triangles[{triangle}]: {message}"),
+            ModelError::FloatScene { what, model } => {
+                write!(f, "{what}: a coordinate does not fit the {model} model's float type")
             }
             ModelError::NoFloatPolygon { polygon, model } => write!(
                 f,

@@ -4,8 +4,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use rasterproof::convention::Preset;
-use rasterproof::coverage::Coverage;
-use rasterproof::model::{prepare, prepare_lines, prepare_polygons, Model};
+use rasterproof::model::{prepare, Model};
+use rasterproof::render::render_scene;
 use rasterproof::scene::parse_scene_bytes;
 
 /// What `render` was asked to do.
@@ -62,18 +62,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         .target()
         .ok_or_else(|| format!("{name}: invalid canvas or convention"))?;
     let fail = |e: rasterproof::model::ModelError| format!("{name}: {e} (model {model})");
-    let prepared = prepare(model, &scene.triangles(), &target.convention).map_err(fail)?;
-    let lines = prepare_lines(model, &scene.lines, &target.convention).map_err(fail)?;
-    let polygons = prepare_polygons(model, &scene.polygons, &target.convention).map_err(fail)?;
-    let mut coverage = Coverage::new(target.width, target.height);
-    prepared.rasterize_into(&target, &mut coverage);
-    let id = |k: usize| u32::try_from(k).map_err(|_| format!("{name}: too many primitives"));
-    for (k, line) in lines.iter().enumerate() {
-        line.draw(id(scene.triangles.len() + k)?, &target, &mut coverage);
-    }
-    for (k, polygon) in polygons.iter().enumerate() {
-        polygon.fill(id(scene.triangles.len() + lines.len() + k)?, &target, &mut coverage);
-    }
+    let coverage = render_scene(model, &scene, &target).map_err(fail)?;
 
     if let Some(path) = &o.out {
         coverage
@@ -81,7 +70,8 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             .map_err(|e| format!("{}: cannot write PNG: {e}", path.display()))?;
     }
     if let Some(path) = &o.colors_out {
-        prepared
+        prepare(model, &scene.triangles(), &target.convention)
+            .map_err(fail)?
             .colour_image(&coverage, &scene.colours(), &target)
             .save_with_format(path, image::ImageFormat::Png)
             .map_err(|e| format!("{}: cannot write PNG: {e}", path.display()))?;
@@ -103,7 +93,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
 }
 
 /// Writes a line to stdout; a closed pipe (`| head`) ends quietly instead of panicking.
-fn print_stdout(line: &str) -> Result<(), String> {
+pub fn print_stdout(line: &str) -> Result<(), String> {
     use std::io::Write as _;
     let mut out = std::io::stdout().lock();
     match writeln!(out, "{line}").and_then(|()| out.flush()) {

@@ -97,6 +97,46 @@ impl HalfPlane {
     }
 }
 
+/// The part of segment `a -> b` inside every half-plane (Cyrus-Beck: each half-plane
+/// bounds the parameter `t` of `a + t (b - a)` from one side), endpoints in the segment's
+/// direction, exactly; `None` when nothing is inside. For a convex window this is what
+/// Cohen-Sutherland computes for a rectangle.
+///
+/// ```
+/// use rasterproof::clip::halfplane::{clip_segment_exact, HalfPlane};
+/// use rasterproof::geom::Point;
+/// let q = |n: i64| num_rational::BigRational::from_integer(n.into());
+/// // x + y <= 4 and x >= 0: (-2, 1) -> (6, 1) keeps x in [0, 3].
+/// let planes = [HalfPlane::from_line(q(-1), q(-1), q(4)).unwrap(), HalfPlane::from_line(q(1), q(0), q(0)).unwrap()];
+/// let kept = clip_segment_exact(&Point::from_ints(-2, 1), &Point::from_ints(6, 1), &planes);
+/// assert_eq!(kept, Some((Point::from_ints(0, 1), Point::from_ints(3, 1))));
+/// ```
+pub fn clip_segment_exact(a: &Point, b: &Point, planes: &[HalfPlane]) -> Option<(Point, Point)> {
+    let (mut t0, mut t1) = (BigRational::zero(), BigRational::from_integer(1.into()));
+    for h in planes {
+        // v(t) = v(a) + t (v(b) - v(a)) >= 0
+        let (va, vb) = (h.value(a), h.value(b));
+        let slope = &vb - &va;
+        if slope.is_zero() {
+            if va.is_negative() {
+                return None;
+            }
+            continue;
+        }
+        let t = -&va / &slope;
+        if slope.is_positive() {
+            t0 = t0.max(t);
+        } else {
+            t1 = t1.min(t);
+        }
+    }
+    if t0 > t1 {
+        return None;
+    }
+    let at = |t: &BigRational| Point::new(&a.x + t * (&b.x - &a.x), &a.y + t * (&b.y - &a.y));
+    Some((at(&t0), at(&t1)))
+}
+
 macro_rules! float_half_plane {
     ($name:ident, $float:ty, $vec:ty, $doc:literal) => {
         #[doc = $doc]
@@ -117,6 +157,29 @@ macro_rules! float_half_plane {
             /// Whether `p` is kept: `value >= 0`.
             pub fn contains(&self, p: $vec) -> bool {
                 self.value(p) >= 0.0
+            }
+
+            /// The part of segment `a -> b` inside every half-plane (Cyrus-Beck), rounded
+            /// at every step; `None` when nothing is inside.
+            pub fn clip_segment(a: $vec, b: $vec, planes: &[$name]) -> Option<($vec, $vec)> {
+                let (mut t0, mut t1): ($float, $float) = (0.0, 1.0);
+                for h in planes {
+                    let (va, vb) = (h.value(a), h.value(b));
+                    let slope = vb - va;
+                    if slope == 0.0 {
+                        if va < 0.0 {
+                            return None;
+                        }
+                        continue;
+                    }
+                    let t = -va / slope;
+                    if slope > 0.0 {
+                        t0 = t0.max(t);
+                    } else {
+                        t1 = t1.min(t);
+                    }
+                }
+                (t0 <= t1).then(|| (a + (b - a) * t0, a + (b - a) * t1))
             }
 
             /// Where segment `p -> q` meets the boundary line: `p + t (q - p)` with

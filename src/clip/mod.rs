@@ -15,6 +15,7 @@
 pub mod cohen_sutherland;
 pub mod halfplane;
 pub mod homogeneous;
+pub mod mask;
 pub mod sutherland_hodgman;
 
 use std::fmt;

@@ -8,6 +8,8 @@ use std::fmt::Write as _;
 
 use num_rational::BigRational;
 
+use crate::clip::homogeneous::{ClipVertex, DepthRange, NdcY, Viewport};
+use crate::clip::Window;
 use crate::convention::{Convention, PixelCentre, Preset, Rounding, Target, TieRule};
 use crate::geom::{Point, Polygon, Triangle};
 use crate::interp::Rgb;
@@ -68,6 +70,13 @@ pub struct Scene {
     pub lines: Vec<Line>,
     /// `polygons`, ids after the triangles and the lines, in file order.
     pub polygons: Vec<Polygon>,
+    /// `clip_space_triangles`: clip-space `(x, y, z, w)` vertices, clipped against the
+    /// view volume, divided and mapped through the viewport; ids after the polygons.
+    pub clip_space_triangles: Vec<[ClipVertex; 3]>,
+    /// `viewport`, when the file gives one (see [`Scene::viewport`] for the default).
+    pub viewport: Option<Viewport>,
+    /// `clip`: the window every primitive is clipped against before rasterization.
+    pub clip: Option<Window>,
 }
 
 impl Scene {
@@ -87,7 +96,27 @@ impl Scene {
                 .collect(),
             lines: Vec::new(),
             polygons: Vec::new(),
+            clip_space_triangles: Vec::new(),
+            viewport: None,
+            clip: None,
         }
+    }
+
+    /// The viewport: the file's, or the whole canvas with the preset's conventions (NDC y
+    /// down for `vulkan`, up for the others; depth `-w <= z <= w` for `gl`, `0 <= z <= w`
+    /// for the others).
+    pub fn viewport(&self) -> Viewport {
+        self.viewport.clone().unwrap_or_else(|| {
+            let int = |v: u32| BigRational::from_integer(v.into());
+            Viewport {
+                x: int(0),
+                y: int(0),
+                width: int(self.width),
+                height: int(self.height),
+                y_axis: preset_ndc(self.preset).0,
+                depth: preset_ndc(self.preset).1,
+            }
+        })
     }
 
     /// The convention: the preset with the scene's overrides.
@@ -175,9 +204,72 @@ impl Scene {
             }
             s.push_str("\n  ]");
         }
+        if !self.clip_space_triangles.is_empty() {
+            s.push_str(",\n  \"clip_space_triangles\": [");
+            for (k, t) in self.clip_space_triangles.iter().enumerate() {
+                s.push_str(if k == 0 { "\n    " } else { ",\n    " });
+                let v: Vec<String> = t
+                    .iter()
+                    .map(|v| {
+                        format!(
+                            "[{}]",
+                            v.pos
+                                .iter()
+                                .map(|c| format!("\"{}\"", exact_text(c)))
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        )
+                    })
+                    .collect();
+                let _ = write!(s, "{{\"v\": [{}]}}", v.join(", "));
+            }
+            s.push_str("\n  ]");
+        }
+        if let Some(vp) = &self.viewport {
+            let _ = write!(
+                s,
+                ",\n  \"viewport\": {{\"x\": \"{}\", \"y\": \"{}\", \"width\": \"{}\", \"height\": \"{}\", \"ndc_y\": \"{}\", \"depth\": \"{}\"}}",
+                exact_text(&vp.x),
+                exact_text(&vp.y),
+                exact_text(&vp.width),
+                exact_text(&vp.height),
+                if vp.y_axis == NdcY::Down { "down" } else { "up" },
+                if vp.depth == DepthRange::ZeroToOne { "zero-to-one" } else { "minus-one-to-one" }
+            );
+        }
+        match &self.clip {
+            None => {}
+            Some(Window::Rect(r)) => {
+                let _ = write!(
+                    s,
+                    ",\n  \"clip\": {{\"rect\": [\"{}\", \"{}\", \"{}\", \"{}\"]}}",
+                    exact_text(&r.xmin),
+                    exact_text(&r.ymin),
+                    exact_text(&r.xmax),
+                    exact_text(&r.ymax)
+                );
+            }
+            Some(Window::Convex(pts)) => {
+                let pts: Vec<String> = pts.iter().map(pt).collect();
+                let _ = write!(s, ",\n  \"clip\": {{\"convex\": [{}]}}", pts.join(", "));
+            }
+        }
         s.push_str("\n}\n");
         s
     }
+}
+
+/// A preset's clip-space conventions: NDC y down for `vulkan`, up for the others; depth
+/// `-w <= z <= w` for `gl`, `0 <= z <= w` for the others.
+pub fn preset_ndc(preset: Preset) -> (NdcY, DepthRange) {
+    (
+        if preset == Preset::Vulkan { NdcY::Down } else { NdcY::Up },
+        if preset == Preset::Gl {
+            DepthRange::MinusOneToOne
+        } else {
+            DepthRange::ZeroToOne
+        },
+    )
 }
 
 /// A point as scene text: `["3", "-7/2"]`.

@@ -32,6 +32,8 @@ use num_traits::Signed;
 use serde_json::{Map, Value};
 
 use super::{Overrides, Scene, SceneError, SceneTriangle};
+use crate::clip::homogeneous::{ClipVertex, DepthRange, NdcY, Viewport};
+use crate::clip::Window;
 use crate::convention::{PixelCentre, Preset, Rounding, TieRule, MAX_CANVAS};
 use crate::fill::polygon::{locate_exact, Location};
 use crate::geom::{FillRule, Point, Polygon, Triangle};
@@ -85,6 +87,9 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
             "triangles",
             "lines",
             "polygons",
+            "clip_space_triangles",
+            "viewport",
+            "clip",
         ],
     )?;
     let width = p.canvas_side(root, "width")?;
@@ -114,7 +119,19 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
         None => Vec::new(),
         Some(v) => p.polygons(v)?,
     };
-    if triangles.len() + lines.len() + polygons.len() > MAX_TRIANGLES {
+    let clip_space_triangles = match root.get("clip_space_triangles") {
+        None => Vec::new(),
+        Some(v) => p.clip_space_triangles(v)?,
+    };
+    let viewport = match root.get("viewport") {
+        None => None,
+        Some(v) => Some(p.viewport(v, width, height, preset)?),
+    };
+    let clip = match root.get("clip") {
+        None => None,
+        Some(v) => Some(p.clip(v)?),
+    };
+    if triangles.len() + lines.len() + polygons.len() + clip_space_triangles.len() > MAX_TRIANGLES {
         return Err(p.err("", format!("more than {MAX_TRIANGLES} primitives")));
     }
     Ok(Scene {
@@ -125,6 +142,9 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
         triangles,
         lines,
         polygons,
+        clip_space_triangles,
+        viewport,
+        clip,
     })
 }
 
@@ -499,6 +519,148 @@ impl Parser<'_> {
             holes,
             fill_rule,
         })
+    }
+
+    fn clip_space_triangles(&self, v: &Value) -> Result<Vec<[ClipVertex; 3]>, SceneError> {
+        let list = self.array(v, "clip_space_triangles")?;
+        if list.len() > MAX_TRIANGLES {
+            return Err(self.err(
+                "clip_space_triangles",
+                format!("{} triangles, at most {MAX_TRIANGLES}", list.len()),
+            ));
+        }
+        list.iter()
+            .enumerate()
+            .map(|(k, t)| {
+                let at = format!("clip_space_triangles[{k}]");
+                let Value::Object(obj) = t else {
+                    return Err(self.err(
+                        &at,
+                        format!("expected an object with \"v\", found {} {}", kind(t), show(t)),
+                    ));
+                };
+                self.known_fields(obj, &at, &["v"])?;
+                let vf = format!("{at}.v");
+                let verts = self.array(
+                    obj.get("v").ok_or_else(|| self.err(&vf, "missing (required)".into()))?,
+                    &vf,
+                )?;
+                if verts.len() != 3 {
+                    return Err(self.err(
+                        &vf,
+                        format!("a triangle needs exactly 3 vertices, found {}", verts.len()),
+                    ));
+                }
+                let mut out = Vec::with_capacity(3);
+                for (i, p) in verts.iter().enumerate() {
+                    let pf = format!("{vf}[{i}]");
+                    let xyzw = self.array(p, &pf)?;
+                    if xyzw.len() != 4 {
+                        return Err(self.err(
+                            &pf,
+                            format!("a clip-space vertex is [x, y, z, w], found {} values", xyzw.len()),
+                        ));
+                    }
+                    let c = |k: usize| self.coordinate(&xyzw[k], &format!("{pf}[{k}]"));
+                    out.push(ClipVertex {
+                        pos: [c(0)?, c(1)?, c(2)?, c(3)?],
+                        attrs: Vec::new(),
+                    });
+                }
+                Ok(out.try_into().expect("three vertices checked"))
+            })
+            .collect()
+    }
+
+    fn viewport(&self, v: &Value, width: u32, height: u32, preset: Preset) -> Result<Viewport, SceneError> {
+        let Value::Object(obj) = v else {
+            return Err(self.err("viewport", format!("expected an object, found {} {}", kind(v), show(v))));
+        };
+        self.known_fields(obj, "viewport", &["x", "y", "width", "height", "ndc_y", "depth"])?;
+        let number = |key: &str, default: u32| match obj.get(key) {
+            None => Ok(BigRational::from_integer(default.into())),
+            Some(v) => self.coordinate(v, &format!("viewport.{key}")),
+        };
+        let (x, y, w, h) = (
+            number("x", 0)?,
+            number("y", 0)?,
+            number("width", width)?,
+            number("height", height)?,
+        );
+        for (key, value) in [("width", &w), ("height", &h)] {
+            if !value.is_positive() {
+                return Err(self.err(
+                    &format!("viewport.{key}"),
+                    format!("{} is not positive", crate::scene::exact_text(value)),
+                ));
+            }
+        }
+        let (default_y, default_depth) = crate::scene::preset_ndc(preset);
+        let y_axis = match obj.get("ndc_y") {
+            None => default_y,
+            Some(v) => match self.string(v, "viewport.ndc_y")? {
+                "down" => NdcY::Down,
+                "up" => NdcY::Up,
+                other => return Err(self.err("viewport.ndc_y", format!("unknown {other:?} (expected up or down)"))),
+            },
+        };
+        let depth = match obj.get("depth") {
+            None => default_depth,
+            Some(v) => match self.string(v, "viewport.depth")? {
+                "zero-to-one" => DepthRange::ZeroToOne,
+                "minus-one-to-one" => DepthRange::MinusOneToOne,
+                other => {
+                    return Err(self.err(
+                        "viewport.depth",
+                        format!("unknown {other:?} (expected zero-to-one or minus-one-to-one)"),
+                    ))
+                }
+            },
+        };
+        Ok(Viewport::new(x, y, w, h, y_axis, depth).expect("positive sides checked"))
+    }
+
+    fn clip(&self, v: &Value) -> Result<Window, SceneError> {
+        let Value::Object(obj) = v else {
+            return Err(self.err(
+                "clip",
+                format!(
+                    "expected an object with \"rect\" or \"convex\", found {} {}",
+                    kind(v),
+                    show(v)
+                ),
+            ));
+        };
+        self.known_fields(obj, "clip", &["rect", "convex"])?;
+        match (obj.get("rect"), obj.get("convex")) {
+            (Some(r), None) => {
+                let list = self.array(r, "clip.rect")?;
+                if list.len() != 4 {
+                    return Err(self.err(
+                        "clip.rect",
+                        format!("expected [xmin, ymin, xmax, ymax], found {} values", list.len()),
+                    ));
+                }
+                let c = |k: usize| self.coordinate(&list[k], &format!("clip.rect[{k}]"));
+                Window::rect(c(0)?, c(1)?, c(2)?, c(3)?).map_err(|e| self.err("clip.rect", e.to_string()))
+            }
+            (None, Some(c)) => {
+                let list = self.array(c, "clip.convex")?;
+                if list.len() > MAX_POLYGON_VERTICES {
+                    return Err(self.err(
+                        "clip.convex",
+                        format!("{} vertices, at most {MAX_POLYGON_VERTICES}", list.len()),
+                    ));
+                }
+                let points = list
+                    .iter()
+                    .enumerate()
+                    .map(|(i, p)| self.point(Some(p), &format!("clip.convex[{i}]")))
+                    .collect::<Result<Vec<_>, _>>()?;
+                Window::convex(points).map_err(|e| self.err("clip.convex", e.to_string()))
+            }
+            _ => Err(self.err("clip", "expected exactly one of \"rect\" and \"convex\"".into())),
+        }
     }
 
     fn colours(&self, v: &Value, at: &str) -> Result<[Rgb; 3], SceneError> {
