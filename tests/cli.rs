@@ -338,6 +338,9 @@ fn check_runs_the_suite() {
         "integer edge sum",
         "polygon agreement",
         "triangulation",
+        "clip inside",
+        "clip raster",
+        "segment clip",
     ] {
         assert!(text.contains(needle), "{needle} missing:\n{text}");
     }

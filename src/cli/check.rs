@@ -5,22 +5,28 @@ use std::path::Path;
 use std::process::ExitCode;
 
 use indicatif::{ProgressBar, ProgressStyle};
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use rasterproof::check::{
-    check_agreement, check_barycentric_exact, check_barycentric_fixed, check_diamond_agreement, check_line_pixels,
-    check_line_reference, check_line_symmetry, check_rotation_and_winding, check_translation, check_triangulation,
-    check_watertight, float_sum_error_ulps, Violation,
+    check_agreement, check_barycentric_exact, check_barycentric_fixed, check_clip_raster, check_diamond_agreement,
+    check_inside, check_line_pixels, check_line_reference, check_line_symmetry, check_rotation_and_winding,
+    check_segment_clip, check_translation, check_triangulation, check_watertight, float_sum_error_ulps, Violation,
 };
+use rasterproof::clip::halfplane::HalfPlane;
+use rasterproof::clip::sutherland_hodgman::{self, clip_polygon};
+use rasterproof::clip::{cohen_sutherland, Window};
 use rasterproof::convention::{Preset, Target, MAX_CANVAS};
 use rasterproof::fill::triangulate::{triangulate, validate};
 use rasterproof::geom::{FixedTriangle, Point, Polygon, Triangle};
 use rasterproof::line::{bresenham, dda, BresenhamTie, Line, LineRule};
 use rasterproof::model::{render, render_primitives, Model};
 use rasterproof::scene::Scene;
+use rasterproof::strategy::clip::{any_window, rect_window};
 use rasterproof::strategy::polygon::{any_polygon, simple_polygon};
 use rasterproof::strategy::{
-    any_triangle, delaunay_mesh, diamond_line, long_pixel_line, pixel_line, tie_heavy_mesh, Mesh,
+    any_triangle, delaunay_mesh, diamond_line, long_pixel_line, pixel_line, tie_heavy_coordinate, tie_heavy_mesh, Mesh,
 };
 
 /// Canvas side of the ordinary cases.
@@ -47,6 +53,11 @@ struct Case {
     polygon: Polygon,
     /// A simple polygon (star-shaped, maybe with a hole), for the triangulation.
     simple: Polygon,
+    /// A clip window (rectangle or convex) and a rectangle for segments.
+    window: Window,
+    rect: Window,
+    /// A segment with tie-heavy endpoints.
+    segment: (Point, Point),
 }
 
 /// One checker's verdict.
@@ -60,6 +71,8 @@ struct Outcome {
     triangles: Vec<Triangle>,
     lines: Vec<Line>,
     polygons: Vec<Polygon>,
+    /// The clip window of a clipping case.
+    window: Option<Window>,
     canvas: u32,
 }
 
@@ -105,6 +118,10 @@ fn generate(seed: u64, k: u64) -> Result<Case, String> {
     let preset = draw(&mut runner, proptest::sample::select(vec![Preset::D3d11, Preset::Gl]))?;
     let polygon = draw(&mut runner, any_polygon(CANVAS, 12))?;
     let simple = draw(&mut runner, simple_polygon(CANVAS, 12))?;
+    let window = draw(&mut runner, any_window(CANVAS))?;
+    let rect = draw(&mut runner, rect_window(CANVAS))?;
+    let ends = draw(&mut runner, proptest::array::uniform4(tie_heavy_coordinate(CANVAS)))?;
+    let [ax, ay, bx, by] = ends;
     Ok(Case {
         mesh,
         fine_mesh,
@@ -118,6 +135,9 @@ fn generate(seed: u64, k: u64) -> Result<Case, String> {
         preset,
         polygon,
         simple,
+        window,
+        rect,
+        segment: (Point::new(ax, ay), Point::new(bx, by)),
     })
 }
 
@@ -140,6 +160,7 @@ fn run_case(c: &Case) -> (Vec<Outcome>, Vec<f64>) {
             triangles: triangles.to_vec(),
             lines: Vec::new(),
             polygons: Vec::new(),
+            window: None,
             canvas,
         });
     };
@@ -259,7 +280,85 @@ fn run_case(c: &Case) -> (Vec<Outcome>, Vec<f64>) {
     }
     line_checks(c, &mut out);
     polygon_checks(c, &mut out);
+    clip_checks(c, &mut out);
     (out, ulps)
+}
+
+/// Invariant 6 (clipping): exact Sutherland-Hodgman output inside the window and
+/// rasterizing to raster(P) ∩ raster(W); exact Cohen-Sutherland keeping exactly the part
+/// inside; the float forms' outputs outside the window counted (the measured trade).
+fn clip_checks(c: &Case, out: &mut Vec<Outcome>) {
+    let target = target(CANVAS, c.preset);
+    let mut push = |invariant, model: Model, label, result| {
+        let segment = invariant == "segment clip";
+        out.push(Outcome {
+            invariant,
+            model,
+            label,
+            result,
+            triangles: Vec::new(),
+            lines: if segment {
+                vec![Line {
+                    from: c.segment.0.clone(),
+                    to: c.segment.1.clone(),
+                    rule: LineRule::Diamond,
+                }]
+            } else {
+                Vec::new()
+            },
+            polygons: if segment { Vec::new() } else { vec![c.polygon.clone()] },
+            window: Some(if segment { c.rect.clone() } else { c.window.clone() }),
+            canvas: CANVAS,
+        });
+    };
+    let cut = clip_polygon(&c.polygon, &c.window);
+    push(
+        "clip inside",
+        Model::Exact,
+        "sutherland-hodgman",
+        check_inside(&cut.outline, &c.window),
+    );
+    push(
+        "clip raster",
+        Model::Exact,
+        "sutherland-hodgman",
+        check_clip_raster(&c.polygon, &cut, &c.window, &target),
+    );
+    let (a, b) = &c.segment;
+    if let Window::Rect(r) = &c.rect {
+        let kept = cohen_sutherland::clip_exact(a, b, r);
+        push(
+            "segment clip",
+            Model::Exact,
+            "cohen-sutherland",
+            check_segment_clip(a, b, r, kept.as_ref()),
+        );
+    }
+    // Float Sutherland-Hodgman: every output vertex read back exactly, checked exactly.
+    let to64 = |p: &Point| glam::DVec2::new(p.x.to_f64().unwrap_or(f64::NAN), p.y.to_f64().unwrap_or(f64::NAN));
+    let back = |p: glam::DVec2| {
+        Point::new(
+            BigRational::from_float(p.x).unwrap_or_default(),
+            BigRational::from_float(p.y).unwrap_or_default(),
+        )
+    };
+    let planes = c.window.half_planes();
+    let subject: Vec<glam::DVec2> = c.polygon.outline.iter().map(to64).collect();
+    if let Some(p64) = planes.iter().map(HalfPlane::to_f64).collect::<Option<Vec<_>>>() {
+        let pts: Vec<Point> = sutherland_hodgman::clip_f64(&subject, &p64)
+            .into_iter()
+            .map(back)
+            .collect();
+        push("clip inside", Model::Float64, "sh-f64", check_inside(&pts, &c.window));
+    }
+    if let Some(p32) = planes.iter().map(HalfPlane::to_f32).collect::<Option<Vec<_>>>() {
+        let s32: Vec<glam::Vec2> = subject.iter().map(|p| p.as_vec2()).collect();
+        let pts: Vec<Point> = sutherland_hodgman::clip_f32(&s32, &p32)
+            .into_iter()
+            .map(|p| back(p.as_dvec2()))
+            .collect();
+        push("clip inside", Model::Float32, "sh-f32", check_inside(&pts, &c.window));
+    }
 }
 
 /// Invariant 7: the scanline filler equals the oracle on any polygon; a simple polygon's
@@ -275,6 +374,7 @@ fn polygon_checks(c: &Case, out: &mut Vec<Outcome>) {
             triangles: Vec::new(),
             lines: Vec::new(),
             polygons: vec![polygon.clone()],
+            window: None,
             canvas: CANVAS,
         });
     };
@@ -325,6 +425,7 @@ fn line_checks(c: &Case, out: &mut Vec<Outcome>) {
             triangles: Vec::new(),
             lines: vec![line],
             polygons: Vec::new(),
+            window: None,
             canvas: CANVAS,
         });
     };
@@ -426,16 +527,16 @@ pub fn run(cases: u64, seed: u64, out: Option<&Path>, quiet: bool) -> Result<Exi
     bar.finish_and_clear();
     println!("rasterproof check: {cases} cases, seed {seed}, presets d3d11/gl");
     println!(
-        "{:<24} {:<14} {:>7} {:>10}",
+        "{:<24} {:<18} {:>7} {:>10}",
         "invariant", "model", "cases", "violations"
     );
     for ((invariant, model), (n, bad)) in &tally {
-        println!("{invariant:<24} {model:<14} {n:>7} {bad:>10}");
+        println!("{invariant:<24} {model:<18} {n:>7} {bad:>10}");
     }
     if !families.is_empty() {
         println!("mesh violations by family:");
         for ((family, model), n) in &families {
-            println!("  {family:<22} {model:<14} {n:>5}");
+            println!("  {family:<22} {model:<18} {n:>5}");
         }
     }
     if !ulps.is_empty() {
@@ -469,6 +570,7 @@ fn write_case(dir: &Path, k: u64, o: &Outcome, preset: Preset, v: &Violation) ->
     let mut scene = Scene::new(o.canvas, o.canvas, o.triangles.clone());
     scene.lines = o.lines.clone();
     scene.polygons = o.polygons.clone();
+    scene.clip = o.window.clone();
     scene.preset = preset;
     let json = stem.with_extension("json");
     std::fs::write(&json, scene.to_json()).map_err(|e| format!("{}: cannot write: {e}", json.display()))?;
