@@ -56,7 +56,7 @@ pub fn clip_exact(subject: &[Point], planes: &[HalfPlane]) -> Vec<Point> {
 }
 
 /// Without repeated consecutive vertices (the last compared with the first too).
-fn merged<T: PartialEq>(mut points: Vec<T>) -> Vec<T> {
+pub(crate) fn merged<T: PartialEq>(mut points: Vec<T>) -> Vec<T> {
     points.dedup();
     while points.len() > 1 && points.first() == points.last() {
         points.pop();
