@@ -6,7 +6,7 @@ use num_rational::BigRational;
 use num_traits::ToPrimitive;
 
 use crate::convention::Convention;
-use crate::num::exact::dyadic;
+use crate::num::exact::{dyadic, nearest_f32};
 use crate::num::fixed::snap;
 use crate::num::{EnvelopeError, SubPixel};
 
@@ -84,12 +84,12 @@ impl Triangle {
         }
     }
 
-    /// The vertices rounded to the nearest f32 (num-rational's conversion), as glam vectors.
+    /// The vertices rounded to the nearest f32 (once: [`nearest_f32`]), as glam vectors.
     /// `None` when a coordinate does not fit f32.
     pub fn to_f32(&self) -> Option<[glam::Vec2; 3]> {
         let mut out = [glam::Vec2::ZERO; 3];
         for (o, p) in out.iter_mut().zip(&self.v) {
-            let (x, y) = (p.x.to_f32()?, p.y.to_f32()?);
+            let (x, y) = (nearest_f32(&p.x)?, nearest_f32(&p.y)?);
             if !x.is_finite() || !y.is_finite() {
                 return None;
             }
@@ -207,12 +207,13 @@ impl FillRule {
 /// A polygon with exact vertices: an outline and holes, each a closed contour (the last
 /// vertex joins the first), in either orientation.
 ///
-/// Its region is decided by the winding number of the moved sample (the tie rule's ε
-/// reading, [`crate::convention::TieRule`]) with each contour's orientation normalised
-/// first: the outline counts +1 around its interior and every hole -1 (a contour is
-/// reversed when its signed area says so; a zero-area contour is taken as written). Holes
-/// are therefore holes under both fill rules, and even-odd and nonzero agree on a simple
-/// polygon; they differ where a self-intersecting outline winds twice.
+/// Its region: the samples whose moved sample (the tie rule's ε reading,
+/// [`crate::convention::TieRule`]) satisfies the fill rule for its winding number around
+/// the outline, and for none of the holes' — the outline's region minus the holes'
+/// regions. Both fill rules ignore orientation, so a hole is a hole however it is wound;
+/// even-odd and nonzero agree on simple contours and differ where a self-intersecting
+/// contour winds twice. Clipping a contour against a convex window keeps its winding
+/// number at every point inside the window, so clipping commutes with this rule.
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct Polygon {
     /// The outer contour.

@@ -227,7 +227,7 @@ impl fmt::Display for ModelError {
             }
             ModelError::ClipSpace { triangle, message } => write!(f, "clip_space_triangles[{triangle}]: {message}"),
             ModelError::FloatScene { what, model } => {
-                write!(f, "{what}: a coordinate does not fit the {model} model's float type")
+                write!(f, "{what}: a value does not fit the {model} model's float type")
             }
             ModelError::NoFloatPolygon { polygon, model } => write!(
                 f,

@@ -67,7 +67,11 @@ pub fn render_scene(model: Model, scene: &Scene, target: &Target) -> Result<Cove
     let mut out = Coverage::new(target.width, target.height);
 
     // Lines: the whole line, scissored by the closed window.
-    let point_mask = scene.clip.as_ref().map(|w| ClipMask::for_points(w, target));
+    let point_mask = scene
+        .clip
+        .as_ref()
+        .filter(|_| !lines.is_empty())
+        .map(|w| ClipMask::for_points(w, target));
     draw_lines(&lines, triangles.len(), point_mask.as_ref(), target, &mut out);
 
     match model {
@@ -113,7 +117,15 @@ pub fn render_scene(model: Model, scene: &Scene, target: &Target) -> Result<Cove
                 let one =
                     prepare_polygons(model, std::slice::from_ref(p), conv).map_err(|e| ModelError::ClipSpace {
                         triangle: k,
-                        message: e.to_string(),
+                        message: match e {
+                            ModelError::PolygonEnvelope {
+                                vertex, axis, error, ..
+                            } => format!(
+                                "window-space vertex {vertex} (after clipping and the viewport), {axis}: {error}"
+                            ),
+                            ModelError::Triangulate { error, .. } => format!("window-space polygon: {error}"),
+                            other => other.to_string(),
+                        },
                     })?;
                 polygons.extend(one);
             }
@@ -177,7 +189,7 @@ fn float_areas(
                 .iter()
                 .map(|h| h.to_f32())
                 .collect::<Option<Vec<_>>>()
-                .ok_or_else(|| range("clip".into()))?,
+                .ok_or_else(|| range("clip (a window edge's line coefficient)".into()))?,
         };
         let mut fill = |poly: Vec<Vec2>, k: usize| {
             let poly = if window.is_some() {
@@ -190,7 +202,7 @@ fn float_areas(
             }
         };
         for (k, t) in triangles.iter().enumerate() {
-            let t = t.to_f32().ok_or_else(|| range(format!("triangles[{k}]")))?;
+            let t = t.to_f32().ok_or(ModelError::FloatRange { triangle: k, model })?;
             fill(t.to_vec(), k);
         }
         let vp = viewport.to_f32().ok_or_else(|| range("viewport".into()))?;
@@ -213,7 +225,7 @@ fn float_areas(
                 .iter()
                 .map(|h| h.to_f64())
                 .collect::<Option<Vec<_>>>()
-                .ok_or_else(|| range("clip".into()))?,
+                .ok_or_else(|| range("clip (a window edge's line coefficient)".into()))?,
         };
         let mut fill = |poly: Vec<DVec2>, k: usize| {
             let poly = if window.is_some() {
@@ -226,7 +238,7 @@ fn float_areas(
             }
         };
         for (k, t) in triangles.iter().enumerate() {
-            let t = t.to_f64().ok_or_else(|| range(format!("triangles[{k}]")))?;
+            let t = t.to_f64().ok_or(ModelError::FloatRange { triangle: k, model })?;
             fill(t.to_vec(), k);
         }
         let vp = viewport.to_f64().ok_or_else(|| range("viewport".into()))?;
@@ -246,8 +258,7 @@ fn float_areas(
 }
 
 fn to_float_vertex_f32(v: &ClipVertex) -> Option<ClipVertexF32> {
-    use num_traits::ToPrimitive;
-    let c = |k: usize| v.pos[k].to_f32().filter(|x| x.is_finite());
+    let c = |k: usize| crate::num::exact::nearest_f32(&v.pos[k]);
     Some(ClipVertexF32 {
         pos: glam::Vec4::new(c(0)?, c(1)?, c(2)?, c(3)?),
         attrs: Vec::new(),

@@ -259,9 +259,9 @@ fn bad_inputs_exit_2_with_a_clear_line() {
             "polygons[0].holes[0]: a polygon contour needs at least 3 vertices, found 2",
         ),
         (
-            poly(r#""v": [[0,0],[8,0],[8,8],[0,8]], "holes": [[[1,1],[2,1],[9,2]]]"#),
+            poly(r#""v": [[0,0],[8,0],[8,8],[0,8]], "holes": [[[9,2],[1,1],[2,1]]]"#),
             "scanline",
-            "polygons[0].holes[0][2]: (9, 2) lies outside the outline polygons[0].v",
+            "polygons[0].holes[0][0]: (9, 2) lies outside the outline polygons[0].v",
         ),
         (poly(r#""v": [[0,0],[8,0],[0,8]], "fill_rule": "winding""#), "exact", "polygons[0].fill_rule: unknown fill rule \"winding\""),
         (poly(r#""v": [[0,0],[8,0],["NaN",8]]"#), "exact", "polygons[0].v[2][0]: \"NaN\" is not a finite number"),

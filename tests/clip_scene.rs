@@ -209,6 +209,70 @@ fn bad_clip_input_exits_2() {
     let _ = std::fs::remove_dir_all(dir);
 }
 
+/// Review findings: the exact `clip` takes windows no float can hold; float errors name
+/// the primitive; f32 values are rounded once, straight from the rational (1 + 2^-24 +
+/// 2^-80 is just above the halfway point between the f32 neighbours 1 and 1 + 2^-23,
+/// so it rounds up to 1 + 2^-23 = 8388609/8388608; through f64 it would first become
+/// 1 + 2^-24, a tie, and then round to even: 1); a clip-space vertex outside the integer
+/// envelope names the window-space vertex and keeps the message short.
+#[test]
+fn clip_conversions_and_messages() {
+    let huge = format!("1{}", "0".repeat(400));
+    let run = |tag: &str, text: String, args: &[&str]| {
+        let (dir, p) = scene_file(tag, &text);
+        let out = bin()
+            .arg(args[0])
+            .arg(p.to_str().unwrap())
+            .args(&args[1..])
+            .output()
+            .unwrap();
+        let _ = std::fs::remove_dir_all(dir);
+        (
+            out.status.code(),
+            String::from_utf8(out.stdout).unwrap(),
+            String::from_utf8(out.stderr).unwrap(),
+        )
+    };
+    let (code, _, err) = run(
+        "hugewin",
+        format!(
+            r#"{{"width": 8, "height": 8, "triangles": [{{"v": [[0,0],[4,0],[0,4]]}}], "clip": {{"rect": [0, 0, "{huge}", 8]}}}}"#
+        ),
+        &["clip"],
+    );
+    assert_eq!(code, Some(0), "{err}");
+    let (code, _, err) = run(
+        "f32big",
+        r#"{"width": 8, "height": 8, "triangles": [{"v": [[0,0],["1e39",0],[0,8]]}], "clip": {"rect": [0, 0, 8, 8]}}"#
+            .into(),
+        &["clip", "--model", "float32"],
+    );
+    assert_eq!(code, Some(2));
+    assert!(err.contains("triangles[0]: a coordinate does not fit f32"), "{err}");
+    // 1 + 2^-24 + 2^-80 as a fraction
+    let den = num_bigint::BigInt::from(1) << 80;
+    let num = &den + (num_bigint::BigInt::from(1) << 56) + 1;
+    let (code, out, err) = run(
+        "f32once",
+        format!(
+            r#"{{"width": 8, "height": 8, "triangles": [{{"v": [["{num}/{den}",0],[4,0],[0,4]]}}], "clip": {{"rect": [-8, -8, 8, 8]}}}}"#
+        ),
+        &["clip", "--model", "float32"],
+    );
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.starts_with(r#"{"triangles":[[["8388609/8388608","0"]"#), "{out}");
+    let (code, _, err) = run(
+        "envelope",
+        format!(
+            r#"{{"width": 8, "height": 8, "clip_space_triangles": [{{"v": [[0,0,0,1],[1,0,0,1],[0,1,0,1]]}}], "viewport": {{"x": "{huge}"}}}}"#
+        ),
+        &["render", "--model", "fixed"],
+    );
+    assert_eq!(code, Some(2));
+    assert!(err.contains("clip_space_triangles[0]: window-space vertex 0"), "{err}");
+    assert!(err.contains("characters)") && err.len() < 400, "{err}");
+}
+
 #[test]
 fn clip_fields_round_trip() {
     let text = r#"{"width": 9, "height": 7, "preset": "vulkan",

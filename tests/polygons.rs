@@ -73,7 +73,7 @@ fn pentagram_by_hand() {
 }
 
 /// A 10x10 square with a 4x4 square hole at (3,3)-(7,7), both wound the same way: the
-/// hole is still a hole under nonzero (contours are normalised), 100 - 16 = 84 pixels.
+/// hole is still a hole under nonzero (each contour is judged on its own), 100 - 16 = 84 pixels.
 /// The L-shape (0,0) (6,0) (6,2) (2,2) (2,6) (0,6): a 6x2 bar and a 2x4 leg, 12 + 8 = 20.
 #[test]
 fn hole_and_concave_by_hand() {
@@ -298,7 +298,7 @@ proptest! {
         for d in diff(&nonzero, &even_odd) {
             prop_assert!(d.candidate.is_empty(), "even-odd covers ({}, {}) where nonzero does not", d.x, d.y);
             let sample = Point::from_fractions(2 * i64::from(d.x) + 1, 2, 2 * i64::from(d.y) + 1, 2);
-            let w = rasterproof::fill::polygon::winding_number_exact(&sample, &snapped, target.convention.tie_rule);
+            let w = rasterproof::fill::polygon::contour_winding_exact(&sample, &snapped.outline, target.convention.tie_rule);
             prop_assert_eq!(w.abs(), 2);
         }
     }
@@ -369,24 +369,50 @@ fn polygon_ids_follow_triangles_and_lines() {
 }
 
 /// Found by the polygon_fill fuzz target: an outline with no area (two of its three
-/// vertices coincide) and a hole with area. The winding rule fills the hole's inside
-/// (the outline adds 0, the hole -1); triangulation returned no triangles. A hole with
-/// area cannot lie inside an outline without area, so it is refused as outside.
+/// vertices coincide) and a hole with area. Under the first rule (winding numbers summed
+/// over normalised contours) the hole's inside was filled while triangulation returned no
+/// triangles. Under the rule now (outline minus holes, each contour judged on its own)
+/// the polygon is empty: every model and the triangulation agree on nothing.
 #[test]
 fn fuzz_case_01_hole_of_a_degenerate_outline() {
     let mut p = Polygon::new(pts(&[(9, 9), (9, 9), (-1, -6)]), FillRule::NonZero);
     p.holes.push(pts(&[(9, 9), (5, -3), (-8, -8)]));
     let target = Target::new(16, 16, Preset::D3d11.convention()).unwrap();
     let fixed = p.to_fixed(&target.convention).unwrap();
-    assert_eq!(triangulate(&fixed), Err(TriangulateError::HoleOutside { hole: 0 }));
-    // The winding rule indeed fills the hole's inside: pixel (0, 0) (sample (0.5, 0.5)).
-    assert_eq!(fill(&p, &target, Model::Scanline).owners(0, 0), &[0]);
-    // And the scene parser refuses it: (5, -3) lies outside the outline.
-    let text =
-        r#"{"width": 16, "height": 16, "polygons": [{"v": [[9,9],[9,9],[-1,-6]], "holes": [[[9,9],[5,-3],[-8,-8]]]}]}"#;
-    let err = rasterproof::scene::parse_scene(text, "f.json").unwrap_err().to_string();
-    assert!(
-        err.contains("polygons[0].holes[0][1]: (5, -3) lies outside the outline"),
-        "{err}"
+    assert_eq!(triangulate(&fixed), Ok(vec![]));
+    for model in [Model::Exact, Model::ExactSnapped, Model::Scanline, Model::Fixed] {
+        assert_eq!(fill(&p, &target, model).covered_pixels(), 0, "{model}");
+    }
+}
+
+/// Found in review: a self-crossing outline with a hole, clipped. Summing normalised
+/// windings made the clipped outline count the other way (its smaller loop has the
+/// opposite area sign), so clip-then-fill lost pixels (10, 7) and (10, 8). Each contour
+/// judged on its own keeps clipping exact: raster(clip(P, W)) == raster(P) ∩ raster(W).
+#[test]
+fn review_case_01_bow_tie_with_a_hole_clipped() {
+    let mut p = Polygon::new(pts(&[(0, 0), (12, 12), (12, 4), (0, 16)]), FillRule::NonZero);
+    p.holes.push(vec![
+        Point::from_ints(9, 8),
+        Point::from_fractions(23, 2, 6, 1),
+        Point::from_fractions(23, 2, 10, 1),
+    ]);
+    let q = |n: i64| num_rational::BigRational::from_integer(n.into());
+    let w = rasterproof::clip::Window::rect(q(9), q(0), q(16), q(16)).unwrap();
+    let target = Target::new(16, 16, Preset::D3d11.convention()).unwrap();
+    let cut = rasterproof::clip::sutherland_hodgman::clip_polygon(&p, &w);
+    rasterproof::check::check_clip_raster(&p, &cut, &w, &target).unwrap();
+    // Sample (10.5, 7.5) is in the right lobe of the bow tie and in the hole (at y = 7.5
+    // the hole spans 9 + 2.5 * 0.5 / 2 = 9.625 < x < 11.5): not filled, clipped or not.
+    let whole = fill(&p, &target, Model::Exact);
+    assert!(whole.owners(10, 7).is_empty());
+    // (11.5, 10.5): in the right lobe (triangle (8,8) (12,4) (12,12), x from 10.5 to 12 on
+    // that row), below the hole (y 6..10): filled, clipped or not.
+    assert_eq!(whole.owners(11, 10), &[0]);
+    let clipped = fill(&cut, &target, Model::Exact);
+    assert_eq!(clipped.owners(11, 10), &[0]);
+    assert_eq!(
+        diff(&clipped, &fill(&p, &target, Model::Scanline).restricted(9, 0, 16, 16)),
+        vec![]
     );
 }

@@ -50,9 +50,11 @@ pub fn check_barycentric_fixed(t: &FixedTriangle, x: u32, y: u32, target: &Targe
 /// How far the f32 barycentrics of `p` sum from 1, in ulps of 1 (f32::EPSILON); `None`
 /// when the triangle does not fit f32 or its float area is 0.
 pub fn float_sum_error_ulps(t: &Triangle, p: &Point) -> Option<f64> {
-    use num_traits::ToPrimitive;
     let tf = t.to_f32()?;
-    let pf = glam::Vec2::new(p.x.to_f32()?, p.y.to_f32()?);
+    let pf = glam::Vec2::new(
+        crate::num::exact::nearest_f32(&p.x)?,
+        crate::num::exact::nearest_f32(&p.y)?,
+    );
     let l = barycentric_f32(&tf, pf)?;
     let sum = f64::from(l[0]) + f64::from(l[1]) + f64::from(l[2]);
     Some((sum - 1.0).abs() / f64::from(f32::EPSILON))

@@ -5,7 +5,7 @@ use super::explain::sample_point;
 use super::Violation;
 use crate::convention::Target;
 use crate::coverage::Coverage;
-use crate::fill::polygon::{rasterize_exact, winding_number_exact};
+use crate::fill::polygon::{contour_winding_exact, rasterize_exact};
 use crate::geom::{Polygon, Triangle};
 
 /// `triangles` (any triangulator's output for `polygon`) cover, by the exact oracle,
@@ -45,11 +45,15 @@ pub fn check_triangulation(polygon: &Polygon, triangles: &[Triangle], target: &T
     let Some((x, y, owners, inside)) = bad.first() else {
         return Ok(());
     };
-    let w = winding_number_exact(&sample_point(*x, *y, target), polygon, target.convention.tie_rule);
+    let sample = sample_point(*x, *y, target);
+    let w: Vec<i64> = polygon
+        .contours()
+        .map(|c| contour_winding_exact(&sample, c, target.convention.tie_rule))
+        .collect();
     Err(Violation::new(
         "triangulation",
         format!(
-            "{} bad pixels; first ({x}, {y}): covered by triangles {owners:?}, but the polygon's fill ({}, winding number {w} at the moved sample) {} it",
+            "{} bad pixels; first ({x}, {y}): covered by triangles {owners:?}, but the polygon's fill ({}, winding numbers {w:?} around the outline and holes at the moved sample) {} it",
             bad.len(),
             polygon.fill_rule.name(),
             if *inside { "contains" } else { "does not contain" }

@@ -312,12 +312,10 @@ fn clip_checks(c: &Case, out: &mut Vec<Outcome>) {
         });
     };
     let cut = clip_polygon(&c.polygon, &c.window);
-    push(
-        "clip inside",
-        Model::Exact,
-        "sutherland-hodgman",
-        check_inside(&cut.outline, &c.window),
-    );
+    let all_inside = std::iter::once(&cut.outline)
+        .chain(&cut.holes)
+        .try_for_each(|contour| check_inside(contour, &c.window));
+    push("clip inside", Model::Exact, "sutherland-hodgman", all_inside);
     push(
         "clip raster",
         Model::Exact,
@@ -336,28 +334,37 @@ fn clip_checks(c: &Case, out: &mut Vec<Outcome>) {
     }
     // Float Sutherland-Hodgman: every output vertex read back exactly, checked exactly.
     let to64 = |p: &Point| glam::DVec2::new(p.x.to_f64().unwrap_or(f64::NAN), p.y.to_f64().unwrap_or(f64::NAN));
-    let back = |p: glam::DVec2| {
-        Point::new(
-            BigRational::from_float(p.x).unwrap_or_default(),
-            BigRational::from_float(p.y).unwrap_or_default(),
-        )
+    // Float outputs read back exactly; a non-finite one is a violation in itself.
+    let inside = |pts: Vec<glam::DVec2>| -> Result<(), Violation> {
+        let exact = pts
+            .iter()
+            .map(|p| Some(Point::new(BigRational::from_float(p.x)?, BigRational::from_float(p.y)?)))
+            .collect::<Option<Vec<_>>>()
+            .ok_or_else(|| Violation {
+                invariant: "clip inside",
+                message: format!("a float output is not finite: {pts:?}"),
+            })?;
+        check_inside(&exact, &c.window)
     };
     let planes = c.window.half_planes();
     let subject: Vec<glam::DVec2> = c.polygon.outline.iter().map(to64).collect();
     if let Some(p64) = planes.iter().map(HalfPlane::to_f64).collect::<Option<Vec<_>>>() {
-        let pts: Vec<Point> = sutherland_hodgman::clip_f64(&subject, &p64)
-            .into_iter()
-            .map(back)
-            .collect();
-        push("clip inside", Model::Float64, "sh-f64", check_inside(&pts, &c.window));
+        push(
+            "clip inside",
+            Model::Float64,
+            "sh-f64",
+            inside(sutherland_hodgman::clip_f64(&subject, &p64)),
+        );
     }
     if let Some(p32) = planes.iter().map(HalfPlane::to_f32).collect::<Option<Vec<_>>>() {
         let s32: Vec<glam::Vec2> = subject.iter().map(|p| p.as_vec2()).collect();
-        let pts: Vec<Point> = sutherland_hodgman::clip_f32(&s32, &p32)
-            .into_iter()
-            .map(|p| back(p.as_dvec2()))
-            .collect();
-        push("clip inside", Model::Float32, "sh-f32", check_inside(&pts, &c.window));
+        let pts = sutherland_hodgman::clip_f32(&s32, &p32);
+        push(
+            "clip inside",
+            Model::Float32,
+            "sh-f32",
+            inside(pts.into_iter().map(|p| p.as_dvec2()).collect()),
+        );
     }
 }
 

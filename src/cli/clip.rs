@@ -10,10 +10,11 @@ use num_rational::BigRational;
 use num_traits::ToPrimitive;
 use rasterproof::clip::halfplane::{clip_segment_exact, HalfPlane, HalfPlaneF32, HalfPlaneF64};
 use rasterproof::clip::homogeneous::{
-    self, clip_to_window_exact, divide_then_clip_exact, ClipVertexF32, ClipVertexF64,
+    self, clip_to_window_exact, divide_then_clip_exact, ClipVertexF32, ClipVertexF64, ProjectError,
 };
 use rasterproof::clip::{cohen_sutherland, sutherland_hodgman, Window};
 use rasterproof::geom::Point;
+use rasterproof::num::exact::nearest_f32;
 use rasterproof::scene::{exact_text, parse_scene_bytes, Scene};
 
 /// What `clip` was asked to do.
@@ -84,7 +85,15 @@ impl Clipper<'_> {
     fn to64(&self, p: &Point, what: &str) -> Result<DVec2, String> {
         match (p.x.to_f64(), p.y.to_f64()) {
             (Some(x), Some(y)) if x.is_finite() && y.is_finite() => Ok(DVec2::new(x, y)),
-            _ => Err(format!("{what}: a coordinate does not fit the float type")),
+            _ => Err(format!("{what}: a coordinate does not fit f64")),
+        }
+    }
+
+    /// Straight from the rational to the nearest f32 (not through f64: no double rounding).
+    fn to32(&self, p: &Point, what: &str) -> Result<Vec2, String> {
+        match (nearest_f32(&p.x), nearest_f32(&p.y)) {
+            (Some(x), Some(y)) if x.is_finite() && y.is_finite() => Ok(Vec2::new(x, y)),
+            _ => Err(format!("{what}: a coordinate does not fit f32")),
         }
     }
 
@@ -99,17 +108,14 @@ impl Clipper<'_> {
                 let v = c.iter().map(|p| self.to64(p, what)).collect::<Result<Vec<_>, _>>()?;
                 sutherland_hodgman::clip_f64(&v, &self.planes64)
                     .into_iter()
-                    .map(point64)
+                    .map(|p| point64(p).map_err(|e| format!("{what}: {e}")))
                     .collect()
             }
             Arith::F32 => {
-                let v = c
-                    .iter()
-                    .map(|p| self.to64(p, what).map(|p| p.as_vec2()))
-                    .collect::<Result<Vec<_>, _>>()?;
+                let v = c.iter().map(|p| self.to32(p, what)).collect::<Result<Vec<_>, _>>()?;
                 sutherland_hodgman::clip_f32(&v, &self.planes32)
                     .into_iter()
-                    .map(point32)
+                    .map(|p| point32(p).map_err(|e| format!("{what}: {e}")))
                     .collect()
             }
         }
@@ -120,13 +126,16 @@ impl Clipper<'_> {
         let Some(window) = &self.scene.clip else {
             return Ok(Some((a.clone(), b.clone())));
         };
-        let (fa, fb) = if self.arith == Arith::Exact {
-            (DVec2::ZERO, DVec2::ZERO)
-        } else {
-            (self.to64(a, what)?, self.to64(b, what)?)
+        let (fa, fb) = match self.arith {
+            Arith::Exact => (DVec2::ZERO, DVec2::ZERO),
+            Arith::F64 => (self.to64(a, what)?, self.to64(b, what)?),
+            // f32 values, held in f64 (exactly) until the f32 clipper takes them back
+            Arith::F32 => (self.to32(a, what)?.as_dvec2(), self.to32(b, what)?.as_dvec2()),
         };
         let both = |r: Option<(DVec2, DVec2)>| -> Result<Option<(Point, Point)>, String> {
-            r.map(|(p, q)| Ok((point64(p)?, point64(q)?))).transpose()
+            r.map(|(p, q)| Ok((point64(p)?, point64(q)?)))
+                .transpose()
+                .map_err(|e: String| format!("{what}: {e}"))
         };
         match (window, self.arith) {
             (Window::Rect(r), Arith::Exact) => Ok(cohen_sutherland::clip_exact(a, b, r)),
@@ -157,11 +166,12 @@ impl Clipper<'_> {
         let what = format!("clip_space_triangles[{k}]");
         let viewport = self.scene.viewport();
         let window_space: Vec<Point> = match self.arith {
-            Arith::Exact if divide_first => divide_then_clip_exact(t, &viewport)
-                .map_err(|e| format!("{what}: {e} (--divide-first)"))?
-                .into_iter()
-                .map(|v| v.point)
-                .collect(),
+            Arith::Exact if divide_first => match divide_then_clip_exact(t, &viewport) {
+                // seen edge-on: it covers no sample, as on the clip-space path
+                Err(ProjectError::EdgeOn) => Vec::new(),
+                Err(e) => return Err(format!("{what}: {e} (--divide-first)")),
+                Ok(vertices) => vertices.into_iter().map(|v| v.point).collect(),
+            },
             Arith::Exact => clip_to_window_exact(t, &viewport)
                 .into_iter()
                 .map(|v| v.point)
@@ -194,7 +204,7 @@ impl Clipper<'_> {
                 let v = t
                     .iter()
                     .map(|v| {
-                        let c = |i: usize| v.pos[i].to_f32().filter(|x| x.is_finite());
+                        let c = |i: usize| nearest_f32(&v.pos[i]);
                         Some(ClipVertexF32 {
                             pos: glam::Vec4::new(c(0)?, c(1)?, c(2)?, c(3)?),
                             attrs: Vec::new(),
@@ -239,19 +249,26 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let scene = parse_scene_bytes(&bytes, &name).map_err(|e| e.to_string())?;
     let planes = scene.clip.as_ref().map(Window::half_planes).unwrap_or_default();
     let in_file = |e: String| format!("{name}: {e}");
-    let planes64 = planes
-        .iter()
-        .map(HalfPlane::to_f64)
-        .collect::<Option<Vec<_>>>()
-        .ok_or_else(|| in_file("clip: a coordinate does not fit f64".into()))?;
-    let planes32 = if arith == Arith::F32 {
-        planes
+    let beyond = |k: usize, ty: &str| {
+        in_file(format!(
+            "clip: the line of window edge {k} has a coefficient (a, b or c in a x + b y + c >= 0) beyond {ty}"
+        ))
+    };
+    let planes64 = match arith {
+        Arith::F64 => planes
             .iter()
-            .map(HalfPlane::to_f32)
-            .collect::<Option<Vec<_>>>()
-            .ok_or_else(|| in_file("clip: a coordinate does not fit f32".into()))?
-    } else {
-        Vec::new()
+            .enumerate()
+            .map(|(k, h)| h.to_f64().ok_or_else(|| beyond(k, "f64")))
+            .collect::<Result<Vec<_>, _>>()?,
+        _ => Vec::new(),
+    };
+    let planes32 = match arith {
+        Arith::F32 => planes
+            .iter()
+            .enumerate()
+            .map(|(k, h)| h.to_f32().ok_or_else(|| beyond(k, "f32")))
+            .collect::<Result<Vec<_>, _>>()?,
+        _ => Vec::new(),
     };
     let clipper = Clipper {
         scene: &scene,

@@ -194,8 +194,7 @@ impl Rect {
 
     /// The nearest f32 rectangle (`None` when a bound does not fit).
     pub fn to_f32(&self) -> Option<RectF32> {
-        use num_traits::ToPrimitive;
-        let f = |v: &BigRational| v.to_f32().filter(|x| x.is_finite());
+        let f = crate::num::exact::nearest_f32;
         Some(RectF32 {
             min: Vec2::new(f(&self.xmin)?, f(&self.ymin)?),
             max: Vec2::new(f(&self.xmax)?, f(&self.ymax)?),

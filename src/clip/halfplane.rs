@@ -88,8 +88,7 @@ impl HalfPlane {
 
     /// The nearest f32 coefficients (`None` when one does not fit).
     pub fn to_f32(&self) -> Option<HalfPlaneF32> {
-        use num_traits::ToPrimitive;
-        let f = |v: &BigRational| v.to_f32().filter(|x| x.is_finite());
+        let f = crate::num::exact::nearest_f32;
         Some(HalfPlaneF32 {
             n: Vec2::new(f(&self.a)?, f(&self.b)?),
             c: f(&self.c)?,

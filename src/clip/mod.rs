@@ -63,13 +63,14 @@ pub enum WindowError {
     },
     /// Fewer than 3 vertices.
     TooFewVertices(usize),
-    /// Not strictly convex: a vertex on or beyond the line of edge `edge`.
+    /// Not strictly convex at a corner: the turn there is straight, reversed, or the
+    /// other way from the first corner's.
     NotConvex {
-        /// The edge (from vertex `edge` to `edge + 1`).
-        edge: usize,
-        /// The offending vertex.
+        /// The corner's vertex.
         vertex: usize,
     },
+    /// Every corner turns the same way, but the outline winds round more than once.
+    WindsMoreThanOnce,
 }
 
 impl fmt::Display for WindowError {
@@ -79,11 +80,13 @@ impl fmt::Display for WindowError {
                 write!(f, "empty window: {axis}min {min} >= {axis}max {max}")
             }
             WindowError::TooFewVertices(n) => write!(f, "a convex window needs at least 3 vertices, found {n}"),
-            WindowError::NotConvex { edge, vertex } => write!(
+            WindowError::NotConvex { vertex } => write!(
                 f,
-                "not a strictly convex polygon: vertex {vertex} is on or beyond the line of edge {edge} (vertices {edge} -> {})",
-                edge + 1
+                "not a strictly convex polygon: the corner at vertex {vertex} goes straight on or turns the other way"
             ),
+            WindowError::WindsMoreThanOnce => {
+                write!(f, "not a convex polygon: the outline winds round more than once")
+            }
         }
     }
 }
@@ -113,12 +116,14 @@ impl Window {
         Ok(Window::Rect(Box::new(Rect { xmin, ymin, xmax, ymax })))
     }
 
-    /// A strictly convex polygon: for every edge, every other vertex lies strictly on the
-    /// same side of its line (one side for all edges), so no three vertices are collinear,
-    /// none repeats and the outline does not wind twice.
+    /// A strictly convex polygon: every turn goes the same way (no straight or reversed
+    /// corner, no repeated vertex), and the outline goes round exactly once (the sign of
+    /// its edges' `dy` changes exactly twice around the loop; a star that turns the same
+    /// way at every corner but winds twice changes it four times). Linear time.
     ///
     /// # Errors
-    /// Fewer than 3 vertices, or the first vertex that breaks strict convexity.
+    /// Fewer than 3 vertices, the first corner that breaks convexity, or an outline that
+    /// winds more than once.
     pub fn convex(points: Vec<Point>) -> Result<Window, WindowError> {
         let n = points.len();
         if n < 3 {
@@ -126,18 +131,24 @@ impl Window {
         }
         let mut side: Option<bool> = None;
         for i in 0..n {
-            let (a, b) = (&points[i], &points[(i + 1) % n]);
-            for (k, p) in points.iter().enumerate() {
-                if k == i || k == (i + 1) % n {
-                    continue;
-                }
-                let e = edge_function(a, b, p);
-                let positive = e.is_positive();
-                if e.is_zero() || side.is_some_and(|s| s != positive) {
-                    return Err(WindowError::NotConvex { edge: i, vertex: k });
-                }
-                side = Some(positive);
+            let (a, b, c) = (&points[i], &points[(i + 1) % n], &points[(i + 2) % n]);
+            let turn = edge_function(a, b, c);
+            let positive = turn.is_positive();
+            if turn.is_zero() || side.is_some_and(|s| s != positive) {
+                return Err(WindowError::NotConvex { vertex: (i + 1) % n });
             }
+            side = Some(positive);
+        }
+        let signs: Vec<bool> = (0..n)
+            .map(|i| &points[(i + 1) % n].y - &points[i].y)
+            .filter(|dy| !dy.is_zero())
+            .map(|dy| dy.is_positive())
+            .collect();
+        let changes = (0..signs.len())
+            .filter(|&i| signs[i] != signs[(i + 1) % signs.len()])
+            .count();
+        if changes != 2 {
+            return Err(WindowError::WindsMoreThanOnce);
         }
         Ok(Window::Convex(points))
     }

@@ -6,10 +6,11 @@
 //!
 //! A sample `p` is tested as the moved sample `p' = p + (ε, ±ε²)` of the tie rule
 //! ([`crate::convention::TieRule`]: `+` for top-left, `-` for bottom-left). `p'` lies on
-//! no edge of positive length, so its winding number is well defined: count the edges
-//! crossing the horizontal ray from `p'` to the right, `-1` for an edge going down the
-//! screen and `+1` for one going up, with each contour's orientation normalised as
-//! [`Polygon`] describes. An edge `a -> b` with `a.y != b.y` crosses the row of `p'` when
+//! no edge of positive length, so its winding number around each contour is well
+//! defined: count the contour's edges crossing the horizontal ray from `p'` to the right,
+//! `-1` for an edge going down the screen and `+1` for one going up. The sample is inside
+//! when the fill rule holds for the outline's winding number and for no hole's
+//! ([`Polygon`]); both rules ignore a contour's orientation. An edge `a -> b` with `a.y != b.y` crosses the row of `p'` when
 //! `min(a.y, b.y) <= p.y < max(a.y, b.y)` (top-left; `<`, `<=` for bottom-left), and
 //! the crossing is right of `p'` when `E(p')` and `dy` have different signs, where
 //! `E(p') = E(p) + ε dy ∓ ε² dx` has the sign of `E(p)`, or of `dy` when `E(p) = 0`.
@@ -42,39 +43,30 @@ pub fn area2_exact(contour: &[Point]) -> BigRational {
     closed_edges(contour).fold(BigRational::zero(), |acc, (a, b)| acc + (&b.x * &a.y - &a.x * &b.y))
 }
 
-/// The factor that normalises a contour's orientation: the outline counts +1 around its
-/// interior, a hole -1. A zero-area contour is taken as written.
-fn orientation_factor(is_outline: bool, area2_sign: Ordering) -> i64 {
-    let wanted = if is_outline { 1 } else { -1 };
-    if area2_sign == Ordering::Less {
-        -wanted
-    } else {
-        wanted
-    }
-}
-
-/// The winding number of the moved sample of `p` (see the module docs), exactly.
+/// The winding number of the moved sample of `p` around one closed contour, exactly
+/// (see the module docs), in the contour's own orientation.
 ///
 /// ```
 /// use rasterproof::convention::TieRule;
-/// use rasterproof::fill::polygon::winding_number_exact;
-/// use rasterproof::geom::{FillRule, Point, Polygon};
+/// use rasterproof::fill::polygon::contour_winding_exact;
+/// use rasterproof::geom::Point;
 /// // A pentagram drawn as one self-crossing contour: its centre winds twice, a tip once.
-/// let star = [(50, 0), (79, 90), (2, 35), (98, 35), (21, 90)];
-/// let p = Polygon::new(star.iter().map(|&(x, y)| Point::from_ints(x, y)).collect(), FillRule::NonZero);
-/// assert_eq!(winding_number_exact(&Point::from_ints(50, 50), &p, TieRule::TopLeft), 2);
-/// assert_eq!(winding_number_exact(&Point::from_ints(50, 10), &p, TieRule::TopLeft), 1);
-/// assert_eq!(winding_number_exact(&Point::from_ints(5, 5), &p, TieRule::TopLeft), 0);
+/// let star: Vec<Point> = [(50, 0), (79, 90), (2, 35), (98, 35), (21, 90)].iter().map(|&(x, y)| Point::from_ints(x, y)).collect();
+/// let w = |x, y| contour_winding_exact(&Point::from_ints(x, y), &star, TieRule::TopLeft);
+/// assert_eq!(w(50, 50).abs(), 2);
+/// assert_eq!(w(50, 10).abs(), 1);
+/// assert_eq!(w(50, 50), 2 * w(50, 10)); // the same direction
+/// assert_eq!(w(5, 5), 0);
 /// ```
-pub fn winding_number_exact(p: &Point, poly: &Polygon, rule: TieRule) -> i64 {
-    let mut w = 0;
-    for (k, contour) in poly.contours().enumerate() {
-        let factor = orientation_factor(k == 0, area2_exact(contour).cmp(&BigRational::zero()));
-        for (a, b) in closed_edges(contour) {
-            w += factor * crossing_exact(a, b, p, rule);
-        }
-    }
-    w
+pub fn contour_winding_exact(p: &Point, contour: &[Point], rule: TieRule) -> i64 {
+    closed_edges(contour).map(|(a, b)| crossing_exact(a, b, p, rule)).sum()
+}
+
+/// Whether the moved sample of `p` is inside `poly`: the fill rule holds for its winding
+/// number around the outline and for none of the holes'.
+pub fn contains_exact(p: &Point, poly: &Polygon, rule: TieRule) -> bool {
+    let inside = |c: &[Point]| poly.fill_rule.inside(contour_winding_exact(p, c, rule));
+    inside(&poly.outline) && !poly.holes.iter().any(|h| inside(h))
 }
 
 /// Whether the edge `a -> b` crosses the row of a moved sample at height `y`: never when
@@ -178,19 +170,11 @@ pub fn rasterize_exact<S: CoverageSink + ?Sized>(poly: &Polygon, id: u32, target
                 BigRational::from_integer(BigInt::from(i)) + &centre,
                 BigRational::from_integer(BigInt::from(j)) + &centre,
             );
-            let w = winding_number_exact(&sample, poly, target.convention.tie_rule);
-            if poly.fill_rule.inside(w) {
+            if contains_exact(&sample, poly, target.convention.tie_rule) {
                 sink.cover(i, j, id);
             }
         }
     }
-}
-
-/// Twice the signed area of an integer contour (same orientation as [`area2_exact`]).
-pub fn area2_fixed(contour: &[[i64; 2]]) -> i128 {
-    closed_edges(contour).fold(0i128, |acc, (a, b)| {
-        acc + i128::from(b[0]) * i128::from(a[1]) - i128::from(a[0]) * i128::from(b[1])
-    })
 }
 
 /// One polygon edge in the edge table: oriented downwards (`dy > 0`), with the rows whose
@@ -202,6 +186,9 @@ struct TableEdge {
     top: [i128; 2],
     dx: i128,
     dy: i128,
+    /// Which contour (0 the outline).
+    contour: usize,
+    /// `-1` for an edge going down the screen, `+1` going up.
     winding: i64,
 }
 
@@ -210,6 +197,7 @@ struct TableEdge {
 #[derive(Debug, Clone, Copy)]
 struct ActiveEdge {
     last_row: i64,
+    contour: usize,
     winding: i64,
     threshold: CeilDda,
 }
@@ -261,7 +249,8 @@ pub fn rasterize<S: CoverageSink + ?Sized>(poly: &FixedPolygon, id: u32, target:
 
     let mut next = 0;
     let mut active: Vec<ActiveEdge> = Vec::new();
-    let mut crossings: Vec<(i128, i64)> = Vec::new();
+    let mut crossings: Vec<Crossing> = Vec::new();
+    let mut sweep = Sweep::new(poly.contours().len(), poly.fill_rule);
     for j in y0..=y1 {
         while next < table.len() && table[next].first_row.max(y0) == j {
             let e = &table[next];
@@ -270,6 +259,7 @@ pub fn rasterize<S: CoverageSink + ?Sized>(poly: &FixedPolygon, id: u32, target:
             let value = (e.top[0] - c) * e.dy + (sy - e.top[1]) * e.dx;
             active.push(ActiveEdge {
                 last_row: e.last_row,
+                contour: e.contour,
                 winding: e.winding,
                 threshold: CeilDda::new(value, one * e.dx, one * e.dy),
             });
@@ -277,38 +267,78 @@ pub fn rasterize<S: CoverageSink + ?Sized>(poly: &FixedPolygon, id: u32, target:
         }
         active.retain(|a| a.last_row >= j);
         crossings.clear();
-        crossings.extend(active.iter().map(|a| (a.threshold.get(), a.winding)));
-        emit_spans(j, &mut crossings, poly.fill_rule, id, target, sink);
+        crossings.extend(active.iter().map(|a| Crossing {
+            threshold: a.threshold.get(),
+            contour: a.contour,
+            winding: a.winding,
+        }));
+        sweep.emit_spans(j, &mut crossings, id, target, sink);
         active.iter_mut().for_each(|a| a.threshold.step());
     }
 }
 
-/// Fills row `row` from its crossings `(threshold, winding)`: pixels `i >= threshold` are at
-/// or right of that crossing, so the crossings right of pixel `i` are the others and
-/// `winding(i) = -(sum of the windings with threshold <= i)`. Spans where the fill rule
-/// holds are clamped to the canvas.
-fn emit_spans<S: CoverageSink + ?Sized>(
-    row: i64,
-    crossings: &mut [(i128, i64)],
+/// One edge crossing a row: pixels `i >= threshold` are at or right of it.
+#[derive(Debug, Clone, Copy)]
+struct Crossing {
+    threshold: i128,
+    contour: usize,
+    winding: i64,
+}
+
+/// The left-to-right sweep of one row: each contour's winding number left of the current
+/// pixel, and how many holes currently hold the pixel (so the test per crossing is O(1)).
+struct Sweep {
     rule: FillRule,
-    id: u32,
-    target: &Target,
-    sink: &mut S,
-) {
-    crossings.sort_unstable_by_key(|&(q, _)| q);
-    let width = i128::from(target.width);
-    let mut left_sum = 0i64;
-    for m in 0..crossings.len() {
-        let (q, w) = crossings[m];
-        left_sum += w;
-        let end = crossings.get(m + 1).map_or(q, |&(next_q, _)| next_q); // exclusive
-        if q < end && rule.inside(-left_sum) {
-            let (lo, hi) = (q.max(0), (end - 1).min(width - 1));
-            if lo <= hi {
-                let row = u32::try_from(row).expect("row on the canvas");
-                let lo = u32::try_from(lo).expect("clamped to the canvas");
-                let hi = u32::try_from(hi).expect("clamped to the canvas");
-                sink.cover_span(row, lo, hi, id);
+    sums: Vec<i64>,
+    holes_inside: usize,
+}
+
+impl Sweep {
+    fn new(contours: usize, rule: FillRule) -> Sweep {
+        Sweep {
+            rule,
+            sums: vec![0; contours],
+            holes_inside: 0,
+        }
+    }
+
+    /// Fills row `row` from its crossings. A crossing is right of pixel `i` when its
+    /// threshold is above `i`, and a contour's crossings along a whole row sum to zero, so
+    /// the winding number at `i` is minus the sum of the crossings with threshold `<= i`.
+    fn emit_spans<S: CoverageSink + ?Sized>(
+        &mut self,
+        row: i64,
+        crossings: &mut [Crossing],
+        id: u32,
+        target: &Target,
+        sink: &mut S,
+    ) {
+        crossings.sort_unstable_by_key(|c| c.threshold);
+        self.sums.iter_mut().for_each(|s| *s = 0);
+        self.holes_inside = 0;
+        let width = i128::from(target.width);
+        for m in 0..crossings.len() {
+            let c = crossings[m];
+            let held = |sum: i64| self.rule.inside(-sum);
+            let before = held(self.sums[c.contour]);
+            self.sums[c.contour] += c.winding;
+            let after = held(self.sums[c.contour]);
+            if c.contour > 0 && before != after {
+                if after {
+                    self.holes_inside += 1;
+                } else {
+                    self.holes_inside -= 1;
+                }
+            }
+            let end = crossings.get(m + 1).map_or(c.threshold, |n| n.threshold); // exclusive
+            if c.threshold < end && held(self.sums[0]) && self.holes_inside == 0 {
+                let (lo, hi) = (c.threshold.max(0), (end - 1).min(width - 1));
+                if lo <= hi {
+                    let row = u32::try_from(row).expect("row on the canvas");
+                    let lo = u32::try_from(lo).expect("clamped to the canvas");
+                    let hi = u32::try_from(hi).expect("clamped to the canvas");
+                    sink.cover_span(row, lo, hi, id);
+                }
             }
         }
     }
@@ -339,16 +369,12 @@ pub fn rasterize_rows_exact<S: CoverageSink + ?Sized>(poly: &Polygon, id: u32, t
     };
     let centre = target.convention.pixel_centre.offset();
     let rule = target.convention.tie_rule;
-    let factors: Vec<i64> = poly
-        .contours()
-        .enumerate()
-        .map(|(k, c)| orientation_factor(k == 0, area2_exact(c).cmp(&BigRational::zero())))
-        .collect();
-    let mut crossings: Vec<(i128, i64)> = Vec::new();
+    let mut crossings: Vec<Crossing> = Vec::new();
+    let mut sweep = Sweep::new(poly.contours().count(), poly.fill_rule);
     for j in range.y0..=range.y1 {
         let sy = BigRational::from_integer(BigInt::from(j)) + &centre;
         crossings.clear();
-        for (contour, factor) in poly.contours().zip(&factors) {
+        for (k, contour) in poly.contours().enumerate() {
             for (a, b) in closed_edges(contour) {
                 if !crosses_moved_row(a, b, &sy, rule) {
                     continue;
@@ -356,19 +382,22 @@ pub fn rasterize_rows_exact<S: CoverageSink + ?Sized>(poly: &Polygon, id: u32, t
                 let dy = &b.y - &a.y;
                 let xc = &a.x + (&sy - &a.y) * (&b.x - &a.x) / &dy;
                 let threshold = i128::from(crate::tri::saturating_index((xc - &centre).ceil().to_integer()));
-                crossings.push((threshold, factor * if dy.is_positive() { -1 } else { 1 }));
+                crossings.push(Crossing {
+                    threshold,
+                    contour: k,
+                    winding: if dy.is_positive() { -1 } else { 1 },
+                });
             }
         }
-        emit_spans(i64::from(j), &mut crossings, poly.fill_rule, id, target, sink);
+        sweep.emit_spans(i64::from(j), &mut crossings, id, target, sink);
     }
 }
 
 /// Every non-horizontal edge, oriented downwards, with its rows (before clamping to the
-/// canvas) and its winding contribution after orientation normalisation.
+/// canvas), its contour and its direction.
 fn edge_table(poly: &FixedPolygon, rule: TieRule, one: i64, centre: i64) -> Vec<TableEdge> {
     let mut table = Vec::new();
     for (k, contour) in poly.contours().iter().enumerate() {
-        let factor = orientation_factor(k == 0, area2_fixed(contour).cmp(&0));
         for (a, b) in closed_edges(contour) {
             let (top, bottom, down) = match a[1].cmp(&b[1]) {
                 Ordering::Equal => continue,
@@ -389,7 +418,8 @@ fn edge_table(poly: &FixedPolygon, rule: TieRule, one: i64, centre: i64) -> Vec<
                 top: [i128::from(top[0]), i128::from(top[1])],
                 dx: i128::from(bottom[0] - top[0]),
                 dy: i128::from(bottom[1] - top[1]),
-                winding: factor * if down { -1 } else { 1 },
+                contour: k,
+                winding: if down { -1 } else { 1 },
             });
         }
     }

@@ -157,8 +157,7 @@ struct Contour {
 }
 
 /// Checks that `poly` is simple and its holes are properly placed (see the module docs);
-/// a polygon whose outline has no area is empty, and then any hole with area lies
-/// outside it.
+/// a polygon whose outline has no area is empty (and then its holes do not matter).
 ///
 /// # Errors
 /// The first problem found.
@@ -190,11 +189,8 @@ fn validate_contours(poly: &FixedPolygon) -> Result<Vec<Contour>, TriangulateErr
         contours.push(Contour { index, points });
     }
     if contours.first().is_some_and(|c| c.index != 0) {
-        // The outline has no area, so any hole with area lies outside it (and the
-        // winding rule would fill that hole).
-        return Err(TriangulateError::HoleOutside {
-            hole: contours[0].index - 1,
-        });
+        // The outline has no area: the polygon (outline minus holes) covers nothing.
+        return Ok(Vec::new());
     }
     check_simple(&contours, poly.bits)?;
     check_holes(&contours)?;

@@ -245,9 +245,85 @@ pub fn dyadic(numerator: &BigInt, bits: u32) -> BigRational {
     BigRational::new(numerator.clone(), BigInt::one() << bits)
 }
 
+/// The nearest f64 to `x` (num-rational's conversion, which rounds correctly); `None`
+/// when it is not finite.
+pub fn nearest_f64(x: &BigRational) -> Option<f64> {
+    use num_traits::ToPrimitive;
+    x.to_f64().filter(|v| v.is_finite())
+}
+
+/// The next f32 above (`up`) or below `f` (finite): one unit in the last place, by the
+/// bit pattern (magnitudes order like their bits).
+fn f32_step(f: f32, up: bool) -> f32 {
+    if f == 0.0 {
+        let tiny = f32::from_bits(1);
+        return if up { tiny } else { -tiny };
+    }
+    let bits = f.to_bits();
+    let away_from_zero = (f > 0.0) == up;
+    f32::from_bits(if away_from_zero { bits + 1 } else { bits - 1 })
+}
+
+/// The nearest f32 to `x`, ties to even, rounded once; `None` when it is not finite.
+///
+/// num-rational's `to_f32` rounds to f64 first and then to f32, and that double rounding
+/// is wrong when the f64 lands exactly halfway between two f32s: then `x` itself is
+/// compared with that midpoint exactly.
+///
+/// ```
+/// use num_rational::BigRational;
+/// use num_bigint::BigInt;
+/// use rasterproof::num::exact::nearest_f32;
+/// // 1 + 2^-24 + 2^-80: just above the midpoint of the f32 neighbours 1 and 1 + 2^-23.
+/// let den = BigInt::from(1) << 80;
+/// let x = BigRational::new(&den + (BigInt::from(1) << 56) + 1, den);
+/// assert_eq!(nearest_f32(&x), Some(1.0 + f32::EPSILON));
+/// ```
+pub fn nearest_f32(x: &BigRational) -> Option<f32> {
+    let d = nearest_f64(x)?;
+    #[allow(clippy::cast_possible_truncation)] // rounding to f32 is the point
+    let f = d as f32;
+    if !f.is_finite() {
+        return None;
+    }
+    if f64::from(f) == d {
+        return Some(f);
+    }
+    // The f32 neighbour of f on d's side, and their midpoint (exact in f64).
+    let other = f32_step(f, f64::from(f) < d);
+    let mid = (f64::from(f) + f64::from(other)) / 2.0;
+    if mid != d || !other.is_finite() {
+        return Some(f);
+    }
+    let mid_exact = BigRational::from_float(mid).expect("finite");
+    let (lo, hi) = if f < other { (f, other) } else { (other, f) };
+    Some(match x.cmp(&mid_exact) {
+        std::cmp::Ordering::Less => lo,
+        std::cmp::Ordering::Greater => hi,
+        std::cmp::Ordering::Equal => f, // a true tie: `as` already chose the even one
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Double rounding cases both ways around the midpoint 1 + 2^-24 of 1 and 1 + 2^-23,
+    /// and exact ties (to even: 1), against a direct comparison of x with the midpoint.
+    #[test]
+    fn nearest_f32_rounds_once() {
+        let den: BigInt = BigInt::from(1) << 80;
+        let mid: BigInt = &den + (BigInt::from(1) << 56);
+        let q = |n: BigInt| BigRational::new(n, den.clone());
+        assert_eq!(nearest_f32(&q(&mid + BigInt::from(1))), Some(1.0 + f32::EPSILON));
+        assert_eq!(nearest_f32(&q(&mid - BigInt::from(1))), Some(1.0));
+        assert_eq!(nearest_f32(&q(mid.clone())), Some(1.0));
+        assert_eq!(nearest_f32(&q(-(&mid + BigInt::from(1)))), Some(-1.0 - f32::EPSILON));
+        // a tie between 1 + 2^-23 (odd) and 1 + 2^-22 (even) goes up
+        let mid2: BigInt = &den + (BigInt::from(3) << 56);
+        assert_eq!(nearest_f32(&q(mid2)), Some(1.0 + 2.0 * f32::EPSILON));
+        assert_eq!(nearest_f32(&BigRational::from_integer(BigInt::from(1) << 200)), None);
+    }
 
     fn q(n: i64, d: i64) -> BigRational {
         BigRational::new(n.into(), d.into())

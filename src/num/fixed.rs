@@ -72,13 +72,25 @@ impl fmt::Display for EnvelopeError {
         let limit_px = BigRational::new(BigInt::from(MAX_SUBPIXEL_MAGNITUDE), BigInt::from(1) << self.bits);
         write!(
             f,
-            "{pixels} px ({} subpixels at {} bits) is outside the integer models' envelope |v| <= 2^{FIXED_ENVELOPE_BITS} subpixels ({limit_px} px)",
-            self.subpixels, self.bits
+            "{} px ({} subpixels at {} bits) is outside the integer models' envelope |v| <= 2^{FIXED_ENVELOPE_BITS} subpixels ({limit_px} px)",
+            shortened(&pixels.to_string()),
+            shortened(&self.subpixels.to_string()),
+            self.bits
         )
     }
 }
 
 impl std::error::Error for EnvelopeError {}
+
+/// A long number cut to its first 24 characters and its length, so an error line stays
+/// readable: `123456789012345678901234... (1001 characters)`.
+fn shortened(text: &str) -> String {
+    if text.len() <= 60 {
+        text.to_string()
+    } else {
+        format!("{}... ({} characters)", &text[..24], text.len())
+    }
+}
 
 /// Snaps `x` (pixels) to the 2^-bits grid: returns the nearest integer number of subpixels,
 /// halfway cases decided by `rounding`.

@@ -43,9 +43,10 @@ use crate::num::{parse_rational, MAX_SUBPIXEL_BITS};
 /// The most triangles a scene may hold (ids must fit u32; memory stays bounded).
 pub const MAX_TRIANGLES: usize = 10_000_000;
 
-/// The most vertices one polygon may have, outline and holes together (the check that
-/// every hole vertex lies inside the outline is quadratic in it).
-pub const MAX_POLYGON_VERTICES: usize = 16_384;
+/// The most vertices one polygon (outline and holes together) or clip window may have:
+/// the exact checks at parse time (a hole's first vertex inside the outline, a window's
+/// convexity) and the exact models cost up to vertices x vertices rational operations.
+pub const MAX_POLYGON_VERTICES: usize = 4096;
 
 /// Parses raw bytes (they must be UTF-8).
 pub fn parse_scene_bytes(bytes: &[u8], source: &str) -> Result<Scene, SceneError> {

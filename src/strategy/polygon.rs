@@ -14,6 +14,7 @@
 use proptest::prelude::*;
 
 use super::{grid_point, GRID};
+use crate::fill::polygon::{locate_exact, Location};
 use crate::geom::{FillRule, Point, Polygon};
 
 /// Resolution of the direction square (half-side, in its own units).
@@ -122,6 +123,30 @@ pub fn stellated_polygon(canvas: u32, quantum: i64) -> BoxedStrategy<Polygon> {
         .boxed()
 }
 
+/// A tangled outline with a tangled hole: both contours random points in random order
+/// (the hole smaller, around the same area), so they cross themselves and each other.
+/// The hole starts at one of its vertices that is not outside the outline (as scene files
+/// require), or is left out when it has none.
+pub fn tangled_with_hole(canvas: u32, max_vertices: usize, quantum: i64) -> BoxedStrategy<Polygon> {
+    (
+        tangled_polygon(canvas, max_vertices, quantum),
+        tangled_polygon(canvas / 2, 6, quantum),
+    )
+        .prop_map(move |(mut outline, hole)| {
+            let shift = i64::from(canvas / 4);
+            let mut hole = hole.translated(shift, shift).outline;
+            // Scene files refuse a hole whose first vertex lies outside the outline: start
+            // the hole at a vertex inside it, or leave the hole out.
+            let inside = |p: &Point| locate_exact(p, &outline.outline) != Location::Outside;
+            if let Some(k) = hole.iter().position(inside) {
+                hole.rotate_left(k);
+                outline.holes.push(hole);
+            }
+            outline
+        })
+        .boxed()
+}
+
 /// Simple polygons (star-shaped, with and without a hole, on the grid and on the
 /// tie-heavy half-pixel grid), up to `max_vertices` vertices.
 pub fn simple_polygon(canvas: u32, max_vertices: usize) -> BoxedStrategy<Polygon> {
@@ -133,7 +158,8 @@ pub fn simple_polygon(canvas: u32, max_vertices: usize) -> BoxedStrategy<Polygon
     .boxed()
 }
 
-/// Any polygon: the simple families, tangled and stellated ones, tie-heavy versions.
+/// Any polygon: the simple families, tangled and stellated ones, tangled ones with a
+/// tangled hole, tie-heavy versions.
 pub fn any_polygon(canvas: u32, max_vertices: usize) -> BoxedStrategy<Polygon> {
     prop_oneof![
         simple_polygon(canvas, max_vertices),
@@ -141,6 +167,8 @@ pub fn any_polygon(canvas: u32, max_vertices: usize) -> BoxedStrategy<Polygon> {
         tangled_polygon(canvas, max_vertices, GRID / 2),
         stellated_polygon(canvas, 1),
         stellated_polygon(canvas, GRID / 2),
+        tangled_with_hole(canvas, max_vertices, 1),
+        tangled_with_hole(canvas, max_vertices, GRID / 2),
     ]
     .boxed()
 }

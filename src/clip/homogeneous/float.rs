@@ -3,7 +3,6 @@
 
 use glam::{DMat4, DVec2, DVec3, DVec4, Mat4, Vec2, Vec3, Vec4};
 use num_rational::BigRational;
-use num_traits::ToPrimitive;
 
 use super::{clip_planes, merged, DepthRange, NdcY, ProjectError, Viewport};
 use crate::interp::{barycentric_f32, barycentric_f64};
@@ -34,7 +33,7 @@ pub fn transform_f32(m: &Mat4, object: Vec3) -> Vec4 {
 
 macro_rules! float_forms {
     (
-        float: $float:ty, vec4: $vec4:ty, vec2: $vec2:ty, to_float: $to_float:ident,
+        float: $float:ty, vec4: $vec4:ty, vec2: $vec2:ty, to_float: $to_float:ident, nearest: $nearest:ident,
         vertex: $vertex:ident, window_vertex: $window_vertex:ident, viewport: $viewport:ident,
         clip: $clip:ident, project: $project:ident, interpolate: $interpolate:ident,
         barycentric: $barycentric:ident, name: $name:literal
@@ -77,7 +76,7 @@ macro_rules! float_forms {
         impl Viewport {
             #[doc = concat!("The nearest ", $name, " viewport (`None` when a number does not fit).")]
             pub fn $to_float(&self) -> Option<$viewport> {
-                let f = |v: &BigRational| v.$to_float().filter(|x| x.is_finite());
+                let f = |v: &BigRational| crate::num::exact::$nearest(v);
                 Some($viewport {
                     origin: <$vec2>::new(f(&self.x)?, f(&self.y)?),
                     size: <$vec2>::new(f(&self.width)?, f(&self.height)?),
@@ -179,13 +178,13 @@ macro_rules! float_forms {
 }
 
 float_forms!(
-    float: f64, vec4: DVec4, vec2: DVec2, to_float: to_f64,
+    float: f64, vec4: DVec4, vec2: DVec2, to_float: to_f64, nearest: nearest_f64,
     vertex: ClipVertexF64, window_vertex: WindowVertexF64, viewport: ViewportF64,
     clip: clip_f64, project: project_f64, interpolate: interpolate_f64,
     barycentric: barycentric_f64, name: "f64"
 );
 float_forms!(
-    float: f32, vec4: Vec4, vec2: Vec2, to_float: to_f32,
+    float: f32, vec4: Vec4, vec2: Vec2, to_float: to_f32, nearest: nearest_f32,
     vertex: ClipVertexF32, window_vertex: WindowVertexF32, viewport: ViewportF32,
     clip: clip_f32, project: project_f32, interpolate: interpolate_f32,
     barycentric: barycentric_f32, name: "f32"

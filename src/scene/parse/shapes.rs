@@ -84,18 +84,19 @@ impl Parser<'_> {
                 })?
             }
         };
+        // A hole entirely outside the outline is a mistake; one vertex decides that (a
+        // hole crossing the outline is subtracted where it overlaps it).
         for (k, hole) in holes.iter().enumerate() {
-            for (i, p) in hole.iter().enumerate() {
-                if locate_exact(p, &outline) == Location::Outside {
-                    return Err(self.err(
-                        &format!("{at}.holes[{k}][{i}]"),
-                        format!(
-                            "({}, {}) lies outside the outline {vf}",
-                            crate::scene::exact_text(&p.x),
-                            crate::scene::exact_text(&p.y)
-                        ),
-                    ));
-                }
+            let p = &hole[0];
+            if locate_exact(p, &outline) == Location::Outside {
+                return Err(self.err(
+                    &format!("{at}.holes[{k}][0]"),
+                    format!(
+                        "({}, {}) lies outside the outline {vf}",
+                        crate::scene::exact_text(&p.x),
+                        crate::scene::exact_text(&p.y)
+                    ),
+                ));
             }
         }
         Ok(Polygon {
