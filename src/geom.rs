@@ -3,10 +3,9 @@
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::ToPrimitive;
 
 use crate::convention::Convention;
-use crate::num::exact::{dyadic, nearest_f32};
+use crate::num::exact::{dyadic, nearest_f32, nearest_f64};
 use crate::num::fixed::snap;
 use crate::num::{EnvelopeError, SubPixel};
 
@@ -28,6 +27,18 @@ impl Point {
     /// A point from integers.
     pub fn from_ints(x: i64, y: i64) -> Point {
         Point::new(BigRational::from_integer(x.into()), BigRational::from_integer(y.into()))
+    }
+
+    /// The point rounded to the nearest f32 on each axis (once: [`nearest_f32`]); `None`
+    /// when a coordinate does not fit f32.
+    pub fn to_f32(&self) -> Option<glam::Vec2> {
+        Some(glam::Vec2::new(nearest_f32(&self.x)?, nearest_f32(&self.y)?))
+    }
+
+    /// The point rounded to the nearest f64 on each axis; `None` when a coordinate does not
+    /// fit f64.
+    pub fn to_f64(&self) -> Option<glam::DVec2> {
+        Some(glam::DVec2::new(nearest_f64(&self.x)?, nearest_f64(&self.y)?))
     }
 
     /// A point from fractions `xn/xd, yn/yd` (denominators non-zero).
@@ -87,29 +98,15 @@ impl Triangle {
     /// The vertices rounded to the nearest f32 (once: [`nearest_f32`]), as glam vectors.
     /// `None` when a coordinate does not fit f32.
     pub fn to_f32(&self) -> Option<[glam::Vec2; 3]> {
-        let mut out = [glam::Vec2::ZERO; 3];
-        for (o, p) in out.iter_mut().zip(&self.v) {
-            let (x, y) = (nearest_f32(&p.x)?, nearest_f32(&p.y)?);
-            if !x.is_finite() || !y.is_finite() {
-                return None;
-            }
-            *o = glam::Vec2::new(x, y);
-        }
-        Some(out)
+        let [a, b, c] = &self.v;
+        Some([a.to_f32()?, b.to_f32()?, c.to_f32()?])
     }
 
     /// The vertices rounded to the nearest f64, as glam vectors. `None` when a coordinate
     /// does not fit f64.
     pub fn to_f64(&self) -> Option<[glam::DVec2; 3]> {
-        let mut out = [glam::DVec2::ZERO; 3];
-        for (o, p) in out.iter_mut().zip(&self.v) {
-            let (x, y) = (p.x.to_f64()?, p.y.to_f64()?);
-            if !x.is_finite() || !y.is_finite() {
-                return None;
-            }
-            *o = glam::DVec2::new(x, y);
-        }
-        Some(out)
+        let [a, b, c] = &self.v;
+        Some([a.to_f64()?, b.to_f64()?, c.to_f64()?])
     }
 }
 

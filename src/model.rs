@@ -5,7 +5,6 @@ use std::fmt;
 
 use glam::{DVec2, Vec2};
 use image::RgbImage;
-use num_bigint::BigInt;
 use num_rational::BigRational;
 
 use crate::convention::{Convention, Target};
@@ -346,10 +345,7 @@ impl Prepared {
         match self {
             Prepared::Exact(ts) => {
                 let c = target.convention.pixel_centre.offset();
-                let p = Point::new(
-                    BigRational::from_integer(BigInt::from(x)) + &c,
-                    BigRational::from_integer(BigInt::from(y)) + &c,
-                );
+                let p = crate::tri::sample_point(x, y, &c);
                 gouraud_exact(&ts[k], colours, &p).map_or([0; 3], |c| c.each_ref().map(to_channel))
             }
             Prepared::Fixed(ts) | Prepared::Scanline(ts) => {

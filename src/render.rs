@@ -17,16 +17,14 @@
 //!   lies in the closed window (seed 002's point clipping; a clipped Bresenham line would
 //!   need its error term restarted, which changes no pixel this way).
 
-use glam::{DVec2, Vec2};
-
-use crate::clip::homogeneous::{self, clip_to_window_exact, ClipVertex, ClipVertexF32, ClipVertexF64};
+use crate::clip::homogeneous::{self, clip_to_window_exact};
 use crate::clip::mask::ClipMask;
 use crate::clip::sutherland_hodgman::{self, clip_polygon};
 use crate::clip::Window;
 use crate::convention::Target;
 use crate::coverage::{Coverage, CoverageSink};
 use crate::fill::polygon::rasterize_exact;
-use crate::geom::{FillRule, Point, Polygon, Triangle};
+use crate::geom::{FillRule, Polygon, Triangle};
 use crate::model::{prepare, prepare_lines, prepare_polygons, Model, ModelError, PreparedLine};
 use crate::scene::Scene;
 use crate::tri::float::{rasterize_f32, rasterize_f64, FloatRule};
@@ -164,6 +162,56 @@ fn fill_clipped<S: CoverageSink + ?Sized>(p: &Polygon, w: &Window, id: u32, targ
     rasterize_exact(&clip_polygon(p, w), id, target, sink);
 }
 
+/// The float models' route in one float type: the window's half-planes, the triangles and
+/// the clip-space triangles converted to it, clipped in it, filled as fans of float
+/// triangles. Written once for f32 and f64 (the crate's float forms are concrete types).
+macro_rules! float_areas_in {
+    ($model:expr, $scene:expr, $triangles:expr, $first_clip_space:expr, $target:expr, $out:expr,
+     to_float: $to_float:ident, clip: $clip:path, clip_to_window: $clip_to_window:path, rasterize: $rasterize:path) => {{
+        let (model, scene, target): (Model, &Scene, &Target) = ($model, $scene, $target);
+        let rule = match model {
+            Model::Float32Naive | Model::Float64Naive => FloatRule::Naive,
+            _ => FloatRule::TieRule,
+        };
+        let range = |what: String| ModelError::FloatScene { what, model };
+        let planes = match &scene.clip {
+            None => None,
+            Some(w) => Some(
+                w.half_planes()
+                    .iter()
+                    .map(|h| h.$to_float())
+                    .collect::<Option<Vec<_>>>()
+                    .ok_or_else(|| range("clip (a window edge's line coefficient)".into()))?,
+            ),
+        };
+        let out: &mut Coverage = $out;
+        let mut fill = |poly: Vec<_>, k: usize| {
+            let poly = match &planes {
+                Some(planes) => $clip(&poly, planes),
+                None => poly,
+            };
+            for i in 1..poly.len().saturating_sub(1) {
+                $rasterize(&[poly[0], poly[i], poly[i + 1]], id(k), target, rule, &mut *out);
+            }
+        };
+        for (k, t) in $triangles.iter().enumerate() {
+            let t = t.$to_float().ok_or(ModelError::FloatRange { triangle: k, model })?;
+            fill(t.to_vec(), k);
+        }
+        let viewport = scene.viewport().$to_float().ok_or_else(|| range("viewport".into()))?;
+        for (k, t) in scene.clip_space_triangles.iter().enumerate() {
+            let vertices = t
+                .iter()
+                .map(|v| v.$to_float())
+                .collect::<Option<Vec<_>>>()
+                .ok_or_else(|| range(format!("clip_space_triangles[{k}]")))?;
+            let window = $clip_to_window(&vertices, &viewport);
+            fill(window.into_iter().map(|v| v.point).collect(), $first_clip_space + k);
+        }
+        Ok(())
+    }};
+}
+
 /// The float models: triangles and clip-space triangles, clipped in the float type.
 fn float_areas(
     model: Model,
@@ -173,111 +221,13 @@ fn float_areas(
     target: &Target,
     out: &mut Coverage,
 ) -> Result<(), ModelError> {
-    let rule = match model {
-        Model::Float32Naive | Model::Float64Naive => FloatRule::Naive,
-        _ => FloatRule::TieRule,
-    };
-    let range = |what: String| ModelError::FloatScene { what, model };
-    let single = matches!(model, Model::Float32 | Model::Float32Naive);
-    let viewport = scene.viewport();
-    let window = scene.clip.as_ref();
-    if single {
-        let planes = match window {
-            None => Vec::new(),
-            Some(w) => w
-                .half_planes()
-                .iter()
-                .map(|h| h.to_f32())
-                .collect::<Option<Vec<_>>>()
-                .ok_or_else(|| range("clip (a window edge's line coefficient)".into()))?,
-        };
-        let mut fill = |poly: Vec<Vec2>, k: usize| {
-            let poly = if window.is_some() {
-                sutherland_hodgman::clip_f32(&poly, &planes)
-            } else {
-                poly
-            };
-            for i in 1..poly.len().saturating_sub(1) {
-                rasterize_f32(&[poly[0], poly[i], poly[i + 1]], id(k), target, rule, out);
-            }
-        };
-        for (k, t) in triangles.iter().enumerate() {
-            let t = t.to_f32().ok_or(ModelError::FloatRange { triangle: k, model })?;
-            fill(t.to_vec(), k);
-        }
-        let vp = viewport.to_f32().ok_or_else(|| range("viewport".into()))?;
-        for (k, t) in scene.clip_space_triangles.iter().enumerate() {
-            let what = || format!("clip_space_triangles[{k}]");
-            let verts = t
-                .iter()
-                .map(|v| to_float_vertex_f32(v).ok_or_else(|| range(what())))
-                .collect::<Result<Vec<_>, _>>()?;
-            let clipped = homogeneous::clip_f32(&verts, viewport.depth);
-            let in_front: Vec<ClipVertexF32> = clipped.into_iter().filter(|v| v.pos.w > 0.0).collect();
-            let projected = homogeneous::project_f32(&in_front, &vp).map_err(|_| range(what()))?;
-            fill(projected.into_iter().map(|v| v.point).collect(), first_clip_space + k);
-        }
+    if matches!(model, Model::Float32 | Model::Float32Naive) {
+        float_areas_in!(model, scene, triangles, first_clip_space, target, out,
+            to_float: to_f32, clip: sutherland_hodgman::clip_f32,
+            clip_to_window: homogeneous::clip_to_window_f32, rasterize: rasterize_f32)
     } else {
-        let planes = match window {
-            None => Vec::new(),
-            Some(w) => w
-                .half_planes()
-                .iter()
-                .map(|h| h.to_f64())
-                .collect::<Option<Vec<_>>>()
-                .ok_or_else(|| range("clip (a window edge's line coefficient)".into()))?,
-        };
-        let mut fill = |poly: Vec<DVec2>, k: usize| {
-            let poly = if window.is_some() {
-                sutherland_hodgman::clip_f64(&poly, &planes)
-            } else {
-                poly
-            };
-            for i in 1..poly.len().saturating_sub(1) {
-                rasterize_f64(&[poly[0], poly[i], poly[i + 1]], id(k), target, rule, out);
-            }
-        };
-        for (k, t) in triangles.iter().enumerate() {
-            let t = t.to_f64().ok_or(ModelError::FloatRange { triangle: k, model })?;
-            fill(t.to_vec(), k);
-        }
-        let vp = viewport.to_f64().ok_or_else(|| range("viewport".into()))?;
-        for (k, t) in scene.clip_space_triangles.iter().enumerate() {
-            let what = || format!("clip_space_triangles[{k}]");
-            let verts = t
-                .iter()
-                .map(|v| to_float_vertex_f64(v).ok_or_else(|| range(what())))
-                .collect::<Result<Vec<_>, _>>()?;
-            let clipped = homogeneous::clip_f64(&verts, viewport.depth);
-            let in_front: Vec<ClipVertexF64> = clipped.into_iter().filter(|v| v.pos.w > 0.0).collect();
-            let projected = homogeneous::project_f64(&in_front, &vp).map_err(|_| range(what()))?;
-            fill(projected.into_iter().map(|v| v.point).collect(), first_clip_space + k);
-        }
+        float_areas_in!(model, scene, triangles, first_clip_space, target, out,
+            to_float: to_f64, clip: sutherland_hodgman::clip_f64,
+            clip_to_window: homogeneous::clip_to_window_f64, rasterize: rasterize_f64)
     }
-    Ok(())
-}
-
-fn to_float_vertex_f32(v: &ClipVertex) -> Option<ClipVertexF32> {
-    let c = |k: usize| crate::num::exact::nearest_f32(&v.pos[k]);
-    Some(ClipVertexF32 {
-        pos: glam::Vec4::new(c(0)?, c(1)?, c(2)?, c(3)?),
-        attrs: Vec::new(),
-    })
-}
-
-fn to_float_vertex_f64(v: &ClipVertex) -> Option<ClipVertexF64> {
-    use num_traits::ToPrimitive;
-    let c = |k: usize| v.pos[k].to_f64().filter(|x| x.is_finite());
-    Some(ClipVertexF64 {
-        pos: glam::DVec4::new(c(0)?, c(1)?, c(2)?, c(3)?),
-        attrs: Vec::new(),
-    })
-}
-
-/// The window-space polygon of a clip-space triangle as exact points (for `clip`'s output).
-pub fn window_points(t: &[ClipVertex; 3], scene: &Scene) -> Vec<Point> {
-    clip_to_window_exact(t, &scene.viewport())
-        .into_iter()
-        .map(|v| v.point)
-        .collect()
 }

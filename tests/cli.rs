@@ -21,25 +21,8 @@ fn write(dir: &tempdir::Dir, name: &str, text: &str) -> std::path::PathBuf {
     p
 }
 
-mod tempdir {
-    /// A folder under the target dir, removed on drop.
-    pub struct Dir(std::path::PathBuf);
-    impl Dir {
-        pub fn new(tag: &str) -> Dir {
-            let p = std::env::temp_dir().join(format!("rasterproof-cli-{tag}-{}", std::process::id()));
-            std::fs::create_dir_all(&p).unwrap();
-            Dir(p)
-        }
-        pub fn path(&self) -> &std::path::Path {
-            &self.0
-        }
-    }
-    impl Drop for Dir {
-        fn drop(&mut self) {
-            let _ = std::fs::remove_dir_all(&self.0);
-        }
-    }
-}
+#[path = "common/tempdir.rs"]
+mod tempdir;
 
 /// `render --format json` agrees with the independent oracle (tests/common) on seeded
 /// tie-heavy scenes, for d3d11 and gl, with exact-snapped and fixed alike.

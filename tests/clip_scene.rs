@@ -27,11 +27,13 @@ fn bin() -> Command {
     Command::cargo_bin("rasterproof").unwrap()
 }
 
-/// A scene file in a fresh temporary folder.
-fn scene_file(tag: &str, text: &str) -> (std::path::PathBuf, std::path::PathBuf) {
-    let dir = std::env::temp_dir().join(format!("rasterproof-clip-{tag}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join("scene.json");
+#[path = "common/tempdir.rs"]
+mod tempdir;
+
+/// A scene file in a fresh temporary folder (removed when the folder is dropped).
+fn scene_file(tag: &str, text: &str) -> (tempdir::Dir, std::path::PathBuf) {
+    let dir = tempdir::Dir::new(&format!("clip-{tag}"));
+    let p = dir.path().join("scene.json");
     std::fs::write(&p, text).unwrap();
     (dir, p)
 }
@@ -85,7 +87,7 @@ fn clip_command_output_by_hand() {
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8(out.stderr).unwrap();
     assert!(err.contains("clip_space_triangles[0]: vertex 2 has w = -2"), "{err}");
-    let _ = std::fs::remove_dir_all(dir);
+    drop(dir);
 }
 
 /// A primitive clipped away entirely is an empty list.
@@ -102,7 +104,7 @@ fn clipped_away_is_an_empty_list() {
         .assert()
         .success()
         .stdout("{\"triangles\":[[]],\"lines\":[[]],\"polygons\":[[]],\"clip_space_triangles\":[]}\n");
-    let _ = std::fs::remove_dir_all(dir);
+    drop(dir);
 }
 
 /// `render` honours `clip` in every exact and integer model alike (the exact models clip
@@ -195,7 +197,7 @@ fn bad_clip_input_exits_2() {
             assert!(err.contains("scene.json"), "case {k}: the file is not named: {err}");
             assert!(!err.contains("panicked"));
         }
-        let _ = std::fs::remove_dir_all(dir);
+        drop(dir);
     }
     let (dir, p) = scene_file("badmodel", r#"{"width": 8, "height": 8}"#);
     let out = bin()
@@ -206,7 +208,7 @@ fn bad_clip_input_exits_2() {
     assert!(String::from_utf8(out.stderr)
         .unwrap()
         .contains("--model: unknown model \"fixed\" for clip"));
-    let _ = std::fs::remove_dir_all(dir);
+    drop(dir);
 }
 
 /// Review findings: the exact `clip` takes windows no float can hold; float errors name
@@ -226,7 +228,7 @@ fn clip_conversions_and_messages() {
             .args(&args[1..])
             .output()
             .unwrap();
-        let _ = std::fs::remove_dir_all(dir);
+        drop(dir);
         (
             out.status.code(),
             String::from_utf8(out.stdout).unwrap(),

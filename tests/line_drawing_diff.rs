@@ -99,18 +99,6 @@ struct Tally {
     non_tie_diff: u64,
 }
 
-/// Our pixel at a tie with the convention `tie`: the candidate nearer the start on the
-/// minor axis (Stay) or the farther one (Step).
-fn pick(candidates: &[i64], minor_sign: i64, tie: BresenhamTie) -> i64 {
-    let (lo, hi) = (candidates[0], candidates[candidates.len() - 1]);
-    let nearer = if minor_sign >= 0 { lo } else { hi };
-    let farther = if minor_sign >= 0 { hi } else { lo };
-    match tie {
-        BresenhamTie::Stay => nearer,
-        BresenhamTie::Step => farther,
-    }
-}
-
 /// The integer at or before `minor` in the direction of travel on the minor axis.
 fn toward_start(minor: &BigRational, minor_sign: i64) -> i64 {
     let v = if minor_sign >= 0 { minor.floor() } else { minor.ceil() };
@@ -136,8 +124,8 @@ fn tally_step(t: &mut Tally, step: &rasterproof::line::exact::IdealStep, axes: &
     t.pixels += 1;
     if step.candidates.len() == 2 {
         t.tie_steps += 1;
-        t.tie_stay += u64::from(theirs == pick(&step.candidates, axes.minor_sign, BresenhamTie::Stay));
-        t.tie_step += u64::from(theirs == pick(&step.candidates, axes.minor_sign, BresenhamTie::Step));
+        t.tie_stay += u64::from(theirs == step.pick(axes.minor_sign, BresenhamTie::Stay));
+        t.tie_step += u64::from(theirs == step.pick(axes.minor_sign, BresenhamTie::Step));
     } else if theirs != stay {
         t.non_tie_diff += 1;
     }

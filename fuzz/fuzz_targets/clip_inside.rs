@@ -10,8 +10,6 @@ use libfuzzer_sys::fuzz_target;
 
 mod common;
 use common::{convention, PresetChoice};
-use glam::DVec2;
-use num_traits::ToPrimitive;
 use rasterproof::check::{check_clip_raster, check_inside, check_segment_clip};
 use rasterproof::clip::sutherland_hodgman::clip_polygon;
 use rasterproof::clip::{cohen_sutherland, sutherland_hodgman, Window};
@@ -65,7 +63,7 @@ fuzz_target!(|input: Input| {
     if let Err(v) = check_clip_raster(&poly, &cut, &window, &target) {
         panic!("{v}\n{poly:?}\n{window:?}");
     }
-    let f = |p: &Point| DVec2::new(p.x.to_f64().unwrap(), p.y.to_f64().unwrap());
+    let f = |p: &Point| p.to_f64().expect("small coordinates fit f64");
     let planes: Vec<_> = window.half_planes().iter().map(|h| h.to_f64().unwrap()).collect();
     let _ = sutherland_hodgman::clip_f64(&subject.iter().map(f).collect::<Vec<_>>(), &planes);
     if let Window::Rect(r) = &window {
@@ -75,6 +73,6 @@ fuzz_target!(|input: Input| {
             panic!("{v}");
         }
         let _ = cohen_sutherland::clip_f64(f(a), f(b), &r.to_f64().unwrap());
-        let _ = cohen_sutherland::clip_f32(f(a).as_vec2(), f(b).as_vec2(), &r.to_f32().unwrap());
+        let _ = cohen_sutherland::clip_f32(a.to_f32().expect("fits f32"), b.to_f32().expect("fits f32"), &r.to_f32().unwrap());
     }
 });

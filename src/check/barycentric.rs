@@ -51,10 +51,7 @@ pub fn check_barycentric_fixed(t: &FixedTriangle, x: u32, y: u32, target: &Targe
 /// when the triangle does not fit f32 or its float area is 0.
 pub fn float_sum_error_ulps(t: &Triangle, p: &Point) -> Option<f64> {
     let tf = t.to_f32()?;
-    let pf = glam::Vec2::new(
-        crate::num::exact::nearest_f32(&p.x)?,
-        crate::num::exact::nearest_f32(&p.y)?,
-    );
+    let pf = p.to_f32()?;
     let l = barycentric_f32(&tf, pf)?;
     let sum = f64::from(l[0]) + f64::from(l[1]) + f64::from(l[2]);
     Some((sum - 1.0).abs() / f64::from(f32::EPSILON))

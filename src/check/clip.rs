@@ -20,8 +20,9 @@ fn show(p: &Point) -> String {
 
 /// Every point satisfies every half-plane of `window` (boundary included), exactly.
 pub fn check_inside(points: &[Point], window: &Window) -> Result<(), Violation> {
+    let planes = window.half_planes();
     for (k, p) in points.iter().enumerate() {
-        for (i, h) in window.half_planes().iter().enumerate() {
+        for (i, h) in planes.iter().enumerate() {
             let v = h.value(p);
             if v.is_negative() {
                 return Err(Violation::new(

@@ -2,8 +2,6 @@
 
 use std::fmt::Write as _;
 
-use num_bigint::BigInt;
-use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
 use crate::convention::Target;
@@ -13,11 +11,7 @@ use crate::scene::exact_text;
 
 /// The exact sample position of pixel `(x, y)`.
 pub(crate) fn sample_point(x: u32, y: u32, target: &Target) -> Point {
-    let c = target.convention.pixel_centre.offset();
-    Point::new(
-        BigRational::from_integer(BigInt::from(x)) + &c,
-        BigRational::from_integer(BigInt::from(y)) + &c,
-    )
+    crate::tri::sample_point(x, y, &target.convention.pixel_centre.offset())
 }
 
 /// Why the exact model puts pixel `(x, y)` inside or outside `tri`: the sample, each

@@ -105,17 +105,25 @@ where
     })
 }
 
+/// The oracle's and the rasterizer's coverage of `t`, each with id 0.
+fn render_both<F>(rasterizer: &F, t: &FixedTriangle, target: &Target) -> (Coverage, Coverage)
+where
+    F: Fn(&FixedTriangle, u32, &Target, &mut dyn CoverageSink),
+{
+    let mut reference = Coverage::new(target.width, target.height);
+    crate::tri::exact::rasterize(&t.to_exact(), 0, target, &mut reference);
+    let mut candidate = Coverage::new(target.width, target.height);
+    rasterizer(t, 0, target, &mut candidate);
+    (reference, candidate)
+}
+
 /// The agreement violation of `rasterizer` on `t`, if any.
 fn disagreement<F>(rasterizer: &F, t: &FixedTriangle, target: &Target) -> Option<Violation>
 where
     F: Fn(&FixedTriangle, u32, &Target, &mut dyn CoverageSink),
 {
-    let exact = t.to_exact();
-    let mut reference = Coverage::new(target.width, target.height);
-    crate::tri::exact::rasterize(&exact, 0, target, &mut reference);
-    let mut candidate = Coverage::new(target.width, target.height);
-    rasterizer(t, 0, target, &mut candidate);
-    check_agreement("oracle", &reference, "candidate", &candidate, &[exact], target).err()
+    let (reference, candidate) = render_both(rasterizer, t, target);
+    check_agreement("oracle", &reference, "candidate", &candidate, &[t.to_exact()], target).err()
 }
 
 /// Moves coordinates towards zero (to zero, half way, one subpixel) while the
@@ -154,11 +162,7 @@ fn cropped<F>(rasterizer: &F, t: &FixedTriangle, target: Target) -> Target
 where
     F: Fn(&FixedTriangle, u32, &Target, &mut dyn CoverageSink),
 {
-    let exact = t.to_exact();
-    let mut reference = Coverage::new(target.width, target.height);
-    crate::tri::exact::rasterize(&exact, 0, &target, &mut reference);
-    let mut candidate = Coverage::new(target.width, target.height);
-    rasterizer(t, 0, &target, &mut candidate);
+    let (reference, candidate) = render_both(rasterizer, t, &target);
     let Some(first) = super::diff(&reference, &candidate).into_iter().next() else {
         return target;
     };

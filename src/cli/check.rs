@@ -6,7 +6,6 @@ use std::process::ExitCode;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use num_rational::BigRational;
-use num_traits::ToPrimitive;
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use rasterproof::check::{
@@ -67,13 +66,18 @@ struct Outcome {
     /// The model's name in the table (`bresenham`, `dda32`... for lines).
     label: &'static str,
     result: Result<(), Violation>,
-    /// The primitives and canvas to write out if it failed.
+    /// What to write out as a scene if it failed.
+    repro: Repro,
+}
+
+/// The primitives, clip window and canvas of a case, for its scene file.
+#[derive(Default)]
+struct Repro {
+    canvas: u32,
     triangles: Vec<Triangle>,
     lines: Vec<Line>,
     polygons: Vec<Polygon>,
-    /// The clip window of a clipping case.
     window: Option<Window>,
-    canvas: u32,
 }
 
 fn runner_for(seed: u64, case: u64) -> TestRunner {
@@ -157,11 +161,11 @@ fn run_case(c: &Case) -> (Vec<Outcome>, Vec<f64>) {
             model,
             label: model.name(),
             result,
-            triangles: triangles.to_vec(),
-            lines: Vec::new(),
-            polygons: Vec::new(),
-            window: None,
-            canvas,
+            repro: Repro {
+                canvas,
+                triangles: triangles.to_vec(),
+                ..Repro::default()
+            },
         });
     };
 
@@ -289,38 +293,38 @@ fn run_case(c: &Case) -> (Vec<Outcome>, Vec<f64>) {
 /// inside; the float forms' outputs outside the window counted (the measured trade).
 fn clip_checks(c: &Case, out: &mut Vec<Outcome>) {
     let target = target(CANVAS, c.preset);
-    let mut push = |invariant, model: Model, label, result| {
-        let segment = invariant == "segment clip";
+    let polygon_case = || Repro {
+        canvas: CANVAS,
+        polygons: vec![c.polygon.clone()],
+        window: Some(c.window.clone()),
+        ..Repro::default()
+    };
+    let mut push = |invariant, model: Model, label, result, repro| {
         out.push(Outcome {
             invariant,
             model,
             label,
             result,
-            triangles: Vec::new(),
-            lines: if segment {
-                vec![Line {
-                    from: c.segment.0.clone(),
-                    to: c.segment.1.clone(),
-                    rule: LineRule::Diamond,
-                }]
-            } else {
-                Vec::new()
-            },
-            polygons: if segment { Vec::new() } else { vec![c.polygon.clone()] },
-            window: Some(if segment { c.rect.clone() } else { c.window.clone() }),
-            canvas: CANVAS,
+            repro,
         });
     };
     let cut = clip_polygon(&c.polygon, &c.window);
     let all_inside = std::iter::once(&cut.outline)
         .chain(&cut.holes)
         .try_for_each(|contour| check_inside(contour, &c.window));
-    push("clip inside", Model::Exact, "sutherland-hodgman", all_inside);
+    push(
+        "clip inside",
+        Model::Exact,
+        "sutherland-hodgman",
+        all_inside,
+        polygon_case(),
+    );
     push(
         "clip raster",
         Model::Exact,
         "sutherland-hodgman",
         check_clip_raster(&c.polygon, &cut, &c.window, &target),
+        polygon_case(),
     );
     let (a, b) = &c.segment;
     if let Window::Rect(r) = &c.rect {
@@ -330,11 +334,20 @@ fn clip_checks(c: &Case, out: &mut Vec<Outcome>) {
             Model::Exact,
             "cohen-sutherland",
             check_segment_clip(a, b, r, kept.as_ref()),
+            Repro {
+                canvas: CANVAS,
+                lines: vec![Line {
+                    from: a.clone(),
+                    to: b.clone(),
+                    rule: LineRule::Diamond,
+                }],
+                window: Some(c.rect.clone()),
+                ..Repro::default()
+            },
         );
     }
-    // Float Sutherland-Hodgman: every output vertex read back exactly, checked exactly.
-    let to64 = |p: &Point| glam::DVec2::new(p.x.to_f64().unwrap_or(f64::NAN), p.y.to_f64().unwrap_or(f64::NAN));
-    // Float outputs read back exactly; a non-finite one is a violation in itself.
+    // Float Sutherland-Hodgman: every output vertex read back exactly and checked exactly;
+    // a non-finite one is a violation in itself.
     let inside = |pts: Vec<glam::DVec2>| -> Result<(), Violation> {
         let exact = pts
             .iter()
@@ -347,23 +360,28 @@ fn clip_checks(c: &Case, out: &mut Vec<Outcome>) {
         check_inside(&exact, &c.window)
     };
     let planes = c.window.half_planes();
-    let subject: Vec<glam::DVec2> = c.polygon.outline.iter().map(to64).collect();
-    if let Some(p64) = planes.iter().map(HalfPlane::to_f64).collect::<Option<Vec<_>>>() {
+    let subject = &c.polygon.outline;
+    let p64 = planes.iter().map(HalfPlane::to_f64).collect::<Option<Vec<_>>>();
+    let s64 = subject.iter().map(Point::to_f64).collect::<Option<Vec<_>>>();
+    if let (Some(p64), Some(s64)) = (p64, s64) {
         push(
             "clip inside",
             Model::Float64,
             "sh-f64",
-            inside(sutherland_hodgman::clip_f64(&subject, &p64)),
+            inside(sutherland_hodgman::clip_f64(&s64, &p64)),
+            polygon_case(),
         );
     }
-    if let Some(p32) = planes.iter().map(HalfPlane::to_f32).collect::<Option<Vec<_>>>() {
-        let s32: Vec<glam::Vec2> = subject.iter().map(|p| p.as_vec2()).collect();
+    let p32 = planes.iter().map(HalfPlane::to_f32).collect::<Option<Vec<_>>>();
+    let s32 = subject.iter().map(Point::to_f32).collect::<Option<Vec<_>>>();
+    if let (Some(p32), Some(s32)) = (p32, s32) {
         let pts = sutherland_hodgman::clip_f32(&s32, &p32);
         push(
             "clip inside",
             Model::Float32,
             "sh-f32",
             inside(pts.into_iter().map(|p| p.as_dvec2()).collect()),
+            polygon_case(),
         );
     }
 }
@@ -378,11 +396,11 @@ fn polygon_checks(c: &Case, out: &mut Vec<Outcome>) {
             model,
             label: model.name(),
             result,
-            triangles: Vec::new(),
-            lines: Vec::new(),
-            polygons: vec![polygon.clone()],
-            window: None,
-            canvas: CANVAS,
+            repro: Repro {
+                canvas: CANVAS,
+                polygons: vec![polygon.clone()],
+                ..Repro::default()
+            },
         });
     };
     let fill = |model, p: &Polygon| {
@@ -429,11 +447,11 @@ fn line_checks(c: &Case, out: &mut Vec<Outcome>) {
             model,
             label,
             result,
-            triangles: Vec::new(),
-            lines: vec![line],
-            polygons: Vec::new(),
-            window: None,
-            canvas: CANVAS,
+            repro: Repro {
+                canvas: CANVAS,
+                lines: vec![line],
+                ..Repro::default()
+            },
         });
     };
     for tie in [BresenhamTie::Stay, BresenhamTie::Step] {
@@ -574,10 +592,11 @@ fn write_case(dir: &Path, k: u64, o: &Outcome, preset: Preset, v: &Violation) ->
         .collect();
     let label: String = o.label.chars().map(|ch| if ch == '/' { '-' } else { ch }).collect();
     let stem = dir.join(format!("case-{k}-{slug}-{label}"));
-    let mut scene = Scene::new(o.canvas, o.canvas, o.triangles.clone());
-    scene.lines = o.lines.clone();
-    scene.polygons = o.polygons.clone();
-    scene.clip = o.window.clone();
+    let r = &o.repro;
+    let mut scene = Scene::new(r.canvas, r.canvas, r.triangles.clone());
+    scene.lines = r.lines.clone();
+    scene.polygons = r.polygons.clone();
+    scene.clip = r.window.clone();
     scene.preset = preset;
     let json = stem.with_extension("json");
     std::fs::write(&json, scene.to_json()).map_err(|e| format!("{}: cannot write: {e}", json.display()))?;

@@ -7,14 +7,10 @@ use std::process::ExitCode;
 
 use glam::{DVec2, Vec2};
 use num_rational::BigRational;
-use num_traits::ToPrimitive;
 use rasterproof::clip::halfplane::{clip_segment_exact, HalfPlane, HalfPlaneF32, HalfPlaneF64};
-use rasterproof::clip::homogeneous::{
-    self, clip_to_window_exact, divide_then_clip_exact, ClipVertexF32, ClipVertexF64, ProjectError,
-};
+use rasterproof::clip::homogeneous::{self, clip_to_window_exact, divide_then_clip_exact, ClipVertex, ProjectError};
 use rasterproof::clip::{cohen_sutherland, sutherland_hodgman, Window};
 use rasterproof::geom::Point;
-use rasterproof::num::exact::nearest_f32;
 use rasterproof::scene::{exact_text, parse_scene_bytes, Scene};
 
 /// What `clip` was asked to do.
@@ -83,18 +79,13 @@ struct Clipper<'a> {
 
 impl Clipper<'_> {
     fn to64(&self, p: &Point, what: &str) -> Result<DVec2, String> {
-        match (p.x.to_f64(), p.y.to_f64()) {
-            (Some(x), Some(y)) if x.is_finite() && y.is_finite() => Ok(DVec2::new(x, y)),
-            _ => Err(format!("{what}: a coordinate does not fit f64")),
-        }
+        p.to_f64()
+            .ok_or_else(|| format!("{what}: a coordinate does not fit f64"))
     }
 
-    /// Straight from the rational to the nearest f32 (not through f64: no double rounding).
     fn to32(&self, p: &Point, what: &str) -> Result<Vec2, String> {
-        match (nearest_f32(&p.x), nearest_f32(&p.y)) {
-            (Some(x), Some(y)) if x.is_finite() && y.is_finite() => Ok(Vec2::new(x, y)),
-            _ => Err(format!("{what}: a coordinate does not fit f32")),
-        }
+        p.to_f32()
+            .ok_or_else(|| format!("{what}: a coordinate does not fit f32"))
     }
 
     /// A closed contour clipped by Sutherland-Hodgman (unchanged without a window).
@@ -180,46 +171,24 @@ impl Clipper<'_> {
                 let vp = viewport.to_f64().ok_or("viewport: a number does not fit f64")?;
                 let v = t
                     .iter()
-                    .map(|v| {
-                        let c = |i: usize| v.pos[i].to_f64().filter(|x| x.is_finite());
-                        Some(ClipVertexF64 {
-                            pos: glam::DVec4::new(c(0)?, c(1)?, c(2)?, c(3)?),
-                            attrs: Vec::new(),
-                        })
-                    })
+                    .map(ClipVertex::to_f64)
                     .collect::<Option<Vec<_>>>()
                     .ok_or_else(|| format!("{what}: a coordinate does not fit f64"))?;
-                let clipped: Vec<_> = homogeneous::clip_f64(&v, viewport.depth)
+                homogeneous::clip_to_window_f64(&v, &vp)
                     .into_iter()
-                    .filter(|v| v.pos.w > 0.0)
-                    .collect();
-                homogeneous::project_f64(&clipped, &vp)
-                    .map_err(|e| format!("{what}: {e}"))?
-                    .into_iter()
-                    .map(|v| point64(v.point))
+                    .map(|v| point64(v.point).map_err(|e| format!("{what}: {e}")))
                     .collect::<Result<_, _>>()?
             }
             Arith::F32 => {
                 let vp = viewport.to_f32().ok_or("viewport: a number does not fit f32")?;
                 let v = t
                     .iter()
-                    .map(|v| {
-                        let c = |i: usize| nearest_f32(&v.pos[i]);
-                        Some(ClipVertexF32 {
-                            pos: glam::Vec4::new(c(0)?, c(1)?, c(2)?, c(3)?),
-                            attrs: Vec::new(),
-                        })
-                    })
+                    .map(ClipVertex::to_f32)
                     .collect::<Option<Vec<_>>>()
                     .ok_or_else(|| format!("{what}: a coordinate does not fit f32"))?;
-                let clipped: Vec<_> = homogeneous::clip_f32(&v, viewport.depth)
+                homogeneous::clip_to_window_f32(&v, &vp)
                     .into_iter()
-                    .filter(|v| v.pos.w > 0.0)
-                    .collect();
-                homogeneous::project_f32(&clipped, &vp)
-                    .map_err(|e| format!("{what}: {e}"))?
-                    .into_iter()
-                    .map(|v| point32(v.point))
+                    .map(|v| point32(v.point).map_err(|e| format!("{what}: {e}")))
                     .collect::<Result<_, _>>()?
             }
         };
@@ -320,11 +289,11 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
                 polygons.join(","),
                 clip_space.join(",")
             );
-            crate::cli::render::print_stdout(&json)?;
+            crate::cli::print_stdout(&json)?;
         }
         Format::Text => {
             let kept = |v: &[String]| v.iter().filter(|s| s.as_str() != "[]").count();
-            crate::cli::render::print_stdout(&format!(
+            crate::cli::print_stdout(&format!(
                 "{name}: {} clipping: {}/{} triangles, {}/{} lines, {}/{} polygons, {}/{} clip-space triangles keep something",
                 o.model,
                 kept(&triangles),

@@ -1,6 +1,5 @@
 //! `rasterproof flood`: the region of one pixel's colour in a PNG, optionally recoloured.
 
-use std::io::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -77,10 +76,10 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     }
     match o.format {
         Format::Json => {
-            write_stdout(|out| write_json(out, &region, at, connectivity))?;
+            crate::cli::write_stdout(|out| write_json(out, &region, at, connectivity))?;
             eprintln!("{summary}");
         }
-        Format::Text => write_stdout(|out| writeln!(out, "{summary}"))?,
+        Format::Text => crate::cli::print_stdout(&summary)?,
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -151,15 +150,4 @@ fn write_json(
         write!(out, "[{x},{y}]")?;
     }
     out.write_all(b"]}\n")
-}
-
-/// Writes to stdout through a buffer; a closed pipe (`| head`) ends quietly instead of
-/// panicking.
-fn write_stdout(body: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>) -> Result<(), String> {
-    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-    match body(&mut out).and_then(|()| out.flush()) {
-        Ok(()) => Ok(()),
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
-        Err(e) => Err(format!("cannot write to stdout: {e}")),
-    }
 }

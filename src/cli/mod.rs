@@ -4,3 +4,20 @@ pub mod check;
 pub mod clip;
 pub mod flood;
 pub mod render;
+
+/// Writes to stdout through a buffer; a closed pipe (`| head`) ends quietly instead of
+/// panicking.
+pub fn write_stdout(body: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>) -> Result<(), String> {
+    use std::io::Write as _;
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    match body(&mut out).and_then(|()| out.flush()) {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        Err(e) => Err(format!("cannot write to stdout: {e}")),
+    }
+}
+
+/// Writes one line to stdout (see [`write_stdout`]).
+pub fn print_stdout(line: &str) -> Result<(), String> {
+    write_stdout(|out| writeln!(out, "{line}"))
+}

@@ -84,21 +84,10 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     );
     match o.format {
         Format::Json => {
-            print_stdout(&coverage.to_json())?;
+            crate::cli::print_stdout(&coverage.to_json())?;
             eprintln!("{summary}");
         }
-        Format::Text => print_stdout(&summary)?,
+        Format::Text => crate::cli::print_stdout(&summary)?,
     }
     Ok(ExitCode::SUCCESS)
-}
-
-/// Writes a line to stdout; a closed pipe (`| head`) ends quietly instead of panicking.
-pub fn print_stdout(line: &str) -> Result<(), String> {
-    use std::io::Write as _;
-    let mut out = std::io::stdout().lock();
-    match writeln!(out, "{line}").and_then(|()| out.flush()) {
-        Ok(()) => Ok(()),
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
-        Err(e) => Err(format!("cannot write to stdout: {e}")),
-    }
 }

@@ -6,7 +6,6 @@
 //! the mask is the closed window: a pixel is kept when its sample lies in the window or
 //! on its boundary (seed 002's point clipping).
 
-use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
@@ -58,7 +57,7 @@ impl ClipMask {
         let planes = window.half_planes();
         let rows = (0..target.height)
             .map(|j| {
-                let y = BigRational::from_integer(BigInt::from(j)) + &centre;
+                let y = crate::tri::sample_coordinate(j, &centre);
                 let (mut lo, mut hi): (Option<BigRational>, Option<BigRational>) = (None, None);
                 for h in &planes {
                     let rest = &h.b * &y + &h.c; // a x + rest >= 0

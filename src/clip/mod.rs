@@ -181,7 +181,8 @@ impl Window {
             .collect()
     }
 
-    /// Whether `p` is in the window (boundary included), exactly.
+    /// Whether `p` is in the window (boundary included), exactly. Builds the half-planes on
+    /// every call: for many points, take [`Window::half_planes`] once.
     pub fn contains(&self, p: &Point) -> bool {
         self.half_planes().iter().all(|h| h.contains(p))
     }

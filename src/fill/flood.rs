@@ -252,8 +252,8 @@ impl SpanFill<'_> {
     fn run(&mut self, seed: (u32, u32)) {
         let (a, b) = self.fill_run(seed.0, seed.1);
         // The seed run is the parent of both rows beside it.
-        self.push_row(seed.1, true, a, b, (a, b));
-        self.push_row(seed.1, false, a, b, (a, b));
+        self.push_row(seed.1, true, a, b);
+        self.push_row(seed.1, false, a, b);
         while let Some(span) = self.stack.pop() {
             let mut x = span.lo;
             while x <= span.hi {
@@ -286,7 +286,7 @@ impl SpanFill<'_> {
 
     /// Queues the stretch of the row after `y` (in direction `down`) that touches the run
     /// `a..=b` of row `y`: `a - reach ..= b + reach`, clipped to the image.
-    fn push_row(&mut self, y: u32, down: bool, a: u32, b: u32, parent: (u32, u32)) {
+    fn push_row(&mut self, y: u32, down: bool, a: u32, b: u32) {
         let next = if down { y.checked_add(1) } else { y.checked_sub(1) };
         let Some(next) = next.filter(|&n| n < self.height) else {
             return;
@@ -298,7 +298,7 @@ impl SpanFill<'_> {
             lo,
             hi,
             down,
-            parent,
+            parent: (a, b),
         });
     }
 
@@ -308,7 +308,7 @@ impl SpanFill<'_> {
     /// (U-turns): they are the stretches past the parent's ends.
     fn push_children(&mut self, span: Span, a: u32, b: u32) {
         let y = span.y;
-        self.push_row(y, span.down, a, b, (a, b));
+        self.push_row(y, span.down, a, b);
         let back = if span.down { y.checked_sub(1) } else { y.checked_add(1) };
         let Some(back) = back.filter(|&n| n < self.height) else {
             return;

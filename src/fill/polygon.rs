@@ -21,7 +21,6 @@
 
 use std::cmp::Ordering;
 
-use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
@@ -30,7 +29,7 @@ use crate::coverage::CoverageSink;
 use crate::edge::exact::edge_function;
 use crate::geom::{FillRule, FixedPolygon, Point, Polygon};
 use crate::num::dda::CeilDda;
-use crate::tri::{exact_sample_range, fixed_sample_range};
+use crate::tri::{exact_sample_range, fixed_sample_range, sample_coordinate, sample_point};
 
 /// The closed contour's edges `(v[i], v[i+1])`, the last one back to the first vertex.
 fn closed_edges<T>(contour: &[T]) -> impl Iterator<Item = (&T, &T)> {
@@ -166,10 +165,7 @@ pub fn rasterize_exact<S: CoverageSink + ?Sized>(poly: &Polygon, id: u32, target
     let centre = target.convention.pixel_centre.offset();
     for j in range.y0..=range.y1 {
         for i in range.x0..=range.x1 {
-            let sample = Point::new(
-                BigRational::from_integer(BigInt::from(i)) + &centre,
-                BigRational::from_integer(BigInt::from(j)) + &centre,
-            );
+            let sample = sample_point(i, j, &centre);
             if contains_exact(&sample, poly, target.convention.tie_rule) {
                 sink.cover(i, j, id);
             }
@@ -372,7 +368,7 @@ pub fn rasterize_rows_exact<S: CoverageSink + ?Sized>(poly: &Polygon, id: u32, t
     let mut crossings: Vec<Crossing> = Vec::new();
     let mut sweep = Sweep::new(poly.contours().count(), poly.fill_rule);
     for j in range.y0..=range.y1 {
-        let sy = BigRational::from_integer(BigInt::from(j)) + &centre;
+        let sy = sample_coordinate(j, &centre);
         crossings.clear();
         for (k, contour) in poly.contours().enumerate() {
             for (a, b) in closed_edges(contour) {

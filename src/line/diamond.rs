@@ -12,7 +12,6 @@
 //! below 2^99, far inside i128. Only candidate pixels are tested: per step of the major
 //! axis, the five pixels around the line.
 
-use super::cover_if_on_canvas;
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::num::SubPixel;
@@ -46,64 +45,94 @@ fn less(t0: (i128, i128), t1: (i128, i128)) -> bool {
     t0.0 * t1.1 < t1.0 * t0.1
 }
 
+/// What the per-pixel test needs of a segment, computed once per segment: the grid, the
+/// endpoints and direction in i128, the diamond radius, the major axis.
+struct Prepared {
+    one: i128,
+    c: i128,
+    r: i128,
+    a: [i128; 2],
+    b: [i128; 2],
+    d: [i128; 2],
+    x_major: bool,
+}
+
+impl Prepared {
+    /// # Panics
+    /// When `seg` was snapped to another grid than `target`'s subpixel bits.
+    fn new(seg: &FixedSegment, target: &Target) -> Prepared {
+        let conv = &target.convention;
+        assert_eq!(
+            seg.bits, conv.subpixel_bits,
+            "segment snapped to another grid than the target's"
+        );
+        let one = 1i128 << conv.subpixel_bits;
+        let a = seg.a.map(|v| i128::from(v.get()));
+        let b = seg.b.map(|v| i128::from(v.get()));
+        let d = [b[0] - a[0], b[1] - a[1]];
+        Prepared {
+            one,
+            c: i128::from(conv.pixel_centre.offset_subpixels(conv.subpixel_bits)),
+            r: one / 2,
+            a,
+            b,
+            d,
+            x_major: d[0].abs() >= d[1].abs(),
+        }
+    }
+
+    /// Whether the segment draws pixel `(i, j)`.
+    fn exits(&self, i: i64, j: i64) -> bool {
+        let Prepared {
+            one,
+            c,
+            r,
+            a: [ax, ay],
+            b: [bx, by],
+            d: [dx, dy],
+            x_major,
+        } = *self;
+        let (cx, cy) = (i128::from(i) * one + c, i128::from(j) * one + c);
+        if contains(bx - cx, by - cy, r, x_major) {
+            return false;
+        }
+        let (ua, va) = (ax - cx, ay - cy);
+        let (mut t0, mut t1) = ((0i128, 1i128), (1i128, 1i128));
+        for (su, sv) in [(1, 1), (1, -1), (-1, 1), (-1, -1)] {
+            let g0 = su * ua + sv * va;
+            let g1 = su * dx + sv * dy;
+            if g1 == 0 {
+                if g0 > r {
+                    return false;
+                }
+            } else if g1 > 0 {
+                let t = (r - g0, g1);
+                if less(t, t1) {
+                    t1 = t;
+                }
+            } else {
+                let t = (g0 - r, -g1);
+                if less(t0, t) {
+                    t0 = t;
+                }
+            }
+        }
+        if less(t1, t0) {
+            return false;
+        }
+        let mid = (t0.0 * t1.1 + t1.0 * t0.1, 2 * t0.1 * t1.1);
+        [t0, t1, mid]
+            .iter()
+            .any(|&(n, m)| contains(ua * m + dx * n, va * m + dy * n, r * m, x_major))
+    }
+}
+
 /// Whether the segment draws pixel `(i, j)`.
 ///
 /// # Panics
 /// When `seg` was snapped to another grid than `target`'s subpixel bits.
 pub fn exits(seg: &FixedSegment, i: i64, j: i64, target: &Target) -> bool {
-    assert_same_grid(seg, target);
-    exits_on_grid(seg, i, j, target)
-}
-
-fn assert_same_grid(seg: &FixedSegment, target: &Target) {
-    assert_eq!(
-        seg.bits, target.convention.subpixel_bits,
-        "segment snapped to another grid than the target's"
-    );
-}
-
-/// [`exits`] without the grid check: `draw` checks once per segment, not per pixel.
-fn exits_on_grid(seg: &FixedSegment, i: i64, j: i64, target: &Target) -> bool {
-    let conv = &target.convention;
-    let one = 1i128 << conv.subpixel_bits;
-    let c = i128::from(conv.pixel_centre.offset_subpixels(conv.subpixel_bits));
-    let (cx, cy) = (i128::from(i) * one + c, i128::from(j) * one + c);
-    let r = one / 2;
-    let [ax, ay] = seg.a.map(|v| i128::from(v.get()));
-    let [bx, by] = seg.b.map(|v| i128::from(v.get()));
-    let (dx, dy) = (bx - ax, by - ay);
-    let x_major = dx.abs() >= dy.abs();
-    if contains(bx - cx, by - cy, r, x_major) {
-        return false;
-    }
-    let (ua, va) = (ax - cx, ay - cy);
-    let (mut t0, mut t1) = ((0i128, 1i128), (1i128, 1i128));
-    for (su, sv) in [(1, 1), (1, -1), (-1, 1), (-1, -1)] {
-        let g0 = su * ua + sv * va;
-        let g1 = su * dx + sv * dy;
-        if g1 == 0 {
-            if g0 > r {
-                return false;
-            }
-        } else if g1 > 0 {
-            let t = (r - g0, g1);
-            if less(t, t1) {
-                t1 = t;
-            }
-        } else {
-            let t = (g0 - r, -g1);
-            if less(t0, t) {
-                t0 = t;
-            }
-        }
-    }
-    if less(t1, t0) {
-        return false;
-    }
-    let mid = (t0.0 * t1.1 + t1.0 * t0.1, 2 * t0.1 * t1.1);
-    [t0, t1, mid]
-        .iter()
-        .any(|&(n, m)| contains(ua * m + dx * n, va * m + dy * n, r * m, x_major))
+    Prepared::new(seg, target).exits(i, j)
 }
 
 /// Draws the segment: for each step of its major axis across the canvas, tests the five
@@ -112,7 +141,7 @@ fn exits_on_grid(seg: &FixedSegment, i: i64, j: i64, target: &Target) -> bool {
 /// # Panics
 /// When `seg` was snapped to another grid than `target`'s subpixel bits.
 pub fn draw<S: CoverageSink + ?Sized>(seg: &FixedSegment, id: u32, target: &Target, sink: &mut S) {
-    assert_same_grid(seg, target);
+    let prepared = Prepared::new(seg, target);
     let conv = &target.convention;
     let one = 1i64 << conv.subpixel_bits;
     let c = conv.pixel_centre.offset_subpixels(conv.subpixel_bits);
@@ -148,8 +177,9 @@ pub fn draw<S: CoverageSink + ?Sized>(seg: &FixedSegment, id: u32, target: &Targ
         let near = i64::try_from(near).expect("inside the envelope");
         for m in (near - 2).max(0)..=(near + 2).min(i64::from(side_min) - 1) {
             let (i, j) = if x_major { (k, m) } else { (m, k) };
-            if exits_on_grid(seg, i, j, target) {
-                cover_if_on_canvas([i, j], id, target, sink);
+            if prepared.exits(i, j) {
+                let on_canvas = |v: i64| u32::try_from(v).expect("clamped to the canvas");
+                sink.cover(on_canvas(i), on_canvas(j), id);
             }
         }
     }

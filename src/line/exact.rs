@@ -27,6 +27,20 @@ pub struct IdealStep {
     pub candidates: Vec<i64>,
 }
 
+impl IdealStep {
+    /// The pixel of this step under `tie`: the only candidate, or at an exact tie the one
+    /// nearer the start on the minor axis (`Stay`) or the farther one (`Step`);
+    /// `minor_sign` is the direction of travel on the minor axis.
+    pub fn pick(&self, minor_sign: i64, tie: BresenhamTie) -> i64 {
+        let (lo, hi) = (self.candidates[0], self.candidates[self.candidates.len() - 1]);
+        let (nearer, farther) = if minor_sign >= 0 { (lo, hi) } else { (hi, lo) };
+        match tie {
+            BresenhamTie::Stay => nearer,
+            BresenhamTie::Step => farther,
+        }
+    }
+}
+
 /// The ideal line `from -> to` between pixel centres, step by step.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct IdealLine {
@@ -95,25 +109,8 @@ pub fn ideal(from: [i64; 2], to: [i64; 2]) -> IdealLine {
 pub fn resolve(line: &IdealLine, tie: BresenhamTie) -> Vec<[i64; 2]> {
     line.steps
         .iter()
-        .map(|s| line.axes.join(s.major, pick(&s.candidates, line.axes.minor_sign, tie)))
+        .map(|s| line.axes.join(s.major, s.pick(line.axes.minor_sign, tie)))
         .collect()
-}
-
-fn pick(candidates: &[i64], minor_sign: i64, tie: BresenhamTie) -> i64 {
-    let nearer_start = if minor_sign >= 0 {
-        candidates[0]
-    } else {
-        candidates[candidates.len() - 1]
-    };
-    let farther = if minor_sign >= 0 {
-        candidates[candidates.len() - 1]
-    } else {
-        candidates[0]
-    };
-    match tie {
-        BresenhamTie::Stay => nearer_start,
-        BresenhamTie::Step => farther,
-    }
 }
 
 /// Draws the reference pixels of a Bresenham line, computing only the steps whose major
@@ -228,7 +225,7 @@ pub fn draw_diamond<S: CoverageSink + ?Sized>(a: &Point, b: &Point, id: u32, tar
     for j in range.y0..=range.y1 {
         for i in range.x0..=range.x1 {
             if diamond_exits(a, b, i64::from(i), i64::from(j), target) {
-                cover_if_on_canvas([i64::from(i), i64::from(j)], id, target, sink);
+                sink.cover(i, j, id);
             }
         }
     }

@@ -279,18 +279,26 @@ impl Parser<'_> {
             .ok_or_else(|| self.err(field, format!("expected an array, found {} {}", kind(v), show(v))))
     }
 
-    fn triangles(&self, v: &Value) -> Result<Vec<SceneTriangle>, SceneError> {
-        let list = self.array(v, "triangles")?;
+    /// The array at `field`, at most [`MAX_TRIANGLES`] entries, each parsed by `parse`
+    /// with its own path (`field[k]`).
+    fn each<T>(
+        &self,
+        v: &Value,
+        field: &str,
+        parse: impl Fn(&Value, &str) -> Result<T, SceneError>,
+    ) -> Result<Vec<T>, SceneError> {
+        let list = self.array(v, field)?;
         if list.len() > MAX_TRIANGLES {
-            return Err(self.err(
-                "triangles",
-                format!("{} triangles, at most {MAX_TRIANGLES}", list.len()),
-            ));
+            return Err(self.err(field, format!("{} entries, at most {MAX_TRIANGLES}", list.len())));
         }
         list.iter()
             .enumerate()
-            .map(|(k, t)| self.triangle(t, &format!("triangles[{k}]")))
+            .map(|(k, item)| parse(item, &format!("{field}[{k}]")))
             .collect()
+    }
+
+    fn triangles(&self, v: &Value) -> Result<Vec<SceneTriangle>, SceneError> {
+        self.each(v, "triangles", |t, at| self.triangle(t, at))
     }
 
     fn triangle(&self, v: &Value, at: &str) -> Result<SceneTriangle, SceneError> {
@@ -301,6 +309,27 @@ impl Parser<'_> {
             ));
         };
         self.known_fields(obj, at, &["v", "colors"])?;
+        let [a, b, c] = self
+            .triangle_vertices(obj, at, "a vertex is [x, y]")?
+            .map(|[x, y]| Point::new(x, y));
+        let colours = match obj.get("colors") {
+            None => None,
+            Some(cv) => Some(self.colours(cv, &format!("{at}.colors"))?),
+        };
+        Ok(SceneTriangle {
+            triangle: Triangle::new(a, b, c),
+            colours,
+        })
+    }
+
+    /// The field `v` of a triangle object at `at`: exactly 3 vertices of `D` coordinates
+    /// each (`shape` says which, for the error).
+    fn triangle_vertices<const D: usize>(
+        &self,
+        obj: &Map<String, Value>,
+        at: &str,
+        shape: &str,
+    ) -> Result<[[BigRational; D]; 3], SceneError> {
         let vf = format!("{at}.v");
         let verts = self.array(
             obj.get("v").ok_or_else(|| self.err(&vf, "missing (required)".into()))?,
@@ -312,37 +341,25 @@ impl Parser<'_> {
                 format!("a triangle needs exactly 3 vertices, found {}", verts.len()),
             ));
         }
-        let mut points = Vec::with_capacity(3);
+        let mut out = Vec::with_capacity(3);
         for (i, p) in verts.iter().enumerate() {
             let pf = format!("{vf}[{i}]");
-            let xy = self.array(p, &pf)?;
-            if xy.len() != 2 {
-                return Err(self.err(&pf, format!("a vertex is [x, y], found {} values", xy.len())));
+            let coords = self.array(p, &pf)?;
+            if coords.len() != D {
+                return Err(self.err(&pf, format!("{shape}, found {} values", coords.len())));
             }
-            let x = self.coordinate(&xy[0], &format!("{pf}[0]"))?;
-            let y = self.coordinate(&xy[1], &format!("{pf}[1]"))?;
-            points.push(Point::new(x, y));
+            let values = coords
+                .iter()
+                .enumerate()
+                .map(|(k, c)| self.coordinate(c, &format!("{pf}[{k}]")))
+                .collect::<Result<Vec<_>, _>>()?;
+            out.push(<[BigRational; D]>::try_from(values).expect("D coordinates checked"));
         }
-        let [a, b, c]: [Point; 3] = points.try_into().expect("three vertices checked");
-        let colours = match obj.get("colors") {
-            None => None,
-            Some(cv) => Some(self.colours(cv, &format!("{at}.colors"))?),
-        };
-        Ok(SceneTriangle {
-            triangle: Triangle::new(a, b, c),
-            colours,
-        })
+        Ok(out.try_into().expect("three vertices checked"))
     }
 
     fn lines(&self, v: &Value) -> Result<Vec<Line>, SceneError> {
-        let list = self.array(v, "lines")?;
-        if list.len() > MAX_TRIANGLES {
-            return Err(self.err("lines", format!("{} lines, at most {MAX_TRIANGLES}", list.len())));
-        }
-        list.iter()
-            .enumerate()
-            .map(|(k, l)| self.line(l, &format!("lines[{k}]")))
-            .collect()
+        self.each(v, "lines", |l, at| self.line(l, at))
     }
 
     fn point(&self, v: Option<&Value>, at: &str) -> Result<Point, SceneError> {

@@ -2,14 +2,11 @@
 //! edge functions per sample, and the tie rule's inclusive flag per edge. Written to be
 //! read, not to be fast; every other model is proven equal to it.
 
-use num_bigint::BigInt;
-use num_rational::BigRational;
-
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::edge::exact::triangle_edges;
-use crate::geom::{Point, Triangle};
-use crate::tri::exact_sample_range;
+use crate::geom::Triangle;
+use crate::tri::{exact_sample_range, sample_point};
 
 /// Covers every pixel whose sample is inside `tri` under `target`'s convention.
 ///
@@ -44,10 +41,7 @@ pub fn rasterize<S: CoverageSink + ?Sized>(tri: &Triangle, id: u32, target: &Tar
     let centre = target.convention.pixel_centre.offset();
     for j in range.y0..=range.y1 {
         for i in range.x0..=range.x1 {
-            let sample = Point::new(
-                BigRational::from_integer(BigInt::from(i)) + &centre,
-                BigRational::from_integer(BigInt::from(j)) + &centre,
-            );
+            let sample = sample_point(i, j, &centre);
             if edges.iter().all(|e| e.contains(&sample)) {
                 sink.cover(i, j, id);
             }

@@ -8,6 +8,7 @@ pub mod fixed;
 pub mod float;
 pub mod scanline;
 
+use num_bigint::BigInt;
 use num_rational::BigRational;
 
 use crate::convention::Target;
@@ -56,6 +57,16 @@ impl PixelRange {
             y1: to_u32(clamp(hi[1], height)),
         })
     }
+}
+
+/// The exact sample coordinate of pixel index `i`: `i + centre`.
+pub(crate) fn sample_coordinate(i: u32, centre: &BigRational) -> BigRational {
+    BigRational::from_integer(BigInt::from(i)) + centre
+}
+
+/// The exact sample of pixel `(x, y)`: `(x + centre, y + centre)`.
+pub(crate) fn sample_point(x: u32, y: u32, centre: &BigRational) -> Point {
+    Point::new(sample_coordinate(x, centre), sample_coordinate(y, centre))
 }
 
 /// The pixels whose sample lies in the closed bounding box of `points` (exact), on the

@@ -4,7 +4,7 @@
 use glam::{DMat4, DVec2, DVec3, DVec4, Mat4, Vec2, Vec3, Vec4};
 use num_rational::BigRational;
 
-use super::{clip_planes, merged, DepthRange, NdcY, ProjectError, Viewport};
+use super::{clip_planes, merged, ClipVertex, DepthRange, NdcY, ProjectError, Viewport};
 use crate::interp::{barycentric_f32, barycentric_f64};
 
 /// An object-space point `(x, y, z, 1)` into clip space by `m`, in f64.
@@ -35,8 +35,8 @@ macro_rules! float_forms {
     (
         float: $float:ty, vec4: $vec4:ty, vec2: $vec2:ty, to_float: $to_float:ident, nearest: $nearest:ident,
         vertex: $vertex:ident, window_vertex: $window_vertex:ident, viewport: $viewport:ident,
-        clip: $clip:ident, project: $project:ident, interpolate: $interpolate:ident,
-        barycentric: $barycentric:ident, name: $name:literal
+        clip: $clip:ident, project: $project:ident, clip_to_window: $clip_to_window:ident,
+        interpolate: $interpolate:ident, barycentric: $barycentric:ident, name: $name:literal
     ) => {
         #[doc = concat!("A clip-space vertex in ", $name, ".")]
         #[derive(Debug, Clone, PartialEq)]
@@ -154,6 +154,28 @@ macro_rules! float_forms {
                 .collect()
         }
 
+        impl ClipVertex {
+            #[doc = concat!("The nearest ", $name, " vertex (`None` when a number does not fit).")]
+            pub fn $to_float(&self) -> Option<$vertex> {
+                let f = |v: &BigRational| crate::num::exact::$nearest(v);
+                let [x, y, z, w] = &self.pos;
+                Some($vertex {
+                    pos: <$vec4>::new(f(x)?, f(y)?, f(z)?, f(w)?),
+                    attrs: self.attrs.iter().map(f).collect::<Option<_>>()?,
+                })
+            }
+        }
+
+        #[doc = concat!("[`clip_to_window_exact`] in ", $name, ": clipped, the eye point (the only ")]
+        #[doc = "clipped vertex that can have `w <= 0`) dropped, divided and mapped."]
+        pub fn $clip_to_window(poly: &[$vertex], viewport: &$viewport) -> Vec<$window_vertex> {
+            let in_front: Vec<$vertex> = $clip(poly, viewport.depth)
+                .into_iter()
+                .filter(|v| v.pos.w > 0.0)
+                .collect();
+            $project(&in_front, viewport).expect("every vertex has w > 0")
+        }
+
         #[doc = concat!("[`interpolate_exact`] in ", $name, " (`None` for a zero-area triangle ")]
         #[doc = "or where `Σ b_i / w_i` is 0)."]
         pub fn $interpolate(tri: &[$window_vertex; 3], p: $vec2) -> Option<$window_vertex> {
@@ -180,12 +202,12 @@ macro_rules! float_forms {
 float_forms!(
     float: f64, vec4: DVec4, vec2: DVec2, to_float: to_f64, nearest: nearest_f64,
     vertex: ClipVertexF64, window_vertex: WindowVertexF64, viewport: ViewportF64,
-    clip: clip_f64, project: project_f64, interpolate: interpolate_f64,
-    barycentric: barycentric_f64, name: "f64"
+    clip: clip_f64, project: project_f64, clip_to_window: clip_to_window_f64,
+    interpolate: interpolate_f64, barycentric: barycentric_f64, name: "f64"
 );
 float_forms!(
     float: f32, vec4: Vec4, vec2: Vec2, to_float: to_f32, nearest: nearest_f32,
     vertex: ClipVertexF32, window_vertex: WindowVertexF32, viewport: ViewportF32,
-    clip: clip_f32, project: project_f32, interpolate: interpolate_f32,
-    barycentric: barycentric_f32, name: "f32"
+    clip: clip_f32, project: project_f32, clip_to_window: clip_to_window_f32,
+    interpolate: interpolate_f32, barycentric: barycentric_f32, name: "f32"
 );

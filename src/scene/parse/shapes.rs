@@ -5,7 +5,7 @@ use num_rational::BigRational;
 use num_traits::Signed;
 use serde_json::Value;
 
-use super::{kind, show, Parser, MAX_POLYGON_VERTICES, MAX_TRIANGLES};
+use super::{kind, show, Parser, MAX_POLYGON_VERTICES};
 use crate::clip::homogeneous::{ClipVertex, DepthRange, NdcY, Viewport};
 use crate::clip::Window;
 use crate::convention::Preset;
@@ -15,14 +15,7 @@ use crate::scene::SceneError;
 
 impl Parser<'_> {
     pub(super) fn polygons(&self, v: &Value) -> Result<Vec<Polygon>, SceneError> {
-        let list = self.array(v, "polygons")?;
-        if list.len() > MAX_TRIANGLES {
-            return Err(self.err("polygons", format!("{} polygons, at most {MAX_TRIANGLES}", list.len())));
-        }
-        list.iter()
-            .enumerate()
-            .map(|(k, p)| self.polygon(p, &format!("polygons[{k}]")))
-            .collect()
+        self.each(v, "polygons", |p, at| self.polygon(p, at))
     }
 
     fn contour(&self, v: &Value, at: &str) -> Result<Vec<Point>, SceneError> {
@@ -107,54 +100,17 @@ impl Parser<'_> {
     }
 
     pub(super) fn clip_space_triangles(&self, v: &Value) -> Result<Vec<[ClipVertex; 3]>, SceneError> {
-        let list = self.array(v, "clip_space_triangles")?;
-        if list.len() > MAX_TRIANGLES {
-            return Err(self.err(
-                "clip_space_triangles",
-                format!("{} triangles, at most {MAX_TRIANGLES}", list.len()),
-            ));
-        }
-        list.iter()
-            .enumerate()
-            .map(|(k, t)| {
-                let at = format!("clip_space_triangles[{k}]");
-                let Value::Object(obj) = t else {
-                    return Err(self.err(
-                        &at,
-                        format!("expected an object with \"v\", found {} {}", kind(t), show(t)),
-                    ));
-                };
-                self.known_fields(obj, &at, &["v"])?;
-                let vf = format!("{at}.v");
-                let verts = self.array(
-                    obj.get("v").ok_or_else(|| self.err(&vf, "missing (required)".into()))?,
-                    &vf,
-                )?;
-                if verts.len() != 3 {
-                    return Err(self.err(
-                        &vf,
-                        format!("a triangle needs exactly 3 vertices, found {}", verts.len()),
-                    ));
-                }
-                let mut out = Vec::with_capacity(3);
-                for (i, p) in verts.iter().enumerate() {
-                    let pf = format!("{vf}[{i}]");
-                    let xyzw = self.array(p, &pf)?;
-                    if xyzw.len() != 4 {
-                        return Err(self.err(
-                            &pf,
-                            format!("a clip-space vertex is [x, y, z, w], found {} values", xyzw.len()),
-                        ));
-                    }
-                    let c = |k: usize| self.coordinate(&xyzw[k], &format!("{pf}[{k}]"));
-                    out.push(ClipVertex {
-                        pos: [c(0)?, c(1)?, c(2)?, c(3)?],
-                        attrs: Vec::new(),
-                    });
-                }
-                Ok(out.try_into().expect("three vertices checked"))
-            })
-            .collect()
+        self.each(v, "clip_space_triangles", |t, at| {
+            let Value::Object(obj) = t else {
+                return Err(self.err(
+                    at,
+                    format!("expected an object with \"v\", found {} {}", kind(t), show(t)),
+                ));
+            };
+            self.known_fields(obj, at, &["v"])?;
+            let v = self.triangle_vertices(obj, at, "a clip-space vertex is [x, y, z, w]")?;
+            Ok(v.map(|pos| ClipVertex { pos, attrs: Vec::new() }))
+        })
     }
 
     pub(super) fn viewport(&self, v: &Value, width: u32, height: u32, preset: Preset) -> Result<Viewport, SceneError> {
