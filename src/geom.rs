@@ -5,7 +5,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 
 use crate::convention::Convention;
-use crate::num::exact::{dyadic, nearest_f32, nearest_f64};
+use crate::num::exact::{dyadic, nearest_f32, nearest_f64, pair_text};
 use crate::num::fixed::snap;
 use crate::num::{EnvelopeError, SubPixel};
 
@@ -16,6 +16,13 @@ pub struct Point {
     pub x: BigRational,
     /// y, downwards.
     pub y: BigRational,
+}
+
+/// `(3, -7/2)`: the exact text of both coordinates ([`pair_text`]).
+impl std::fmt::Display for Point {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&pair_text(&self.x, &self.y))
+    }
 }
 
 impl Point {

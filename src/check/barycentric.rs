@@ -7,7 +7,7 @@ use super::Violation;
 use crate::convention::Target;
 use crate::geom::{FixedTriangle, Point, Triangle};
 use crate::interp::{barycentric_exact, barycentric_f32, barycentric_fixed};
-use crate::scene::exact_text;
+use crate::num::exact::exact_text;
 
 /// The exact barycentrics of `p` sum to exactly 1 (zero-area triangles have none: Ok).
 pub fn check_barycentric_exact(t: &Triangle, p: &Point) -> Result<(), Violation> {
@@ -21,9 +21,7 @@ pub fn check_barycentric_exact(t: &Triangle, p: &Point) -> Result<(), Violation>
         Err(Violation::new(
             "barycentric sum",
             format!(
-                "at ({}, {}): {} + {} + {} = {}",
-                exact_text(&p.x),
-                exact_text(&p.y),
+                "at {p}: {} + {} + {} = {}",
                 exact_text(&l[0]),
                 exact_text(&l[1]),
                 exact_text(&l[2]),

@@ -12,11 +12,7 @@ use crate::convention::Target;
 use crate::coverage::Coverage;
 use crate::fill::polygon::rasterize_exact;
 use crate::geom::{FillRule, Point, Polygon};
-use crate::scene::exact_text;
-
-fn show(p: &Point) -> String {
-    format!("({}, {})", exact_text(&p.x), exact_text(&p.y))
-}
+use crate::num::exact::exact_text;
 
 /// Every point satisfies every half-plane of `window` (boundary included), exactly.
 pub fn check_inside(points: &[Point], window: &Window) -> Result<(), Violation> {
@@ -29,7 +25,7 @@ pub fn check_inside(points: &[Point], window: &Window) -> Result<(), Violation> 
                     "clip inside",
                     format!(
                         "vertex {k} {} is outside window edge {i}: a x + b y + c = {}",
-                        show(p),
+                        p,
                         exact_text(&v)
                     ),
                 ));
@@ -76,14 +72,13 @@ pub fn check_segment_clip(a: &Point, b: &Point, r: &Rect, result: Option<&(Point
     if expected.as_ref() == result {
         return Ok(());
     }
-    let fmt =
-        |s: Option<&(Point, Point)>| s.map_or("nothing".to_string(), |(p, q)| format!("{} -> {}", show(p), show(q)));
+    let fmt = |s: Option<&(Point, Point)>| s.map_or("nothing".to_string(), |(p, q)| format!("{} -> {}", p, q));
     Err(Violation::new(
         "segment clip",
         format!(
             "{} -> {}: kept {}, but the part inside is {}",
-            show(a),
-            show(b),
+            a,
+            b,
             fmt(result),
             fmt(expected.as_ref())
         ),

@@ -7,7 +7,7 @@ use num_traits::{Signed, Zero};
 use crate::convention::Target;
 use crate::edge::exact::triangle_edges;
 use crate::geom::{Point, Triangle};
-use crate::scene::exact_text;
+use crate::num::exact::exact_text;
 
 /// The exact sample position of pixel `(x, y)`.
 pub(crate) fn sample_point(x: u32, y: u32, target: &Target) -> Point {
@@ -29,7 +29,7 @@ pub(crate) fn sample_point(x: u32, y: u32, target: &Target) -> Point {
 /// ```
 pub fn explain_sample(tri: &Triangle, x: u32, y: u32, target: &Target) -> String {
     let p = sample_point(x, y, target);
-    let mut s = format!("sample ({}, {})", exact_text(&p.x), exact_text(&p.y));
+    let mut s = format!("sample {p}");
     let Some(edges) = triangle_edges(tri, target.convention.tie_rule) else {
         s.push_str(": zero-area triangle -> outside");
         return s;

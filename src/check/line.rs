@@ -8,7 +8,7 @@ use crate::convention::Target;
 use crate::line::exact::{ideal, resolve, IdealLine};
 use crate::line::{bresenham, Axes, BresenhamTie, Line, LineRule};
 use crate::model::{render_primitives, Model};
-use crate::scene::exact_text;
+use crate::num::exact::exact_text;
 
 fn fail(invariant: &'static str, message: String) -> Result<(), Violation> {
     Err(Violation::new(invariant, message))
@@ -179,15 +179,8 @@ pub fn check_diamond_agreement(line: &Line, target: &Target) -> Result<(), Viola
         Some(d) => fail(
             "diamond agreement",
             format!(
-                "({}, {}) -> ({}, {}): pixel ({}, {}): exact-snapped {:?}, fixed {:?}",
-                exact_text(&line.from.x),
-                exact_text(&line.from.y),
-                exact_text(&line.to.x),
-                exact_text(&line.to.y),
-                d.x,
-                d.y,
-                d.reference,
-                d.candidate
+                "{} -> {}: pixel ({}, {}): exact-snapped {:?}, fixed {:?}",
+                line.from, line.to, d.x, d.y, d.reference, d.candidate
             ),
         ),
     }

@@ -11,7 +11,8 @@ use rasterproof::clip::halfplane::{clip_segment_exact, HalfPlane, HalfPlaneF32, 
 use rasterproof::clip::homogeneous::{self, clip_to_window_exact, divide_then_clip_exact, ClipVertex, ProjectError};
 use rasterproof::clip::{cohen_sutherland, sutherland_hodgman, Window};
 use rasterproof::geom::Point;
-use rasterproof::scene::{exact_text, parse_scene_bytes, Scene};
+use rasterproof::num::exact::json_pair;
+use rasterproof::scene::{parse_scene_bytes, Scene};
 
 /// What `clip` was asked to do.
 #[derive(clap::Args)]
@@ -48,7 +49,7 @@ enum Arith {
 
 /// A point as `["x","y"]`, exact text.
 fn pt(p: &Point) -> String {
-    format!("[\"{}\",\"{}\"]", exact_text(&p.x), exact_text(&p.y))
+    json_pair(&p.x, &p.y)
 }
 
 fn list(points: &[Point]) -> String {

@@ -353,7 +353,7 @@ pub fn to_window_exact(v: &ClipVertex, vertex: usize, viewport: &Viewport) -> Re
     if !w.is_positive() {
         return Err(ProjectError::NotInFront {
             vertex,
-            w: crate::scene::exact_text(w),
+            w: crate::num::exact::exact_text(w),
         });
     }
     let (point, z) = viewport.map_ndc(&(x / w), &(y / w), &(z / w));

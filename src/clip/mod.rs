@@ -108,8 +108,8 @@ impl Window {
             if min >= max {
                 return Err(WindowError::Empty {
                     axis,
-                    min: crate::scene::exact_text(min),
-                    max: crate::scene::exact_text(max),
+                    min: crate::num::exact::exact_text(min),
+                    max: crate::num::exact::exact_text(max),
                 });
             }
         }

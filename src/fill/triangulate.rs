@@ -19,6 +19,7 @@ use std::fmt;
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 
 use crate::geom::{FixedPolygon, FixedTriangle};
+use crate::num::exact::{dyadic, exact_text};
 use crate::num::SubPixel;
 
 /// The most vertices (outline and holes together) [`triangulate`] accepts.
@@ -93,7 +94,7 @@ impl fmt::Display for TriangulateError {
                 at,
                 bits,
             } => {
-                let px = |v: i64| crate::scene::exact_text(&crate::num::exact::dyadic(&v.into(), *bits));
+                let px = |v: i64| exact_text(&dyadic(&v.into(), *bits));
                 write!(
                     f,
                     "not a simple polygon: {first} and {second} meet at ({}, {}) px (snapped); only the scanline filler takes self-intersecting polygons (model scanline, exact or exact-snapped)",

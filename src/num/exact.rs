@@ -1,5 +1,6 @@
 //! Exact rational scene numbers (num-rational `BigRational`): parsing of decimals and
-//! fractions exactly as written, and rounding to an integer with a stated tie rule.
+//! fractions exactly as written, their one text form ([`exact_text`], [`pair_text`],
+//! [`json_pair`]), and rounding to an integer with a stated tie rule.
 
 use std::fmt;
 
@@ -238,6 +239,34 @@ pub fn round_to_integer(x: &BigRational, rounding: Rounding) -> BigInt {
             }
         },
     }
+}
+
+/// An exact rational as text: `3` or `-7/2` (what [`parse_rational`] reads back). The one
+/// text form of an exact number in every message, scene file and report.
+///
+/// ```
+/// use num_rational::BigRational;
+/// use rasterproof::num::exact::exact_text;
+/// assert_eq!(exact_text(&BigRational::new((-14).into(), 4.into())), "-7/2");
+/// assert_eq!(exact_text(&BigRational::from_integer(3.into())), "3");
+/// ```
+pub fn exact_text(x: &BigRational) -> String {
+    if x.is_integer() {
+        x.numer().to_string()
+    } else {
+        format!("{}/{}", x.numer(), x.denom())
+    }
+}
+
+/// A point in messages: `(3, -7/2)`.
+pub fn pair_text(x: &BigRational, y: &BigRational) -> String {
+    format!("({}, {})", exact_text(x), exact_text(y))
+}
+
+/// A point as scene-file JSON, each coordinate an exact string: `["3","-7/2"]` (the
+/// scene writer and the `clip` command's output).
+pub fn json_pair(x: &BigRational, y: &BigRational) -> String {
+    format!("[\"{}\",\"{}\"]", exact_text(x), exact_text(y))
 }
 
 /// `numerator / 2^bits` as an exact rational.

@@ -14,6 +14,7 @@ use crate::convention::{Convention, PixelCentre, Preset, Rounding, Target, TieRu
 use crate::geom::{Point, Polygon, Triangle};
 use crate::interp::Rgb;
 use crate::line::{Line, LineRule};
+use crate::num::exact::{exact_text, json_pair};
 
 pub use parse::{parse_scene, parse_scene_bytes};
 
@@ -274,16 +275,7 @@ pub fn preset_ndc(preset: Preset) -> (NdcY, DepthRange) {
 
 /// A point as scene text: `["3", "-7/2"]`.
 fn pt(p: &Point) -> String {
-    format!("[\"{}\", \"{}\"]", exact_text(&p.x), exact_text(&p.y))
-}
-
-/// An exact rational as scene text: `"3"` or `"-7/2"`.
-pub fn exact_text(x: &BigRational) -> String {
-    if x.is_integer() {
-        x.numer().to_string()
-    } else {
-        format!("{}/{}", x.numer(), x.denom())
-    }
+    json_pair(&p.x, &p.y)
 }
 
 /// Bad scene input: which file, which field, what value, and why.

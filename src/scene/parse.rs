@@ -429,7 +429,7 @@ impl Parser<'_> {
                     if !c.is_integer() {
                         return Err(self.err(&field, format!(
                             "{} is not an integer: a Bresenham line joins pixel addresses (use \"rule\": \"diamond\" for fractional endpoints)",
-                            crate::scene::exact_text(c)
+                            crate::num::exact::exact_text(c)
                         )));
                     }
                     if c.abs() > BigRational::from_integer(MAX_BRESENHAM_COORD.into()) {
@@ -437,7 +437,7 @@ impl Parser<'_> {
                             &field,
                             format!(
                                 "{} is outside +-2^24, the Bresenham envelope (it walks every step)",
-                                crate::scene::exact_text(c)
+                                crate::num::exact::exact_text(c)
                             ),
                         ));
                     }

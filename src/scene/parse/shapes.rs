@@ -84,11 +84,7 @@ impl Parser<'_> {
             if locate_exact(p, &outline) == Location::Outside {
                 return Err(self.err(
                     &format!("{at}.holes[{k}][0]"),
-                    format!(
-                        "({}, {}) lies outside the outline {vf}",
-                        crate::scene::exact_text(&p.x),
-                        crate::scene::exact_text(&p.y)
-                    ),
+                    format!("{p} lies outside the outline {vf}"),
                 ));
             }
         }
@@ -132,7 +128,7 @@ impl Parser<'_> {
             if !value.is_positive() {
                 return Err(self.err(
                     &format!("viewport.{key}"),
-                    format!("{} is not positive", crate::scene::exact_text(value)),
+                    format!("{} is not positive", crate::num::exact::exact_text(value)),
                 ));
             }
         }
