@@ -12,7 +12,7 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Through
 use rasterproof::convention::{Preset, Target};
 use rasterproof::coverage::CountBuffer;
 use rasterproof::geom::{Point, Triangle};
-use rasterproof::model::{prepare, Model};
+use rasterproof::model::{prepare, Model, Primitives};
 
 #[path = "../tests/common/rng.rs"]
 mod rng;
@@ -45,9 +45,9 @@ fn half_canvas(side: i64) -> Vec<Triangle> {
 }
 
 fn covered(model: Model, tris: &[Triangle], target: &Target) -> u64 {
-    let prepared = prepare(model, tris, &target.convention).unwrap();
+    let prepared = prepare(model, &Primitives::from_triangles(tris), target).unwrap();
     let mut sink = CountBuffer::new(target.width, target.height);
-    prepared.rasterize_into(target, &mut sink);
+    prepared.draw(target, &mut sink);
     sink.total()
 }
 
@@ -71,7 +71,7 @@ fn bench_workload(
         let target = Target::new(side, side, Preset::D3d11.convention()).unwrap();
         let pixels = covered(model, tris, &target);
         group.throughput(Throughput::Elements(pixels));
-        let prepared = prepare(model, tris, &target.convention).unwrap();
+        let prepared = prepare(model, &Primitives::from_triangles(tris), &target).unwrap();
         let mut sink = CountBuffer::new(side, side);
         let label = if is_exact {
             format!("{model} ({} tris, {side}px)", tris.len())
@@ -79,7 +79,7 @@ fn bench_workload(
             model.to_string()
         };
         group.bench_function(BenchmarkId::from_parameter(label), |b| {
-            b.iter(|| prepared.rasterize_into(&target, &mut sink));
+            b.iter(|| prepared.draw(&target, &mut sink));
         });
     }
     group.finish();

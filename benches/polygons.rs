@@ -13,7 +13,7 @@ use rasterproof::convention::{Preset, Target};
 use rasterproof::coverage::CountBuffer;
 use rasterproof::fill::triangulate::validate;
 use rasterproof::geom::Polygon;
-use rasterproof::model::{prepare_polygons, Model, PreparedPolygon};
+use rasterproof::model::{prepare, Model, PreparedScene, Primitives};
 use rasterproof::strategy::polygon::simple_polygon;
 
 #[path = "../tests/common/rng.rs"]
@@ -38,13 +38,19 @@ fn polygons(n: usize, target: &Target) -> Vec<Polygon> {
     out
 }
 
-fn fill_all(prepared: &[PreparedPolygon], target: &Target, sink: &mut CountBuffer) {
-    for (k, p) in prepared.iter().enumerate() {
-        p.fill(u32::try_from(k).unwrap(), target, sink);
-    }
+fn prepare_polygons(model: Model, polygons: &[Polygon], target: &Target) -> PreparedScene {
+    let primitives = Primitives {
+        polygons: polygons.to_vec(),
+        ..Primitives::default()
+    };
+    prepare(model, &primitives, target).unwrap()
 }
 
-fn covered(prepared: &[PreparedPolygon], target: &Target) -> u64 {
+fn fill_all(prepared: &PreparedScene, target: &Target, sink: &mut CountBuffer) {
+    prepared.draw(target, sink);
+}
+
+fn covered(prepared: &PreparedScene, target: &Target) -> u64 {
     let mut sink = CountBuffer::new(SIDE, SIDE);
     fill_all(prepared, target, &mut sink);
     sink.total()
@@ -61,18 +67,18 @@ fn bench(c: &mut Criterion) {
         (Model::Fixed, "fixed (pre-triangulated)", &polys[..]),
         (Model::ExactSnapped, "exact-snapped (first 5)", &polys[..5]),
     ] {
-        let prepared = prepare_polygons(model, subset, &target.convention).unwrap();
+        let prepared = prepare_polygons(model, subset, &target);
         group.throughput(Throughput::Elements(covered(&prepared, &target)));
         group.bench_function(BenchmarkId::from_parameter(label), |b| {
             b.iter(|| fill_all(&prepared, &target, &mut sink));
         });
     }
     // Triangulation included: the whole route of the fixed model per frame.
-    let prepared = prepare_polygons(Model::Fixed, &polys, &target.convention).unwrap();
+    let prepared = prepare_polygons(Model::Fixed, &polys, &target);
     group.throughput(Throughput::Elements(covered(&prepared, &target)));
     group.bench_function(BenchmarkId::from_parameter("triangulate + fixed"), |b| {
         b.iter(|| {
-            let prepared = prepare_polygons(Model::Fixed, &polys, &target.convention).unwrap();
+            let prepared = prepare_polygons(Model::Fixed, &polys, &target);
             fill_all(&prepared, &target, &mut sink);
         });
     });

@@ -57,6 +57,9 @@ impl Point {
     }
 }
 
+/// An 8-bit RGB colour, 0-255 per channel: a vertex colour of a scene triangle.
+pub type Rgb = [u8; 3];
+
 /// A triangle with exact vertices, in the order given (either winding).
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct Triangle {

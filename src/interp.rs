@@ -16,12 +16,10 @@ use crate::convention::Target;
 use crate::edge::exact::{area2, edge_function};
 use crate::edge::fixed;
 use crate::edge::float::{edge_f32, edge_f64};
-use crate::geom::{FixedTriangle, Point, Triangle};
+use crate::geom::{FixedTriangle, Point, Rgb, Triangle};
 use crate::num::exact::round_to_integer;
 use crate::num::Rounding;
-
-/// An RGB colour, 0-255 per channel.
-pub type Rgb = [u8; 3];
+use crate::raster::FixedGrid;
 
 /// Exact barycentrics of `p` (inside or outside: outside they extrapolate);
 /// `None` for a zero-area triangle.
@@ -59,12 +57,9 @@ pub struct FixedBarycentrics {
 /// (on the canvas or not) and a [`FixedTriangle`], |values| < 2^100, so nothing overflows.
 /// (On the canvas they also fit the i64 the `fixed` model steps with.)
 pub fn barycentric_fixed(t: &FixedTriangle, x: u32, y: u32, target: &Target) -> FixedBarycentrics {
-    let conv = &target.convention;
-    let one = 1i128 << conv.subpixel_bits;
-    let c = i128::from(conv.pixel_centre.offset_subpixels(conv.subpixel_bits));
-    let p = [i128::from(x) * one + c, i128::from(y) * one + c];
+    let p = FixedGrid::of(&target.convention).sample_point(x, y).map(i128::from);
     let [v0, v1, v2] = t.coords().map(|v| v.map(i128::from));
-    let e = |a: [i128; 2], b: [i128; 2], p: [i128; 2]| (p[0] - a[0]) * (b[1] - a[1]) - (p[1] - a[1]) * (b[0] - a[0]);
+    let e = crate::edge::fixed::edge_function_wide;
     FixedBarycentrics {
         w: [e(v1, v2, p), e(v2, v0, p), e(v0, v1, p)],
         area2: i128::from(fixed::area2(t)),

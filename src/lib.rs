@@ -25,15 +25,30 @@
 //! ```
 //! use rasterproof::convention::{Preset, Target};
 //! use rasterproof::geom::{Point, Triangle};
-//! use rasterproof::model::{render, Model};
+//! use rasterproof::model::{render_triangles, Model};
 //! // Two triangles sharing the diagonal of a 4x4 square: every pixel is owned once.
 //! let (a, b, c, d) = (Point::from_ints(0, 0), Point::from_ints(4, 0), Point::from_ints(4, 4), Point::from_ints(0, 4));
 //! let mesh = [Triangle::new(a.clone(), b, c.clone()), Triangle::new(a, c, d)];
 //! let target = Target::new(4, 4, Preset::D3d11.convention()).unwrap();
-//! let coverage = render(Model::Fixed, &mesh, &target).unwrap();
+//! let coverage = render_triangles(Model::Fixed, &mesh, &target).unwrap();
 //! assert_eq!(coverage.covered_pixels(), 16);
 //! assert_eq!(coverage.double_covered().count(), 0);
 //! ```
+//!
+//! ## Entry points
+//!
+//! | to | call |
+//! |---|---|
+//! | render a scene file with a model | [`scene::parse_scene`], then [`model::render`]`(model, &scene.primitives(), &target)` |
+//! | render these triangles | [`model::render_triangles`] |
+//! | prepare once, draw many times (benchmarks, a colour picture) | [`model::prepare`], [`model::PreparedScene::draw`] |
+//! | one triangle, polygon or line in one arithmetic | `tri::{exact, fixed, scanline, float}::rasterize*`, `fill::polygon`, `line::*` |
+//! | where a pixel's sample sits; which pixels a box covers | [`raster`] |
+//! | check an invariant on any coverage | `check::check_*` |
+//! | clip exactly or in floats | [`clip`] |
+//!
+//! The layers and the pipeline a scene takes from file to coverage are drawn in
+//! ARCHITECTURE.md at the top of the repository.
 //!
 //! ## Features
 //! - `proptest`: the strategies in `strategy` (random triangles, spade meshes, tie-heavy
@@ -55,7 +70,7 @@ pub mod interp;
 pub mod line;
 pub mod model;
 pub mod num;
-pub mod render;
+pub mod raster;
 pub mod scene;
 #[cfg(feature = "proptest")]
 pub mod strategy;

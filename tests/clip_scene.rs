@@ -16,8 +16,7 @@ use rasterproof::clip::Window;
 use rasterproof::convention::{PixelCentre, Preset, Target};
 use rasterproof::coverage::Coverage;
 use rasterproof::geom::{FillRule, Point, Polygon};
-use rasterproof::model::Model;
-use rasterproof::render::render_scene;
+use rasterproof::model::{render, Model};
 use rasterproof::scene::{parse_scene, Scene};
 use rasterproof::strategy::clip::{any_window, rect_window};
 use rasterproof::strategy::polygon::simple_polygon;
@@ -120,7 +119,7 @@ fn render_honours_clip() {
     scene.polygons.clear();
     scene.clip_space_triangles.clear();
     let target = scene.target().unwrap();
-    let exact = render_scene(Model::Exact, &scene, &target).unwrap();
+    let exact = render(Model::Exact, &scene.primitives(), &target).unwrap();
     assert_eq!(exact.covered_pixels(), 55);
     for model in [
         Model::ExactSnapped,
@@ -130,7 +129,7 @@ fn render_honours_clip() {
         Model::Float64,
     ] {
         assert_eq!(
-            diff(&exact, &render_scene(model, &scene, &target).unwrap()),
+            diff(&exact, &render(model, &scene.primitives(), &target).unwrap()),
             vec![],
             "{model}"
         );
@@ -314,12 +313,12 @@ proptest! {
         scene.polygons.push(Polygon { fill_rule: FillRule::NonZero, ..poly });
         scene.clip = Some(window);
         let target = scene.target().unwrap();
-        let Ok(fixed) = render_scene(Model::Fixed, &scene, &target) else {
+        let Ok(fixed) = render(Model::Fixed, &scene.primitives(), &target) else {
             return Err(TestCaseError::reject("outside the envelope or not triangulable"));
         };
-        let exact = render_scene(Model::ExactSnapped, &scene, &target).unwrap();
+        let exact = render(Model::ExactSnapped, &scene.primitives(), &target).unwrap();
         prop_assert_eq!(diff(&exact, &fixed), vec![]);
-        prop_assert_eq!(diff(&exact, &render_scene(Model::Scanline, &scene, &target).unwrap()), vec![]);
+        prop_assert_eq!(diff(&exact, &render(Model::Scanline, &scene.primitives(), &target).unwrap()), vec![]);
     }
 
     /// Cyrus-Beck on a rectangle's half-planes keeps exactly what Cohen-Sutherland keeps.

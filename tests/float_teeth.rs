@@ -6,7 +6,7 @@ use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use rasterproof::check::{check_agreement, check_watertight};
 use rasterproof::convention::{Preset, Target, MAX_CANVAS};
-use rasterproof::model::{render, Model};
+use rasterproof::model::{render_triangles, Model};
 use rasterproof::strategy::{delaunay_mesh, tie_heavy_mesh, Mesh};
 
 fn meshes(strategy: impl Strategy<Value = Mesh>, n: usize, seed: u8) -> Vec<Mesh> {
@@ -21,11 +21,11 @@ fn count_violations(meshes: &[Mesh], side: u32, model: Model, reference: Model) 
     let target = Target::new(side, side, Preset::D3d11.convention()).unwrap();
     let (mut watertight, mut agreement) = (0, 0);
     for m in meshes {
-        let cov = render(model, &m.triangles, &target).unwrap();
+        let cov = render_triangles(model, &m.triangles, &target).unwrap();
         if check_watertight(&m.triangles, &m.outline, &cov, &target).is_err() {
             watertight += 1;
         }
-        let r = render(reference, &m.triangles, &target).unwrap();
+        let r = render_triangles(reference, &m.triangles, &target).unwrap();
         if check_agreement(reference.name(), &r, model.name(), &cov, &m.triangles, &target).is_err() {
             agreement += 1;
         }

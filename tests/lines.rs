@@ -11,7 +11,7 @@ use rasterproof::check::{
 use rasterproof::convention::{PixelCentre, Preset, Target};
 use rasterproof::geom::Point;
 use rasterproof::line::{bresenham, dda, BresenhamTie, Line, LineRule};
-use rasterproof::model::{render_primitives, Model};
+use rasterproof::model::{render, Model, Primitives};
 use rasterproof::strategy::{diamond_line, long_pixel_line, pixel_line};
 
 const TIES: [BresenhamTie; 2] = [BresenhamTie::Stay, BresenhamTie::Step];
@@ -123,9 +123,16 @@ fn zero_length_lines() {
     };
     for model in [Model::Exact, Model::ExactSnapped, Model::Fixed] {
         assert_eq!(
-            render_primitives(model, &[], std::slice::from_ref(&point), &[], &target)
-                .unwrap()
-                .covered_pixels(),
+            render(
+                model,
+                &Primitives {
+                    lines: vec![point.clone()],
+                    ..Primitives::default()
+                },
+                &target
+            )
+            .unwrap()
+            .covered_pixels(),
             0,
             "{model}"
         );
@@ -139,8 +146,24 @@ fn diamond(a: (i64, i64, i64, i64), target: &Target) -> Vec<(u32, u32)> {
         to: Point::from_fractions(x1, 2, y1, 2),
         rule: LineRule::Diamond,
     };
-    let exact = render_primitives(Model::Exact, &[], std::slice::from_ref(&line), &[], target).unwrap();
-    let fixed = render_primitives(Model::Fixed, &[], &[line], &[], target).unwrap();
+    let exact = render(
+        Model::Exact,
+        &Primitives {
+            lines: vec![line.clone()],
+            ..Primitives::default()
+        },
+        target,
+    )
+    .unwrap();
+    let fixed = render(
+        Model::Fixed,
+        &Primitives {
+            lines: vec![line],
+            ..Primitives::default()
+        },
+        target,
+    )
+    .unwrap();
     assert_eq!(exact, fixed);
     exact.iter().map(|(x, y, _)| (x, y)).collect()
 }
@@ -220,8 +243,8 @@ proptest! {
         let tie = if stay { BresenhamTie::Stay } else { BresenhamTie::Step };
         let line = Line { from: Point::from_ints(a[0], a[1]), to: Point::from_ints(b[0], b[1]), rule: LineRule::Bresenham(tie) };
         let target = Target::new(24, 24, Preset::D3d11.convention()).unwrap();
-        let exact = render_primitives(Model::Exact, &[], std::slice::from_ref(&line), &[], &target).unwrap();
-        let fixed = render_primitives(Model::Fixed, &[], &[line], &[], &target).unwrap();
+        let exact = render(Model::Exact, &Primitives { lines: vec![line.clone()], ..Primitives::default() }, &target).unwrap();
+        let fixed = render(Model::Fixed, &Primitives { lines: vec![line], ..Primitives::default() }, &target).unwrap();
         prop_assert_eq!(exact, fixed);
     }
 

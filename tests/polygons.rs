@@ -14,7 +14,7 @@ use rasterproof::coverage::Coverage;
 use rasterproof::fill::polygon::{rasterize, rasterize_exact};
 use rasterproof::fill::triangulate::{triangulate, validate, TriangulateError};
 use rasterproof::geom::{FillRule, FixedPolygon, Point, Polygon, Triangle};
-use rasterproof::model::{render_primitives, Model};
+use rasterproof::model::{render, Model, Primitives};
 use rasterproof::strategy::any_triangle;
 use rasterproof::strategy::polygon::{any_polygon, simple_polygon, stellated_polygon};
 
@@ -23,7 +23,15 @@ fn pts(v: &[(i64, i64)]) -> Vec<Point> {
 }
 
 fn fill(poly: &Polygon, target: &Target, model: Model) -> Coverage {
-    render_primitives(model, &[], &[], std::slice::from_ref(poly), target).unwrap()
+    render(
+        model,
+        &Primitives {
+            polygons: vec![poly.clone()],
+            ..Primitives::default()
+        },
+        target,
+    )
+    .unwrap()
 }
 
 /// The pixels of row `y`, as column numbers.
@@ -341,7 +349,15 @@ fn scanline_at_the_envelope_edge() {
         ],
         FillRule::NonZero,
     );
-    let err = render_primitives(Model::Scanline, &[], &[], &[beyond], &target).unwrap_err();
+    let err = render(
+        Model::Scanline,
+        &Primitives {
+            polygons: vec![beyond],
+            ..Primitives::default()
+        },
+        &target,
+    )
+    .unwrap_err();
     assert!(err.to_string().starts_with("polygons[0].v[1].x: "), "{err}");
 }
 
@@ -356,11 +372,29 @@ fn polygon_ids_follow_triangles_and_lines() {
         rule: rasterproof::line::LineRule::Bresenham(rasterproof::line::BresenhamTie::Stay),
     };
     let poly = Polygon::new(pts(&[(10, 10), (14, 10), (14, 14), (10, 14)]), FillRule::NonZero);
-    let c = render_primitives(Model::Scanline, &[tri], &[line], &[poly], &target).unwrap();
+    let c = render(
+        Model::Scanline,
+        &Primitives {
+            triangles: vec![tri],
+            lines: vec![line],
+            polygons: vec![poly],
+            ..Primitives::default()
+        },
+        &target,
+    )
+    .unwrap();
     assert_eq!(c.owners(0, 0), &[0]);
     assert_eq!(c.owners(8, 1), &[1]);
     assert_eq!(c.owners(12, 12), &[2]);
-    let err = render_primitives(Model::Float32, &[], &[], &[pentagram(FillRule::NonZero)], &target).unwrap_err();
+    let err = render(
+        Model::Float32,
+        &Primitives {
+            polygons: vec![pentagram(FillRule::NonZero)],
+            ..Primitives::default()
+        },
+        &target,
+    )
+    .unwrap_err();
     assert!(
         err.to_string()
             .contains("polygons[0]: the float32 model has no polygon fill"),

@@ -13,7 +13,7 @@ use rasterproof::check::{
 use rasterproof::convention::{Preset, Target, MAX_CANVAS};
 use rasterproof::geom::{Point, Triangle};
 use rasterproof::interp::{gouraud_exact, Plane};
-use rasterproof::model::{render, Model};
+use rasterproof::model::{render_triangles, Model};
 use rasterproof::strategy::{any_triangle, delaunay_mesh, tie_heavy_mesh, tie_heavy_triangle, triangle, Scale};
 
 const CANVAS: u32 = 32;
@@ -27,8 +27,8 @@ fn target(side: u32, preset: Preset) -> Target {
 }
 
 fn agree(tris: &[Triangle], target: &Target) -> Result<(), TestCaseError> {
-    let exact = render(Model::ExactSnapped, tris, target).unwrap();
-    let fixed = render(Model::Fixed, tris, target).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let exact = render_triangles(Model::ExactSnapped, tris, target).unwrap();
+    let fixed = render_triangles(Model::Fixed, tris, target).map_err(|e| TestCaseError::fail(e.to_string()))?;
     check_agreement("exact-snapped", &exact, "fixed", &fixed, tris, target)
         .map_err(|v| TestCaseError::fail(v.to_string()))
 }
@@ -66,7 +66,7 @@ proptest! {
         let raw: Vec<[[BigRational; 2]; 3]> = ts.iter().map(|t| t.v.clone().map(|p| [p.x, p.y])).collect();
         let expected = common::render(&raw, 12, 12, conv);
         for model in [Model::ExactSnapped, Model::Fixed] {
-            let got = coverage_map(&render(model, &ts, &target).unwrap());
+            let got = coverage_map(&render_triangles(model, &ts, &target).unwrap());
             prop_assert_eq!(&got, &expected, "{}", model);
         }
     }
@@ -77,7 +77,7 @@ proptest! {
     fn meshes_are_watertight(mesh in delaunay_mesh([-4, -4], 40, 8, 24), p in preset()) {
         let target = target(CANVAS, p);
         for model in [Model::ExactSnapped, Model::Fixed] {
-            let cov = render(model, &mesh.triangles, &target).unwrap();
+            let cov = render_triangles(model, &mesh.triangles, &target).unwrap();
             ok(check_no_double_cover(&cov))?;
             ok(check_watertight(&mesh.triangles, &mesh.outline, &cov, &target))?;
         }
@@ -89,7 +89,7 @@ proptest! {
     fn tie_heavy_meshes_are_watertight(mesh in tie_heavy_mesh(CANVAS, 24), p in preset()) {
         let target = target(CANVAS, p);
         for model in [Model::ExactSnapped, Model::Fixed] {
-            let cov = render(model, &mesh.triangles, &target).unwrap();
+            let cov = render_triangles(model, &mesh.triangles, &target).unwrap();
             ok(check_watertight(&mesh.triangles, &mesh.outline, &cov, &target))?;
         }
         agree(&mesh.triangles, &target)?;
@@ -173,7 +173,7 @@ fn fixed_at_the_envelope_edge() {
     ];
     for t in &cases {
         agree(std::slice::from_ref(t), &target).unwrap();
-        let cov = render(Model::Fixed, std::slice::from_ref(t), &target).unwrap();
+        let cov = render_triangles(Model::Fixed, std::slice::from_ref(t), &target).unwrap();
         assert!(cov.covered_pixels() > 0, "the envelope triangles cross the canvas");
     }
     let beyond = Triangle::new(
@@ -181,7 +181,9 @@ fn fixed_at_the_envelope_edge() {
         Point::from_ints(3, 0),
         Point::from_fractions(edge * 256 + 1, 256, 5, 1),
     );
-    let err = render(Model::Fixed, &[beyond], &target).unwrap_err().to_string();
+    let err = render_triangles(Model::Fixed, &[beyond], &target)
+        .unwrap_err()
+        .to_string();
     assert!(err.starts_with("triangles[0].v[2].x: "), "{err}");
     assert!(err.contains("536870913 subpixels"), "{err}");
 }

@@ -9,12 +9,12 @@ use proptest::prelude::*;
 use rasterproof::check::{check_agreement, check_watertight};
 use rasterproof::convention::{PixelCentre, Preset, Target, MAX_CANVAS};
 use rasterproof::geom::{Point, Triangle};
-use rasterproof::model::{render, Model};
+use rasterproof::model::{render_triangles, Model};
 use rasterproof::strategy::{any_triangle, delaunay_mesh, tie_heavy_mesh, triangle, Scale};
 
 fn agree(tris: &[Triangle], target: &Target) -> Result<(), TestCaseError> {
-    let exact = render(Model::ExactSnapped, tris, target).unwrap();
-    let scan = render(Model::Scanline, tris, target).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let exact = render_triangles(Model::ExactSnapped, tris, target).unwrap();
+    let scan = render_triangles(Model::Scanline, tris, target).map_err(|e| TestCaseError::fail(e.to_string()))?;
     check_agreement("exact-snapped", &exact, "scanline", &scan, tris, target)
         .map_err(|v| TestCaseError::fail(v.to_string()))
 }
@@ -51,7 +51,7 @@ proptest! {
         for m in [&mesh, &tie_mesh] {
             for p in [Preset::D3d11, Preset::Gl] {
                 let target = Target::new(32, 32, p.convention()).unwrap();
-                let cov = render(Model::Scanline, &m.triangles, &target).unwrap();
+                let cov = render_triangles(Model::Scanline, &m.triangles, &target).unwrap();
                 check_watertight(&m.triangles, &m.outline, &cov, &target).map_err(|v| TestCaseError::fail(v.to_string()))?;
             }
         }

@@ -26,7 +26,7 @@ use num_rational::BigRational;
 use rasterproof::convention::Target;
 use rasterproof::geom::Point;
 use rasterproof::line::{bresenham, BresenhamTie, Line, LineRule};
-use rasterproof::model::{render_primitives, Model, ModelError};
+use rasterproof::model::{render, Model, ModelError, Primitives};
 use rasterproof::num::fixed::MAX_SUBPIXEL_MAGNITUDE;
 
 /// The largest |Bresenham endpoint coordinate| drawn (keeps each run fast).
@@ -167,8 +167,8 @@ fn check_diamond(input: &Input) {
 
     let lines = std::slice::from_ref(&line);
     let exact =
-        render_primitives(Model::ExactSnapped, &[], lines, &[], &target).expect("exact-snapped takes every diamond line");
-    match render_primitives(Model::Fixed, &[], lines, &[], &target) {
+        render(Model::ExactSnapped, &Primitives { lines: lines.to_vec(), ..Primitives::default() }, &target).expect("exact-snapped takes every diamond line");
+    match render(Model::Fixed, &Primitives { lines: lines.to_vec(), ..Primitives::default() }, &target) {
         Ok(fixed) => {
             assert_eq!(first_outside, None, "fixed accepted a coordinate beyond 2^29 subpixels");
             assert_eq!(

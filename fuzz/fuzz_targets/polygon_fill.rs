@@ -14,7 +14,7 @@ use rasterproof::check::{check_agreement, check_triangulation};
 use rasterproof::convention::Target;
 use rasterproof::fill::triangulate::{triangulate, TriangulateError};
 use rasterproof::geom::{FillRule, FixedTriangle, Point, Polygon};
-use rasterproof::model::{render_primitives, Model};
+use rasterproof::model::{render, Model, Primitives};
 
 #[derive(Debug, Clone, Arbitrary)]
 struct Input {
@@ -52,8 +52,8 @@ fuzz_target!(|input: Input| {
     let poly = Polygon { outline, holes, fill_rule: rule };
     let one = std::slice::from_ref(&poly);
 
-    let reference = render_primitives(Model::ExactSnapped, &[], &[], one, &target).expect("the oracle takes any polygon");
-    let scan = render_primitives(Model::Scanline, &[], &[], one, &target).expect("small coordinates are in the envelope");
+    let reference = render(Model::ExactSnapped, &Primitives { polygons: one.to_vec(), ..Primitives::default() }, &target).expect("the oracle takes any polygon");
+    let scan = render(Model::Scanline, &Primitives { polygons: one.to_vec(), ..Primitives::default() }, &target).expect("small coordinates are in the envelope");
     if let Err(v) = check_agreement("exact-snapped", &reference, "scanline", &scan, &[], &target) {
         panic!("{v}\n{poly:?}");
     }

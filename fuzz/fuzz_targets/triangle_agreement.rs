@@ -14,7 +14,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use rasterproof::convention::Target;
 use rasterproof::geom::{Point, Triangle};
-use rasterproof::model::{render, Model, ModelError};
+use rasterproof::model::{render_triangles, Model, ModelError};
 use rasterproof::num::fixed::MAX_SUBPIXEL_MAGNITUDE;
 
 /// One coordinate: `num / den` pixels, placed according to `mode`.
@@ -99,9 +99,9 @@ fuzz_target!(|input: Input| {
         s > &hi || s < &lo
     });
 
-    let exact = render(Model::ExactSnapped, std::slice::from_ref(&triangle), &target)
+    let exact = render_triangles(Model::ExactSnapped, std::slice::from_ref(&triangle), &target)
         .expect("the exact-snapped model takes every triangle");
-    match render(Model::Fixed, std::slice::from_ref(&triangle), &target) {
+    match render_triangles(Model::Fixed, std::slice::from_ref(&triangle), &target) {
         Ok(fixed) => {
             assert_eq!(first_outside, None, "fixed accepted a coordinate beyond 2^29 subpixels");
             assert_eq!(fixed, exact, "fixed and exact-snapped disagree on {triangle:?}");

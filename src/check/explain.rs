@@ -6,13 +6,9 @@ use num_traits::{Signed, Zero};
 
 use crate::convention::Target;
 use crate::edge::exact::triangle_edges;
-use crate::geom::{Point, Triangle};
+use crate::geom::Triangle;
 use crate::num::exact::exact_text;
-
-/// The exact sample position of pixel `(x, y)`.
-pub(crate) fn sample_point(x: u32, y: u32, target: &Target) -> Point {
-    crate::tri::sample_point(x, y, &target.convention.pixel_centre.offset())
-}
+use crate::raster::sample_exact;
 
 /// Why the exact model puts pixel `(x, y)` inside or outside `tri`: the sample, each
 /// edge's exact value and inclusive flag, and the verdict.
@@ -28,7 +24,7 @@ pub(crate) fn sample_point(x: u32, y: u32, target: &Target) -> Point {
 /// assert!(why.ends_with("-> outside"), "{why}");
 /// ```
 pub fn explain_sample(tri: &Triangle, x: u32, y: u32, target: &Target) -> String {
-    let p = sample_point(x, y, target);
+    let p = sample_exact(x, y, target);
     let mut s = format!("sample {p}");
     let Some(edges) = triangle_edges(tri, target.convention.tie_rule) else {
         s.push_str(": zero-area triangle -> outside");

@@ -1,12 +1,12 @@
 //! Invariant 7 (fills): a triangulation of a polygon covers exactly the polygon's fill,
 //! each pixel once.
 
-use super::explain::sample_point;
 use super::Violation;
 use crate::convention::Target;
 use crate::coverage::Coverage;
 use crate::fill::polygon::{contour_winding_exact, rasterize_exact};
 use crate::geom::{Polygon, Triangle};
+use crate::raster::sample_exact;
 
 /// `triangles` (any triangulator's output for `polygon`) cover, by the exact oracle,
 /// exactly the samples of the polygon's fill, and no sample twice. The violation names
@@ -45,7 +45,7 @@ pub fn check_triangulation(polygon: &Polygon, triangles: &[Triangle], target: &T
     let Some((x, y, owners, inside)) = bad.first() else {
         return Ok(());
     };
-    let sample = sample_point(*x, *y, target);
+    let sample = sample_exact(*x, *y, target);
     let w: Vec<i64> = polygon
         .contours()
         .map(|c| contour_winding_exact(&sample, c, target.convention.tie_rule))

@@ -4,10 +4,10 @@
 use super::Violation;
 use crate::convention::Target;
 use crate::geom::Triangle;
-use crate::model::{render, Model, ModelError};
+use crate::model::{render_triangles, Model, ModelError};
 
 fn rendered(model: Model, t: &Triangle, target: &Target) -> Result<crate::coverage::Coverage, Violation> {
-    render(model, std::slice::from_ref(t), target)
+    render_triangles(model, std::slice::from_ref(t), target)
         .map_err(|e: ModelError| Violation::new("invariance", format!("{model} refused the triangle: {e}")))
 }
 
@@ -48,7 +48,7 @@ pub fn check_rotation_and_winding(model: Model, t: &Triangle, target: &Target) -
 /// the other way, so a translation across the origin can legitimately move an edge.
 pub fn check_translation(model: Model, t: &Triangle, dx: i64, dy: i64, target: &Target) -> Result<(), Violation> {
     let base = rendered(model, t, target)?;
-    let Ok(moved) = render(model, std::slice::from_ref(&t.translated(dx, dy)), target) else {
+    let Ok(moved) = render_triangles(model, std::slice::from_ref(&t.translated(dx, dy)), target) else {
         return Ok(());
     };
     let (w, h) = (i64::from(target.width), i64::from(target.height));

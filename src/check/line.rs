@@ -7,7 +7,7 @@ use super::{diff, Violation};
 use crate::convention::Target;
 use crate::line::exact::{ideal, resolve, IdealLine};
 use crate::line::{bresenham, Axes, BresenhamTie, Line, LineRule};
-use crate::model::{render_primitives, Model};
+use crate::model::{render, Model, Primitives};
 use crate::num::exact::exact_text;
 
 fn fail(invariant: &'static str, message: String) -> Result<(), Violation> {
@@ -169,10 +169,11 @@ pub fn check_diamond_agreement(line: &Line, target: &Target) -> Result<(), Viola
     if line.rule != LineRule::Diamond {
         return Ok(());
     }
-    let lines = std::slice::from_ref(line);
-    let render = |m| {
-        render_primitives(m, &[], lines, &[], target).map_err(|e| Violation::new("diamond agreement", e.to_string()))
+    let primitives = Primitives {
+        lines: vec![line.clone()],
+        ..Primitives::default()
     };
+    let render = |m| render(m, &primitives, target).map_err(|e| Violation::new("diamond agreement", e.to_string()));
     let (exact, fixed) = (render(Model::ExactSnapped)?, render(Model::Fixed)?);
     match diff(&exact, &fixed).first() {
         None => Ok(()),

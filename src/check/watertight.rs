@@ -42,7 +42,7 @@ pub fn check_watertight(
 ) -> Result<(), Violation> {
     let edges = outline_edges(outline, target);
     let inside = |x: u32, y: u32| {
-        let p = super::explain::sample_point(x, y, target);
+        let p = crate::raster::sample_exact(x, y, target);
         !edges.is_empty() && edges.iter().all(|e| e.contains(&p))
     };
     let mut problems = Vec::new();
@@ -104,18 +104,6 @@ fn outline_edges(outline: &[Point], target: &Target) -> Vec<ExactEdge> {
 }
 
 fn bbox(outline: &[Point], target: &Target) -> Option<(u32, u32, u32, u32)> {
-    let c = target.convention.pixel_centre.offset();
-    let lo = |v: &BigRational| crate::tri::saturating_index((v - &c).ceil().to_integer());
-    let hi = |v: &BigRational| crate::tri::saturating_index((v - &c).floor().to_integer());
-    let min_x = outline.iter().map(|p| &p.x).min()?;
-    let max_x = outline.iter().map(|p| &p.x).max()?;
-    let min_y = outline.iter().map(|p| &p.y).min()?;
-    let max_y = outline.iter().map(|p| &p.y).max()?;
-    let r = crate::tri::PixelRange::clamped(
-        [lo(min_x), lo(min_y)],
-        [hi(max_x), hi(max_y)],
-        target.width,
-        target.height,
-    )?;
+    let r = crate::raster::exact_sample_range(outline.iter(), target)?;
     Some((r.x0, r.x1, r.y0, r.y1))
 }

@@ -20,7 +20,7 @@ use rasterproof::convention::{Preset, Target, MAX_CANVAS};
 use rasterproof::fill::triangulate::{triangulate, validate};
 use rasterproof::geom::{FixedTriangle, Point, Polygon, Triangle};
 use rasterproof::line::{bresenham, dda, BresenhamTie, Line, LineRule};
-use rasterproof::model::{render, render_primitives, Model};
+use rasterproof::model::{render, render_triangles, Model, Primitives};
 use rasterproof::scene::Scene;
 use rasterproof::strategy::clip::{any_window, rect_window};
 use rasterproof::strategy::polygon::{any_polygon, simple_polygon};
@@ -210,10 +210,10 @@ fn run_case(c: &Case) -> (Vec<Outcome>, Vec<f64>) {
     ];
     for (mesh, side, tag, models) in meshes {
         let mesh_target = target(side, c.preset);
-        let reference_exact = render(Model::Exact, &mesh.triangles, &mesh_target);
-        let reference_snapped = render(Model::ExactSnapped, &mesh.triangles, &mesh_target);
+        let reference_exact = render_triangles(Model::Exact, &mesh.triangles, &mesh_target);
+        let reference_snapped = render_triangles(Model::ExactSnapped, &mesh.triangles, &mesh_target);
         for &model in models {
-            let (watertight, agreement) = match render(model, &mesh.triangles, &mesh_target) {
+            let (watertight, agreement) = match render_triangles(model, &mesh.triangles, &mesh_target) {
                 Err(e) => {
                     let v = Violation {
                         invariant: "watertight",
@@ -250,9 +250,9 @@ fn run_case(c: &Case) -> (Vec<Outcome>, Vec<f64>) {
     }
 
     // 3. agreement on a single random triangle (every family).
-    if let Ok(reference) = render(Model::ExactSnapped, tri, &tri_target) {
+    if let Ok(reference) = render_triangles(Model::ExactSnapped, tri, &tri_target) {
         for model in [Model::Fixed, Model::Scanline] {
-            let result = render(model, tri, &tri_target)
+            let result = render_triangles(model, tri, &tri_target)
                 .map_err(|e| Violation {
                     invariant: "agreement",
                     message: e.to_string(),
@@ -404,7 +404,15 @@ fn polygon_checks(c: &Case, out: &mut Vec<Outcome>) {
         });
     };
     let fill = |model, p: &Polygon| {
-        render_primitives(model, &[], &[], std::slice::from_ref(p), &target).map_err(|e| Violation {
+        render(
+            model,
+            &Primitives {
+                polygons: vec![p.clone()],
+                ..Primitives::default()
+            },
+            &target,
+        )
+        .map_err(|e| Violation {
             invariant: "polygon agreement",
             message: e.to_string(),
         })

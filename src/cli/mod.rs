@@ -5,6 +5,16 @@ pub mod clip;
 pub mod flood;
 pub mod render;
 
+/// The `--model` help: every model with its one-line description, from
+/// [`rasterproof::model::Model::ALL`] (a new model appears here by itself).
+pub fn model_help() -> String {
+    let mut s = String::from("The model that renders the scene (default exact-snapped):");
+    for m in rasterproof::model::Model::ALL {
+        s.push_str(&format!("\n  {:<14} {}", m.name(), m.describe()));
+    }
+    s
+}
+
 /// Writes to stdout through a buffer; a closed pipe (`| head`) ends quietly instead of
 /// panicking.
 pub fn write_stdout(body: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>) -> Result<(), String> {

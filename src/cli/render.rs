@@ -5,7 +5,6 @@ use std::process::ExitCode;
 
 use rasterproof::convention::Preset;
 use rasterproof::model::{prepare, Model};
-use rasterproof::render::render_scene;
 use rasterproof::scene::parse_scene_bytes;
 
 /// What `render` was asked to do.
@@ -13,10 +12,8 @@ use rasterproof::scene::parse_scene_bytes;
 pub struct Options {
     /// The scene file (JSON).
     scene: PathBuf,
-    /// exact, exact-snapped (default), fixed (alias bresenham), scanline, float32 (alias dda32),
-    /// float64 (alias dda64), float32-naive, float64-naive. Polygons: exact, exact-snapped,
-    /// scanline (active edge table), fixed (triangulated; simple polygons only).
-    #[arg(long, default_value = "exact-snapped")]
+    /// The model (default exact-snapped); `--help` lists them.
+    #[arg(long, default_value = "exact-snapped", long_help = crate::cli::model_help())]
     model: String,
     /// Override the scene's preset: d3d11, vulkan, gl, cts (the scene's explicit
     /// overrides still apply on top).
@@ -62,7 +59,8 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         .target()
         .ok_or_else(|| format!("{name}: invalid canvas or convention"))?;
     let fail = |e: rasterproof::model::ModelError| format!("{name}: {e} (model {model})");
-    let coverage = render_scene(model, &scene, &target).map_err(fail)?;
+    let prepared = prepare(model, &scene.primitives(), &target).map_err(fail)?;
+    let coverage = prepared.coverage(&target);
 
     if let Some(path) = &o.out {
         coverage
@@ -70,8 +68,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             .map_err(|e| format!("{}: cannot write PNG: {e}", path.display()))?;
     }
     if let Some(path) = &o.colors_out {
-        prepare(model, &scene.triangles(), &target.convention)
-            .map_err(fail)?
+        prepared
             .colour_image(&coverage, &scene.colours(), &target)
             .save_with_format(path, image::ImageFormat::Png)
             .map_err(|e| format!("{}: cannot write PNG: {e}", path.display()))?;

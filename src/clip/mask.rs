@@ -14,7 +14,7 @@ use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::fill::polygon::rasterize_rows_exact;
 use crate::geom::{FillRule, Polygon};
-use crate::tri::saturating_index;
+use crate::raster::{first_sample_at_or_after, last_sample_at_or_before, sample_coordinate_exact};
 
 /// For each row, the inclusive pixel span inside the window (a convex window meets a row
 /// in one interval), or `None`.
@@ -53,11 +53,10 @@ impl ClipMask {
     /// The pixels whose sample lies in the closed window, computed exactly row by row:
     /// each half-plane `a x + b y + c >= 0` bounds the row's x from one side.
     pub fn for_points(window: &Window, target: &Target) -> ClipMask {
-        let centre = target.convention.pixel_centre.offset();
         let planes = window.half_planes();
         let rows = (0..target.height)
             .map(|j| {
-                let y = crate::tri::sample_coordinate(j, &centre);
+                let y = sample_coordinate_exact(j, target);
                 let (mut lo, mut hi): (Option<BigRational>, Option<BigRational>) = (None, None);
                 for h in &planes {
                     let rest = &h.b * &y + &h.c; // a x + rest >= 0
@@ -75,9 +74,9 @@ impl ClipMask {
                     }
                 }
                 // pixel i: lo <= i + c <= hi
-                let first = lo.map_or(0, |l| saturating_index((l - &centre).ceil().to_integer()).max(0));
+                let first = lo.map_or(0, |l| first_sample_at_or_after(&l, target).max(0));
                 let last = hi.map_or(i64::from(target.width) - 1, |u| {
-                    saturating_index((u - &centre).floor().to_integer()).min(i64::from(target.width) - 1)
+                    last_sample_at_or_before(&u, target).min(i64::from(target.width) - 1)
                 });
                 (first <= last).then(|| {
                     (

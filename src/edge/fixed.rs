@@ -10,6 +10,12 @@ pub fn edge_function(a: [i64; 2], b: [i64; 2], p: [i64; 2]) -> i64 {
     (p[0] - a[0]) * (b[1] - a[1]) - (p[1] - a[1]) * (b[0] - a[0])
 }
 
+/// `E(p)` in i128, for points beyond the i64 envelope (a sample of any `u32` pixel, a
+/// scaled contour): exact while every coordinate is below 2^62 in magnitude.
+pub fn edge_function_wide(a: [i128; 2], b: [i128; 2], p: [i128; 2]) -> i128 {
+    (p[0] - a[0]) * (b[1] - a[1]) - (p[1] - a[1]) * (b[0] - a[0])
+}
+
 /// One edge of an oriented fixed-point triangle.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct FixedEdge {

@@ -29,7 +29,9 @@ use crate::coverage::CoverageSink;
 use crate::edge::exact::edge_function;
 use crate::geom::{FillRule, FixedPolygon, Point, Polygon};
 use crate::num::dda::CeilDda;
-use crate::tri::{exact_sample_range, fixed_sample_range, sample_coordinate, sample_point};
+use crate::raster::{
+    exact_sample_range, first_sample_at_or_after, fixed_sample_range, sample_coordinate_exact, sample_exact, FixedGrid,
+};
 
 /// The closed contour's edges `(v[i], v[i+1])`, the last one back to the first vertex.
 fn closed_edges<T>(contour: &[T]) -> impl Iterator<Item = (&T, &T)> {
@@ -162,10 +164,9 @@ pub fn rasterize_exact<S: CoverageSink + ?Sized>(poly: &Polygon, id: u32, target
     let Some(range) = exact_sample_range(poly.outline.iter().chain(poly.holes.iter().flatten()), target) else {
         return;
     };
-    let centre = target.convention.pixel_centre.offset();
     for j in range.y0..=range.y1 {
         for i in range.x0..=range.x1 {
-            let sample = sample_point(i, j, &centre);
+            let sample = sample_exact(i, j, target);
             if contains_exact(&sample, poly, target.convention.tie_rule) {
                 sink.cover(i, j, id);
             }
@@ -232,16 +233,15 @@ pub fn rasterize<S: CoverageSink + ?Sized>(poly: &FixedPolygon, id: u32, target:
         poly.bits, conv.subpixel_bits,
         "polygon snapped to another grid than the target's"
     );
-    let one = 1i64 << conv.subpixel_bits;
-    let centre = conv.pixel_centre.offset_subpixels(conv.subpixel_bits);
-    let Some(range) = fixed_sample_range(poly.contours().iter().flatten().copied(), one, centre, target) else {
+    let grid = FixedGrid::of(conv);
+    let Some(range) = fixed_sample_range(poly.contours().iter().flatten().copied(), target) else {
         return;
     };
     let (y0, y1) = (i64::from(range.y0), i64::from(range.y1));
-    let mut table = edge_table(poly, conv.tie_rule, one, centre);
+    let mut table = edge_table(poly, conv.tie_rule, grid);
     table.retain(|e| e.first_row <= e.last_row && e.last_row >= y0 && e.first_row <= y1);
     table.sort_by_key(|e| e.first_row);
-    let (one, c) = (i128::from(one), i128::from(centre));
+    let (one, c) = (i128::from(grid.one), i128::from(grid.centre));
 
     let mut next = 0;
     let mut active: Vec<ActiveEdge> = Vec::new();
@@ -363,12 +363,11 @@ pub fn rasterize_rows_exact<S: CoverageSink + ?Sized>(poly: &Polygon, id: u32, t
     let Some(range) = exact_sample_range(poly.outline.iter().chain(poly.holes.iter().flatten()), target) else {
         return;
     };
-    let centre = target.convention.pixel_centre.offset();
     let rule = target.convention.tie_rule;
     let mut crossings: Vec<Crossing> = Vec::new();
     let mut sweep = Sweep::new(poly.contours().count(), poly.fill_rule);
     for j in range.y0..=range.y1 {
-        let sy = sample_coordinate(j, &centre);
+        let sy = sample_coordinate_exact(j, target);
         crossings.clear();
         for (k, contour) in poly.contours().enumerate() {
             for (a, b) in closed_edges(contour) {
@@ -377,7 +376,7 @@ pub fn rasterize_rows_exact<S: CoverageSink + ?Sized>(poly: &Polygon, id: u32, t
                 }
                 let dy = &b.y - &a.y;
                 let xc = &a.x + (&sy - &a.y) * (&b.x - &a.x) / &dy;
-                let threshold = i128::from(crate::tri::saturating_index((xc - &centre).ceil().to_integer()));
+                let threshold = i128::from(first_sample_at_or_after(&xc, target));
                 crossings.push(Crossing {
                     threshold,
                     contour: k,
@@ -391,7 +390,7 @@ pub fn rasterize_rows_exact<S: CoverageSink + ?Sized>(poly: &Polygon, id: u32, t
 
 /// Every non-horizontal edge, oriented downwards, with its rows (before clamping to the
 /// canvas), its contour and its direction.
-fn edge_table(poly: &FixedPolygon, rule: TieRule, one: i64, centre: i64) -> Vec<TableEdge> {
+fn edge_table(poly: &FixedPolygon, rule: TieRule, grid: FixedGrid) -> Vec<TableEdge> {
     let mut table = Vec::new();
     for (k, contour) in poly.contours().iter().enumerate() {
         for (a, b) in closed_edges(contour) {
@@ -402,8 +401,8 @@ fn edge_table(poly: &FixedPolygon, rule: TieRule, one: i64, centre: i64) -> Vec<
             };
             // Rows j whose sample sy = j one + centre satisfies ty <= sy < by (top-left)
             // or ty < sy <= by (bottom-left).
-            let ceil = |v: i64| -(-(v - centre)).div_euclid(one);
-            let floor = |v: i64| (v - centre).div_euclid(one);
+            let ceil = |v: i64| grid.first_at_or_after(v);
+            let floor = |v: i64| grid.last_at_or_before(v);
             let (first_row, last_row) = match rule {
                 TieRule::TopLeft => (ceil(top[1]), ceil(bottom[1]) - 1),
                 TieRule::BottomLeft => (floor(top[1]) + 1, floor(bottom[1])),

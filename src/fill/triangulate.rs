@@ -18,6 +18,7 @@ use std::fmt;
 
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 
+use crate::edge::fixed::edge_function_wide;
 use crate::geom::{FixedPolygon, FixedTriangle};
 use crate::num::exact::{dyadic, exact_text};
 use crate::num::SubPixel;
@@ -201,8 +202,8 @@ fn validate_contours(poly: &FixedPolygon) -> Result<Vec<Contour>, TriangulateErr
 /// `orient(a, b, c)`: twice the signed area of (a, b, c), in i128 (exact: coordinates
 /// are below 2^29, products below 2^61).
 fn orient(a: [i64; 2], b: [i64; 2], c: [i64; 2]) -> i128 {
-    let d = |p: [i64; 2], q: [i64; 2], k: usize| i128::from(q[k]) - i128::from(p[k]);
-    d(a, b, 0) * d(a, c, 1) - d(a, b, 1) * d(a, c, 0)
+    // E_{a b}(c) = (c - a) x (b - a) = -((b - a) x (c - a))
+    -edge_function_wide(a.map(i128::from), b.map(i128::from), c.map(i128::from))
 }
 
 /// Whether `p`, known to be collinear with segment `a b`, lies on it (closed).
@@ -284,7 +285,7 @@ fn winding(p: [i128; 2], contour: &[[i64; 2]], scale: i128) -> i64 {
     for i in 0..n {
         let (a, b) = (contour[i], contour[(i + 1) % n]);
         let (a, b) = (a.map(|v| i128::from(v) * scale), b.map(|v| i128::from(v) * scale));
-        let e = (p[0] - a[0]) * (b[1] - a[1]) - (p[1] - a[1]) * (b[0] - a[0]);
+        let e = edge_function_wide(a, b, p);
         if a[1] <= p[1] && p[1] < b[1] && e < 0 {
             w += 1;
         } else if b[1] <= p[1] && p[1] < a[1] && e > 0 {

@@ -15,6 +15,7 @@
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::num::SubPixel;
+use crate::raster::FixedGrid;
 
 /// A segment snapped to the 2^-bits grid, inside the integer envelope.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -66,13 +67,14 @@ impl Prepared {
             seg.bits, conv.subpixel_bits,
             "segment snapped to another grid than the target's"
         );
-        let one = 1i128 << conv.subpixel_bits;
+        let grid = FixedGrid::of(conv);
+        let one = i128::from(grid.one);
         let a = seg.a.map(|v| i128::from(v.get()));
         let b = seg.b.map(|v| i128::from(v.get()));
         let d = [b[0] - a[0], b[1] - a[1]];
         Prepared {
             one,
-            c: i128::from(conv.pixel_centre.offset_subpixels(conv.subpixel_bits)),
+            c: i128::from(grid.centre),
             r: one / 2,
             a,
             b,
@@ -143,8 +145,7 @@ pub fn exits(seg: &FixedSegment, i: i64, j: i64, target: &Target) -> bool {
 pub fn draw<S: CoverageSink + ?Sized>(seg: &FixedSegment, id: u32, target: &Target, sink: &mut S) {
     let prepared = Prepared::new(seg, target);
     let conv = &target.convention;
-    let one = 1i64 << conv.subpixel_bits;
-    let c = conv.pixel_centre.offset_subpixels(conv.subpixel_bits);
+    let FixedGrid { one, centre: c } = FixedGrid::of(conv);
     let [ax, ay] = seg.a.map(SubPixel::get);
     let [bx, by] = seg.b.map(SubPixel::get);
     let (dx, dy) = (bx - ax, by - ay);

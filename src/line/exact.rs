@@ -14,7 +14,7 @@ use super::{cover_if_on_canvas, Axes, BresenhamTie};
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::geom::Point;
-use crate::tri::saturating_index;
+use crate::raster::{sample_coordinate_exact, saturating_index, PixelRange};
 
 /// One step of the ideal line.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -177,8 +177,7 @@ pub fn diamond_contains(u: &BigRational, v: &BigRational, r: &BigRational, x_maj
 /// polygon has its relative interior inside the polygon unless it runs along one edge,
 /// where the midpoint carries the edge's status and the ends carry the corners'.)
 pub fn diamond_exits(a: &Point, b: &Point, i: i64, j: i64, target: &Target) -> bool {
-    let c = target.convention.pixel_centre.offset();
-    let (cx, cy) = (q(i) + &c, q(j) + &c);
+    let (cx, cy) = (sample_coordinate_exact(i, target), sample_coordinate_exact(j, target));
     let r = BigRational::new(BigInt::from(1), BigInt::from(2));
     let (dx, dy) = (&b.x - &a.x, &b.y - &a.y);
     let x_major = dx.abs() >= dy.abs();
@@ -214,7 +213,7 @@ pub fn diamond_exits(a: &Point, b: &Point, i: i64, j: i64, target: &Target) -> b
 pub fn draw_diamond<S: CoverageSink + ?Sized>(a: &Point, b: &Point, id: u32, target: &Target, sink: &mut S) {
     let lo = |u: &BigRational, v: &BigRational| saturating_index(u.min(v).floor().to_integer()).saturating_sub(1);
     let hi = |u: &BigRational, v: &BigRational| saturating_index(u.max(v).ceil().to_integer()).saturating_add(1);
-    let Some(range) = crate::tri::PixelRange::clamped(
+    let Some(range) = PixelRange::clamped(
         [lo(&a.x, &b.x), lo(&a.y, &b.y)],
         [hi(&a.x, &b.x), hi(&a.y, &b.y)],
         target.width,

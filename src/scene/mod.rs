@@ -11,9 +11,10 @@ use num_rational::BigRational;
 use crate::clip::homogeneous::{ClipVertex, DepthRange, NdcY, Viewport};
 use crate::clip::Window;
 use crate::convention::{Convention, PixelCentre, Preset, Rounding, Target, TieRule};
+use crate::geom::Rgb;
 use crate::geom::{Point, Polygon, Triangle};
-use crate::interp::Rgb;
 use crate::line::{Line, LineRule};
+use crate::model::Primitives;
 use crate::num::exact::{exact_text, json_pair};
 
 pub use parse::{parse_scene, parse_scene_bytes};
@@ -134,6 +135,20 @@ impl Scene {
     /// The exact triangles, in id order.
     pub fn triangles(&self) -> Vec<Triangle> {
         self.triangles.iter().map(|t| t.triangle.clone()).collect()
+    }
+
+    /// What the scene draws, for [`crate::model::render`] and [`crate::model::prepare`]:
+    /// its triangles, lines, polygons, clip-space triangles, the viewport
+    /// ([`Scene::viewport`]) and the clip window.
+    pub fn primitives(&self) -> Primitives {
+        Primitives {
+            triangles: self.triangles(),
+            lines: self.lines.clone(),
+            polygons: self.polygons.clone(),
+            clip_space_triangles: self.clip_space_triangles.clone(),
+            viewport: Some(self.viewport()),
+            clip: self.clip.clone(),
+        }
     }
 
     /// The vertex colours, in id order.

@@ -35,8 +35,8 @@ mod shapes;
 
 use super::{Overrides, Scene, SceneError, SceneTriangle};
 use crate::convention::{PixelCentre, Preset, Rounding, TieRule, MAX_CANVAS};
+use crate::geom::Rgb;
 use crate::geom::{Point, Triangle};
-use crate::interp::Rgb;
 use crate::line::{BresenhamTie, Line, LineRule, MAX_BRESENHAM_COORD};
 use crate::num::{parse_rational, MAX_SUBPIXEL_BITS};
 

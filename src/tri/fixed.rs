@@ -9,7 +9,7 @@ use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::edge::fixed::{triangle_edges, FixedEdge};
 use crate::geom::FixedTriangle;
-use crate::tri::{fixed_sample_range, PixelRange};
+use crate::raster::{fixed_sample_range, FixedGrid, PixelRange};
 
 /// Block side, in pixels (the L of seed 000's `E(x+L, y) = E + L dY`).
 pub const BLOCK: u32 = 8;
@@ -34,16 +34,10 @@ pub const BLOCK: u32 = 8;
 /// assert_eq!(a, b);
 /// ```
 pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target: &Target, sink: &mut S) {
-    let Some(Setup {
-        edges,
-        one,
-        centre,
-        range,
-    }) = setup(tri, target)
-    else {
+    let Some(Setup { edges, grid, range }) = setup(tri, target) else {
         return;
     };
-    let sample = |x: u32, y: u32| [i64::from(x) * one + centre, i64::from(y) * one + centre];
+    let (one, sample) = (grid.one, |x: u32, y: u32| grid.sample_point(x, y));
     // One pixel right adds dY (in pixel units: dY * 2^S); one pixel down subtracts dX.
     let step_x = edges.map(|e| e.dy * one);
     let step_y = edges.map(|e| -e.dx * one);
@@ -101,10 +95,8 @@ pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target:
 pub(crate) struct Setup {
     /// The oriented edges with their tie-rule biases.
     pub edges: [FixedEdge; 3],
-    /// One pixel in subpixels, 2^S.
-    pub one: i64,
-    /// The sample's offset in the pixel, in subpixels.
-    pub centre: i64,
+    /// The sample grid in subpixels.
+    pub grid: FixedGrid,
     /// The pixels whose sample lies in the bounding box, on the canvas.
     pub range: PixelRange,
 }
@@ -121,13 +113,10 @@ pub(crate) fn setup(tri: &FixedTriangle, target: &Target) -> Option<Setup> {
         "triangle snapped to another grid than the target's"
     );
     let edges = triangle_edges(tri, conv.tie_rule)?;
-    let one = 1i64 << conv.subpixel_bits;
-    let centre = conv.pixel_centre.offset_subpixels(conv.subpixel_bits);
-    let range = fixed_sample_range(tri.coords().into_iter(), one, centre, target)?;
+    let range = fixed_sample_range(tri.coords().into_iter(), target)?;
     Some(Setup {
         edges,
-        one,
-        centre,
+        grid: FixedGrid::of(conv),
         range,
     })
 }

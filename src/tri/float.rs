@@ -9,7 +9,7 @@ use glam::{DVec2, Vec2};
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::edge::float::{edge_f32, edge_f64, is_inclusive};
-use crate::tri::PixelRange;
+use crate::raster::{float_sample_range, sample_f64};
 
 /// How a float model decides a sample with `w == 0`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -48,28 +48,18 @@ macro_rules! float_rasterizer {
                 ),
             };
             let incl = [inclusive(v1, v2), inclusive(v2, v0), inclusive(v0, v1)];
-            let centre = conv.pixel_centre.offset_f64();
             let min = v0.min(v1).min(v2);
             let max = v0.max(v1).max(v2);
-            let lo = [
-                index_ceil(f64::from(min.x) - centre),
-                index_ceil(f64::from(min.y) - centre),
-            ];
-            let hi = [
-                index_floor(f64::from(max.x) - centre),
-                index_floor(f64::from(max.y) - centre),
-            ];
-            let Some(range) = PixelRange::clamped(lo, hi, target.width, target.height) else {
+            let wide = |v: $vec| [f64::from(v.x), f64::from(v.y)];
+            let Some(range) = float_sample_range(wide(min), wide(max), target) else {
                 return;
             };
             let passes = |w: $float, inclusive: bool| w > 0.0 || (w == 0.0 && inclusive);
             #[allow(clippy::cast_possible_truncation)] // canvas indices < 2^14 and 0.5: exact in f32
             for j in range.y0..=range.y1 {
                 for i in range.x0..=range.x1 {
-                    let p = <$vec>::new(
-                        (f64::from(i) + centre) as $float,
-                        (f64::from(j) + centre) as $float,
-                    );
+                    let s = sample_f64(i, j, target);
+                    let p = <$vec>::new(s.x as $float, s.y as $float);
                     let w0 = $edge(v1, v2, p);
                     let w1 = $edge(v2, v0, p);
                     let w2 = $edge(v0, v1, p);
@@ -96,15 +86,3 @@ float_rasterizer!(
     edge_f64,
     "Scratchapixel's rasterizer in f64. Vertices as given (not snapped)."
 );
-
-/// `ceil(v)` as a pixel index, saturating (any saturated value is off the canvas).
-#[allow(clippy::cast_possible_truncation)] // `as` saturates; out-of-range means off-canvas
-fn index_ceil(v: f64) -> i64 {
-    v.ceil().clamp(-1e18, 1e18) as i64
-}
-
-/// `floor(v)` as a pixel index, saturating.
-#[allow(clippy::cast_possible_truncation)]
-fn index_floor(v: f64) -> i64 {
-    v.floor().clamp(-1e18, 1e18) as i64
-}

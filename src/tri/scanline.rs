@@ -71,16 +71,10 @@ impl Walker {
 /// # Panics
 /// When `tri` was snapped to another grid than `target`'s subpixel bits.
 pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target: &Target, sink: &mut S) {
-    let Some(Setup {
-        edges,
-        one,
-        centre,
-        range,
-    }) = setup(tri, target)
-    else {
+    let Some(Setup { edges, grid, range }) = setup(tri, target) else {
         return;
     };
-    let (one, c) = (i128::from(one), i128::from(centre));
+    let (one, c) = (i128::from(grid.one), i128::from(grid.centre));
     let sy0 = i128::from(range.y0) * one + c;
     // Per edge: a walker for a sloped edge, or the edge itself for a horizontal one.
     let mut walkers: [Option<Walker>; 3] = edges.map(|e| (e.dy != 0).then(|| Walker::new(&e, sy0, one, c)));

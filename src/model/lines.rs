@@ -1,0 +1,106 @@
+//! A scene's lines in each model's form: Bresenham (the exact ideal-line reference, the
+//! integer walk, or the float DDA) and diamond-exit (exact or integer).
+
+use num_bigint::BigInt;
+
+use crate::convention::{Convention, Target};
+use crate::coverage::CoverageSink;
+use crate::geom::Point;
+use crate::line::diamond::FixedSegment;
+use crate::line::{self, BresenhamTie, Line, LineRule};
+use crate::num::exact::dyadic;
+use crate::num::fixed::snap;
+use crate::num::SubPixel;
+
+use super::{Arithmetic, FloatType, Model, ModelError};
+
+/// A line converted for one model.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) enum PreparedLine {
+    /// Bresenham, drawn by the exact ideal-line reference.
+    IdealBresenham([i64; 2], [i64; 2], BresenhamTie),
+    /// Bresenham, integer.
+    Bresenham([i64; 2], [i64; 2], BresenhamTie),
+    /// The f32 DDA.
+    Dda32([i64; 2], [i64; 2]),
+    /// The f64 DDA.
+    Dda64([i64; 2], [i64; 2]),
+    /// Diamond-exit, the plain exact reading (endpoints as written or snapped).
+    DiamondExact(Box<(Point, Point)>),
+    /// Diamond-exit, integer.
+    DiamondFixed(FixedSegment),
+}
+
+/// Converts `lines` for `model`; the first line it cannot take is the error.
+pub(crate) fn prepare_lines(model: Model, lines: &[Line], conv: &Convention) -> Result<Vec<PreparedLine>, ModelError> {
+    lines
+        .iter()
+        .enumerate()
+        .map(|(k, l)| match l.rule {
+            LineRule::Bresenham(tie) => {
+                let (a, b) = l.pixel_endpoints().ok_or(ModelError::LineEndpoints { line: k })?;
+                Ok(match model.arithmetic() {
+                    Arithmetic::Exact { .. } => PreparedLine::IdealBresenham(a, b, tie),
+                    Arithmetic::Integer(_) => PreparedLine::Bresenham(a, b, tie),
+                    Arithmetic::Float(FloatType::F32, _) => PreparedLine::Dda32(a, b),
+                    Arithmetic::Float(FloatType::F64, _) => PreparedLine::Dda64(a, b),
+                })
+            }
+            LineRule::Diamond => prepare_diamond(model, k, l, conv),
+        })
+        .collect()
+}
+
+/// A diamond-exit line for `model` (line `k`, for the error).
+fn prepare_diamond(model: Model, k: usize, l: &Line, conv: &Convention) -> Result<PreparedLine, ModelError> {
+    let snapped = |p: &Point| {
+        let s = |v| snap(v, conv.subpixel_bits, conv.rounding);
+        [s(&p.x), s(&p.y)]
+    };
+    match model.arithmetic() {
+        Arithmetic::Exact { snapped: false } => {
+            Ok(PreparedLine::DiamondExact(Box::new((l.from.clone(), l.to.clone()))))
+        }
+        Arithmetic::Exact { snapped: true } => {
+            let back = |[x, y]: [BigInt; 2]| Point::new(dyadic(&x, conv.subpixel_bits), dyadic(&y, conv.subpixel_bits));
+            Ok(PreparedLine::DiamondExact(Box::new((
+                back(snapped(&l.from)),
+                back(snapped(&l.to)),
+            ))))
+        }
+        Arithmetic::Integer(_) => {
+            let fixed = |p: &Point, end: &'static str| -> Result<[SubPixel; 2], ModelError> {
+                let [x, y] = snapped(p);
+                let f = |v: &BigInt, axis| {
+                    SubPixel::try_from_bigint(v, conv.subpixel_bits).map_err(|error| ModelError::LineEnvelope {
+                        line: k,
+                        end,
+                        axis,
+                        error,
+                    })
+                };
+                Ok([f(&x, 'x')?, f(&y, 'y')?])
+            };
+            Ok(PreparedLine::DiamondFixed(FixedSegment {
+                a: fixed(&l.from, "from")?,
+                b: fixed(&l.to, "to")?,
+                bits: conv.subpixel_bits,
+            }))
+        }
+        Arithmetic::Float(..) => Err(ModelError::NoFloatDiamond { line: k, model }),
+    }
+}
+
+impl PreparedLine {
+    /// Draws the line with id `id`.
+    pub(crate) fn draw<S: CoverageSink + ?Sized>(&self, id: u32, target: &Target, sink: &mut S) {
+        match self {
+            PreparedLine::IdealBresenham(a, b, tie) => line::exact::draw_bresenham(*a, *b, *tie, id, target, sink),
+            PreparedLine::Bresenham(a, b, tie) => line::bresenham::draw(*a, *b, *tie, id, target, sink),
+            PreparedLine::Dda32(a, b) => line::dda::draw(*a, *b, line::dda::DdaFloat::F32, id, target, sink),
+            PreparedLine::Dda64(a, b) => line::dda::draw(*a, *b, line::dda::DdaFloat::F64, id, target, sink),
+            PreparedLine::DiamondExact(ends) => line::exact::draw_diamond(&ends.0, &ends.1, id, target, sink),
+            PreparedLine::DiamondFixed(seg) => line::diamond::draw(seg, id, target, sink),
+        }
+    }
+}

@@ -1,0 +1,191 @@
+//! The closed set of models, and the ONE place that prepares a scene's primitives for a
+//! model: triangles, lines, polygons, clip-space triangles and the clip window, with ids
+//! assigned once.
+//!
+//! A scene is rendered in two steps: [`prepare`] converts every primitive into the model's
+//! input form (snapping, the integer envelope, float conversion, triangulation, clipping:
+//! this is where errors happen), and [`PreparedScene::draw`] rasterizes (it cannot fail).
+//! [`render`] does both; [`render_triangles`] is the same for a plain list of triangles.
+//!
+//! How each model family clips against the window (`raster(clip(P, W)) == raster(P) ∩
+//! raster(W)` holds exactly, tests/clip.rs):
+//! - exact models: Sutherland-Hodgman in exact arithmetic on the primitive (as written or
+//!   snapped), then the polygon oracle; clip-space triangles are clipped in clip space,
+//!   divided and mapped exactly.
+//! - integer models: the primitive is rasterized whole and masked with `raster(W)` (an
+//!   exact scissor): clipped vertices are not on the subpixel grid, and the scissor gives
+//!   the same coverage without re-snapping anything.
+//! - float models: Sutherland-Hodgman in the model's float type, then the clipped polygon
+//!   as a fan of float triangles; clip-space triangles clipped, divided and mapped in that
+//!   type. Their departures from the exact result are the measured trade.
+//! - lines, in every model: the whole line is drawn and its pixels kept when their sample
+//!   lies in the closed window (point clipping against the window's half-planes; a
+//!   clipped Bresenham line would need its error term restarted, which changes no pixel
+//!   this way).
+
+mod error;
+mod lines;
+mod polygons;
+mod scene;
+mod triangles;
+
+use std::fmt;
+
+use crate::tri::float::FloatRule;
+
+pub use error::ModelError;
+pub use scene::{prepare, render, render_triangles, PreparedScene, Primitives};
+
+/// A model: one arithmetic for every primitive of a scene (the CLI's `--model`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Model {
+    /// The oracle on the scene as written (no snapping).
+    Exact,
+    /// The oracle on the snapped scene.
+    ExactSnapped,
+    /// Incremental i64 edge functions with block traversal, on the snapped scene.
+    Fixed,
+    /// Edge walking: spans per scanline from an exact integer DDA, on the snapped scene.
+    Scanline,
+    /// Scratchapixel in f32 with the tie rule applied to float values.
+    Float32,
+    /// Scratchapixel in f64 with the tie rule applied to float values.
+    Float64,
+    /// Scratchapixel in f32 with the naive `w >= 0` test.
+    Float32Naive,
+    /// Scratchapixel in f64 with the naive `w >= 0` test.
+    Float64Naive,
+}
+
+impl Model {
+    /// Every model.
+    pub const ALL: [Model; 8] = [
+        Model::Exact,
+        Model::ExactSnapped,
+        Model::Fixed,
+        Model::Scanline,
+        Model::Float32,
+        Model::Float64,
+        Model::Float32Naive,
+        Model::Float64Naive,
+    ];
+
+    /// The name used on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Model::Exact => "exact",
+            Model::ExactSnapped => "exact-snapped",
+            Model::Fixed => "fixed",
+            Model::Scanline => "scanline",
+            Model::Float32 => "float32",
+            Model::Float64 => "float64",
+            Model::Float32Naive => "float32-naive",
+            Model::Float64Naive => "float64-naive",
+        }
+    }
+
+    /// Parses a name written by [`Model::name`], or a line model's alias: `bresenham`
+    /// (= `fixed`), `dda32` (= `float32`), `dda64` (= `float64`).
+    pub fn from_name(name: &str) -> Option<Model> {
+        match name {
+            "bresenham" => Some(Model::Fixed),
+            "dda32" => Some(Model::Float32),
+            "dda64" => Some(Model::Float64),
+            _ => Model::ALL.into_iter().find(|m| m.name() == name),
+        }
+    }
+
+    /// The coordinate range over which the model is exact, in words.
+    pub fn envelope(self) -> &'static str {
+        match self {
+            Model::Exact | Model::ExactSnapped => "unbounded (arbitrary precision)",
+            Model::Fixed | Model::Scanline => "|snapped coordinate| <= 2^29 subpixels (2^21 px at 8 bits)",
+            Model::Float32 | Model::Float32Naive => "none: inexact; refuses coordinates beyond f32",
+            Model::Float64 | Model::Float64Naive => "none: inexact; refuses coordinates beyond f64",
+        }
+    }
+}
+
+/// How a model computes: the one place the per-model choice is made. Every preparation
+/// matches on this, never on [`Model`] itself, so a new model is one more arm here.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Arithmetic {
+    /// Exact rationals: the plain oracles, on the scene as written or snapped.
+    Exact {
+        /// Snap vertices to the subpixel grid first (`exact-snapped`).
+        snapped: bool,
+    },
+    /// Integers on the snapped scene, inside the envelope.
+    Integer(IntegerTraversal),
+    /// Floats on the scene as written.
+    Float(FloatType, FloatRule),
+}
+
+/// How an integer model visits a triangle's pixels.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum IntegerTraversal {
+    /// Incremental edge functions in blocks (`fixed`); polygons triangulated.
+    Blocks,
+    /// Edge walking, spans per row (`scanline`); polygons by the active edge table.
+    Scanline,
+}
+
+/// A float model's type.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum FloatType {
+    /// f32.
+    F32,
+    /// f64.
+    F64,
+}
+
+impl Model {
+    /// The model's arithmetic.
+    pub(crate) fn arithmetic(self) -> Arithmetic {
+        match self {
+            Model::Exact => Arithmetic::Exact { snapped: false },
+            Model::ExactSnapped => Arithmetic::Exact { snapped: true },
+            Model::Fixed => Arithmetic::Integer(IntegerTraversal::Blocks),
+            Model::Scanline => Arithmetic::Integer(IntegerTraversal::Scanline),
+            Model::Float32 => Arithmetic::Float(FloatType::F32, FloatRule::TieRule),
+            Model::Float64 => Arithmetic::Float(FloatType::F64, FloatRule::TieRule),
+            Model::Float32Naive => Arithmetic::Float(FloatType::F32, FloatRule::Naive),
+            Model::Float64Naive => Arithmetic::Float(FloatType::F64, FloatRule::Naive),
+        }
+    }
+
+    /// Whether the model is exact: the exact and integer models, whose every invariant
+    /// must hold (a float model's violations are the measured trade).
+    pub fn is_exact(self) -> bool {
+        !matches!(self.arithmetic(), Arithmetic::Float(..))
+    }
+
+    /// Whether the model rasterizes the snapped scene (so `exact-snapped` is its reference;
+    /// `exact` is the reference of the others).
+    pub fn snaps(self) -> bool {
+        matches!(
+            self.arithmetic(),
+            Arithmetic::Exact { snapped: true } | Arithmetic::Integer(_)
+        )
+    }
+
+    /// One line for `--help`: what the model computes and how it fills each primitive.
+    pub fn describe(self) -> &'static str {
+        match self {
+            Model::Exact => "the oracle on the scene as written (no snapping): exact rationals",
+            Model::ExactSnapped => "the oracle on the snapped scene: what every integer model must equal",
+            Model::Fixed => "i64 edge functions in blocks (alias bresenham); polygons triangulated (simple only)",
+            Model::Scanline => "edge walking with exact integer DDAs; polygons by an active edge table",
+            Model::Float32 => "Scratchapixel in f32 with the tie rule on float values (alias dda32); no polygons",
+            Model::Float64 => "Scratchapixel in f64 with the tie rule on float values (alias dda64); no polygons",
+            Model::Float32Naive => "f32 with the naive w >= 0 test; no polygons",
+            Model::Float64Naive => "f64 with the naive w >= 0 test; no polygons",
+        }
+    }
+}
+
+impl fmt::Display for Model {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}

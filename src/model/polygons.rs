@@ -1,0 +1,109 @@
+//! A scene's polygons in each model's form (the oracle's exact polygon, the scanline
+//! filler's snapped polygon, the `fixed` model's triangulation, a float fan), and the
+//! window-space polygon of each clip-space triangle.
+
+use glam::{DVec2, Vec2};
+
+use crate::clip::homogeneous::{clip_to_window_exact, ClipVertex, Viewport};
+use crate::convention::{Convention, Target};
+use crate::coverage::CoverageSink;
+use crate::fill;
+use crate::fill::triangulate::triangulate;
+use crate::geom::{FillRule, FixedPolygon, FixedTriangle, Polygon};
+use crate::tri::fixed;
+use crate::tri::float::{rasterize_f32, rasterize_f64, FloatRule};
+
+use super::{Arithmetic, IntegerTraversal, Model, ModelError};
+
+/// A polygon converted for one model.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum PreparedPolygon {
+    /// The oracle's input: the polygon as written (`exact`) or snapped (`exact-snapped`).
+    Exact(Polygon),
+    /// The scanline filler's input.
+    Scanline(FixedPolygon),
+    /// The `fixed` model's input: the snapped polygon's triangulation.
+    Triangles(Vec<FixedTriangle>),
+    /// A convex f32 polygon (a clipped triangle or clip-space triangle), filled as a fan
+    /// of float triangles.
+    Fan32(Vec<Vec2>, FloatRule),
+    /// A convex f64 polygon, filled as a fan.
+    Fan64(Vec<DVec2>, FloatRule),
+}
+
+/// Converts polygon `k` for an exact or integer `model` (float models have no polygon fill).
+pub(crate) fn prepare_polygon(
+    model: Model,
+    k: usize,
+    p: &Polygon,
+    conv: &Convention,
+) -> Result<PreparedPolygon, ModelError> {
+    let fixed = || {
+        p.to_fixed(conv)
+            .map_err(|(contour, vertex, axis, error)| ModelError::PolygonEnvelope {
+                polygon: k,
+                contour,
+                vertex,
+                axis,
+                error,
+            })
+    };
+    Ok(match model.arithmetic() {
+        Arithmetic::Exact { snapped: false } => PreparedPolygon::Exact(p.clone()),
+        Arithmetic::Exact { snapped: true } => PreparedPolygon::Exact(p.snapped_exact(conv)),
+        Arithmetic::Integer(IntegerTraversal::Scanline) => PreparedPolygon::Scanline(fixed()?),
+        Arithmetic::Integer(IntegerTraversal::Blocks) => PreparedPolygon::Triangles(
+            triangulate(&fixed()?).map_err(|error| ModelError::Triangulate { polygon: k, error })?,
+        ),
+        Arithmetic::Float(..) => return Err(ModelError::NoFloatPolygon { polygon: k, model }),
+    })
+}
+
+/// The window-space polygon of a clip-space triangle, exactly (clipped in clip space,
+/// divided, mapped through the viewport).
+pub(crate) fn clip_space_polygon(t: &[ClipVertex; 3], viewport: &Viewport) -> Polygon {
+    let outline = clip_to_window_exact(t, viewport).into_iter().map(|v| v.point).collect();
+    Polygon::new(outline, FillRule::NonZero)
+}
+
+/// Clip-space triangle `k` for an exact or integer `model`: its exact window-space polygon,
+/// prepared as a polygon; errors name the clip-space triangle.
+pub(crate) fn prepare_clip_space(
+    model: Model,
+    k: usize,
+    t: &[ClipVertex; 3],
+    viewport: &Viewport,
+    conv: &Convention,
+) -> Result<PreparedPolygon, ModelError> {
+    prepare_polygon(model, k, &clip_space_polygon(t, viewport), conv).map_err(|e| ModelError::ClipSpace {
+        triangle: k,
+        message: match e {
+            ModelError::PolygonEnvelope {
+                vertex, axis, error, ..
+            } => format!("window-space vertex {vertex} (after clipping and the viewport), {axis}: {error}"),
+            ModelError::Triangulate { error, .. } => format!("window-space polygon: {error}"),
+            other => other.to_string(),
+        },
+    })
+}
+
+impl PreparedPolygon {
+    /// Fills the polygon with id `id`.
+    pub(crate) fn fill<S: CoverageSink + ?Sized>(&self, id: u32, target: &Target, sink: &mut S) {
+        match self {
+            PreparedPolygon::Exact(p) => fill::polygon::rasterize_exact(p, id, target, sink),
+            PreparedPolygon::Scanline(p) => fill::polygon::rasterize(p, id, target, sink),
+            PreparedPolygon::Triangles(ts) => ts.iter().for_each(|t| fixed::rasterize(t, id, target, sink)),
+            PreparedPolygon::Fan32(poly, rule) => {
+                for i in 1..poly.len().saturating_sub(1) {
+                    rasterize_f32(&[poly[0], poly[i], poly[i + 1]], id, target, *rule, sink);
+                }
+            }
+            PreparedPolygon::Fan64(poly, rule) => {
+                for i in 1..poly.len().saturating_sub(1) {
+                    rasterize_f64(&[poly[0], poly[i], poly[i + 1]], id, target, *rule, sink);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,331 @@
+//! A scene's primitives prepared for one model, ids assigned once, and drawn.
+
+use image::RgbImage;
+
+use crate::clip::halfplane::{HalfPlaneF32, HalfPlaneF64};
+use crate::clip::homogeneous::{self, ClipVertex, Viewport};
+use crate::clip::mask::ClipMask;
+use crate::clip::sutherland_hodgman::{self, clip_polygon};
+use crate::clip::Window;
+use crate::convention::Target;
+use crate::coverage::{Coverage, CoverageSink};
+use crate::geom::{FillRule, Polygon, Rgb, Triangle};
+use crate::line::Line;
+
+use super::lines::{prepare_lines, PreparedLine};
+use super::polygons::{prepare_clip_space, prepare_polygon, PreparedPolygon};
+use super::triangles::{prepare_triangles, PreparedTriangles};
+use super::{Arithmetic, FloatType, Model, ModelError};
+
+/// What a scene draws, every coordinate exact. Ids follow one sequence: triangles `0..`,
+/// then lines, then polygons, then clip-space triangles, each in list order.
+/// [`crate::scene::Scene::primitives`] gives a scene file's.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Primitives {
+    /// Window-space triangles.
+    pub triangles: Vec<Triangle>,
+    /// Lines (Bresenham or diamond-exit).
+    pub lines: Vec<Line>,
+    /// Polygons with holes and a fill rule.
+    pub polygons: Vec<Polygon>,
+    /// Clip-space `(x, y, z, w)` triangles: clipped against the view volume, divided and
+    /// mapped through `viewport`.
+    pub clip_space_triangles: Vec<[ClipVertex; 3]>,
+    /// The viewport of the clip-space triangles (needed when there are any).
+    pub viewport: Option<Viewport>,
+    /// The window every primitive is clipped against before rasterization.
+    pub clip: Option<Window>,
+}
+
+impl Primitives {
+    /// Just these triangles.
+    pub fn from_triangles(triangles: &[Triangle]) -> Primitives {
+        Primitives {
+            triangles: triangles.to_vec(),
+            ..Primitives::default()
+        }
+    }
+
+    /// The id of the first line, polygon and clip-space triangle.
+    fn first_ids(&self) -> [usize; 3] {
+        let line = self.triangles.len();
+        let polygon = line + self.lines.len();
+        [line, polygon, polygon + self.polygons.len()]
+    }
+}
+
+/// A scene converted for one model: every conversion done, nothing left that can fail.
+/// Built by [`prepare`]; [`PreparedScene::draw`] rasterizes it into any sink.
+#[derive(Debug, Clone)]
+pub struct PreparedScene {
+    model: Model,
+    /// The triangles in the model's form, unclipped (drawn when `clipped_triangles` is
+    /// `None`, and shaded for the colour picture).
+    triangles: PreparedTriangles,
+    /// Exact and float models with a window: each triangle clipped to a polygon (id = index).
+    clipped_triangles: Option<Vec<PreparedPolygon>>,
+    lines: Vec<PreparedLine>,
+    /// The scene's polygons, then the clip-space triangles' window-space polygons
+    /// (clipped already where the model clips geometry).
+    polygons: Vec<PreparedPolygon>,
+    /// Integer models with a window: `raster(W)`, applied to every area.
+    area_mask: Option<ClipMask>,
+    /// Lines with a window: the closed window's pixels.
+    point_mask: Option<ClipMask>,
+    first_line: usize,
+    first_polygon: usize,
+}
+
+/// Ids are positions in one sequence.
+fn id(k: usize) -> u32 {
+    u32::try_from(k).expect("scene primitive counts fit u32")
+}
+
+/// Converts every primitive of `primitives` for `model` on `target`.
+///
+/// # Errors
+/// The first primitive the model cannot take: a coordinate outside the integer envelope
+/// or the float type, a polygon for a float model, a polygon the `fixed` model cannot
+/// triangulate, a diamond-exit line for a float model, clip-space triangles without a
+/// viewport. Lines are checked first, then the areas.
+pub fn prepare(model: Model, primitives: &Primitives, target: &Target) -> Result<PreparedScene, ModelError> {
+    let conv = &target.convention;
+    let lines = prepare_lines(model, &primitives.lines, conv)?;
+    let viewport = || primitives.viewport.as_ref().ok_or(ModelError::NoViewport);
+    let [first_line, first_polygon, _] = primitives.first_ids();
+    let point_mask = primitives
+        .clip
+        .as_ref()
+        .filter(|_| !lines.is_empty())
+        .map(|w| ClipMask::for_points(w, target));
+    let mut scene = PreparedScene {
+        model,
+        triangles: PreparedTriangles::Exact(Vec::new()),
+        clipped_triangles: None,
+        lines,
+        polygons: Vec::new(),
+        area_mask: None,
+        point_mask,
+        first_line,
+        first_polygon,
+    };
+    match model.arithmetic() {
+        Arithmetic::Exact { .. } | Arithmetic::Integer(_) => {
+            scene.triangles = prepare_triangles(model, &primitives.triangles, conv)?;
+            for (k, p) in primitives.polygons.iter().enumerate() {
+                scene.polygons.push(prepare_polygon(model, k, p, conv)?);
+            }
+            if !primitives.clip_space_triangles.is_empty() {
+                let viewport = viewport()?;
+                for (k, t) in primitives.clip_space_triangles.iter().enumerate() {
+                    scene.polygons.push(prepare_clip_space(model, k, t, viewport, conv)?);
+                }
+            }
+            if let Some(w) = &primitives.clip {
+                if let PreparedTriangles::Exact(ts) = &scene.triangles {
+                    let whole = |t: &Triangle| Polygon::new(t.v.to_vec(), FillRule::NonZero);
+                    let clip = |p: &Polygon| PreparedPolygon::Exact(clip_polygon(p, w));
+                    scene.clipped_triangles = Some(ts.iter().map(|t| clip(&whole(t))).collect());
+                    for p in &mut scene.polygons {
+                        if let PreparedPolygon::Exact(poly) = p {
+                            *p = clip(poly);
+                        }
+                    }
+                } else {
+                    scene.area_mask = Some(ClipMask::for_areas(w, target));
+                }
+            }
+        }
+        Arithmetic::Float(float, rule) => {
+            if !primitives.polygons.is_empty() {
+                return Err(ModelError::NoFloatPolygon { polygon: 0, model });
+            }
+            match float {
+                FloatType::F32 => prepare_float_f32(&mut scene, primitives, rule, target, viewport)?,
+                FloatType::F64 => prepare_float_f64(&mut scene, primitives, rule, target, viewport)?,
+            }
+        }
+    }
+    Ok(scene)
+}
+
+/// The float models' areas in one float type: the window's half-planes, the triangles and
+/// the clip-space triangles converted to it, clipped in it, kept as fans. Written once for
+/// f32 and f64 (the crate's float forms are concrete types).
+macro_rules! prepare_float_in {
+    ($name:ident, $plane:ty, $to_float:ident, $clip:path, $clip_to_window:path, $triangles:ident, $fan:ident) => {
+        fn $name<'a>(
+            scene: &mut PreparedScene,
+            primitives: &'a Primitives,
+            rule: crate::tri::float::FloatRule,
+            target: &Target,
+            viewport: impl Fn() -> Result<&'a Viewport, ModelError>,
+        ) -> Result<(), ModelError> {
+            let model = scene.model;
+            let range = |what: String| ModelError::FloatScene { what, model };
+            let planes: Option<Vec<$plane>> = match &primitives.clip {
+                None => None,
+                Some(w) => Some(
+                    w.half_planes()
+                        .iter()
+                        .map(|h| h.$to_float())
+                        .collect::<Option<Vec<_>>>()
+                        .ok_or_else(|| range("clip (a window edge's line coefficient)".into()))?,
+                ),
+            };
+            scene.triangles = prepare_triangles(model, &primitives.triangles, &target.convention)?;
+            let clipped = |poly: Vec<_>| match &planes {
+                Some(planes) => $clip(&poly, planes),
+                None => poly,
+            };
+            if let (Some(_), PreparedTriangles::$triangles(ts, _)) = (&planes, &scene.triangles) {
+                let fans = ts
+                    .iter()
+                    .map(|t| PreparedPolygon::$fan(clipped(t.to_vec()), rule));
+                scene.clipped_triangles = Some(fans.collect());
+            }
+            if !primitives.clip_space_triangles.is_empty() {
+                let viewport = viewport()?.$to_float().ok_or_else(|| range("viewport".into()))?;
+                for (k, t) in primitives.clip_space_triangles.iter().enumerate() {
+                    let vertices = t
+                        .iter()
+                        .map(|v| v.$to_float())
+                        .collect::<Option<Vec<_>>>()
+                        .ok_or_else(|| range(format!("clip_space_triangles[{k}]")))?;
+                    let window = $clip_to_window(&vertices, &viewport);
+                    let points = window.into_iter().map(|v| v.point).collect();
+                    scene.polygons.push(PreparedPolygon::$fan(clipped(points), rule));
+                }
+            }
+            Ok(())
+        }
+    };
+}
+
+prepare_float_in!(
+    prepare_float_f32,
+    HalfPlaneF32,
+    to_f32,
+    sutherland_hodgman::clip_f32,
+    homogeneous::clip_to_window_f32,
+    F32,
+    Fan32
+);
+prepare_float_in!(
+    prepare_float_f64,
+    HalfPlaneF64,
+    to_f64,
+    sutherland_hodgman::clip_f64,
+    homogeneous::clip_to_window_f64,
+    F64,
+    Fan64
+);
+
+impl PreparedScene {
+    /// The model it was prepared for.
+    pub fn model(&self) -> Model {
+        self.model
+    }
+
+    /// Rasterizes every primitive into `sink` with its id.
+    pub fn draw<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S) {
+        for (k, l) in self.lines.iter().enumerate() {
+            let k = id(self.first_line + k);
+            match &self.point_mask {
+                None => l.draw(k, target, sink),
+                Some(m) => l.draw(k, target, &mut m.scissor(sink)),
+            }
+        }
+        match &self.area_mask {
+            None => self.draw_areas(target, sink),
+            Some(m) => self.draw_areas(target, &mut m.scissor(sink)),
+        }
+    }
+
+    fn draw_areas<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S) {
+        match &self.clipped_triangles {
+            None => self.triangles.rasterize_into(target, sink),
+            Some(polygons) => {
+                for (k, p) in polygons.iter().enumerate() {
+                    p.fill(id(k), target, sink);
+                }
+            }
+        }
+        for (k, p) in self.polygons.iter().enumerate() {
+            p.fill(id(self.first_polygon + k), target, sink);
+        }
+    }
+
+    /// A fresh [`Coverage`] of `target` with everything drawn.
+    pub fn coverage(&self, target: &Target) -> Coverage {
+        let mut coverage = Coverage::new(target.width, target.height);
+        self.draw(target, &mut coverage);
+        coverage
+    }
+
+    /// The Gouraud colour of triangle `k` at the sample of pixel `(x, y)`, computed in the
+    /// model's own arithmetic (exact rationals; exact integer edge values over twice the
+    /// area for the integer models; f32 / f64 barycentrics for the float models).
+    ///
+    /// # Panics
+    /// When `k` is not a triangle of the scene.
+    pub fn shade(&self, k: usize, colours: &[Rgb; 3], x: u32, y: u32, target: &Target) -> Rgb {
+        self.triangles.shade(k, colours, x, y, target)
+    }
+
+    /// The interpolated-colour picture: each covered pixel takes the colour of its
+    /// highest-numbered (last drawn) primitive, a triangle with vertex `colours` shaded by
+    /// [`PreparedScene::shade`]; any other primitive shows its coverage colour.
+    pub fn colour_image(&self, coverage: &Coverage, colours: &[Option<[Rgb; 3]>], target: &Target) -> RgbImage {
+        self.triangles.colour_image(coverage, colours, target)
+    }
+}
+
+/// Renders `primitives` with `model` on `target`: [`prepare`], then [`PreparedScene::draw`]
+/// into a fresh [`Coverage`]. The entry point for a whole scene.
+///
+/// ```
+/// use rasterproof::model::{render, Model};
+/// use rasterproof::scene::parse_scene;
+/// let scene = parse_scene(
+///     r#"{"width": 8, "height": 8,
+///         "triangles": [{"v": [[0, 0], [8, 0], [0, 8]]}],
+///         "lines": [{"from": [0, 7], "to": [7, 7]}],
+///         "clip": {"rect": [0, 0, 4, 8]}}"#,
+///     "example.json",
+/// )
+/// .unwrap();
+/// let target = scene.target().unwrap();
+/// let coverage = render(Model::Fixed, &scene.primitives(), &target).unwrap();
+/// // The line (id 1) keeps its pixels with samples inside the window: x = 0..=3.
+/// assert_eq!(coverage.owners(3, 7), &[1]);
+/// assert!(coverage.owners(4, 7).is_empty());
+/// assert_eq!(coverage, render(Model::ExactSnapped, &scene.primitives(), &target).unwrap());
+/// ```
+///
+/// # Errors
+/// As [`prepare`].
+pub fn render(model: Model, primitives: &Primitives, target: &Target) -> Result<Coverage, ModelError> {
+    Ok(prepare(model, primitives, target)?.coverage(target))
+}
+
+/// Renders `triangles` (ids `0..`) with `model` into a fresh [`Coverage`].
+///
+/// ```
+/// use rasterproof::convention::{Convention, Target};
+/// use rasterproof::geom::{Point, Triangle};
+/// use rasterproof::model::{render_triangles, Model};
+/// let t = Triangle::new(Point::from_ints(0, 0), Point::from_ints(8, 0), Point::from_ints(0, 8));
+/// let target = Target::new(8, 8, Convention::default()).unwrap();
+/// let exact = render_triangles(Model::ExactSnapped, &[t.clone()], &target).unwrap();
+/// assert_eq!(render_triangles(Model::Fixed, &[t], &target).unwrap(), exact);
+/// ```
+///
+/// # Errors
+/// The first triangle the model cannot take (envelope, float range).
+pub fn render_triangles(model: Model, triangles: &[Triangle], target: &Target) -> Result<Coverage, ModelError> {
+    let prepared = prepare_triangles(model, triangles, &target.convention)?;
+    let mut coverage = Coverage::new(target.width, target.height);
+    prepared.rasterize_into(target, &mut coverage);
+    Ok(coverage)
+}

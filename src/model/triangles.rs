@@ -1,0 +1,167 @@
+//! A scene's triangles in each model's input form, and their Gouraud shading in the
+//! model's own arithmetic.
+
+use glam::{DVec2, Vec2};
+use image::RgbImage;
+use num_rational::BigRational;
+
+use crate::convention::{Convention, Target};
+use crate::coverage::{primitive_colour, Coverage, CoverageSink};
+use crate::geom::{FixedTriangle, Rgb, Triangle};
+use crate::interp::{barycentric_fixed, gouraud_exact, gouraud_f32, gouraud_f64, to_channel};
+use crate::raster::{sample_exact, sample_f32, sample_f64};
+use crate::tri::float::FloatRule;
+use crate::tri::{exact, fixed, float, scanline};
+
+use super::{Arithmetic, FloatType, IntegerTraversal, Model, ModelError};
+
+/// A scene's triangles converted for one model (the conversion is where errors happen;
+/// rasterizing prepared triangles cannot fail).
+#[derive(Debug, Clone)]
+pub(crate) enum PreparedTriangles {
+    /// Exact triangles (as written, or snapped and converted back).
+    Exact(Vec<Triangle>),
+    /// Fixed-point triangles inside the envelope, for the block-traversal model.
+    Fixed(Vec<FixedTriangle>),
+    /// Fixed-point triangles for the scanline (edge-walking) model.
+    Scanline(Vec<FixedTriangle>),
+    /// f32 triangles and the float rule.
+    F32(Vec<[Vec2; 3]>, FloatRule),
+    /// f64 triangles and the float rule.
+    F64(Vec<[DVec2; 3]>, FloatRule),
+}
+
+/// Converts `triangles` for `model`; the first triangle it cannot take is the error.
+pub(crate) fn prepare_triangles(
+    model: Model,
+    triangles: &[Triangle],
+    conv: &Convention,
+) -> Result<PreparedTriangles, ModelError> {
+    let range = |k| ModelError::FloatRange { triangle: k, model };
+    Ok(match model.arithmetic() {
+        Arithmetic::Exact { snapped: false } => PreparedTriangles::Exact(triangles.to_vec()),
+        Arithmetic::Exact { snapped: true } => {
+            PreparedTriangles::Exact(triangles.iter().map(|t| t.snapped(conv).to_exact()).collect())
+        }
+        Arithmetic::Integer(IntegerTraversal::Blocks) => PreparedTriangles::Fixed(fixed_triangles(triangles, conv)?),
+        Arithmetic::Integer(IntegerTraversal::Scanline) => {
+            PreparedTriangles::Scanline(fixed_triangles(triangles, conv)?)
+        }
+        Arithmetic::Float(FloatType::F32, rule) => PreparedTriangles::F32(
+            triangles
+                .iter()
+                .enumerate()
+                .map(|(k, t)| t.to_f32().ok_or(range(k)))
+                .collect::<Result<_, _>>()?,
+            rule,
+        ),
+        Arithmetic::Float(FloatType::F64, rule) => PreparedTriangles::F64(
+            triangles
+                .iter()
+                .enumerate()
+                .map(|(k, t)| t.to_f64().ok_or(range(k)))
+                .collect::<Result<_, _>>()?,
+            rule,
+        ),
+    })
+}
+
+/// Snaps every triangle and checks it against the integer envelope.
+fn fixed_triangles(triangles: &[Triangle], conv: &Convention) -> Result<Vec<FixedTriangle>, ModelError> {
+    triangles
+        .iter()
+        .enumerate()
+        .map(|(k, t)| {
+            t.snapped(conv)
+                .to_fixed()
+                .map_err(|(vertex, axis, error)| ModelError::Envelope {
+                    triangle: k,
+                    vertex,
+                    axis,
+                    error,
+                })
+        })
+        .collect()
+}
+
+/// Triangle ids are their indices.
+fn id_of(k: usize) -> u32 {
+    u32::try_from(k).expect("scene triangle counts fit u32")
+}
+
+impl PreparedTriangles {
+    /// How many triangles.
+    pub(crate) fn len(&self) -> usize {
+        match self {
+            PreparedTriangles::Exact(ts) => ts.len(),
+            PreparedTriangles::Fixed(ts) | PreparedTriangles::Scanline(ts) => ts.len(),
+            PreparedTriangles::F32(ts, _) => ts.len(),
+            PreparedTriangles::F64(ts, _) => ts.len(),
+        }
+    }
+
+    /// Rasterizes every triangle whole into `sink`, triangle k with id k.
+    pub(crate) fn rasterize_into<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S) {
+        match self {
+            PreparedTriangles::Exact(ts) => ts
+                .iter()
+                .enumerate()
+                .for_each(|(k, t)| exact::rasterize(t, id_of(k), target, sink)),
+            PreparedTriangles::Fixed(ts) => ts
+                .iter()
+                .enumerate()
+                .for_each(|(k, t)| fixed::rasterize(t, id_of(k), target, sink)),
+            PreparedTriangles::Scanline(ts) => ts
+                .iter()
+                .enumerate()
+                .for_each(|(k, t)| scanline::rasterize(t, id_of(k), target, sink)),
+            PreparedTriangles::F32(ts, rule) => ts
+                .iter()
+                .enumerate()
+                .for_each(|(k, t)| float::rasterize_f32(t, id_of(k), target, *rule, sink)),
+            PreparedTriangles::F64(ts, rule) => ts
+                .iter()
+                .enumerate()
+                .for_each(|(k, t)| float::rasterize_f64(t, id_of(k), target, *rule, sink)),
+        }
+    }
+
+    /// The Gouraud colour of triangle `k` at the sample of pixel `(x, y)`, computed in the
+    /// model's own arithmetic (exact rationals; exact integer edge values over twice the
+    /// area for the integer models; f32 / f64 barycentrics for the float models).
+    pub(crate) fn shade(&self, k: usize, colours: &[Rgb; 3], x: u32, y: u32, target: &Target) -> Rgb {
+        match self {
+            PreparedTriangles::Exact(ts) => gouraud_exact(&ts[k], colours, &sample_exact(x, y, target))
+                .map_or([0; 3], |c| c.each_ref().map(to_channel)),
+            PreparedTriangles::Fixed(ts) | PreparedTriangles::Scanline(ts) => {
+                let b = barycentric_fixed(&ts[k], x, y, target);
+                if b.area2 == 0 {
+                    return [0; 3];
+                }
+                std::array::from_fn(|ch| {
+                    let sum: i128 = (0..3).map(|i| b.w[i] * i128::from(colours[i][ch])).sum();
+                    to_channel(&BigRational::new(sum.into(), b.area2.into()))
+                })
+            }
+            PreparedTriangles::F32(ts, _) => gouraud_f32(&ts[k], colours, sample_f32(x, y, target)).unwrap_or([0; 3]),
+            PreparedTriangles::F64(ts, _) => gouraud_f64(&ts[k], colours, sample_f64(x, y, target)).unwrap_or([0; 3]),
+        }
+    }
+
+    /// The interpolated-colour picture: each covered pixel takes the colour of its
+    /// highest-numbered (last drawn) primitive; a triangle without colours, or any other
+    /// primitive, shows its coverage colour.
+    pub(crate) fn colour_image(&self, coverage: &Coverage, colours: &[Option<[Rgb; 3]>], target: &Target) -> RgbImage {
+        let mut img = RgbImage::new(target.width, target.height);
+        for (x, y, ids) in coverage.iter() {
+            let Some(&top) = ids.last() else { continue };
+            let k = top as usize;
+            let rgb = match colours.get(k).copied().flatten() {
+                Some(c) if k < self.len() => self.shade(k, &c, x, y, target),
+                _ => primitive_colour(top),
+            };
+            img.put_pixel(x, y, image::Rgb(rgb));
+        }
+        img
+    }
+}
