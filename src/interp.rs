@@ -1,10 +1,10 @@
-//! Barycentric coordinates and attribute interpolation (seeds 000, 003, 004).
+//! Barycentric coordinates and attribute interpolation (Pineda 1988; Scratchapixel; Luebke).
 //!
 //! - exact: `λ0 = E(v1,v2,p) / E(v0,v1,v2)` etc. over `BigRational`; they sum to exactly 1;
 //! - integer: the three edge values `w0, w1, w2` at a sample, whose sum is exactly twice
 //!   the signed area (an algebraic identity the i64 arithmetic keeps inside the envelope);
 //! - float: the same ratios in f32 / f64 (the sum misses 1 by a few ulps);
-//! - Gouraud colour `c = λ0 c0 + λ1 c1 + λ2 c2`, and seed 004's plane equation
+//! - Gouraud colour `c = λ0 c0 + λ1 c1 + λ2 c2`, and the plane equation of Luebke's slides
 //!   `c = A x + B y + C` from a 3x3 solve, equal to it in exact arithmetic.
 
 use glam::{DVec2, Vec2};
@@ -135,7 +135,7 @@ fn float_channel(v: f64) -> u8 {
     }
 }
 
-/// An attribute as a plane over the triangle: `c(x, y) = a x + b y + c` (seed 004).
+/// An attribute as a plane over the triangle: `c(x, y) = a x + b y + c` (Luebke, "Drawing triangles").
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Plane {
     /// Coefficient of x.
@@ -147,7 +147,7 @@ pub struct Plane {
 }
 
 impl Plane {
-    /// Seed 004's setup: solve `[xi yi 1] . [a b c] = vi` for the three vertices by
+    /// Luebke's plane-equation setup: solve `[xi yi 1] . [a b c] = vi` for the three vertices by
     /// Cramer's rule; `None` when the triangle has zero area (the matrix is singular).
     pub fn setup(t: &Triangle, values: &[BigRational; 3]) -> Option<Plane> {
         let one = BigRational::from_integer(BigInt::from(1));

@@ -1,10 +1,10 @@
-//! Cohen-Sutherland (seed 002): each endpoint gets a 4-bit outcode TBRL = (y > ymax,
-//! y < ymin, x > xmax, x < xmin); `a | b == 0` keeps the segment, `a & b != 0` rejects
-//! it, otherwise an outside endpoint is moved to the boundary of one of its set bits and
-//! the test repeats. The exact form computes every intersection as a rational; the float
-//! forms round at each step (the new point's clipped coordinate is set to the boundary
-//! value exactly, so a bit once cleared is not set again by that coordinate, and the loop
-//! is capped at 8 rounds in case rounding sets another).
+//! Cohen-Sutherland (Sproull & Sutherland 1968; Newman & Sproull 1973): each endpoint gets
+//! a 4-bit outcode TBRL = (y > ymax, y < ymin, x > xmax, x < xmin); `a | b == 0` keeps the
+//! segment, `a & b != 0` rejects it, otherwise an outside endpoint is moved to the
+//! boundary of one of its set bits and the test repeats. The exact form computes every
+//! intersection as a rational; the float forms round at each step (the new point's clipped
+//! coordinate is set to the boundary value exactly, so a bit once cleared is not set again
+//! by that coordinate, and the loop is capped at 8 rounds in case rounding sets another).
 
 use glam::{DVec2, Vec2};
 use num_rational::BigRational;

@@ -1,4 +1,4 @@
-//! Half-planes (seed 002): a point is kept when `<p - p0, n> >= 0` for a point `p0` on the
+//! Point clipping against half-planes: a point is kept when `<p - p0, n> >= 0` for a point `p0` on the
 //! boundary and a normal `n` pointing inside, or, in homogeneous line coordinates,
 //! when `e . (x, y, 1) = a x + b y + c >= 0`. Points on the boundary are kept.
 //! Exact over `BigRational`, and in f32 / f64 with glam.

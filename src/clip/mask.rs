@@ -4,7 +4,7 @@
 //! equals clipping the primitive exactly and then rasterizing it
 //! (`raster(clip(P, W)) == raster(P) ∩ raster(W)`, see [`crate::clip`]). For line pixels
 //! the mask is the closed window: a pixel is kept when its sample lies in the window or
-//! on its boundary (seed 002's point clipping).
+//! on its boundary (point clipping against the window's half-planes).
 
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};

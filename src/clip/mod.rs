@@ -1,11 +1,11 @@
-//! Clipping (seed 002): points against half-planes, segments against an axis-aligned
-//! window (Cohen-Sutherland), polygons against a convex window (Sutherland-Hodgman),
-//! each exact (BigRational) and in f32 / f64.
+//! Clipping: points against half-planes, segments against an axis-aligned window
+//! (Cohen-Sutherland; Sproull & Sutherland 1968), polygons against a convex window
+//! (Sutherland & Hodgman 1974), each exact (BigRational) and in f32 / f64.
 //!
 //! # Samples on the window's boundary
 //!
-//! The clipped geometry keeps the window's boundary (points on it are inside, seed
-//! 002). What a rasterizer then covers follows the tie rule's ε reading: a sample on
+//! The clipped geometry keeps the window's boundary (points on it are inside, as in
+//! point clipping). What a rasterizer then covers follows the tie rule's ε reading: a sample on
 //! the window's boundary belongs to the clipped polygon exactly when its moved sample
 //! `p + (ε, ±ε²)` lies inside the window, so
 //! `raster(clip(P, W)) == raster(P) ∩ raster(W)` pixel for pixel, with `raster(W)` the

@@ -1,12 +1,12 @@
-//! Sutherland-Hodgman (seed 002): the subject polygon is clipped against each half-plane
-//! of a convex window in turn. Walking the edges `s -> e` of the current polygon, the four
-//! cases are:
+//! Sutherland-Hodgman ("Reentrant Polygon Clipping", Sutherland & Hodgman 1974): the
+//! subject polygon is clipped against each half-plane of a convex window in turn. Walking
+//! the edges `s -> e` of the current polygon, the four cases are:
 //!
 //! | s | e | emit |
 //! |---|---|---|
 //! | in | in | `e` |
 //! | in | out | the intersection |
-//! | out | in | the intersection, then `e` (the case the seed's pseudo-code forgets) |
+//! | out | in | the intersection, then `e` (the case a widely copied lecture pseudo-code forgets) |
 //! | out | out | nothing |
 //!
 //! "In" includes the boundary. A concave subject can come out with degenerate edges

@@ -6,7 +6,7 @@ use num_traits::{Signed, Zero};
 use crate::convention::TieRule;
 use crate::geom::{Point, Triangle};
 
-/// `E(p)` for the edge `a -> b`, seed 000's form, exactly.
+/// `E(p)` for the edge `a -> b`, in Pineda's (1988) form, exactly.
 ///
 /// ```
 /// use rasterproof::edge::exact::edge_function;

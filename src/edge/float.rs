@@ -1,4 +1,4 @@
-//! Float edge functions with glam, Scratchapixel style (seed 003): the fast, inexact end
+//! Float edge functions with glam, Scratchapixel style: the fast, inexact end
 //! of the trade. Each product and difference rounds; the harness measures what that costs.
 
 use std::cmp::Ordering;

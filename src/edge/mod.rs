@@ -1,4 +1,4 @@
-//! Edge functions (Pineda 1988; seed 000): `E(p) = (p.x - a.x)(b.y - a.y) - (p.y - a.y)(b.x - a.x)`
+//! Edge functions (Pineda 1988): `E(p) = (p.x - a.x)(b.y - a.y) - (p.y - a.y)(b.x - a.x)`
 //! in exact ([`exact`]), fixed-point ([`fixed`]) and float ([`float`]) forms.
 //!
 //! Every form orients a triangle so that its interior is `E > 0` on all three edges and

@@ -1,13 +1,13 @@
-//! Flood fill on a raster (seed 002): the 4- or 8-connected region of pixels whose RGBA
+//! Flood fill on a raster (Smith 1979, Heckbert 1990): the 4- or 8-connected region of pixels whose RGBA
 //! colour equals a seed pixel's exactly, found by a span (scanline) seed fill with an
 //! explicit stack, with a plain breadth-first search beside it as the oracle.
 //!
-//! Seed 002 states the brute force: starting at the seed, recursively, "is the current
-//! point's colour the seed point's colour? no -> stop; yes -> recolour it and restart for
-//! every neighbour" (four neighbours: up, down, left, right; eight: those and the
-//! corners), and warns that "recursion is very crude". It is: one call per pixel, nested as
-//! deep as the region is long, so a 4096x4096 region overflows any thread's stack. Nothing
-//! here recurses.
+//! The textbook brute force (Foley, van Dam et al.), in a lecture's words: starting at
+//! the seed, recursively, "is the current point's colour the seed point's colour? no ->
+//! stop; yes -> recolour it and restart for every neighbour" (four neighbours: up,
+//! down, left, right; eight: those and the corners); the lecture warns that "recursion
+//! is very crude". It is: one call per pixel, nested as deep as the region is long, so
+//! a 4096x4096 region overflows any thread's stack. Nothing here recurses.
 //!
 //! - [`span_region`] is the seed fill of Smith ("Tint Fill", SIGGRAPH 1979) in the form of
 //!   Heckbert ("A Seed Fill Algorithm", Graphics Gems I, 1990): fill a whole horizontal

@@ -1,6 +1,6 @@
-//! Fills: flood fill on a raster (seed 002), scanline polygon fill with an active edge
-//! table (seed 002), and polygon triangulation (seed 004's fan, spade's constrained
-//! Delaunay triangulation).
+//! Fills: flood fill on a raster (Smith 1979), scanline polygon fill with an active edge
+//! table (Foley, van Dam et al.), and polygon triangulation (Luebke's fan, spade's
+//! constrained Delaunay triangulation).
 
 pub mod flood;
 pub mod polygon;

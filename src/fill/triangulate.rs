@@ -1,4 +1,4 @@
-//! Polygon to triangles, on the snapped polygon: a fan for a convex polygon (seed 004),
+//! Polygon to triangles, on the snapped polygon: a fan for a convex polygon (Luebke),
 //! spade's constrained Delaunay triangulation for a simple concave polygon or one with
 //! holes. Self-intersecting input is refused with an error that names the two edges
 //! (fill it with the scanline filler, [`crate::fill::polygon`], instead).
@@ -328,7 +328,7 @@ fn is_convex(points: &[[i64; 2]]) -> bool {
     !(turns.contains(&Ordering::Less) && turns.contains(&Ordering::Greater))
 }
 
-/// Seed 004's fan from vertex 0, without its zero-area triangles.
+/// The fan from vertex 0 (Luebke, "Drawing triangles"), without its zero-area triangles.
 fn fan(points: &[[i64; 2]]) -> Vec<[[i64; 2]; 3]> {
     (1..points.len() - 1)
         .map(|i| [points[0], points[i], points[i + 1]])

@@ -1,4 +1,4 @@
-//! Integer Bresenham / midpoint lines in all eight octants (seed 001): the first-octant
+//! Integer Bresenham / midpoint lines in all eight octants (Bresenham 1965, Pitteway 1967): the first-octant
 //! algorithm with the axes reflected (major axis by `|dx| >= |dy|`, steps by the signs of
 //! dx and dy), one integer add per pixel. The direction of travel is kept (no swapping of
 //! ends), so `a -> b` and `b -> a` may differ, and only at exact ties.
@@ -14,7 +14,7 @@ use crate::coverage::CoverageSink;
 ///
 /// ```
 /// use rasterproof::line::{bresenham::walk, BresenhamTie};
-/// // Seed 001's worked example: decisions 2, 0, 6, 4.
+/// // A worked example of the midpoint form: decisions 2, 0, 6, 4.
 /// let mut seen = Vec::new();
 /// walk([5, 8], [9, 11], BresenhamTie::Stay, |p, d| seen.push((p, d)));
 /// assert_eq!(seen, vec![([5, 8], Some(2)), ([6, 9], Some(0)), ([7, 9], Some(6)), ([8, 10], Some(4)), ([9, 11], None)]);

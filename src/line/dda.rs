@@ -1,4 +1,4 @@
-//! The float DDA of seed 002: step the major axis by one, add the slope `m` to the minor
+//! The naive float DDA: step the major axis by one, add the slope `m` to the minor
 //! coordinate in floating point, draw the rounded value. Error accumulates with every
 //! addition: the fast, inexact end of the trade for lines.
 

@@ -1,4 +1,4 @@
-//! Lines (seeds 001 and 002; D3D11 §3.4.3): integer Bresenham in all octants
+//! Lines (Bresenham 1965, Pitteway 1967; D3D11 §3.4.3): integer Bresenham in all octants
 //! ([`bresenham`]), the float DDA ([`dda`]), the diamond-exit rule in integers
 //! ([`diamond`]), and the exact references ([`exact`]): the ideal line per major step and a
 //! plain rational reading of the diamond rule.
@@ -50,9 +50,9 @@ impl Line {
 /// minor axis (the midpoint lies on the line, decision value 0).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum BresenhamTie {
-    /// Seed 001: `d <= 0` chooses E: the minor coordinate stays.
+    /// The midpoint form (Pitteway 1967): `d <= 0` chooses E: the minor coordinate stays.
     Stay,
-    /// Seed 002: `e >= 0` steps the minor axis.
+    /// Bresenham's error-term form as textbooks teach it: `e >= 0` steps the minor axis.
     Step,
 }
 

@@ -1,5 +1,5 @@
 //! The incremental integer rasterizer on the snapped scene: one setup per triangle, then
-//! `E(x+1, y) = E + dY`, `E(x, y+1) = E - dX` (seed 000), traversed in [`BLOCK`] x
+//! `E(x+1, y) = E + dY`, `E(x, y+1) = E - dX` (Pineda 1988), traversed in [`BLOCK`] x
 //! [`BLOCK`] blocks: a block whose four corner samples are all outside one edge is
 //! skipped, a block whose corners are inside all three edges is filled as spans, only the
 //! rest is tested per pixel. i64 throughout; the envelope of [`crate::num::fixed`]
@@ -11,7 +11,7 @@ use crate::edge::fixed::{triangle_edges, FixedEdge};
 use crate::geom::FixedTriangle;
 use crate::raster::{fixed_sample_range, FixedGrid, PixelRange};
 
-/// Block side, in pixels (the L of seed 000's `E(x+L, y) = E + L dY`).
+/// Block side, in pixels (the L of Pineda's `E(x+L, y) = E + L dY`).
 pub const BLOCK: u32 = 8;
 
 /// Covers every pixel whose sample is inside `tri` (already snapped, inside the envelope).

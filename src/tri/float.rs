@@ -1,5 +1,5 @@
-//! Float rasterizers with glam (Scratchapixel style, seed 003): bounding box, three float
-//! edge functions per sample. [`FloatRule::Naive`] is the seed's `w >= 0` test (samples on
+//! Float rasterizers with glam (Scratchapixel style): bounding box, three float
+//! edge functions per sample. [`FloatRule::Naive`] is Scratchapixel's `w >= 0` test (samples on
 //! a shared edge go to both triangles); [`FloatRule::TieRule`] applies the convention's
 //! inclusive flags to the float values. Neither is exact: rounding in the products moves
 //! samples across edges, and the harness counts how often.
@@ -14,7 +14,7 @@ use crate::raster::{float_sample_range, sample_f64};
 /// How a float model decides a sample with `w == 0`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FloatRule {
-    /// `w >= 0` on all edges (seed 003 as written).
+    /// `w >= 0` on all edges (Scratchapixel, "Rasterization: a Practical Implementation", as written).
     Naive,
     /// `w > 0`, or `w == 0` on an edge the tie rule makes inclusive.
     TieRule,

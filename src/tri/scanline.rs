@@ -1,11 +1,11 @@
-//! Edge walking (seed 004): the triangle scan-converted row by row. On each scanline the
+//! Edge walking (Luebke, "Drawing triangles"): the triangle scan-converted row by row. On each scanline the
 //! span runs from the largest left bound to the smallest right bound of the three edges
 //! (sorting the vertices into a left and a right chain amounts to the same max and min),
 //! and each bound is advanced from row to row by an exact integer DDA: quotient and
 //! remainder, no floats, no division per row. A horizontal edge admits a whole row or
 //! none. Same snapped input, tie rule and samples as [`crate::tri::fixed`], so it must
-//! equal `exact-snapped` pixel for pixel: the property tests are its proof (seed 004
-//! calls this algorithm "lots of finicky special cases").
+//! equal `exact-snapped` pixel for pixel: the property tests are its proof (Luebke's
+//! University of Virginia lecture slides call this algorithm "lots of finicky special cases").
 //!
 //! Arithmetic in i128: the numerators reach `|N| < 2^63` inside the envelope
 //! (`|a| <= 2^29`, `|dx|, |dy| <= 2^30`, samples below 2^30 subpixels) and the divisors
