@@ -147,8 +147,8 @@ impl Model {
             Model::ExactSnapped => Arithmetic::Exact { snapped: true },
             Model::Fixed => Arithmetic::Integer(IntegerTraversal::Blocks),
             Model::Scanline => Arithmetic::Integer(IntegerTraversal::Scanline),
-            Model::Float32 => Arithmetic::Float(FloatType::F32, FloatRule::TieRule),
-            Model::Float64 => Arithmetic::Float(FloatType::F64, FloatRule::TieRule),
+            Model::Float32 => Arithmetic::Float(FloatType::F32, FloatRule::WithTieRule),
+            Model::Float64 => Arithmetic::Float(FloatType::F64, FloatRule::WithTieRule),
             Model::Float32Naive => Arithmetic::Float(FloatType::F32, FloatRule::Naive),
             Model::Float64Naive => Arithmetic::Float(FloatType::F64, FloatRule::Naive),
         }

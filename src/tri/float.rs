@@ -1,6 +1,6 @@
 //! Float rasterizers with glam (Scratchapixel style): bounding box, three float
 //! edge functions per sample. [`FloatRule::Naive`] is Scratchapixel's `w >= 0` test (samples on
-//! a shared edge go to both triangles); [`FloatRule::TieRule`] applies the convention's
+//! a shared edge go to both triangles); [`FloatRule::WithTieRule`] applies the convention's
 //! inclusive flags to the float values. Neither is exact: rounding in the products moves
 //! samples across edges, and the harness counts how often.
 
@@ -17,7 +17,7 @@ pub enum FloatRule {
     /// `w >= 0` on all edges (Scratchapixel, "Rasterization: a Practical Implementation", as written).
     Naive,
     /// `w > 0`, or `w == 0` on an edge the tie rule makes inclusive.
-    TieRule,
+    WithTieRule,
 }
 
 macro_rules! float_rasterizer {
@@ -41,7 +41,7 @@ macro_rules! float_rasterizer {
             let conv = &target.convention;
             let inclusive = |a: $vec, b: $vec| match rule {
                 FloatRule::Naive => true,
-                FloatRule::TieRule => is_inclusive(
+                FloatRule::WithTieRule => is_inclusive(
                     [f64::from(a.x), f64::from(a.y)],
                     [f64::from(b.x), f64::from(b.y)],
                     conv.tie_rule,
