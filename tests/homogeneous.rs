@@ -6,18 +6,21 @@
 
 mod common;
 
+#[path = "common/mat4.rs"]
+mod mat4;
 #[path = "common/rng.rs"]
 mod rng;
 
 use common::{config, q};
 use glam::{DMat4, DVec2, DVec4};
+use mat4::{mat_exact_from_f64, mat_mul_exact, transform_exact};
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 use proptest::prelude::*;
 use rasterproof::clip::homogeneous::{
-    clip_exact, clip_f32, clip_f64, clip_to_window_exact, divide_then_clip_exact, interpolate_exact,
-    mat_exact_from_f64, mat_mul_exact, project_exact, project_f64, to_window_exact, transform_exact, transform_f64,
-    ClipVertex, ClipVertexF32, ClipVertexF64, DepthRange, NdcY, ProjectError, Viewport, WindowVertex,
+    clip_exact, clip_f32, clip_f64, clip_to_window_exact, divide_then_clip_exact, interpolate_exact, project_exact,
+    project_f64, to_window_exact, transform_f64, ClipVertex, ClipVertexF32, ClipVertexF64, DepthRange, NdcY,
+    ProjectError, Viewport, WindowVertex,
 };
 use rasterproof::convention::{Convention, Target};
 use rasterproof::coverage::Coverage;

@@ -4,7 +4,8 @@
 use glam::{DMat4, DVec2, DVec3, DVec4, Mat4, Vec2, Vec3, Vec4};
 use num_rational::BigRational;
 
-use super::{clip_planes, merged, ClipVertex, DepthRange, NdcY, ProjectError, Viewport};
+use super::{clip_planes, ClipVertex, DepthRange, NdcY, ProjectError, Viewport};
+use crate::clip::sutherland_hodgman::merged;
 use crate::interp::{barycentric_f32, barycentric_f64};
 
 /// An object-space point `(x, y, z, 1)` into clip space by `m`, in f64.
@@ -47,7 +48,7 @@ macro_rules! float_forms {
             pub attrs: Vec<$float>,
         }
 
-        #[doc = concat!("A window-space vertex in ", $name, " (see [`WindowVertex`]).")]
+        #[doc = concat!("A window-space vertex in ", $name, " (see [`WindowVertex`](super::WindowVertex)).")]
         #[derive(Debug, Clone, PartialEq)]
         pub struct $window_vertex {
             /// Window position, pixels.
@@ -86,7 +87,7 @@ macro_rules! float_forms {
             }
         }
 
-        #[doc = concat!("[`clip_exact`] in ", $name, ": the same planes and cases, each `t` and ")]
+        #[doc = concat!("[`clip_exact`](super::clip_exact) in ", $name, ": the same planes and cases, each `t` and ")]
         #[doc = "intersection rounded (so an output can land just outside the volume)."]
         pub fn $clip(poly: &[$vertex], depth: DepthRange) -> Vec<$vertex> {
             let mut poly = poly.to_vec();
@@ -119,7 +120,7 @@ macro_rules! float_forms {
             poly
         }
 
-        #[doc = concat!("[`project_exact`] in ", $name, ".")]
+        #[doc = concat!("[`project_exact`](super::project_exact) in ", $name, ".")]
         ///
         /// # Errors
         /// [`ProjectError::NotInFront`] for the first vertex whose `w` is not `> 0` (NaN included).
@@ -166,7 +167,7 @@ macro_rules! float_forms {
             }
         }
 
-        #[doc = concat!("[`clip_to_window_exact`] in ", $name, ": clipped, the eye point (the only ")]
+        #[doc = concat!("[`clip_to_window_exact`](super::clip_to_window_exact) in ", $name, ": clipped, the eye point (the only ")]
         #[doc = "clipped vertex that can have `w <= 0`) dropped, divided and mapped."]
         pub fn $clip_to_window(poly: &[$vertex], viewport: &$viewport) -> Vec<$window_vertex> {
             let in_front: Vec<$vertex> = $clip(poly, viewport.depth)
@@ -176,7 +177,7 @@ macro_rules! float_forms {
             $project(&in_front, viewport).expect("every vertex has w > 0")
         }
 
-        #[doc = concat!("[`interpolate_exact`] in ", $name, " (`None` for a zero-area triangle ")]
+        #[doc = concat!("[`interpolate_exact`](super::interpolate_exact) in ", $name, " (`None` for a zero-area triangle ")]
         #[doc = "or where `Σ b_i / w_i` is 0)."]
         pub fn $interpolate(tri: &[$window_vertex; 3], p: $vec2) -> Option<$window_vertex> {
             let b = $barycentric(&[tri[0].point, tri[1].point, tri[2].point], p)?;

@@ -1,21 +1,185 @@
-//! Parsing the polygon and clipping fields: `polygons`, `clip_space_triangles`,
-//! `viewport`, `clip`.
+//! The shape fields of a scene: `triangles`, `lines`, `polygons`, `clip_space_triangles`,
+//! and the clipping fields `viewport` and `clip`.
 
 use num_rational::BigRational;
 use num_traits::Signed;
-use serde_json::Value;
+use serde_json::{Map, Value};
 
-use super::{kind, show, Parser, MAX_POLYGON_VERTICES};
+use super::reader::{kind, show, Reader};
+use super::{MAX_POLYGON_VERTICES, MAX_TRIANGLES};
 use crate::clip::homogeneous::{ClipVertex, DepthRange, NdcY, Viewport};
 use crate::clip::Window;
 use crate::convention::Preset;
 use crate::fill::polygon::{locate_exact, Location};
-use crate::geom::{FillRule, Point, Polygon};
-use crate::scene::SceneError;
+use crate::geom::{FillRule, Point, Polygon, Triangle};
+use crate::geom::Rgb;
+use crate::line::{BresenhamTie, Line, LineRule, MAX_BRESENHAM_COORD};
+use crate::scene::{SceneError, SceneTriangle};
 
-impl Parser<'_> {
+impl Reader<'_> {
+    pub(super) fn triangles(&self, v: &Value) -> Result<Vec<SceneTriangle>, SceneError> {
+        self.each(v, "triangles", MAX_TRIANGLES, |t, at| self.triangle(t, at))
+    }
+
+    fn triangle(&self, v: &Value, at: &str) -> Result<SceneTriangle, SceneError> {
+        let Value::Object(obj) = v else {
+            return Err(self.err(
+                at,
+                format!("expected an object with \"v\", found {} {}", kind(v), show(v)),
+            ));
+        };
+        self.known_fields(obj, at, &["v", "colors"])?;
+        let [a, b, c] = self
+            .triangle_vertices(obj, at, "a vertex is [x, y]")?
+            .map(|[x, y]| Point::new(x, y));
+        let colours = match obj.get("colors") {
+            None => None,
+            Some(cv) => Some(self.colours(cv, &format!("{at}.colors"))?),
+        };
+        Ok(SceneTriangle {
+            triangle: Triangle::new(a, b, c),
+            colours,
+        })
+    }
+
+    /// The field `v` of a triangle object at `at`: exactly 3 vertices of `D` coordinates
+    /// each (`shape` says which, for the error).
+    fn triangle_vertices<const D: usize>(
+        &self,
+        obj: &Map<String, Value>,
+        at: &str,
+        shape: &str,
+    ) -> Result<[[BigRational; D]; 3], SceneError> {
+        let vf = format!("{at}.v");
+        let verts = self.array(
+            obj.get("v").ok_or_else(|| self.err(&vf, "missing (required)".into()))?,
+            &vf,
+        )?;
+        if verts.len() != 3 {
+            return Err(self.err(
+                &vf,
+                format!("a triangle needs exactly 3 vertices, found {}", verts.len()),
+            ));
+        }
+        let mut out = Vec::with_capacity(3);
+        for (i, p) in verts.iter().enumerate() {
+            let pf = format!("{vf}[{i}]");
+            let coords = self.array(p, &pf)?;
+            if coords.len() != D {
+                return Err(self.err(&pf, format!("{shape}, found {} values", coords.len())));
+            }
+            let values = coords
+                .iter()
+                .enumerate()
+                .map(|(k, c)| self.coordinate(c, &format!("{pf}[{k}]")))
+                .collect::<Result<Vec<_>, _>>()?;
+            out.push(<[BigRational; D]>::try_from(values).expect("D coordinates checked"));
+        }
+        Ok(out.try_into().expect("three vertices checked"))
+    }
+
+    pub(super) fn lines(&self, v: &Value) -> Result<Vec<Line>, SceneError> {
+        self.each(v, "lines", MAX_TRIANGLES, |l, at| self.line(l, at))
+    }
+
+    fn line(&self, v: &Value, at: &str) -> Result<Line, SceneError> {
+        let Value::Object(obj) = v else {
+            return Err(self.err(
+                at,
+                format!(
+                    "expected an object with \"from\" and \"to\", found {} {}",
+                    kind(v),
+                    show(v)
+                ),
+            ));
+        };
+        self.known_fields(obj, at, &["from", "to", "rule", "tie"])?;
+        let from = self.point(obj.get("from"), &format!("{at}.from"))?;
+        let to = self.point(obj.get("to"), &format!("{at}.to"))?;
+        let rule_name = match obj.get("rule") {
+            None => "bresenham",
+            Some(r) => self.string(r, &format!("{at}.rule"))?,
+        };
+        let tie = match obj.get("tie") {
+            None => BresenhamTie::Stay,
+            Some(t) => {
+                let name = self.string(t, &format!("{at}.tie"))?;
+                BresenhamTie::from_name(name).ok_or_else(|| {
+                    self.err(
+                        &format!("{at}.tie"),
+                        format!("unknown tie {name:?} (expected stay or step)"),
+                    )
+                })?
+            }
+        };
+        let rule = match rule_name {
+            "bresenham" => LineRule::Bresenham(tie),
+            "diamond" => {
+                if obj.contains_key("tie") {
+                    return Err(self.err(
+                        &format!("{at}.tie"),
+                        "only Bresenham lines have a tie convention".into(),
+                    ));
+                }
+                LineRule::Diamond
+            }
+            other => {
+                return Err(self.err(
+                    &format!("{at}.rule"),
+                    format!("unknown rule {other:?} (expected bresenham or diamond)"),
+                ))
+            }
+        };
+        if let LineRule::Bresenham(_) = rule {
+            for (end, p) in [("from", &from), ("to", &to)] {
+                for (axis, c) in [(0, &p.x), (1, &p.y)] {
+                    let field = format!("{at}.{end}[{axis}]");
+                    if !c.is_integer() {
+                        return Err(self.err(&field, format!(
+                            "{} is not an integer: a Bresenham line joins pixel addresses (use \"rule\": \"diamond\" for fractional endpoints)",
+                            crate::num::exact::exact_text(c)
+                        )));
+                    }
+                    if c.abs() > BigRational::from_integer(MAX_BRESENHAM_COORD.into()) {
+                        return Err(self.err(
+                            &field,
+                            format!(
+                                "{} is outside +-2^24, the Bresenham envelope (it walks every step)",
+                                crate::num::exact::exact_text(c)
+                            ),
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(Line { from, to, rule })
+    }
+
+    fn colours(&self, v: &Value, at: &str) -> Result<[Rgb; 3], SceneError> {
+        let list = self.array(v, at)?;
+        if list.len() != 3 {
+            return Err(self.err(at, format!("expected 3 colours (one per vertex), found {}", list.len())));
+        }
+        let mut out = [[0u8; 3]; 3];
+        for (i, c) in list.iter().enumerate() {
+            let cf = format!("{at}[{i}]");
+            let rgb = self.array(c, &cf)?;
+            if rgb.len() != 3 {
+                return Err(self.err(&cf, format!("a colour is [r, g, b], found {} values", rgb.len())));
+            }
+            for (ch, value) in rgb.iter().enumerate() {
+                let f = format!("{cf}[{ch}]");
+                out[i][ch] = value
+                    .as_u64()
+                    .and_then(|n| u8::try_from(n).ok())
+                    .ok_or_else(|| self.err(&f, format!("{} is not an integer in 0..=255", show(value))))?;
+            }
+        }
+        Ok(out)
+    }
+
     pub(super) fn polygons(&self, v: &Value) -> Result<Vec<Polygon>, SceneError> {
-        self.each(v, "polygons", |p, at| self.polygon(p, at))
+        self.each(v, "polygons", MAX_TRIANGLES, |p, at| self.polygon(p, at))
     }
 
     fn contour(&self, v: &Value, at: &str) -> Result<Vec<Point>, SceneError> {
@@ -96,7 +260,7 @@ impl Parser<'_> {
     }
 
     pub(super) fn clip_space_triangles(&self, v: &Value) -> Result<Vec<[ClipVertex; 3]>, SceneError> {
-        self.each(v, "clip_space_triangles", |t, at| {
+        self.each(v, "clip_space_triangles", MAX_TRIANGLES, |t, at| {
             let Value::Object(obj) = t else {
                 return Err(self.err(
                     at,

@@ -1,4 +1,6 @@
-//! Parsing scene files. The format:
+//! Parsing scene files. This module is the schema (which fields a scene has, their
+//! defaults and limits; the shape fields in `parse/shapes.rs`), read through the typed
+//! JSON reads of `parse/reader.rs`, whose errors name the field and the value. The format:
 //!
 //! ```json
 //! {
@@ -19,26 +21,25 @@
 //! ```
 //!
 //! Only `width` and `height` are required. Lines: `rule` is `bresenham` (default; integer
-//! pixel endpoints within ±2^24, `tie` `stay` (seed 001, default) or `step` (seed 002)) or
-//! `diamond` (any endpoints). Polygons: an outline `v` and optional `holes`, each at least
-//! 3 vertices, no hole vertex outside the outline, `fill_rule` `nonzero` (default) or
-//! `even-odd`; ids after the triangles and lines. A coordinate is a JSON number read exactly as
+//! pixel endpoints within ±2^24, `tie` `stay` (default: the midpoint form of Pitteway 1967,
+//! `d <= 0` keeps the minor coordinate) or `step` (the error-term form of Bresenham 1965,
+//! `e >= 0` steps the minor axis)) or `diamond` (any endpoints). Polygons: an outline `v`
+//! and optional `holes`, each at least 3 vertices, no hole vertex outside the outline,
+//! `fill_rule` `nonzero` (default) or `even-odd`; ids after the triangles and lines. A coordinate is a JSON number read exactly as
 //! written (`0.1` is 1/10, never an f64) or a string with a decimal or a fraction. Unknown
 //! fields are errors (a typo must not silently change the convention). Every error names
 //! the file, the field path and the value.
 
 use num_rational::BigRational;
-use num_traits::Signed;
 use serde_json::{Map, Value};
 
+mod reader;
 mod shapes;
 
-use super::{Overrides, Scene, SceneError, SceneTriangle};
+use super::{Overrides, Scene, SceneError};
 use crate::convention::{PixelCentre, Preset, Rounding, TieRule, MAX_CANVAS};
-use crate::geom::Rgb;
-use crate::geom::{Point, Triangle};
-use crate::line::{BresenhamTie, Line, LineRule, MAX_BRESENHAM_COORD};
-use crate::num::{parse_rational, MAX_SUBPIXEL_BITS};
+use crate::num::MAX_SUBPIXEL_BITS;
+use reader::{kind, show, Reader};
 
 /// The most triangles a scene may hold (ids must fit u32; memory stays bounded).
 pub const MAX_TRIANGLES: usize = 10_000_000;
@@ -68,7 +69,7 @@ pub fn parse_scene_bytes(bytes: &[u8], source: &str) -> Result<Scene, SceneError
 /// assert_eq!(err.to_string(), "a.json: triangles[0].v[1][1]: \"NaN\" is not a finite number (expected a decimal like -12.5 or 1e3, or a fraction like 1/3)");
 /// ```
 pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
-    let p = Parser { source };
+    let p = Reader { source };
     let value: Value = serde_json::from_str(text).map_err(|e| p.err("", format!("malformed JSON: {e}")))?;
     let Value::Object(root) = &value else {
         return Err(p.err("", format!("the top level must be an object, found {}", kind(&value))));
@@ -148,65 +149,7 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
     })
 }
 
-struct Parser<'a> {
-    source: &'a str,
-}
-
-fn kind(v: &Value) -> &'static str {
-    match v {
-        Value::Null => "null",
-        Value::Bool(_) => "a boolean",
-        Value::Number(_) => "a number",
-        Value::String(_) => "a string",
-        Value::Array(_) => "an array",
-        Value::Object(_) => "an object",
-    }
-}
-
-/// A value shown in an error, shortened so a huge value cannot flood the terminal.
-fn show(v: &Value) -> String {
-    let s = v.to_string();
-    if s.chars().count() > 60 {
-        format!("{}...", s.chars().take(60).collect::<String>())
-    } else {
-        s
-    }
-}
-
-impl Parser<'_> {
-    fn err(&self, field: &str, message: String) -> SceneError {
-        SceneError {
-            source: self.source.to_string(),
-            field: field.to_string(),
-            message,
-        }
-    }
-
-    fn known_fields(&self, obj: &Map<String, Value>, at: &str, known: &[&str]) -> Result<(), SceneError> {
-        for key in obj.keys() {
-            if !known.contains(&key.as_str()) {
-                let field = if at.is_empty() {
-                    key.clone()
-                } else {
-                    format!("{at}.{key}")
-                };
-                return Err(self.err(&field, format!("unknown field (expected one of: {})", known.join(", "))));
-            }
-        }
-        Ok(())
-    }
-
-    fn string<'v>(&self, v: &'v Value, field: &str) -> Result<&'v str, SceneError> {
-        v.as_str()
-            .ok_or_else(|| self.err(field, format!("expected a string, found {} {}", kind(v), show(v))))
-    }
-
-    /// A non-negative integer written as a JSON number without fraction or exponent.
-    fn integer(&self, v: &Value, field: &str) -> Result<u64, SceneError> {
-        v.as_u64()
-            .ok_or_else(|| self.err(field, format!("expected a non-negative integer, found {}", show(v))))
-    }
-
+impl Reader<'_> {
     fn canvas_side(&self, root: &Map<String, Value>, field: &str) -> Result<u32, SceneError> {
         let v = root
             .get(field)
@@ -256,218 +199,6 @@ impl Parser<'_> {
             });
         }
         Ok(o)
-    }
-
-    /// An exact number: a JSON number as written, or a string with a decimal or fraction.
-    fn coordinate(&self, v: &Value, field: &str) -> Result<BigRational, SceneError> {
-        let text = match v {
-            // With serde_json's arbitrary_precision, a number keeps the text it was written as.
-            Value::Number(n) => n.to_string(),
-            Value::String(s) => s.clone(),
-            _ => {
-                return Err(self.err(
-                    field,
-                    format!("expected a number or a numeric string, found {} {}", kind(v), show(v)),
-                ))
-            }
-        };
-        parse_rational(&text).map_err(|e| self.err(field, format!("{} {e}", show(v))))
-    }
-
-    fn array<'v>(&self, v: &'v Value, field: &str) -> Result<&'v Vec<Value>, SceneError> {
-        v.as_array()
-            .ok_or_else(|| self.err(field, format!("expected an array, found {} {}", kind(v), show(v))))
-    }
-
-    /// The array at `field`, at most [`MAX_TRIANGLES`] entries, each parsed by `parse`
-    /// with its own path (`field[k]`).
-    fn each<T>(
-        &self,
-        v: &Value,
-        field: &str,
-        parse: impl Fn(&Value, &str) -> Result<T, SceneError>,
-    ) -> Result<Vec<T>, SceneError> {
-        let list = self.array(v, field)?;
-        if list.len() > MAX_TRIANGLES {
-            return Err(self.err(field, format!("{} entries, at most {MAX_TRIANGLES}", list.len())));
-        }
-        list.iter()
-            .enumerate()
-            .map(|(k, item)| parse(item, &format!("{field}[{k}]")))
-            .collect()
-    }
-
-    fn triangles(&self, v: &Value) -> Result<Vec<SceneTriangle>, SceneError> {
-        self.each(v, "triangles", |t, at| self.triangle(t, at))
-    }
-
-    fn triangle(&self, v: &Value, at: &str) -> Result<SceneTriangle, SceneError> {
-        let Value::Object(obj) = v else {
-            return Err(self.err(
-                at,
-                format!("expected an object with \"v\", found {} {}", kind(v), show(v)),
-            ));
-        };
-        self.known_fields(obj, at, &["v", "colors"])?;
-        let [a, b, c] = self
-            .triangle_vertices(obj, at, "a vertex is [x, y]")?
-            .map(|[x, y]| Point::new(x, y));
-        let colours = match obj.get("colors") {
-            None => None,
-            Some(cv) => Some(self.colours(cv, &format!("{at}.colors"))?),
-        };
-        Ok(SceneTriangle {
-            triangle: Triangle::new(a, b, c),
-            colours,
-        })
-    }
-
-    /// The field `v` of a triangle object at `at`: exactly 3 vertices of `D` coordinates
-    /// each (`shape` says which, for the error).
-    fn triangle_vertices<const D: usize>(
-        &self,
-        obj: &Map<String, Value>,
-        at: &str,
-        shape: &str,
-    ) -> Result<[[BigRational; D]; 3], SceneError> {
-        let vf = format!("{at}.v");
-        let verts = self.array(
-            obj.get("v").ok_or_else(|| self.err(&vf, "missing (required)".into()))?,
-            &vf,
-        )?;
-        if verts.len() != 3 {
-            return Err(self.err(
-                &vf,
-                format!("a triangle needs exactly 3 vertices, found {}", verts.len()),
-            ));
-        }
-        let mut out = Vec::with_capacity(3);
-        for (i, p) in verts.iter().enumerate() {
-            let pf = format!("{vf}[{i}]");
-            let coords = self.array(p, &pf)?;
-            if coords.len() != D {
-                return Err(self.err(&pf, format!("{shape}, found {} values", coords.len())));
-            }
-            let values = coords
-                .iter()
-                .enumerate()
-                .map(|(k, c)| self.coordinate(c, &format!("{pf}[{k}]")))
-                .collect::<Result<Vec<_>, _>>()?;
-            out.push(<[BigRational; D]>::try_from(values).expect("D coordinates checked"));
-        }
-        Ok(out.try_into().expect("three vertices checked"))
-    }
-
-    fn lines(&self, v: &Value) -> Result<Vec<Line>, SceneError> {
-        self.each(v, "lines", |l, at| self.line(l, at))
-    }
-
-    fn point(&self, v: Option<&Value>, at: &str) -> Result<Point, SceneError> {
-        let v = v.ok_or_else(|| self.err(at, "missing (required)".into()))?;
-        let xy = self.array(v, at)?;
-        if xy.len() != 2 {
-            return Err(self.err(at, format!("a point is [x, y], found {} values", xy.len())));
-        }
-        Ok(Point::new(
-            self.coordinate(&xy[0], &format!("{at}[0]"))?,
-            self.coordinate(&xy[1], &format!("{at}[1]"))?,
-        ))
-    }
-
-    fn line(&self, v: &Value, at: &str) -> Result<Line, SceneError> {
-        let Value::Object(obj) = v else {
-            return Err(self.err(
-                at,
-                format!(
-                    "expected an object with \"from\" and \"to\", found {} {}",
-                    kind(v),
-                    show(v)
-                ),
-            ));
-        };
-        self.known_fields(obj, at, &["from", "to", "rule", "tie"])?;
-        let from = self.point(obj.get("from"), &format!("{at}.from"))?;
-        let to = self.point(obj.get("to"), &format!("{at}.to"))?;
-        let rule_name = match obj.get("rule") {
-            None => "bresenham",
-            Some(r) => self.string(r, &format!("{at}.rule"))?,
-        };
-        let tie = match obj.get("tie") {
-            None => BresenhamTie::Stay,
-            Some(t) => {
-                let name = self.string(t, &format!("{at}.tie"))?;
-                BresenhamTie::from_name(name).ok_or_else(|| {
-                    self.err(
-                        &format!("{at}.tie"),
-                        format!("unknown tie {name:?} (expected stay or step)"),
-                    )
-                })?
-            }
-        };
-        let rule = match rule_name {
-            "bresenham" => LineRule::Bresenham(tie),
-            "diamond" => {
-                if obj.contains_key("tie") {
-                    return Err(self.err(
-                        &format!("{at}.tie"),
-                        "only Bresenham lines have a tie convention".into(),
-                    ));
-                }
-                LineRule::Diamond
-            }
-            other => {
-                return Err(self.err(
-                    &format!("{at}.rule"),
-                    format!("unknown rule {other:?} (expected bresenham or diamond)"),
-                ))
-            }
-        };
-        if let LineRule::Bresenham(_) = rule {
-            for (end, p) in [("from", &from), ("to", &to)] {
-                for (axis, c) in [(0, &p.x), (1, &p.y)] {
-                    let field = format!("{at}.{end}[{axis}]");
-                    if !c.is_integer() {
-                        return Err(self.err(&field, format!(
-                            "{} is not an integer: a Bresenham line joins pixel addresses (use \"rule\": \"diamond\" for fractional endpoints)",
-                            crate::num::exact::exact_text(c)
-                        )));
-                    }
-                    if c.abs() > BigRational::from_integer(MAX_BRESENHAM_COORD.into()) {
-                        return Err(self.err(
-                            &field,
-                            format!(
-                                "{} is outside +-2^24, the Bresenham envelope (it walks every step)",
-                                crate::num::exact::exact_text(c)
-                            ),
-                        ));
-                    }
-                }
-            }
-        }
-        Ok(Line { from, to, rule })
-    }
-
-    fn colours(&self, v: &Value, at: &str) -> Result<[Rgb; 3], SceneError> {
-        let list = self.array(v, at)?;
-        if list.len() != 3 {
-            return Err(self.err(at, format!("expected 3 colours (one per vertex), found {}", list.len())));
-        }
-        let mut out = [[0u8; 3]; 3];
-        for (i, c) in list.iter().enumerate() {
-            let cf = format!("{at}[{i}]");
-            let rgb = self.array(c, &cf)?;
-            if rgb.len() != 3 {
-                return Err(self.err(&cf, format!("a colour is [r, g, b], found {} values", rgb.len())));
-            }
-            for (ch, value) in rgb.iter().enumerate() {
-                let f = format!("{cf}[{ch}]");
-                out[i][ch] = value
-                    .as_u64()
-                    .and_then(|n| u8::try_from(n).ok())
-                    .ok_or_else(|| self.err(&f, format!("{} is not an integer in 0..=255", show(value))))?;
-            }
-        }
-        Ok(out)
     }
 }
 
