@@ -26,7 +26,7 @@
 mod error;
 mod lines;
 mod polygons;
-mod scene;
+mod prepared;
 mod triangles;
 
 use std::fmt;
@@ -34,7 +34,7 @@ use std::fmt;
 use crate::tri::float::FloatRule;
 
 pub use error::ModelError;
-pub use scene::{prepare, render, render_triangles, PreparedScene, Primitives};
+pub use prepared::{prepare, render, render_triangles, PreparedScene, Primitives};
 
 /// A model: one arithmetic for every primitive of a scene (the CLI's `--model`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
