@@ -52,7 +52,8 @@
 //!
 //! ## Features
 //! - `proptest`: the strategies in `strategy` (random triangles, spade meshes, tie-heavy
-//!   inputs) for your own property tests.
+//!   inputs) for your own property tests, and `harness`: the counterexample search for
+//!   your own rasterizer and the invariant suite behind `rasterproof check`.
 //! - `cli` (default): the `rasterproof` command; implies `proptest`.
 
 #![forbid(unsafe_code)]
@@ -66,6 +67,8 @@ pub mod coverage;
 pub mod edge;
 pub mod fill;
 pub mod geom;
+#[cfg(feature = "proptest")]
+pub mod harness;
 pub mod interp;
 pub mod line;
 pub mod model;

@@ -17,10 +17,10 @@
 
 mod common;
 
-use rasterproof::check::harness::{find_counterexample, Counterexample, HarnessConfig};
 use rasterproof::convention::{Preset, Target};
 use rasterproof::coverage::{Coverage, CoverageSink};
 use rasterproof::geom::FixedTriangle;
+use rasterproof::harness::{find_counterexample, Counterexample, HarnessConfig};
 use rasterproof::scene::parse_scene;
 
 /// Which inside test the loop uses.

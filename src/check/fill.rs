@@ -30,7 +30,7 @@ pub fn check_triangulation(polygon: &Polygon, triangles: &[Triangle], target: &T
     rasterize_exact(polygon, 0, target, &mut fill);
     let mut tiles = Coverage::new(target.width, target.height);
     for (k, t) in triangles.iter().enumerate() {
-        let id = u32::try_from(k).map_err(|_| Violation::new("triangulation", "too many triangles".into()))?;
+        let id = u32::try_from(k).map_err(|_| Violation::new("triangulation", "too many triangles"))?;
         crate::tri::exact::rasterize(t, id, target, &mut tiles);
     }
     let mut bad = Vec::new();

@@ -7,8 +7,6 @@ mod barycentric;
 mod clip;
 mod explain;
 mod fill;
-#[cfg(feature = "proptest")]
-pub mod harness;
 mod invariance;
 mod line;
 mod watertight;
@@ -37,8 +35,19 @@ pub struct Violation {
 }
 
 impl Violation {
-    fn new(invariant: &'static str, message: String) -> Violation {
-        Violation { invariant, message }
+    /// A violation of `invariant` (a short name such as `"watertight"`), explained by
+    /// `message`.
+    ///
+    /// ```
+    /// use rasterproof::check::Violation;
+    /// let v = Violation::new("watertight", "pixel (3, 4) covered twice");
+    /// assert_eq!(v.to_string(), "watertight violated: pixel (3, 4) covered twice");
+    /// ```
+    pub fn new(invariant: &'static str, message: impl Into<String>) -> Violation {
+        Violation {
+            invariant,
+            message: message.into(),
+        }
     }
 }
 

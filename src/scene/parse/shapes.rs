@@ -11,8 +11,8 @@ use crate::clip::homogeneous::{ClipVertex, DepthRange, NdcY, Viewport};
 use crate::clip::Window;
 use crate::convention::Preset;
 use crate::fill::polygon::{locate_exact, Location};
-use crate::geom::{FillRule, Point, Polygon, Triangle};
 use crate::geom::Rgb;
+use crate::geom::{FillRule, Point, Polygon, Triangle};
 use crate::line::{BresenhamTie, Line, LineRule, MAX_BRESENHAM_COORD};
 use crate::scene::{SceneError, SceneTriangle};
 

@@ -1,4 +1,4 @@
-//! The harness for your own triangle rasterizer (feature `proptest`): random triangles of
+//! The counterexample search for your own triangle rasterizer: random triangles of
 //! every family (tie-heavy ones included) are rendered by your rasterizer and by the
 //! oracle; the first disagreement is shrunk by proptest, then further towards zero
 //! coordinate by coordinate, and reported as a minimal scene file with the exact
@@ -11,7 +11,7 @@
 use proptest::strategy::Strategy;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};
 
-use super::{check_agreement, Violation};
+use crate::check::{check_agreement, diff, Violation};
 use crate::convention::{Preset, Target};
 use crate::coverage::{Coverage, CoverageSink};
 use crate::geom::FixedTriangle;
@@ -59,7 +59,7 @@ pub struct Counterexample {
 /// triangles; `None` when all `config.cases` agree.
 ///
 /// ```
-/// use rasterproof::check::harness::{find_counterexample, HarnessConfig};
+/// use rasterproof::harness::{find_counterexample, HarnessConfig};
 /// // The crate's own integer model has no counterexample.
 /// let config = HarnessConfig { cases: 64, ..HarnessConfig::default() };
 /// assert!(find_counterexample(|t, id, target, sink| rasterproof::tri::fixed::rasterize(t, id, target, sink), &config).is_none());
@@ -163,7 +163,7 @@ where
     F: Fn(&FixedTriangle, u32, &Target, &mut dyn CoverageSink),
 {
     let (reference, candidate) = render_both(rasterizer, t, &target);
-    let Some(first) = super::diff(&reference, &candidate).into_iter().next() else {
+    let Some(first) = diff(&reference, &candidate).into_iter().next() else {
         return target;
     };
     match Target::new(first.x + 1, first.y + 1, target.convention) {

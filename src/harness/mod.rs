@@ -1,0 +1,15 @@
+//! Harnesses built on the checkers (feature `proptest`): the layer above [`crate::check`],
+//! [`crate::strategy`] and [`crate::scene`] that draws random cases, runs the checkers on
+//! them and reports what failed as scene files.
+//!
+//! - [`find_counterexample`] ([`search`]): your own triangle rasterizer against the
+//!   oracle, the first disagreement shrunk to a minimal scene.
+//! - [`suite`]: the invariant suite behind `rasterproof check` — seeded random cases
+//!   ([`generate`]), every checker on each ([`run_case`]) and the table of outcomes
+//!   ([`Tally`]).
+
+pub mod search;
+pub mod suite;
+
+pub use search::{find_counterexample, Counterexample, HarnessConfig};
+pub use suite::{generate, must_hold, run_case, Case, CaseRun, Outcome, Tally};

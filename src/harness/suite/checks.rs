@@ -1,0 +1,386 @@
+//! Every checker of the suite on one case.
+
+use num_rational::BigRational;
+
+use super::{Case, CaseRun, Outcome, CANVAS};
+use crate::check::{
+    check_agreement, check_barycentric_exact, check_barycentric_fixed, check_clip_raster, check_diamond_agreement,
+    check_inside, check_line_pixels, check_line_reference, check_line_symmetry, check_rotation_and_winding,
+    check_segment_clip, check_translation, check_triangulation, check_watertight, float_sum_error_ulps, Violation,
+};
+use crate::clip::halfplane::HalfPlane;
+use crate::clip::sutherland_hodgman::{self, clip_polygon};
+use crate::clip::{cohen_sutherland, Window};
+use crate::convention::{Preset, Target, MAX_CANVAS};
+use crate::fill::triangulate::{triangulate, validate};
+use crate::geom::{FixedTriangle, Point, Polygon, Triangle};
+use crate::line::{bresenham, dda, BresenhamTie, Line, LineRule};
+use crate::model::{render, render_triangles, Model, Primitives};
+use crate::raster::sample_exact;
+use crate::scene::Scene;
+
+fn target(side: u32, preset: Preset) -> Target {
+    Target::new(side, side, preset.convention()).expect("suite canvases are valid")
+}
+
+/// A `side` x `side` scene of `triangles` in the case's preset (other primitives are set
+/// by the caller).
+fn scene(c: &Case, side: u32, triangles: &[Triangle]) -> Scene {
+    let mut scene = Scene::new(side, side, triangles.to_vec());
+    scene.preset = c.preset;
+    scene
+}
+
+/// Runs every checker of the suite on `c`: triangles, meshes, lines, polygons and
+/// clipping, each outcome with the scene that reproduces it, and the float32 barycentric
+/// sum errors measured at the case's samples.
+///
+/// ```
+/// use rasterproof::harness::{generate, run_case};
+/// let run = run_case(&generate(7, 0).unwrap());
+/// assert!(run.outcomes.iter().all(|o| !o.is_fatal()));
+/// ```
+pub fn run_case(c: &Case) -> CaseRun {
+    let mut out = Vec::new();
+    let float32_sum_ulps = triangle_checks(c, &mut out);
+    line_checks(c, &mut out);
+    polygon_checks(c, &mut out);
+    clip_checks(c, &mut out);
+    CaseRun {
+        mesh_family: c.mesh_family,
+        outcomes: out,
+        float32_sum_ulps,
+    }
+}
+
+/// Invariants 1-4 on the case's triangle and meshes; returns the float32 barycentric sum
+/// errors (ulps of 1).
+fn triangle_checks(c: &Case, out: &mut Vec<Outcome>) -> Vec<f64> {
+    let tri_target = target(CANVAS, c.preset);
+    let tri = std::slice::from_ref(&c.triangle);
+    let mut push = |invariant, model: Model, result, triangles: &[Triangle], canvas| {
+        out.push(Outcome {
+            invariant,
+            model,
+            label: model.name(),
+            result,
+            scene: scene(c, canvas, triangles),
+        });
+    };
+
+    // 1. barycentrics: exact sums at a few samples, integer sums where the envelope allows.
+    let samples = [(0u32, 0u32), (CANVAS / 2, CANVAS / 3), (CANVAS - 1, CANVAS - 1)];
+    let exact_sum = samples.iter().try_for_each(|&(x, y)| {
+        let p = sample_exact(x, y, &tri_target);
+        check_barycentric_exact(&c.triangle, &p)
+    });
+    push("barycentric sum", Model::Exact, exact_sum, tri, CANVAS);
+    let ulps: Vec<f64> = samples
+        .iter()
+        .filter_map(|&(x, y)| {
+            let p = sample_exact(x, y, &tri_target);
+            float_sum_error_ulps(&c.triangle, &p)
+        })
+        .collect();
+    if let Ok(f) = c.triangle.snapped(&tri_target.convention).to_fixed() {
+        let sum = samples
+            .iter()
+            .try_for_each(|&(x, y)| check_barycentric_fixed(&f, x, y, &tri_target));
+        push("integer edge sum", Model::Fixed, sum, tri, CANVAS);
+    }
+
+    // 2. watertight meshes, and 3. agreement on them: the snapped models against
+    // exact-snapped, the float models against exact (the scene as written).
+    let meshes = [
+        (
+            &c.mesh,
+            c.mesh_canvas,
+            ("watertight", "agreement (mesh)"),
+            &[
+                Model::ExactSnapped,
+                Model::Fixed,
+                Model::Scanline,
+                Model::Float32,
+                Model::Float64,
+                Model::Float32Naive,
+            ][..],
+        ),
+        (
+            &c.fine_mesh,
+            MAX_CANVAS,
+            ("watertight (fine mesh)", "agreement (fine mesh)"),
+            &[Model::Float32, Model::Float64][..],
+        ),
+    ];
+    for (mesh, side, (w_name, a_name), models) in meshes {
+        let mesh_target = target(side, c.preset);
+        let reference_exact = render_triangles(Model::Exact, &mesh.triangles, &mesh_target);
+        let reference_snapped = render_triangles(Model::ExactSnapped, &mesh.triangles, &mesh_target);
+        for &model in models {
+            let (watertight, agreement) = match render_triangles(model, &mesh.triangles, &mesh_target) {
+                Err(e) => {
+                    let v = Violation::new("watertight", e.to_string());
+                    (Err(v.clone()), Err(v))
+                }
+                Ok(cov) => {
+                    let (name, reference) = if model.snaps() {
+                        ("exact-snapped", &reference_snapped)
+                    } else {
+                        ("exact", &reference_exact)
+                    };
+                    let agreement = match reference {
+                        Ok(r) => check_agreement(name, r, model.name(), &cov, &mesh.triangles, &mesh_target),
+                        Err(e) => Err(Violation::new("agreement", e.to_string())),
+                    };
+                    (
+                        check_watertight(&mesh.triangles, &mesh.outline, &cov, &mesh_target),
+                        agreement,
+                    )
+                }
+            };
+            push(w_name, model, watertight, &mesh.triangles, side);
+            push(a_name, model, agreement, &mesh.triangles, side);
+        }
+    }
+
+    // 3. agreement on a single random triangle (every family).
+    if let Ok(reference) = render_triangles(Model::ExactSnapped, tri, &tri_target) {
+        for model in [Model::Fixed, Model::Scanline] {
+            let result = render_triangles(model, tri, &tri_target)
+                .map_err(|e| Violation::new("agreement", e.to_string()))
+                .and_then(|cov| check_agreement("exact-snapped", &reference, model.name(), &cov, tri, &tri_target));
+            push("agreement (triangle)", model, result, tri, CANVAS);
+        }
+    }
+
+    // 4. invariance.
+    for model in [Model::ExactSnapped, Model::Fixed, Model::Float32] {
+        push(
+            "rotation/winding",
+            model,
+            check_rotation_and_winding(model, &c.triangle, &tri_target),
+            tri,
+            CANVAS,
+        );
+    }
+    for model in [Model::ExactSnapped, Model::Fixed] {
+        let (dx, dy) = c.shift;
+        push(
+            "translation",
+            model,
+            check_translation(model, &c.triangle, dx, dy, &tri_target),
+            tri,
+            CANVAS,
+        );
+    }
+    ulps
+}
+
+/// Invariant 6 (clipping): exact Sutherland-Hodgman output inside the window and
+/// rasterizing to raster(P) ∩ raster(W); exact Cohen-Sutherland keeping exactly the part
+/// inside; the float forms' outputs outside the window counted (the measured trade).
+fn clip_checks(c: &Case, out: &mut Vec<Outcome>) {
+    let target = target(CANVAS, c.preset);
+    let polygon_case = || Scene {
+        polygons: vec![c.polygon.clone()],
+        clip: Some(c.window.clone()),
+        ..scene(c, CANVAS, &[])
+    };
+    let mut push = |invariant, model: Model, label, result, scene| {
+        out.push(Outcome {
+            invariant,
+            model,
+            label,
+            result,
+            scene,
+        });
+    };
+    let cut = clip_polygon(&c.polygon, &c.window);
+    let all_inside = std::iter::once(&cut.outline)
+        .chain(&cut.holes)
+        .try_for_each(|contour| check_inside(contour, &c.window));
+    push(
+        "clip inside",
+        Model::Exact,
+        "sutherland-hodgman",
+        all_inside,
+        polygon_case(),
+    );
+    push(
+        "clip raster",
+        Model::Exact,
+        "sutherland-hodgman",
+        check_clip_raster(&c.polygon, &cut, &c.window, &target),
+        polygon_case(),
+    );
+    let (a, b) = &c.segment;
+    if let Window::Rect(r) = &c.rect {
+        let kept = cohen_sutherland::clip_exact(a, b, r);
+        push(
+            "segment clip",
+            Model::Exact,
+            "cohen-sutherland",
+            check_segment_clip(a, b, r, kept.as_ref()),
+            Scene {
+                lines: vec![Line {
+                    from: a.clone(),
+                    to: b.clone(),
+                    rule: LineRule::Diamond,
+                }],
+                clip: Some(c.rect.clone()),
+                ..scene(c, CANVAS, &[])
+            },
+        );
+    }
+    // Float Sutherland-Hodgman: every output vertex read back exactly and checked exactly;
+    // a non-finite one is a violation in itself.
+    let inside = |pts: Vec<glam::DVec2>| -> Result<(), Violation> {
+        let exact = pts
+            .iter()
+            .map(|p| Some(Point::new(BigRational::from_float(p.x)?, BigRational::from_float(p.y)?)))
+            .collect::<Option<Vec<_>>>()
+            .ok_or_else(|| Violation::new("clip inside", format!("a float output is not finite: {pts:?}")))?;
+        check_inside(&exact, &c.window)
+    };
+    let planes = c.window.half_planes();
+    let subject = &c.polygon.outline;
+    let p64 = planes.iter().map(HalfPlane::to_f64).collect::<Option<Vec<_>>>();
+    let s64 = subject.iter().map(Point::to_f64).collect::<Option<Vec<_>>>();
+    if let (Some(p64), Some(s64)) = (p64, s64) {
+        push(
+            "clip inside",
+            Model::Float64,
+            "sh-f64",
+            inside(sutherland_hodgman::clip_f64(&s64, &p64)),
+            polygon_case(),
+        );
+    }
+    let p32 = planes.iter().map(HalfPlane::to_f32).collect::<Option<Vec<_>>>();
+    let s32 = subject.iter().map(Point::to_f32).collect::<Option<Vec<_>>>();
+    if let (Some(p32), Some(s32)) = (p32, s32) {
+        let pts = sutherland_hodgman::clip_f32(&s32, &p32);
+        push(
+            "clip inside",
+            Model::Float32,
+            "sh-f32",
+            inside(pts.into_iter().map(|p| p.as_dvec2()).collect()),
+            polygon_case(),
+        );
+    }
+}
+
+/// Invariant 7: the scanline filler equals the oracle on any polygon; a simple polygon's
+/// triangulation covers exactly its fill, once (the `fixed` model's route).
+fn polygon_checks(c: &Case, out: &mut Vec<Outcome>) {
+    let target = target(CANVAS, c.preset);
+    let mut push = |invariant, model: Model, result, polygon: &Polygon| {
+        out.push(Outcome {
+            invariant,
+            model,
+            label: model.name(),
+            result,
+            scene: Scene {
+                polygons: vec![polygon.clone()],
+                ..scene(c, CANVAS, &[])
+            },
+        });
+    };
+    let fill = |model, p: &Polygon| {
+        render(
+            model,
+            &Primitives {
+                polygons: vec![p.clone()],
+                ..Primitives::default()
+            },
+            &target,
+        )
+        .map_err(|e| Violation::new("polygon agreement", e.to_string()))
+    };
+    let agreement = fill(Model::ExactSnapped, &c.polygon).and_then(|reference| {
+        let scan = fill(Model::Scanline, &c.polygon)?;
+        check_agreement("exact-snapped", &reference, "scanline", &scan, &[], &target)
+    });
+    push("polygon agreement", Model::Scanline, agreement, &c.polygon);
+    // Grid rounding can fold a tiny star: only simple polygons are triangulated.
+    let Ok(fixed) = c.simple.to_fixed(&target.convention) else {
+        return;
+    };
+    if validate(&fixed).is_err() {
+        return;
+    }
+    let result = triangulate(&fixed)
+        .map_err(|e| Violation::new("triangulation", e.to_string()))
+        .and_then(|tris| {
+            let tris: Vec<Triangle> = tris.iter().map(FixedTriangle::to_exact).collect();
+            check_triangulation(&fixed.to_exact(), &tris, &target)
+        });
+    push("triangulation", Model::Fixed, result, &c.simple);
+}
+
+/// Invariant 5: Bresenham (both ties), its reversal, diamond-exit agreement, and the DDA's
+/// departures (the float trade for lines).
+fn line_checks(c: &Case, out: &mut Vec<Outcome>) {
+    let as_line = |(a, b): ([i64; 2], [i64; 2]), tie| Line {
+        from: Point::from_ints(a[0], a[1]),
+        to: Point::from_ints(b[0], b[1]),
+        rule: LineRule::Bresenham(tie),
+    };
+    let mut push = |invariant, model: Model, label, result, line: Line| {
+        out.push(Outcome {
+            invariant,
+            model,
+            label,
+            result,
+            scene: Scene {
+                lines: vec![line],
+                ..scene(c, CANVAS, &[])
+            },
+        });
+    };
+    for tie in [BresenhamTie::Stay, BresenhamTie::Step] {
+        let (a, b) = c.line;
+        let pixels = bresenham::pixels(a, b, tie);
+        let label = if tie == BresenhamTie::Stay {
+            "bresenham/stay"
+        } else {
+            "bresenham/step"
+        };
+        push(
+            "line pixels",
+            Model::Fixed,
+            label,
+            check_line_pixels(a, b, &pixels),
+            as_line(c.line, tie),
+        );
+        push(
+            "line reference",
+            Model::Fixed,
+            label,
+            check_line_reference(a, b, tie, &pixels),
+            as_line(c.line, tie),
+        );
+        let symmetry = check_line_symmetry(a, b, tie).map(|_| ());
+        push("line symmetry", Model::Fixed, label, symmetry, as_line(c.line, tie));
+    }
+    let target = target(CANVAS, c.preset);
+    push(
+        "diamond agreement",
+        Model::Fixed,
+        "diamond",
+        check_diamond_agreement(&c.diamond, &target),
+        c.diamond.clone(),
+    );
+    let (a, b) = c.long_line;
+    for (model, label, pixels) in [
+        (Model::Float32, "dda32", dda::pixels_f32(a, b)),
+        (Model::Float64, "dda64", dda::pixels_f64(a, b)),
+    ] {
+        push(
+            "line pixels (long)",
+            model,
+            label,
+            check_line_pixels(a, b, &pixels),
+            as_line(c.long_line, BresenhamTie::Stay),
+        );
+    }
+}
