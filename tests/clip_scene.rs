@@ -8,7 +8,7 @@ use assert_cmd::Command;
 use common::config;
 use num_rational::BigRational;
 use proptest::prelude::*;
-use rasterproof::check::diff;
+use rasterproof::check::differing_pixels;
 use rasterproof::clip::cohen_sutherland;
 use rasterproof::clip::halfplane::clip_segment_exact;
 use rasterproof::clip::mask::ClipMask;
@@ -129,7 +129,7 @@ fn render_honours_clip() {
         Model::Float64,
     ] {
         assert_eq!(
-            diff(&exact, &render(model, &scene.primitives(), &target).unwrap()),
+            differing_pixels(&exact, &render(model, &scene.primitives(), &target).unwrap()),
             vec![],
             "{model}"
         );
@@ -317,8 +317,8 @@ proptest! {
             return Err(TestCaseError::reject("outside the envelope or not triangulable"));
         };
         let exact = render(Model::ExactSnapped, &scene.primitives(), &target).unwrap();
-        prop_assert_eq!(diff(&exact, &fixed), vec![]);
-        prop_assert_eq!(diff(&exact, &render(Model::Scanline, &scene.primitives(), &target).unwrap()), vec![]);
+        prop_assert_eq!(differing_pixels(&exact, &fixed), vec![]);
+        prop_assert_eq!(differing_pixels(&exact, &render(Model::Scanline, &scene.primitives(), &target).unwrap()), vec![]);
     }
 
     /// Cyrus-Beck on a rectangle's half-planes keeps exactly what Cohen-Sutherland keeps.

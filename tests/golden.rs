@@ -118,7 +118,7 @@ fn seed003_float32_differs_only_near_edges() {
     let tris = scene.triangles();
     let exact = render_triangles(Model::Exact, &tris, &target).unwrap();
     let float = render_triangles(Model::Float32, &tris, &target).unwrap();
-    let diffs = rasterproof::check::diff(&exact, &float);
+    let diffs = rasterproof::check::differing_pixels(&exact, &float);
     let t = &tris[0];
     for d in &diffs {
         let p = Point::new(q(2 * i64::from(d.x) + 1, 2), q(2 * i64::from(d.y) + 1, 2));

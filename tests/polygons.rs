@@ -8,7 +8,7 @@ mod common;
 
 use common::config;
 use proptest::prelude::*;
-use rasterproof::check::{check_agreement, check_no_double_cover, diff};
+use rasterproof::check::{check_agreement, check_no_double_cover, differing_pixels};
 use rasterproof::convention::{PixelCentre, Preset, Target};
 use rasterproof::coverage::Coverage;
 use rasterproof::fill::polygon::{rasterize, rasterize_exact};
@@ -214,7 +214,7 @@ proptest! {
         let (mut a, mut b) = (Coverage::new(8, 8), Coverage::new(8, 8));
         rasterproof::tri::exact::rasterize(&t, 0, &target, &mut a);
         rasterize_exact(&poly, 0, &target, &mut b);
-        prop_assert_eq!(diff(&a, &b), vec![]);
+        prop_assert_eq!(differing_pixels(&a, &b), vec![]);
     }
 
     /// The active-edge-table filler equals the oracle on the same snapped polygon: simple,
@@ -246,7 +246,7 @@ proptest! {
         let (mut a, mut b) = (Coverage::new(24, 24), Coverage::new(24, 24));
         rasterize_exact(&poly, 0, &target, &mut a);
         rasterproof::fill::polygon::rasterize_rows_exact(&poly, 0, &target, &mut b);
-        prop_assert_eq!(diff(&a, &b), vec![]);
+        prop_assert_eq!(differing_pixels(&a, &b), vec![]);
     }
 
     /// The polygon oracle on a triangle equals the triangle oracle (the tie rule's ε
@@ -265,7 +265,7 @@ proptest! {
         let (mut a, mut b) = (Coverage::new(24, 24), Coverage::new(24, 24));
         rasterproof::tri::exact::rasterize(&t, 0, &target, &mut a);
         rasterize_exact(&poly, 0, &target, &mut b);
-        prop_assert_eq!(diff(&a, &b), vec![]);
+        prop_assert_eq!(differing_pixels(&a, &b), vec![]);
     }
 
     /// A simple polygon's fill is the union of its triangulation's coverage, pixel for
@@ -291,7 +291,7 @@ proptest! {
             },
             ..poly.clone()
         };
-        prop_assert_eq!(diff(&filled, &fill(&other, &target, Model::Scanline)), vec![]);
+        prop_assert_eq!(differing_pixels(&filled, &fill(&other, &target, Model::Scanline)), vec![]);
     }
 
     /// On stellated polygons the rules differ exactly where the winding number is even
@@ -303,7 +303,7 @@ proptest! {
         let nonzero = fill(&Polygon { fill_rule: FillRule::NonZero, ..star.clone() }, &target, Model::Scanline);
         let even_odd = fill(&Polygon { fill_rule: FillRule::EvenOdd, ..star.clone() }, &target, Model::Scanline);
         let snapped = star.snapped_exact(&target.convention);
-        for d in diff(&nonzero, &even_odd) {
+        for d in differing_pixels(&nonzero, &even_odd) {
             prop_assert!(d.candidate.is_empty(), "even-odd covers ({}, {}) where nonzero does not", d.x, d.y);
             let sample = Point::from_fractions(2 * i64::from(d.x) + 1, 2, 2 * i64::from(d.y) + 1, 2);
             let w = rasterproof::fill::polygon::contour_winding_exact(&sample, &snapped.outline, target.convention.tie_rule);
@@ -317,7 +317,7 @@ proptest! {
         let target = target_with(32, Preset::Gl, bits, false);
         let fixed = poly.to_fixed(&target.convention).unwrap();
         prop_assume!(validate(&fixed).is_ok());
-        prop_assert_eq!(diff(&fill(&poly, &target, Model::Scanline), &fill(&poly, &target, Model::Fixed)), vec![]);
+        prop_assert_eq!(differing_pixels(&fill(&poly, &target, Model::Scanline), &fill(&poly, &target, Model::Fixed)), vec![]);
     }
 }
 
@@ -339,7 +339,7 @@ fn scanline_at_the_envelope_edge() {
     let p = Polygon::new(pts(&[(-far, -far), (far, -far + 7), (3, 9)]), FillRule::EvenOdd);
     let exact = fill(&p, &target, Model::ExactSnapped);
     assert!(exact.covered_pixels() > 0);
-    assert_eq!(diff(&exact, &fill(&p, &target, Model::Scanline)), vec![]);
+    assert_eq!(differing_pixels(&exact, &fill(&p, &target, Model::Scanline)), vec![]);
     // One subpixel further is refused, naming the vertex.
     let beyond = Polygon::new(
         vec![
@@ -446,7 +446,7 @@ fn review_case_01_bow_tie_with_a_hole_clipped() {
     let clipped = fill(&cut, &target, Model::Exact);
     assert_eq!(clipped.owners(11, 10), &[0]);
     assert_eq!(
-        diff(&clipped, &fill(&p, &target, Model::Scanline).restricted(9, 0, 16, 16)),
+        differing_pixels(&clipped, &fill(&p, &target, Model::Scanline).restricted(9, 0, 16, 16)),
         vec![]
     );
 }

@@ -149,7 +149,7 @@ fn harness_catches_the_sign_bit_test_at_ties() {
     );
     rasterproof::tri::exact::rasterize(&found.scene.triangles[0].triangle, 0, &target, &mut oracle);
     speed_hack(Test::SignBits)(&found.triangle, 0, &target, &mut hack);
-    let first = rasterproof::check::diff(&oracle, &hack).remove(0);
+    let first = rasterproof::check::differing_pixels(&oracle, &hack).remove(0);
     assert!(first.reference.is_empty() && first.candidate == [0], "{first:?}");
     let v = found.triangle.coords().map(|p| p.map(i128::from));
     let one = 1i128 << found.triangle.bits;

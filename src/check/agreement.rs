@@ -23,7 +23,7 @@ pub struct PixelDiff {
 }
 
 /// Every pixel whose owner lists differ, row-major.
-pub fn diff(reference: &Coverage, candidate: &Coverage) -> Vec<PixelDiff> {
+pub fn differing_pixels(reference: &Coverage, candidate: &Coverage) -> Vec<PixelDiff> {
     let mut keys: Vec<(u32, u32)> = reference
         .iter()
         .chain(candidate.iter())
@@ -55,7 +55,7 @@ pub fn check_agreement(
     triangles: &[Triangle],
     target: &Target,
 ) -> Result<(), Violation> {
-    let diffs = diff(reference, candidate);
+    let diffs = differing_pixels(reference, candidate);
     let Some(d) = diffs.first() else {
         return Ok(());
     };

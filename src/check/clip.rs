@@ -6,7 +6,7 @@
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
-use super::{diff, Violation};
+use super::{differing_pixels, Violation};
 use crate::clip::{Rect, Window};
 use crate::convention::Target;
 use crate::coverage::Coverage;
@@ -105,7 +105,7 @@ pub fn check_clip_raster(poly: &Polygon, clipped: &Polygon, window: &Window, tar
             crate::coverage::CoverageSink::cover(&mut expected, x, y, 0);
         }
     }
-    let d = diff(&expected, &cut);
+    let d = differing_pixels(&expected, &cut);
     match d.first() {
         None => Ok(()),
         Some(first) => Err(Violation::new(

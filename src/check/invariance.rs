@@ -21,7 +21,7 @@ pub fn check_rotation_and_winding(model: Model, t: &Triangle, target: &Target) -
     ];
     for (what, v) in variants {
         let other = rendered(model, &v, target)?;
-        let d = super::diff(&base, &other);
+        let d = super::differing_pixels(&base, &other);
         if let Some(first) = d.first() {
             return Err(Violation::new(
                 "invariance",
@@ -57,7 +57,7 @@ pub fn check_translation(model: Model, t: &Triangle, dx: i64, dy: i64, target: &
     let (y0, y1) = (clamp(dy, h), clamp(h + dy, h));
     let expected = base.translated(dx, dy).restricted(x0, y0, x1, y1);
     let got = moved.restricted(x0, y0, x1, y1);
-    let d = super::diff(&expected, &got);
+    let d = super::differing_pixels(&expected, &got);
     match d.first() {
         None => Ok(()),
         Some(first) => Err(Violation::new(

@@ -3,7 +3,7 @@
 //! exact reference except at exact ties, where they follow the convention; `a -> b` and
 //! `b -> a` differ only at ties. The integer diamond-exit model equals the exact reading.
 
-use super::{diff, Violation};
+use super::{differing_pixels, Violation};
 use crate::convention::Target;
 use crate::line::exact::{ideal, resolve, IdealLine};
 use crate::line::{bresenham, Axes, BresenhamTie, Line, LineRule};
@@ -175,7 +175,7 @@ pub fn check_diamond_agreement(line: &Line, target: &Target) -> Result<(), Viola
     };
     let render = |m| render(m, &primitives, target).map_err(|e| Violation::new("diamond agreement", e.to_string()));
     let (exact, fixed) = (render(Model::ExactSnapped)?, render(Model::Fixed)?);
-    match diff(&exact, &fixed).first() {
+    match differing_pixels(&exact, &fixed).first() {
         None => Ok(()),
         Some(d) => fail(
             "diamond agreement",

@@ -13,7 +13,7 @@ mod watertight;
 
 use std::fmt;
 
-pub use agreement::{check_agreement, diff, PixelDiff};
+pub use agreement::{check_agreement, differing_pixels, PixelDiff};
 pub use barycentric::{check_barycentric_exact, check_barycentric_fixed, float_sum_error_ulps};
 pub use clip::{check_clip_raster, check_inside, check_segment_clip, inside_interval};
 pub use explain::explain_sample;

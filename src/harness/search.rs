@@ -11,7 +11,7 @@
 use proptest::strategy::Strategy;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};
 
-use crate::check::{check_agreement, diff, Violation};
+use crate::check::{check_agreement, differing_pixels, Violation};
 use crate::convention::{Preset, Target};
 use crate::coverage::{Coverage, CoverageSink};
 use crate::geom::FixedTriangle;
@@ -163,7 +163,7 @@ where
     F: Fn(&FixedTriangle, u32, &Target, &mut dyn CoverageSink),
 {
     let (reference, candidate) = render_both(rasterizer, t, &target);
-    let Some(first) = diff(&reference, &candidate).into_iter().next() else {
+    let Some(first) = differing_pixels(&reference, &candidate).into_iter().next() else {
         return target;
     };
     match Target::new(first.x + 1, first.y + 1, target.convention) {
