@@ -1,7 +1,7 @@
 //! Lines (Bresenham 1965, Pitteway 1967; D3D11 §3.4.3): integer Bresenham in all octants
 //! ([`bresenham`]), the float DDA ([`dda`]), the diamond-exit rule in integers
-//! ([`diamond`]), and the exact references ([`exact`]): the ideal line per major step and a
-//! plain rational reading of the diamond rule.
+//! ([`diamond`]), the exact references ([`exact`]): the ideal line per major step and a
+//! plain rational reading of the diamond rule, and that reading in floats ([`float`]).
 //!
 //! Bresenham endpoints are pixel addresses: the line from (5, 8) to (9, 11) runs between
 //! the centres of those pixels. Diamond-exit endpoints are window coordinates (fractions
@@ -11,6 +11,7 @@ pub mod bresenham;
 pub mod dda;
 pub mod diamond;
 pub mod exact;
+pub mod float;
 
 use num_traits::ToPrimitive;
 

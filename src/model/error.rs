@@ -22,10 +22,13 @@ pub enum ModelError {
         /// The value and the limit.
         error: EnvelopeError,
     },
-    /// A coordinate that does not fit the float type.
+    /// A coordinate that does not fit the float model's type.
     FloatRange {
-        /// Triangle index.
-        triangle: usize,
+        /// Which coordinate: `triangles[0].v[2].x`, `lines[1].from.y`,
+        /// `polygons[3].holes[0][5].x`.
+        at: String,
+        /// The value, as exact text (shortened when long).
+        value: String,
         /// The model.
         model: Model,
     },
@@ -44,13 +47,6 @@ pub enum ModelError {
     LineEndpoints {
         /// Line index (among the lines).
         line: usize,
-    },
-    /// A float model asked for a diamond-exit line (it has only the DDA).
-    NoFloatDiamond {
-        /// Line index (among the lines).
-        line: usize,
-        /// The model.
-        model: Model,
     },
     /// A snapped polygon vertex outside the integer envelope.
     PolygonEnvelope {
@@ -88,13 +84,6 @@ pub enum ModelError {
     },
     /// Clip-space triangles given without a viewport to map them with.
     NoViewport,
-    /// A float model asked for a polygon (polygons are filled by exact and integer models).
-    NoFloatPolygon {
-        /// Polygon index (among the polygons).
-        polygon: usize,
-        /// The model.
-        model: Model,
-    },
 }
 
 impl fmt::Display for ModelError {
@@ -106,23 +95,20 @@ impl fmt::Display for ModelError {
                 axis,
                 error,
             } => write!(f, "triangles[{triangle}].v[{vertex}].{axis}: {error}"),
-            ModelError::FloatRange { triangle, model } => write!(
-                f,
-                "triangles[{triangle}]: a coordinate does not fit the {model} model's float type"
-            ),
-            ModelError::LineEnvelope {
-                line,
-                end,
-                axis,
-                error,
-            } => write!(f, "lines[{line}].{end}.{axis}: {error}"),
+            ModelError::FloatRange { at, value, model } => {
+                let (ty, max) = match model.float_type() {
+                    Some(super::FloatType::F32) => ("f32", f64::from(f32::MAX)),
+                    _ => ("f64", f64::MAX),
+                };
+                write!(
+                    f,
+                    "{at}: {value} does not fit the {model} model's float type {ty} (|v| <= {max:e})"
+                )
+            }
+            ModelError::LineEnvelope { line, end, axis, error } => write!(f, "lines[{line}].{end}.{axis}: {error}"),
             ModelError::LineEndpoints { line } => write!(
                 f,
                 "lines[{line}]: a Bresenham line needs integer pixel endpoints within +-2^24"
-            ),
-            ModelError::NoFloatDiamond { line, model } => write!(
-                f,
-                "lines[{line}]: the {model} model draws lines with the DDA only; use exact, exact-snapped or fixed for \"rule\": \"diamond\""
             ),
             ModelError::PolygonEnvelope {
                 polygon,
@@ -135,17 +121,16 @@ impl fmt::Display for ModelError {
                 k => write!(f, "polygons[{polygon}].holes[{}][{vertex}].{axis}: {error}", k - 1),
             },
             ModelError::Triangulate { polygon, error } => {
-                write!(f, "polygons[{polygon}]: cannot triangulate for the fixed model: {error}")
+                write!(
+                    f,
+                    "polygons[{polygon}]: cannot triangulate for the fixed model: {error}"
+                )
             }
             ModelError::ClipSpace { triangle, message } => write!(f, "clip_space_triangles[{triangle}]: {message}"),
             ModelError::FloatScene { what, model } => {
                 write!(f, "{what}: a value does not fit the {model} model's float type")
             }
             ModelError::NoViewport => f.write_str("clip_space_triangles: no viewport to map them with"),
-            ModelError::NoFloatPolygon { polygon, model } => write!(
-                f,
-                "polygons[{polygon}]: the {model} model has no polygon fill; use exact, exact-snapped, scanline or fixed"
-            ),
         }
     }
 }

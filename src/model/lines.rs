@@ -1,6 +1,7 @@
 //! A scene's lines in each model's form: Bresenham (the exact ideal-line reference, the
-//! integer walk, or the float DDA) and diamond-exit (exact or integer).
+//! integer walk, or the float DDA) and diamond-exit (exact, integer, or read in floats).
 
+use glam::{DVec2, Vec2};
 use num_bigint::BigInt;
 
 use crate::convention::{Convention, Target};
@@ -12,10 +13,10 @@ use crate::num::exact::dyadic;
 use crate::num::fixed::snap;
 use crate::num::SubPixel;
 
-use super::{Arithmetic, FloatType, Model, ModelError};
+use super::{point_f32, point_f64, Arithmetic, FloatType, Model, ModelError};
 
 /// A line converted for one model.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub(crate) enum PreparedLine {
     /// Bresenham, drawn by the exact ideal-line reference.
     IdealBresenham([i64; 2], [i64; 2], BresenhamTie),
@@ -29,6 +30,10 @@ pub(crate) enum PreparedLine {
     DiamondExact(Box<(Point, Point)>),
     /// Diamond-exit, integer.
     DiamondFixed(FixedSegment),
+    /// Diamond-exit read in f32.
+    DiamondF32(Vec2, Vec2),
+    /// Diamond-exit read in f64.
+    DiamondF64(DVec2, DVec2),
 }
 
 /// Converts `lines` for `model`; the first line it cannot take is the error.
@@ -87,7 +92,14 @@ fn prepare_diamond(model: Model, k: usize, l: &Line, conv: &Convention) -> Resul
                 bits: conv.subpixel_bits,
             }))
         }
-        Arithmetic::Float(..) => Err(ModelError::NoFloatDiamond { line: k, model }),
+        Arithmetic::Float(FloatType::F32, _) => {
+            let end = |p: &Point, end: &str| point_f32(p, || format!("lines[{k}].{end}"), model);
+            Ok(PreparedLine::DiamondF32(end(&l.from, "from")?, end(&l.to, "to")?))
+        }
+        Arithmetic::Float(FloatType::F64, _) => {
+            let end = |p: &Point, end: &str| point_f64(p, || format!("lines[{k}].{end}"), model);
+            Ok(PreparedLine::DiamondF64(end(&l.from, "from")?, end(&l.to, "to")?))
+        }
     }
 }
 
@@ -101,6 +113,8 @@ impl PreparedLine {
             PreparedLine::Dda64(a, b) => line::dda::draw(*a, *b, line::dda::DdaFloat::F64, id, target, sink),
             PreparedLine::DiamondExact(ends) => line::exact::draw_diamond(&ends.0, &ends.1, id, target, sink),
             PreparedLine::DiamondFixed(seg) => line::diamond::draw(seg, id, target, sink),
+            PreparedLine::DiamondF32(a, b) => line::float::draw_diamond_f32(*a, *b, id, target, sink),
+            PreparedLine::DiamondF64(a, b) => line::float::draw_diamond_f64(*a, *b, id, target, sink),
         }
     }
 }

@@ -31,6 +31,10 @@ mod triangles;
 
 use std::fmt;
 
+use glam::{DVec2, Vec2};
+
+use crate::geom::Point;
+use crate::num::exact::{exact_text_short, nearest_f32, nearest_f64};
 use crate::tri::float::FloatRule;
 
 pub use error::ModelError;
@@ -154,6 +158,14 @@ impl Model {
         }
     }
 
+    /// The float type of a float model.
+    pub(crate) fn float_type(self) -> Option<FloatType> {
+        match self.arithmetic() {
+            Arithmetic::Float(t, _) => Some(t),
+            _ => None,
+        }
+    }
+
     /// Whether the model is exact: the exact and integer models, whose every invariant
     /// must hold (a float model's violations are the measured trade).
     pub fn is_exact(self) -> bool {
@@ -176,10 +188,10 @@ impl Model {
             Model::ExactSnapped => "the oracle on the snapped scene: what every integer model must equal",
             Model::Fixed => "i64 edge functions in blocks (alias bresenham); polygons triangulated (simple only)",
             Model::Scanline => "edge walking with exact integer DDAs; polygons by an active edge table",
-            Model::Float32 => "Scratchapixel in f32 with the tie rule on float values (alias dda32); no polygons",
-            Model::Float64 => "Scratchapixel in f64 with the tie rule on float values (alias dda64); no polygons",
-            Model::Float32Naive => "f32 with the naive w >= 0 test; no polygons",
-            Model::Float64Naive => "f64 with the naive w >= 0 test; no polygons",
+            Model::Float32 => "f32, the tie rule on float values (alias dda32); polygons by float winding",
+            Model::Float64 => "f64, the tie rule on float values (alias dda64); polygons by float winding",
+            Model::Float32Naive => "f32 with the naive w >= 0 test; polygons by the PNPOLY crossing test",
+            Model::Float64Naive => "f64 with the naive w >= 0 test; polygons by the PNPOLY crossing test",
         }
     }
 }
@@ -187,5 +199,26 @@ impl Model {
 impl fmt::Display for Model {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.name())
+    }
+}
+
+/// `p` rounded to the nearest f32 on each axis, or the error naming `{at}.x` / `{at}.y`,
+/// the value and the model.
+pub(crate) fn point_f32(p: &Point, at: impl Fn() -> String, model: Model) -> Result<Vec2, ModelError> {
+    let f = |v, axis| nearest_f32(v).ok_or_else(|| float_range(v, format!("{}.{axis}", at()), model));
+    Ok(Vec2::new(f(&p.x, 'x')?, f(&p.y, 'y')?))
+}
+
+/// `p` rounded to the nearest f64 on each axis, or the error naming the coordinate.
+pub(crate) fn point_f64(p: &Point, at: impl Fn() -> String, model: Model) -> Result<DVec2, ModelError> {
+    let f = |v, axis| nearest_f64(v).ok_or_else(|| float_range(v, format!("{}.{axis}", at()), model));
+    Ok(DVec2::new(f(&p.x, 'x')?, f(&p.y, 'y')?))
+}
+
+fn float_range(v: &num_rational::BigRational, at: String, model: Model) -> ModelError {
+    ModelError::FloatRange {
+        at,
+        value: exact_text_short(v),
+        model,
     }
 }

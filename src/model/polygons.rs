@@ -1,5 +1,6 @@
 //! A scene's polygons in each model's form (the oracle's exact polygon, the scanline
-//! filler's snapped polygon, the `fixed` model's triangulation, a float fan), and the
+//! filler's snapped polygon, the `fixed` model's triangulation, a float polygon for the
+//! float winding test, a float fan for clipped convex pieces), and the
 //! window-space polygon of each clip-space triangle.
 
 use glam::{DVec2, Vec2};
@@ -8,12 +9,13 @@ use crate::clip::homogeneous::{clip_to_window_exact, ClipVertex, Viewport};
 use crate::convention::{Convention, Target};
 use crate::coverage::CoverageSink;
 use crate::fill;
+use crate::fill::polygon::{PolygonF32, PolygonF64};
 use crate::fill::triangulate::triangulate;
-use crate::geom::{FillRule, FixedPolygon, FixedTriangle, Polygon};
+use crate::geom::{FillRule, FixedPolygon, FixedTriangle, Point, Polygon};
 use crate::tri::fixed;
 use crate::tri::float::{rasterize_f32, rasterize_f64, FloatRule};
 
-use super::{Arithmetic, IntegerTraversal, Model, ModelError};
+use super::{point_f32, point_f64, Arithmetic, FloatType, IntegerTraversal, Model, ModelError};
 
 /// A polygon converted for one model.
 #[derive(Debug, Clone, PartialEq)]
@@ -24,6 +26,10 @@ pub(crate) enum PreparedPolygon {
     Scanline(FixedPolygon),
     /// The `fixed` model's input: the snapped polygon's triangulation.
     Triangles(Vec<FixedTriangle>),
+    /// A polygon in f32 for the float models' winding test.
+    Float32(PolygonF32, FloatRule),
+    /// A polygon in f64.
+    Float64(PolygonF64, FloatRule),
     /// A convex f32 polygon (a clipped triangle or clip-space triangle), filled as a fan
     /// of float triangles.
     Fan32(Vec<Vec2>, FloatRule),
@@ -31,7 +37,7 @@ pub(crate) enum PreparedPolygon {
     Fan64(Vec<DVec2>, FloatRule),
 }
 
-/// Converts polygon `k` for an exact or integer `model` (float models have no polygon fill).
+/// Converts polygon `k` for `model`.
 pub(crate) fn prepare_polygon(
     model: Model,
     k: usize,
@@ -55,8 +61,61 @@ pub(crate) fn prepare_polygon(
         Arithmetic::Integer(IntegerTraversal::Blocks) => PreparedPolygon::Triangles(
             triangulate(&fixed()?).map_err(|error| ModelError::Triangulate { polygon: k, error })?,
         ),
-        Arithmetic::Float(..) => return Err(ModelError::NoFloatPolygon { polygon: k, model }),
+        Arithmetic::Float(FloatType::F32, rule) => {
+            let contour = |c: usize, points: &[Point]| {
+                let at = |i: usize| move || contour_vertex(k, c, i);
+                points
+                    .iter()
+                    .enumerate()
+                    .map(|(i, v)| point_f32(v, at(i), model))
+                    .collect()
+            };
+            PreparedPolygon::Float32(
+                PolygonF32 {
+                    outline: contour(0, &p.outline)?,
+                    holes: p
+                        .holes
+                        .iter()
+                        .enumerate()
+                        .map(|(h, c)| contour(h + 1, c))
+                        .collect::<Result<_, _>>()?,
+                    fill_rule: p.fill_rule,
+                },
+                rule,
+            )
+        }
+        Arithmetic::Float(FloatType::F64, rule) => {
+            let contour = |c: usize, points: &[Point]| {
+                let at = |i: usize| move || contour_vertex(k, c, i);
+                points
+                    .iter()
+                    .enumerate()
+                    .map(|(i, v)| point_f64(v, at(i), model))
+                    .collect()
+            };
+            PreparedPolygon::Float64(
+                PolygonF64 {
+                    outline: contour(0, &p.outline)?,
+                    holes: p
+                        .holes
+                        .iter()
+                        .enumerate()
+                        .map(|(h, c)| contour(h + 1, c))
+                        .collect::<Result<_, _>>()?,
+                    fill_rule: p.fill_rule,
+                },
+                rule,
+            )
+        }
     })
+}
+
+/// The path of vertex `i` of contour `c` (0 the outline, `h + 1` hole `h`) of polygon `k`.
+fn contour_vertex(k: usize, c: usize, i: usize) -> String {
+    match c {
+        0 => format!("polygons[{k}].v[{i}]"),
+        h => format!("polygons[{k}].holes[{}][{i}]", h - 1),
+    }
 }
 
 /// The window-space polygon of a clip-space triangle, exactly (clipped in clip space,
@@ -94,6 +153,8 @@ impl PreparedPolygon {
             PreparedPolygon::Exact(p) => fill::polygon::rasterize_exact(p, id, target, sink),
             PreparedPolygon::Scanline(p) => fill::polygon::rasterize(p, id, target, sink),
             PreparedPolygon::Triangles(ts) => ts.iter().for_each(|t| fixed::rasterize(t, id, target, sink)),
+            PreparedPolygon::Float32(p, rule) => fill::polygon::rasterize_f32(p, id, target, *rule, sink),
+            PreparedPolygon::Float64(p, rule) => fill::polygon::rasterize_f64(p, id, target, *rule, sink),
             PreparedPolygon::Fan32(poly, rule) => {
                 for i in 1..poly.len().saturating_sub(1) {
                     rasterize_f32(&[poly[0], poly[i], poly[i + 1]], id, target, *rule, sink);

@@ -85,9 +85,8 @@ fn id(k: usize) -> u32 {
 ///
 /// # Errors
 /// The first primitive the model cannot take: a coordinate outside the integer envelope
-/// or the float type, a polygon for a float model, a polygon the `fixed` model cannot
-/// triangulate, a diamond-exit line for a float model, clip-space triangles without a
-/// viewport. Lines are checked first, then the areas.
+/// or the float type, a polygon the `fixed` model cannot triangulate, clip-space
+/// triangles without a viewport. Lines are checked first, then the areas.
 pub fn prepare(model: Model, primitives: &Primitives, target: &Target) -> Result<PreparedScene, ModelError> {
     let conv = &target.convention;
     let lines = prepare_lines(model, &primitives.lines, conv)?;
@@ -136,24 +135,20 @@ pub fn prepare(model: Model, primitives: &Primitives, target: &Target) -> Result
                 }
             }
         }
-        Arithmetic::Float(float, rule) => {
-            if !primitives.polygons.is_empty() {
-                return Err(ModelError::NoFloatPolygon { polygon: 0, model });
-            }
-            match float {
-                FloatType::F32 => prepare_float_f32(&mut scene, primitives, rule, target, viewport)?,
-                FloatType::F64 => prepare_float_f64(&mut scene, primitives, rule, target, viewport)?,
-            }
-        }
+        Arithmetic::Float(float, rule) => match float {
+            FloatType::F32 => prepare_float_f32(&mut scene, primitives, rule, target, viewport)?,
+            FloatType::F64 => prepare_float_f64(&mut scene, primitives, rule, target, viewport)?,
+        },
     }
     Ok(scene)
 }
 
-/// The float models' areas in one float type: the window's half-planes, the triangles and
-/// the clip-space triangles converted to it, clipped in it, kept as fans. Written once for
+/// The float models' areas in one float type: the window's half-planes, the triangles,
+/// polygons and clip-space triangles converted to it and clipped in it (Sutherland-Hodgman
+/// on every contour), triangles and clip-space pieces kept as fans. Written once for
 /// f32 and f64 (the crate's float forms are concrete types).
 macro_rules! prepare_float_in {
-    ($name:ident, $plane:ty, $to_float:ident, $clip:path, $clip_to_window:path, $triangles:ident, $fan:ident) => {
+    ($name:ident, $plane:ty, $to_float:ident, $clip:path, $clip_to_window:path, $triangles:ident, $fan:ident, $polygon:ident) => {
         fn $name<'a>(
             scene: &mut PreparedScene,
             primitives: &'a Primitives,
@@ -184,6 +179,16 @@ macro_rules! prepare_float_in {
                     .map(|t| PreparedPolygon::$fan(clipped(t.to_vec()), rule));
                 scene.clipped_triangles = Some(fans.collect());
             }
+            for (k, p) in primitives.polygons.iter().enumerate() {
+                let mut prepared = prepare_polygon(model, k, p, &target.convention)?;
+                if let (Some(planes), PreparedPolygon::$polygon(poly, _)) = (&planes, &mut prepared) {
+                    poly.outline = $clip(&poly.outline, planes);
+                    for hole in &mut poly.holes {
+                        *hole = $clip(hole, planes);
+                    }
+                }
+                scene.polygons.push(prepared);
+            }
             if !primitives.clip_space_triangles.is_empty() {
                 let viewport = viewport()?.$to_float().ok_or_else(|| range("viewport".into()))?;
                 for (k, t) in primitives.clip_space_triangles.iter().enumerate() {
@@ -209,7 +214,8 @@ prepare_float_in!(
     sutherland_hodgman::clip_f32,
     homogeneous::clip_to_window_f32,
     F32,
-    Fan32
+    Fan32,
+    Float32
 );
 prepare_float_in!(
     prepare_float_f64,
@@ -218,7 +224,8 @@ prepare_float_in!(
     sutherland_hodgman::clip_f64,
     homogeneous::clip_to_window_f64,
     F64,
-    Fan64
+    Fan64,
+    Float64
 );
 
 impl PreparedScene {

@@ -13,7 +13,7 @@ use crate::raster::{sample_exact, sample_f32, sample_f64};
 use crate::tri::float::FloatRule;
 use crate::tri::{exact, fixed, float, scanline};
 
-use super::{Arithmetic, FloatType, IntegerTraversal, Model, ModelError};
+use super::{point_f32, point_f64, Arithmetic, FloatType, IntegerTraversal, Model, ModelError};
 
 /// A scene's triangles converted for one model (the conversion is where errors happen;
 /// rasterizing prepared triangles cannot fail).
@@ -37,7 +37,7 @@ pub(crate) fn prepare_triangles(
     triangles: &[Triangle],
     conv: &Convention,
 ) -> Result<PreparedTriangles, ModelError> {
-    let range = |k| ModelError::FloatRange { triangle: k, model };
+    let at = |k: usize, i: usize| move || format!("triangles[{k}].v[{i}]");
     Ok(match model.arithmetic() {
         Arithmetic::Exact { snapped: false } => PreparedTriangles::Exact(triangles.to_vec()),
         Arithmetic::Exact { snapped: true } => {
@@ -51,7 +51,10 @@ pub(crate) fn prepare_triangles(
             triangles
                 .iter()
                 .enumerate()
-                .map(|(k, t)| t.to_f32().ok_or(range(k)))
+                .map(|(k, t)| {
+                    let f = |i: usize| point_f32(&t.v[i], at(k, i), model);
+                    Ok([f(0)?, f(1)?, f(2)?])
+                })
                 .collect::<Result<_, _>>()?,
             rule,
         ),
@@ -59,7 +62,10 @@ pub(crate) fn prepare_triangles(
             triangles
                 .iter()
                 .enumerate()
-                .map(|(k, t)| t.to_f64().ok_or(range(k)))
+                .map(|(k, t)| {
+                    let f = |i: usize| point_f64(&t.v[i], at(k, i), model);
+                    Ok([f(0)?, f(1)?, f(2)?])
+                })
                 .collect::<Result<_, _>>()?,
             rule,
         ),

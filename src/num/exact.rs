@@ -258,6 +258,22 @@ pub fn exact_text(x: &BigRational) -> String {
     }
 }
 
+/// [`exact_text`] cut for an error line ([`shortened`]).
+pub fn exact_text_short(x: &BigRational) -> String {
+    shortened(&exact_text(x))
+}
+
+/// A long number cut to its first 24 characters and its length, so an error line stays
+/// readable: `123456789012345678901234... (1001 characters)`; up to 60 characters are kept
+/// whole.
+pub fn shortened(text: &str) -> String {
+    if text.len() <= 60 {
+        text.to_string()
+    } else {
+        format!("{}... ({} characters)", &text[..24], text.len())
+    }
+}
+
 /// A point in messages: `(3, -7/2)`.
 pub fn pair_text(x: &BigRational, y: &BigRational) -> String {
     format!("({}, {})", exact_text(x), exact_text(y))

@@ -19,7 +19,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::ToPrimitive;
 
-use super::exact::{round_to_integer, Rounding};
+use super::exact::{round_to_integer, shortened, Rounding};
 
 /// Coordinates of the integer models satisfy `|v| <= 2^FIXED_ENVELOPE_BITS` subpixels.
 pub const FIXED_ENVELOPE_BITS: u32 = 29;
@@ -81,16 +81,6 @@ impl fmt::Display for EnvelopeError {
 }
 
 impl std::error::Error for EnvelopeError {}
-
-/// A long number cut to its first 24 characters and its length, so an error line stays
-/// readable: `123456789012345678901234... (1001 characters)`.
-fn shortened(text: &str) -> String {
-    if text.len() <= 60 {
-        text.to_string()
-    } else {
-        format!("{}... ({} characters)", &text[..24], text.len())
-    }
-}
 
 /// Snaps `x` (pixels) to the 2^-bits grid: returns the nearest integer number of subpixels,
 /// halfway cases decided by `rounding`.

@@ -2,7 +2,8 @@
 //! the winding number of each moved sample counted edge by edge); `scanline.rs`, the
 //! scanline filler with an active edge table (Foley, van Dam et al., "Computer Graphics:
 //! Principles and Practice") on the snapped polygon, exact integer arithmetic; `rows.rs`,
-//! the same sweep row by row on the polygon as written, in rationals. This module holds
+//! the same sweep row by row on the polygon as written, in rationals; `float.rs`, the
+//! per-sample winding test in f32 and f64 (the float side of the trade). This module holds
 //! what they share: the crossing rule, the contours' edges and the span sweep.
 //!
 //! # The rule, and why it equals the triangles' tie rule
@@ -32,10 +33,12 @@ use crate::edge::exact::edge_function;
 use crate::geom::{FillRule, Point};
 
 mod exact;
+mod float;
 mod rows;
 mod scanline;
 
 pub use exact::{contains_exact, contour_winding_exact, rasterize_exact};
+pub use float::{contour_winding_f32, contour_winding_f64, rasterize_f32, rasterize_f64, PolygonF32, PolygonF64};
 pub use rows::rasterize_rows_exact;
 pub use scanline::rasterize;
 
