@@ -17,16 +17,16 @@ use rasterproof::line::{BresenhamTie, Line, LineRule};
 use rasterproof::model::{render, Model, Primitives};
 use rasterproof::strategy::polygon::any_polygon;
 
-fn polygons(p: &[Polygon]) -> Primitives {
+fn polygons(p: Vec<Polygon>) -> Primitives {
     Primitives {
-        polygons: p.to_vec(),
+        polygons: p,
         ..Primitives::default()
     }
 }
 
-fn lines(l: &[Line]) -> Primitives {
+fn lines(l: Vec<Line>) -> Primitives {
     Primitives {
-        lines: l.to_vec(),
+        lines: l,
         ..Primitives::default()
     }
 }
@@ -48,7 +48,7 @@ fn float_models_fill_the_pentagram_as_derived_by_hand() {
     let star = pts(&[(50, 0), (79, 90), (2, 35), (98, 35), (21, 90)]);
     let target = Target::new(100, 100, Preset::D3d11.convention()).unwrap();
     for model in [Model::Float32, Model::Float64, Model::Float32Naive, Model::Float64Naive] {
-        let fill = |rule| render(model, &polygons(&[Polygon::new(star.clone(), rule)]), &target).unwrap();
+        let fill = |rule| render(model, &polygons(vec![Polygon::new(star.clone(), rule)]), &target).unwrap();
         let (nonzero, even_odd) = (fill(FillRule::NonZero), fill(FillRule::EvenOdd));
         assert_eq!(row(&nonzero, 10), (47..=52).collect::<Vec<_>>(), "{model}");
         assert_eq!(row(&even_odd, 10), (47..=52).collect::<Vec<_>>(), "{model}");
@@ -79,13 +79,13 @@ fn samples_on_polygon_edges_follow_each_rule() {
             (1..=4).collect()
         };
         for model in [Model::Exact, Model::Float32, Model::Float64] {
-            let c = render(model, &polygons(&[sq.clone()]), &target).unwrap();
+            let c = render(model, &polygons(vec![sq.clone()]), &target).unwrap();
             for y in 0..8 {
                 let expected: Vec<u32> = if rows.contains(&y) { (1..=4).collect() } else { vec![] };
                 assert_eq!(row(&c, y), expected, "{model} {preset:?} row {y}");
             }
         }
-        let naive = render(Model::Float64Naive, &polygons(&[sq.clone()]), &target).unwrap();
+        let naive = render(Model::Float64Naive, &polygons(vec![sq.clone()]), &target).unwrap();
         assert_eq!(naive.covered_pixels(), 16);
         assert_eq!(row(&naive, 1), (1..=4).collect::<Vec<_>>(), "naive keeps the top row");
         assert!(row(&naive, 5).is_empty(), "naive drops the bottom row");
@@ -103,8 +103,8 @@ proptest! {
         preset in prop::sample::select(vec![Preset::D3d11, Preset::Gl]),
     ) {
         let target = Target::new(32, 32, preset.convention()).unwrap();
-        let exact = render(Model::Exact, &polygons(&[poly.clone()]), &target).unwrap();
-        let float = render(Model::Float64, &polygons(&[poly]), &target).unwrap();
+        let exact = render(Model::Exact, &polygons(vec![poly.clone()]), &target).unwrap();
+        let float = render(Model::Float64, &polygons(vec![poly]), &target).unwrap();
         prop_assert_eq!(differing_pixels(&exact, &float), vec![]);
     }
 
@@ -119,8 +119,8 @@ proptest! {
         let mut poly = Polygon::new(pts(&v), rule);
         poly.holes.push(pts(&hole));
         let target = Target::new(32, 32, preset.convention()).unwrap();
-        let exact = render(Model::Exact, &polygons(&[poly.clone()]), &target).unwrap();
-        let float = render(Model::Float32, &polygons(&[poly]), &target).unwrap();
+        let exact = render(Model::Exact, &polygons(vec![poly.clone()]), &target).unwrap();
+        let float = render(Model::Float32, &polygons(vec![poly]), &target).unwrap();
         prop_assert_eq!(differing_pixels(&exact, &float), vec![]);
     }
 
@@ -142,9 +142,9 @@ proptest! {
             rule: LineRule::Diamond,
         };
         let target = Target::new(32, 32, Preset::D3d11.convention()).unwrap();
-        let exact = render(Model::Exact, &lines(&[line.clone()]), &target).unwrap();
+        let exact = render(Model::Exact, &lines(vec![line.clone()]), &target).unwrap();
         for model in [Model::Float32, Model::Float64] {
-            let float = render(model, &lines(&[line.clone()]), &target).unwrap();
+            let float = render(model, &lines(vec![line.clone()]), &target).unwrap();
             prop_assert_eq!(differing_pixels(&exact, &float), vec![], "{}", model);
         }
     }
@@ -163,7 +163,7 @@ fn a_diamond_line_through_pixel_centres_by_hand() {
     };
     let target = Target::new(8, 8, Preset::D3d11.convention()).unwrap();
     for model in Model::ALL {
-        let c = render(model, &lines(&[line.clone()]), &target).unwrap();
+        let c = render(model, &lines(vec![line.clone()]), &target).unwrap();
         assert_eq!(row(&c, 0), vec![0, 1, 2, 3], "{model}");
         assert_eq!(c.covered_pixels(), 4, "{model}");
     }
@@ -183,7 +183,7 @@ fn a_diamond_line_ending_on_a_top_corner_by_hand() {
     };
     let target = Target::new(4, 4, Preset::D3d11.convention()).unwrap();
     for model in Model::ALL {
-        let c = render(model, &lines(&[line.clone()]), &target).unwrap();
+        let c = render(model, &lines(vec![line.clone()]), &target).unwrap();
         let got: Vec<(u32, u32)> = c.iter().map(|(x, y, _)| (x, y)).collect();
         assert_eq!(got, vec![(0, 0), (0, 1), (0, 2)], "{model}");
     }
@@ -264,7 +264,7 @@ fn float_range_errors_name_the_coordinate_and_value() {
         to: Point::new(big(39), BigRational::from_integer(1.into())),
         rule: LineRule::Diamond,
     };
-    let err = render(Model::Float32, &lines(&[line.clone()]), &target)
+    let err = render(Model::Float32, &lines(vec![line.clone()]), &target)
         .unwrap_err()
         .to_string();
     assert!(
@@ -273,14 +273,14 @@ fn float_range_errors_name_the_coordinate_and_value() {
         ),
         "{err}"
     );
-    assert!(render(Model::Float64, &lines(&[line]), &target).is_ok());
+    assert!(render(Model::Float64, &lines(vec![line]), &target).is_ok());
     let mut poly = Polygon::new(pts(&[(0, 0), (8, 0), (8, 8)]), FillRule::NonZero);
     poly.holes.push(vec![
         Point::from_ints(1, 1),
         Point::new(big(39), BigRational::from_integer(1.into())),
         Point::from_ints(2, 2),
     ]);
-    let err = render(Model::Float32Naive, &polygons(&[poly]), &target)
+    let err = render(Model::Float32Naive, &polygons(vec![poly]), &target)
         .unwrap_err()
         .to_string();
     assert!(err.starts_with("polygons[0].holes[0][1].x: "), "{err}");
