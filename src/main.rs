@@ -1,7 +1,9 @@
 //! The `rasterproof` command: render a scene exactly, run the invariant suite.
 //!
-//! Exit codes: 0 success; 1 an invariant of the exact or fixed model was violated;
-//! 2 bad input (with a one-line error naming the file, field and value).
+//! Exit codes ([`cli::EXIT_CODES`], at the end of every command's `--help`): 0 success;
+//! 1 an invariant of an exact or integer model was violated (`check`); 2 bad input (with a
+//! one-line error naming the file, field and value; `render` and `flood` then write no
+//! output file).
 
 #![forbid(unsafe_code)]
 
@@ -14,7 +16,7 @@ use clap::{Parser, Subcommand};
 
 /// Exact reference rasterizer and verification harness for 2D rasterization.
 #[derive(Parser)]
-#[command(name = "rasterproof", version, about)]
+#[command(name = "rasterproof", version, about, after_help = cli::EXIT_CODES)]
 struct Args {
     #[command(subcommand)]
     command: Command,
@@ -23,12 +25,17 @@ struct Args {
 #[derive(Subcommand)]
 enum Command {
     /// Render a scene file with one model.
+    #[command(after_help = cli::EXIT_CODES)]
     Render(cli::render::Options),
     /// Clip a scene's primitives against its clip window; print them exactly.
+    #[command(after_help = cli::EXIT_CODES)]
     Clip(cli::clip::Options),
     /// Flood fill: the 4- or 8-connected region of one pixel's colour in a PNG.
+    #[command(after_help = cli::EXIT_CODES)]
     Flood(cli::flood::Options),
-    /// Run the invariant suite on random cases.
+    /// Run the invariant suite on random cases; print the table, a legend of its terms,
+    /// and the verdict.
+    #[command(after_help = cli::EXIT_CODES)]
     Check {
         /// Number of random cases.
         #[arg(long, default_value_t = 256)]
@@ -36,9 +43,14 @@ enum Command {
         /// Seed of the case generator (same seed, same cases).
         #[arg(long, default_value_t = 0)]
         seed: u64,
-        /// Write each failing case as a scene file into this folder.
-        #[arg(long)]
+        /// Write each case an exact or integer model failed as a scene file (and a .txt
+        /// explanation) into this folder.
+        #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
+        /// With --out: also write the float models' violations (the measured trade; many
+        /// files).
+        #[arg(long, requires = "out")]
+        out_float: bool,
         /// Hide the progress bar.
         #[arg(long)]
         quiet: bool,
@@ -55,8 +67,17 @@ fn main() -> ExitCode {
             cases,
             seed,
             out,
+            out_float,
             quiet,
-        } => cli::check::run(cases, seed, out.as_deref(), quiet),
+        } => cli::check::run(
+            cases,
+            seed,
+            cli::check::Written {
+                dir: out.as_deref(),
+                float: out_float,
+            },
+            quiet,
+        ),
     };
     match result {
         Ok(code) => code,

@@ -234,7 +234,12 @@ fn bad_inputs_exit_2_with_a_clear_line() {
         ),
         (tri(&format!("[[0,0],[4,0],[{},4]]", far + 1)), "fixed", "triangles[0].v[2].x: 2097153 px"),
         (r#"{"width": 8, "height": 8, "preset": "dx9"}"#.into(), "exact", "preset: unknown preset \"dx9\""),
-        (tri("[[0,0],[4,0],[1e39,4]]"), "float32", "triangles[0]: a coordinate does not fit the float32 model's float type"),
+        (
+            tri("[[0,0],[4,0],[1e39,4]]"),
+            "float32",
+            // 1e39 written exactly: 1 and 39 zeros; f32's largest finite value is about 3.4e38.
+            "triangles[0].v[2].x: 1000000000000000000000000000000000000000 does not fit the float32 model's float type f32",
+        ),
         (poly(r#""v": [[0,0],[4,0]]"#), "exact", "polygons[0].v: a polygon contour needs at least 3 vertices, found 2"),
         (
             poly(r#""v": [[0,0],[4,0],[4,4]], "holes": [[[1,1],[2,1]]]"#),
@@ -249,7 +254,6 @@ fn bad_inputs_exit_2_with_a_clear_line() {
         (poly(r#""v": [[0,0],[8,0],[0,8]], "fill_rule": "winding""#), "exact", "polygons[0].fill_rule: unknown fill rule \"winding\""),
         (poly(r#""v": [[0,0],[8,0],["NaN",8]]"#), "exact", "polygons[0].v[2][0]: \"NaN\" is not a finite number"),
         (poly(r#""v": [[0,0],[8,8],[8,0],[0,8]]"#), "fixed", "polygons[0]: cannot triangulate for the fixed model: not a simple polygon: outline edge 0 and outline edge 2 meet at (4, 4) px"),
-        (poly(r#""v": [[0,0],[8,0],[0,8]]"#), "float64", "polygons[0]: the float64 model has no polygon fill"),
         (poly(&format!(r#""v": [[0,0],[8,0],[0,{}]]"#, far + 1)), "scanline", "polygons[0].v[2].y: 2097153 px"),
         (poly(r#""v": [[0,0],[8,0],[0,8]], "colour": 3"#), "exact", "polygons[0].colour: unknown field"),
     ];
@@ -341,4 +345,171 @@ fn check_runs_the_suite() {
             );
         }
     }
+}
+
+/// Issue 10's small scene, 6x4: triangle 0 = (0,0) (4,0) (0,4) holds the samples with
+/// x + y < 4 (x + y = 4 lies on its hypotenuse, a bottom-right edge: excluded), i.e.
+/// (0..=2, 0), (0..=1, 1), (0, 2); line 1 runs along row 1 from x = 1 to 4, so (1, 1) has
+/// two owners; lines 2..=11 are single pixels (2..=7 along row 3, 8, 9, 10 down column 5,
+/// 11 at (4, 2)), so ids 10 and 11 show their last digits 0 and 1.
+const GRID_SCENE: &str = r#"{"width": 6, "height": 4, "triangles": [{"v": [[0,0],[4,0],[0,4]]}],
+    "lines": [{"from": [1,1], "to": [4,1]},
+              {"from": [0,3], "to": [0,3]}, {"from": [1,3], "to": [1,3]}, {"from": [2,3], "to": [2,3]},
+              {"from": [3,3], "to": [3,3]}, {"from": [4,3], "to": [4,3]}, {"from": [5,3], "to": [5,3]},
+              {"from": [5,0], "to": [5,0]}, {"from": [5,1], "to": [5,1]}, {"from": [5,2], "to": [5,2]},
+              {"from": [4,2], "to": [4,2]}]}"#;
+
+/// `--format text` draws small canvases as a grid (row 0 first) above the summary.
+#[test]
+fn text_format_draws_the_grid() {
+    let dir = tempdir::Dir::new("grid");
+    let p = write(&dir, "grid.json", GRID_SCENE);
+    let out = bin().args(["render", p.to_str().unwrap()]).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[..4], ["000..8", "0#1119", "0...10", "234567"], "{text}");
+    assert_eq!(lines.len(), 5, "{text}");
+    // 4 + 6 + 3 + 6 covered pixels, (1, 1) twice.
+    assert!(
+        lines[4].contains("19 pixels covered, 1 covered more than once"),
+        "{text}"
+    );
+    // 65 pixels wide: the summary only.
+    let wide = write(
+        &dir,
+        "wide.json",
+        r#"{"width": 65, "height": 2, "lines": [{"from": [0,0], "to": [3,0]}]}"#,
+    );
+    let out = bin().args(["render", wide.to_str().unwrap()]).output().unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(text.lines().count(), 1, "{text}");
+    assert!(text.contains("4 pixels covered"), "{text}");
+}
+
+/// The picture is scaled (default: the smallest K with a width of at least 256 px, here
+/// ceil(256 / 6) = 43), a pixel with two owners is white, and the legend beside it names
+/// every id with its colour. Colours by hand (src/coverage/picture.rs derives them): id 0
+/// hue 0 = (235, 70, 70); id 1 hue 0.618 turns = (70, 118, 235); id 2 = (166, 235, 70).
+#[test]
+fn picture_is_scaled_and_has_a_legend() {
+    let dir = tempdir::Dir::new("picture");
+    let p = write(&dir, "grid.json", GRID_SCENE);
+    let cov = dir.path().join("cov.png");
+    let col = dir.path().join("col.png");
+    let out = bin()
+        .args(["render", p.to_str().unwrap(), "-o", cov.to_str().unwrap()])
+        .args(["--colors-out", col.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let img = image::open(&cov).unwrap().to_rgb8();
+    assert_eq!(img.dimensions(), (6 * 43, 4 * 43));
+    assert_eq!(image::open(&col).unwrap().to_rgb8().dimensions(), (6 * 43, 4 * 43));
+    let block = |x: u32, y: u32| {
+        let want = img.get_pixel(x * 43, y * 43).0;
+        for dy in 0..43 {
+            for dx in 0..43 {
+                assert_eq!(img.get_pixel(x * 43 + dx, y * 43 + dy).0, want, "block ({x}, {y})");
+            }
+        }
+        want
+    };
+    assert_eq!(block(0, 0), [235, 70, 70]);
+    assert_eq!(block(1, 1), [255, 255, 255]);
+    assert_eq!(block(2, 1), [70, 118, 235]);
+    assert_eq!(block(0, 3), [166, 235, 70]);
+    assert_eq!(block(3, 0), [0, 0, 0]);
+    let legend = std::fs::read_to_string(dir.path().join("cov.legend.txt")).unwrap();
+    let rows: Vec<&str> = legend.lines().filter(|l| !l.starts_with('#')).collect();
+    assert_eq!(rows.len(), 12, "{legend}");
+    assert_eq!(
+        rows[..3],
+        [
+            "0 #eb4646 triangles[0] 6",
+            "1 #4676eb lines[0] 4",
+            "2 #a6eb46 lines[1] 1"
+        ],
+        "{legend}"
+    );
+    assert!(
+        rows[11].starts_with("11 #") && rows[11].ends_with(" lines[10] 1"),
+        "{legend}"
+    );
+    assert!(legend.contains("scale 43"), "{legend}");
+    assert!(legend.contains("several owners #ffffff"), "{legend}");
+
+    // --scale K, then bad scales: exit 2, one line naming --scale and the value, no file.
+    let small = dir.path().join("small.png");
+    let out = bin()
+        .args([
+            "render",
+            p.to_str().unwrap(),
+            "--scale",
+            "2",
+            "-o",
+            small.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(image::open(&small).unwrap().to_rgb8().dimensions(), (12, 8));
+    let never = dir.path().join("never.png");
+    for (k, needle) in [
+        ("0", "--scale: 0 is not a scale"),
+        ("abc", "--scale: \"abc\" is not a whole number"),
+        ("-3", "--scale: \"-3\" is not a whole number"),
+        // 16384 / 6 = 2730.67: 2731 makes the picture 16386 px wide.
+        (
+            "2731",
+            "--scale: 2731 makes the 6x4 canvas a 16386x10924 picture, over 16384 px per side (at most 2730",
+        ),
+    ] {
+        let out = bin()
+            .args([
+                "render",
+                p.to_str().unwrap(),
+                "--scale",
+                k,
+                "-o",
+                never.to_str().unwrap(),
+            ])
+            .output()
+            .unwrap();
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(out.status.code(), Some(2), "{k}: {err}");
+        assert!(
+            err.contains(needle) && err.lines().count() == 1,
+            "{k}: {err:?} lacks {needle:?}"
+        );
+        assert!(!never.exists(), "{k}");
+    }
+}
+
+/// Every command's help states the exit codes; `render --help` says what exact-snapped is.
+#[test]
+fn help_states_exit_codes_and_the_exact_models() {
+    for command in ["render", "clip", "flood", "check"] {
+        let out = bin().args([command, "--help"]).output().unwrap();
+        assert!(out.status.success());
+        let help = String::from_utf8(out.stdout).unwrap();
+        assert!(help.contains("Exit codes:"), "{command}:\n{help}");
+        assert!(
+            help.contains("0  success") && help.contains("2  bad input"),
+            "{command}:\n{help}"
+        );
+        assert!(
+            help.contains("1  an invariant of an exact or integer model"),
+            "{command}:\n{help}"
+        );
+    }
+    let help = String::from_utf8(bin().args(["render", "--help"]).output().unwrap().stdout).unwrap();
+    assert!(
+        help.contains("exact-snapped  first rounds every vertex to the subpixel grid"),
+        "{help}"
+    );
+    assert!(
+        help.contains("exact          takes the vertices exactly as the scene file writes them"),
+        "{help}"
+    );
 }

@@ -106,6 +106,99 @@ fn clipped_away_is_an_empty_list() {
     drop(dir);
 }
 
+/// The window `[5/2, 21/2]^2` (its sides run through samples: pixel (i, j)'s sample is
+/// (i + 1/2, j + 1/2)) and primitives that touch it without entering it.
+const TOUCHING: &str = r#"{"width": 16, "height": 16,
+ "triangles": [{"v": [["21/2","21/2"],["25/2","21/2"],["21/2","25/2"]]},
+               {"v": [["21/2","5/2"],["29/2","13/2"],["21/2","21/2"]]},
+               {"v": [[9,9],[12,9],[9,12]]}],
+ "lines": [{"from": ["25/2","17/2"], "to": ["17/2","25/2"], "rule": "diamond"}],
+ "polygons": [{"v": [["21/2",4],[14,4],[14,8],["21/2",8]]}],
+ "clip": {"rect": ["5/2", "5/2", "21/2", "21/2"]}}"#;
+
+/// An area primitive left with no area is `[]`; a line left with one point keeps it. By
+/// hand, window [5/2, 21/2]^2:
+/// - triangle 0 meets it only at its corner (21/2, 21/2): a point, no area: `[]`;
+/// - triangle 1 meets it only along x = 21/2 from y = 5/2 to 21/2: a segment: `[]`;
+/// - triangle 2 (9,9) (12,9) (9,12), hypotenuse x + y = 21, keeps the square [9, 21/2]^2
+///   (the hypotenuse meets x = 21/2 at y = 21/2, the window's corner). Sutherland-Hodgman
+///   takes the sides top, right, bottom, left: the right side x <= 21/2 gives
+///   (9,9) (21/2,9) (21/2,21/2) (9,12); the bottom side y <= 21/2 enters at (9, 21/2)
+///   on the way from (9,12) to (9,9), then keeps (9,9) (21/2,9) (21/2,21/2), and leaves at
+///   (21/2,21/2) itself (merged): (9,21/2) (9,9) (21/2,9) (21/2,21/2);
+/// - the line x + y = 21 from (25/2, 17/2) to (17/2, 25/2) has one point in the closed
+///   window, the corner (21/2, 21/2): a segment of length zero, both ends there;
+/// - the polygon [21/2, 14] x [4, 8] shares only part of the window's right side: `[]`.
+#[test]
+fn touching_the_window_at_a_corner_or_along_an_edge() {
+    let (dir, p) = scene_file("touching", TOUCHING);
+    let out = bin().args(["clip", p.to_str().unwrap()]).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        String::from_utf8(out.stdout).unwrap(),
+        concat!(
+            r#"{"triangles":[[],[],[["9","21/2"],["9","9"],["21/2","9"],["21/2","21/2"]]],"#,
+            r#""lines":[[["21/2","21/2"],["21/2","21/2"]]],"#,
+            r#""polygons":[[]],"clip_space_triangles":[]}"#,
+            "\n"
+        )
+    );
+    // The float clippers read the same halves exactly and agree on what covers nothing.
+    for model in ["float32", "float64"] {
+        let out = bin()
+            .args(["clip", p.to_str().unwrap(), "--model", model])
+            .output()
+            .unwrap();
+        let text = String::from_utf8(out.stdout).unwrap();
+        assert!(text.starts_with(r#"{"triangles":[[],[],[["#), "{model}: {text}");
+        assert!(
+            text.ends_with("\"polygons\":[[]],\"clip_space_triangles\":[]}\n"),
+            "{model}: {text}"
+        );
+    }
+    let out = bin()
+        .args(["clip", p.to_str().unwrap(), "--format", "text"])
+        .output()
+        .unwrap();
+    assert!(String::from_utf8(out.stdout)
+        .unwrap()
+        .contains("1/3 triangles, 1/1 lines, 0/1 polygons, 0/0 clip-space triangles keep something"));
+    drop(dir);
+}
+
+/// Why `[]` is right for the corner triangle: raster(clip(P, W)) = raster(P) ∩ raster(W).
+/// Alone, triangle 0 (21/2,21/2) (25/2,21/2) (21/2,25/2) covers, under top-left, the
+/// samples on its top and left edges: (21/2, 21/2) (its top-left vertex), (23/2, 21/2)
+/// and (21/2, 23/2); (23/2, 23/2) lies on the hypotenuse, a bottom-right edge: 3 pixels.
+/// The window's sample (21/2, 21/2) is on its right and bottom sides, so raster(W) does
+/// not hold it: with the window, nothing; the same for triangle 1 on the right side.
+#[test]
+fn a_primitive_touching_the_window_covers_nothing() {
+    let mut scene = parse_scene(TOUCHING, "s.json").unwrap();
+    scene.triangles.truncate(2);
+    scene.lines.clear();
+    scene.polygons.clear();
+    let target = scene.target().unwrap();
+    let alone = Scene {
+        triangles: scene.triangles[..1].to_vec(),
+        clip: None,
+        ..scene.clone()
+    };
+    assert_eq!(
+        render(Model::Exact, &alone.primitives(), &target)
+            .unwrap()
+            .covered_pixels(),
+        3
+    );
+    for model in [Model::Exact, Model::ExactSnapped, Model::Fixed, Model::Scanline] {
+        assert_eq!(
+            render(model, &scene.primitives(), &target).unwrap().covered_pixels(),
+            0,
+            "{model}"
+        );
+    }
+}
+
 /// `render` honours `clip` in every exact and integer model alike (the exact models clip
 /// the geometry, the integer ones mask with raster(W)); by hand for the triangle: the
 /// clipped polygon (2,2) (12,2) (12,5) (2,10) covers, row by row at y = j + 1/2, the

@@ -1,6 +1,7 @@
 //! Invariant 3: two models agree pixel for pixel (fixed == exact-snapped; float against
 //! exact, where the differences are the float trade).
 
+use std::collections::BTreeSet;
 use std::fmt::Write as _;
 
 use super::explain::explain_sample;
@@ -67,12 +68,49 @@ pub fn check_agreement(
         d.reference,
         d.candidate
     );
-    let mut involved: Vec<u32> = d.reference.iter().chain(&d.candidate).copied().collect();
-    involved.dedup();
+    // Each id once, ascending (the two owner lists are sorted each, not together).
+    let involved: BTreeSet<u32> = d.reference.iter().chain(&d.candidate).copied().collect();
     for id in involved {
         if let Some(t) = triangles.get(id as usize) {
             let _ = write!(msg, "\n  triangle {id}: {}", explain_sample(t, d.x, d.y, target));
         }
     }
     Err(Violation::new("agreement", msg))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::convention::Convention;
+    use crate::coverage::CoverageSink;
+    use crate::geom::Point;
+
+    /// The reference says (0, 0) belongs to triangles 0 and 1, the candidate says 0 alone:
+    /// the involved ids are 0, 1 and 0 again, which a plain `dedup` (adjacent repeats only)
+    /// keeps as [0, 1, 0]. Each triangle is explained once, in id order.
+    #[test]
+    fn each_involved_triangle_is_explained_once() {
+        let target = Target::new(2, 2, Convention::default()).unwrap();
+        let t = |x: i64| {
+            Triangle::new(
+                Point::from_ints(x, 0),
+                Point::from_ints(x + 2, 0),
+                Point::from_ints(x, 2),
+            )
+        };
+        let triangles = [t(0), t(1)];
+        let mut reference = Coverage::new(2, 2);
+        reference.cover(0, 0, 0);
+        reference.cover(0, 0, 1);
+        let mut candidate = Coverage::new(2, 2);
+        candidate.cover(0, 0, 0);
+        let v = check_agreement("ref", &reference, "cand", &candidate, &triangles, &target).unwrap_err();
+        assert_eq!(v.message.matches("triangle 0:").count(), 1, "{}", v.message);
+        assert_eq!(v.message.matches("triangle 1:").count(), 1, "{}", v.message);
+        let (zero, one) = (
+            v.message.find("triangle 0:").unwrap(),
+            v.message.find("triangle 1:").unwrap(),
+        );
+        assert!(zero < one, "{}", v.message);
+    }
 }

@@ -1,5 +1,7 @@
 //! `rasterproof check`: the invariant suite ([`rasterproof::harness::suite`]) on seeded
-//! random cases, with a progress bar, the failing cases written to `--out`, and the table.
+//! random cases, with a progress bar, the failing cases written to `--out` (the exact and
+//! integer models' failures; the float models' too with `--out-float`), and the table with
+//! its legend.
 
 use std::path::Path;
 use std::process::ExitCode;
@@ -11,8 +13,26 @@ use rasterproof::scene::Scene;
 
 use super::print_stdout;
 
-pub fn run(cases: u64, seed: u64, out: Option<&Path>, quiet: bool) -> Result<ExitCode, String> {
-    if let Some(dir) = out {
+/// Which failing cases `--out` writes.
+#[derive(Debug, Clone, Copy)]
+pub struct Written<'a> {
+    /// `--out`: the folder; `None` writes nothing.
+    pub dir: Option<&'a Path>,
+    /// `--out-float`: the float models' violations too, not only the fatal ones.
+    pub float: bool,
+}
+
+impl Written<'_> {
+    /// Whether the failing outcome `o` is written.
+    fn wants(&self, o: &Outcome) -> bool {
+        o.is_fatal() || self.float
+    }
+}
+
+/// Runs `cases` cases of the suite seeded `seed`, writes the failures `out` asks for and
+/// prints the report; exit 1 when an exact or integer model failed.
+pub fn run(cases: u64, seed: u64, out: Written<'_>, quiet: bool) -> Result<ExitCode, String> {
+    if let Some(dir) = out.dir {
         std::fs::create_dir_all(dir).map_err(|e| format!("--out {}: cannot create: {e}", dir.display()))?;
     }
     let bar = if quiet {
@@ -32,7 +52,7 @@ pub fn run(cases: u64, seed: u64, out: Option<&Path>, quiet: bool) -> Result<Exi
             if o.is_fatal() {
                 bar.suspend(|| eprintln!("case {k}: {} ({}): {v}", o.invariant, o.label));
             }
-            if let Some(dir) = out {
+            if let Some(dir) = out.dir.filter(|_| out.wants(o)) {
                 write_case(dir, k, o, scene, v)?;
             }
         }

@@ -1,6 +1,8 @@
 //! `rasterproof clip`: the scene's primitives clipped against its `clip` window (and its
 //! clip-space triangles clipped against the view volume, divided and mapped), printed
-//! with every coordinate as an exact string.
+//! with every coordinate as an exact string. An area primitive whose result encloses no
+//! area (a point or a segment) prints as `[]`; a line's result may be a single point
+//! (see [`rasterproof::clip::area_or_empty`]).
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -9,7 +11,7 @@ use glam::{DVec2, Vec2};
 use num_rational::BigRational;
 use rasterproof::clip::halfplane::{clip_segment_exact, HalfPlane, HalfPlaneF32, HalfPlaneF64};
 use rasterproof::clip::homogeneous::{self, clip_to_window_exact, divide_then_clip_exact, ClipVertex, ProjectError};
-use rasterproof::clip::{cohen_sutherland, sutherland_hodgman, Window};
+use rasterproof::clip::{area_or_empty, cohen_sutherland, sutherland_hodgman, Window};
 use rasterproof::geom::Point;
 use rasterproof::num::exact::json_pair;
 use rasterproof::scene::{parse_scene_bytes, Scene};
@@ -26,7 +28,11 @@ pub struct Options {
     /// vertices with w <= 0, which only clip-space clipping handles).
     #[arg(long)]
     divide_first: bool,
-    /// Output format on stdout.
+    /// Output format on stdout. Every primitive is listed in input order; `[]` is one that
+    /// covers nothing: clipped away, or (triangles, polygon contours, clip-space
+    /// triangles) left with no area — a point or a segment, as when it touches the window
+    /// only at a corner or along an edge. A line touching the window in one point is that
+    /// point twice (a segment of length zero).
     #[arg(long, value_enum, default_value_t = Format::Json)]
     format: Format,
 }
@@ -89,8 +95,13 @@ impl Clipper<'_> {
             .ok_or_else(|| format!("{what}: a coordinate does not fit f32"))
     }
 
-    /// A closed contour clipped by Sutherland-Hodgman (unchanged without a window).
+    /// A closed contour clipped by Sutherland-Hodgman (unchanged without a window), empty
+    /// when what is left encloses no area ([`area_or_empty`]).
     fn contour(&self, c: &[Point], what: &str) -> Result<Vec<Point>, String> {
+        self.sutherland_hodgman(c, what).map(area_or_empty)
+    }
+
+    fn sutherland_hodgman(&self, c: &[Point], what: &str) -> Result<Vec<Point>, String> {
         if self.scene.clip.is_none() {
             return Ok(c.to_vec());
         }

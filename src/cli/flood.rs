@@ -26,7 +26,8 @@ pub struct Options {
         allow_hyphen_values = true
     )]
     color: String,
-    /// Write the image with the region recoloured (PNG, 8-bit RGBA).
+    /// Write the image with the region recoloured (PNG, 8-bit RGBA); nothing is written
+    /// when the run fails.
     #[arg(short = 'o', long = "out")]
     out: Option<PathBuf>,
     /// Output format on stdout.
@@ -68,9 +69,9 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     );
     if let Some(path) = &o.out {
         paint(&mut image, &region, colour);
-        image
-            .save_with_format(path, image::ImageFormat::Png)
-            .map_err(|e| format!("{}: cannot write PNG: {e}", path.display()))?;
+        let mut outputs = crate::cli::Outputs::new();
+        outputs.stage_png(path, &image)?;
+        outputs.commit()?;
         let [r, g, b, a] = colour.0;
         summary.push_str(&format!(", recoloured {r},{g},{b},{a} into {}", path.display()));
     }

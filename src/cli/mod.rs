@@ -1,18 +1,164 @@
-//! Subcommands of the binary.
+//! Subcommands of the binary, and what they share: the help texts, stdout, and
+//! [`Outputs`] (the files a command writes, all or none).
 
 pub mod check;
 pub mod clip;
 pub mod flood;
 pub mod render;
 
+use std::ffi::OsString;
+use std::fmt::Display;
+use std::fs::{File, OpenOptions};
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU32, Ordering};
+
+/// The exit codes, at the end of every command's `--help`.
+pub const EXIT_CODES: &str = "Exit codes:
+  0  success
+  1  an invariant of an exact or integer model was violated (check only)
+  2  bad input: one line on stderr naming the file, field (or option) and value";
+
 /// The `--model` help: every model with its one-line description, from
-/// [`rasterproof::model::Model::ALL`] (a new model appears here by itself).
+/// [`rasterproof::model::Model::ALL`] (a new model appears here by itself), then what
+/// `exact` and `exact-snapped` mean.
 pub fn model_help() -> String {
     let mut s = String::from("The model that renders the scene (default exact-snapped):");
     for m in rasterproof::model::Model::ALL {
         s.push_str(&format!("\n  {:<14} {}", m.name(), m.describe()));
     }
+    s.push_str(
+        "\n\n\
+exact and exact-snapped are both the exact oracle: exact rational arithmetic,
+no rounding anywhere.
+  exact          takes the vertices exactly as the scene file writes them
+                 (0.1 is 1/10): the ideal answer.
+  exact-snapped  first rounds every vertex to the subpixel grid, as GPUs do
+                 (1/256 px for every preset, or the scene's subpixel_bits; ties
+                 to even, cts: half away from zero), then runs the same oracle:
+                 the answer the integer models (fixed, scanline) must equal
+                 pixel for pixel.
+They differ only where snapping moves an edge across a pixel's sample point.",
+    );
     s
+}
+
+/// The files one command run writes, all or none. [`Outputs::stage`] writes each file
+/// to a hidden temporary beside its target (same folder, so the final rename never
+/// crosses file systems); [`Outputs::commit`] renames them all into place once every one
+/// was written. Dropped without a commit (an error on the way out of `run`), it removes
+/// its temporaries, so a failing run leaves no output file and no temporary behind.
+#[derive(Default)]
+pub struct Outputs {
+    staged: Vec<Staged>,
+}
+
+/// One written temporary and the path it becomes.
+struct Staged {
+    temp: PathBuf,
+    target: PathBuf,
+}
+
+impl Outputs {
+    /// Nothing staged yet.
+    pub fn new() -> Outputs {
+        Outputs::default()
+    }
+
+    /// Writes `path`'s future content (`what`, e.g. "PNG", for the error) to a temporary
+    /// beside it through `write`.
+    ///
+    /// # Errors
+    /// `path` named twice, a folder, without a file name, in a folder that does not
+    /// exist or cannot be written, or `write` fails: one line naming `path`.
+    pub fn stage<E: Display>(
+        &mut self,
+        path: &Path,
+        what: &str,
+        write: impl FnOnce(&mut BufWriter<File>) -> Result<(), E>,
+    ) -> Result<(), String> {
+        let shown = path.display();
+        let fail = |e: &dyn Display| format!("{shown}: cannot write {what}: {e}");
+        if self.staged.iter().any(|s| s.target == path) {
+            return Err(format!("{shown}: named as two outputs"));
+        }
+        if path.is_dir() {
+            return Err(fail(&"it is a folder"));
+        }
+        let temp = temporary_beside(path).ok_or_else(|| fail(&"not a file name"))?;
+        let file = OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&temp)
+            .map_err(|e| fail(&e))?;
+        self.staged.push(Staged {
+            temp,
+            target: path.to_path_buf(),
+        });
+        let mut out = BufWriter::new(file);
+        write(&mut out).map_err(|e| fail(&e))?;
+        out.flush().map_err(|e| fail(&e))
+    }
+
+    /// Stages `image` as a PNG at `path` (see [`Outputs::stage`]).
+    ///
+    /// # Errors
+    /// As [`Outputs::stage`].
+    pub fn stage_png<P>(&mut self, path: &Path, image: &image::ImageBuffer<P, Vec<u8>>) -> Result<(), String>
+    where
+        P: image::Pixel<Subpixel = u8> + image::PixelWithColorType,
+    {
+        self.stage(path, "PNG", |out| image.write_to(out, image::ImageFormat::Png))
+    }
+
+    /// Stages `text` at `path` (see [`Outputs::stage`]).
+    ///
+    /// # Errors
+    /// As [`Outputs::stage`].
+    pub fn stage_text(&mut self, path: &Path, text: &str) -> Result<(), String> {
+        self.stage(path, "file", |out| out.write_all(text.as_bytes()))
+    }
+
+    /// Renames every staged file into place.
+    ///
+    /// # Errors
+    /// A rename fails: the files already moved are removed again, with every remaining
+    /// temporary, so the run still leaves no output; one line names the path.
+    pub fn commit(mut self) -> Result<(), String> {
+        let staged = std::mem::take(&mut self.staged);
+        for (k, s) in staged.iter().enumerate() {
+            if let Err(e) = std::fs::rename(&s.temp, &s.target) {
+                for done in &staged[..k] {
+                    let _ = std::fs::remove_file(&done.target);
+                }
+                for rest in &staged[k..] {
+                    let _ = std::fs::remove_file(&rest.temp);
+                }
+                return Err(format!("{}: cannot write: {e}", s.target.display()));
+            }
+        }
+        Ok(())
+    }
+}
+
+impl Drop for Outputs {
+    fn drop(&mut self) {
+        for s in &self.staged {
+            let _ = std::fs::remove_file(&s.temp);
+        }
+    }
+}
+
+/// `DIR/.NAME.rasterproof-PID-N.tmp` for `DIR/NAME`: hidden, unique within this process
+/// (N counts) and between processes (PID); `None` when `path` has no file name.
+fn temporary_beside(path: &Path) -> Option<PathBuf> {
+    static COUNT: AtomicU32 = AtomicU32::new(0);
+    let name = path.file_name()?;
+    let n = COUNT.fetch_add(1, Ordering::Relaxed);
+    let mut temp = OsString::from(".");
+    temp.push(name);
+    temp.push(format!(".rasterproof-{}-{n}.tmp", std::process::id()));
+    Some(path.with_file_name(temp))
 }
 
 /// Writes to stdout through a buffer; a closed pipe (`| head`) ends quietly instead of

@@ -4,27 +4,38 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use rasterproof::convention::Preset;
-use rasterproof::model::{prepare, Model};
+use rasterproof::coverage::picture::{legend_path, upscale};
+use rasterproof::coverage::{IdRun, Scale, ASCII_GRID_MAX_SIDE};
+use rasterproof::model::{prepare, Model, Primitives};
 use rasterproof::scene::parse_scene_bytes;
+
+use super::Outputs;
 
 /// What `render` was asked to do.
 #[derive(clap::Args)]
 pub struct Options {
     /// The scene file (JSON).
     scene: PathBuf,
-    /// The model (default exact-snapped); `--help` lists them.
+    /// The model (default exact-snapped); `--help` lists them and says what exact and
+    /// exact-snapped mean.
     #[arg(long, default_value = "exact-snapped", long_help = crate::cli::model_help())]
     model: String,
     /// Override the scene's preset: d3d11, vulkan, gl, cts (the scene's explicit
     /// overrides still apply on top).
     #[arg(long)]
     preset: Option<String>,
-    /// Write the coverage picture (one colour per triangle, magenta where covered twice).
-    #[arg(short = 'o', long = "out")]
+    /// Write the coverage picture (PNG): black where uncovered, one colour per primitive,
+    /// white where several primitives cover a pixel; its legend (id, colour, primitive,
+    /// pixels) goes beside it as OUT.legend.txt. A failing run writes no file at all.
+    #[arg(short = 'o', long = "out", value_name = "OUT.png")]
     out: Option<PathBuf>,
-    /// Write the interpolated-colour (Gouraud) picture.
-    #[arg(long = "colors-out")]
+    /// Write the interpolated-colour (Gouraud) picture (PNG), at the same scale.
+    #[arg(long = "colors-out", value_name = "COLOURS.png")]
     colors_out: Option<PathBuf>,
+    /// Enlarge the pictures: each pixel becomes a KxK block. Default: the smallest K that
+    /// makes the picture at least 256 px wide, lowered to keep each side at most 4096 px.
+    #[arg(long, value_name = "K", allow_hyphen_values = true)]
+    scale: Option<String>,
     /// Output format on stdout.
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
@@ -33,7 +44,9 @@ pub struct Options {
 /// How `render` reports on stdout.
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum Format {
-    /// A one-line summary naming the model and preset.
+    /// Up to 64x64 pixels, the coverage as a grid (`.` uncovered, the owner id's last
+    /// digit, `#` several owners; row 0 first), then a one-line summary naming the model
+    /// and preset.
     Text,
     /// `{"width":W,"height":H,"pixels":[[x,y,[ids...]],...]}`.
     Json,
@@ -49,6 +62,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             all.join(", ")
         )
     })?;
+    let scale_asked = o.scale.as_deref().map(parse_scale).transpose()?;
     let bytes = std::fs::read(&o.scene).map_err(|e| format!("{name}: cannot read: {e}"))?;
     let mut scene = parse_scene_bytes(&bytes, &name).map_err(|e| e.to_string())?;
     if let Some(p) = &o.preset {
@@ -58,33 +72,80 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let target = scene
         .target()
         .ok_or_else(|| format!("{name}: invalid canvas or convention"))?;
+    let scale = match scale_asked {
+        Some(k) => Scale::new(k, target.width, target.height).map_err(|e| format!("--scale: {e} (scene {name})"))?,
+        None => Scale::default_for(target.width, target.height),
+    };
     let fail = |e: rasterproof::model::ModelError| format!("{name}: {e} (model {model})");
-    let prepared = prepare(model, &scene.primitives(), &target).map_err(fail)?;
+    let primitives = scene.primitives();
+    let prepared = prepare(model, &primitives, &target).map_err(fail)?;
     let coverage = prepared.coverage(&target);
 
+    let mut outputs = Outputs::new();
+    let mut wrote = Vec::new();
     if let Some(path) = &o.out {
-        coverage
-            .save_png(path)
-            .map_err(|e| format!("{}: cannot write PNG: {e}", path.display()))?;
+        outputs.stage_png(path, &coverage.picture(scale))?;
+        let legend = legend_path(path);
+        outputs.stage_text(&legend, &coverage.legend(&id_runs(&primitives), scale))?;
+        wrote.extend([path.display().to_string(), legend.display().to_string()]);
     }
     if let Some(path) = &o.colors_out {
-        prepared
-            .colour_image(&coverage, &scene.colours(), &target)
-            .save_with_format(path, image::ImageFormat::Png)
-            .map_err(|e| format!("{}: cannot write PNG: {e}", path.display()))?;
+        let colours = prepared.colour_image(&coverage, &scene.colours(), &target);
+        outputs.stage_png(path, &upscale(&colours, scale))?;
+        wrote.push(path.display().to_string());
     }
-    let summary = format!(
+    outputs.commit()?;
+
+    let mut summary = format!(
         "{name}: model {model}, {}: {} pixels covered, {} covered more than once",
         target.convention,
         coverage.covered_pixels(),
         coverage.double_covered().count()
     );
+    if !wrote.is_empty() {
+        let k = scale.get();
+        summary.push_str(&format!("; wrote {} (scale {k})", wrote.join(", ")));
+    }
     match o.format {
         Format::Json => {
             crate::cli::print_stdout(&coverage.to_json())?;
             eprintln!("{summary}");
         }
-        Format::Text => crate::cli::print_stdout(&summary)?,
+        Format::Text => {
+            let small = target.width <= ASCII_GRID_MAX_SIDE && target.height <= ASCII_GRID_MAX_SIDE;
+            let grid = if small { coverage.to_ascii() } else { String::new() };
+            crate::cli::print_stdout(&format!("{grid}{summary}"))?;
+        }
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// `--scale K`: a whole number (its range is checked against the canvas later).
+fn parse_scale(text: &str) -> Result<u32, String> {
+    text.trim()
+        .parse::<u32>()
+        .map_err(|_| format!("--scale: {text:?} is not a whole number K >= 1 (each pixel becomes a KxK block)"))
+}
+
+/// The scene's primitive kinds in id order, named as the scene file's fields (the order
+/// of [`Primitives`]).
+fn id_runs(p: &Primitives) -> [IdRun<'static>; 4] {
+    [
+        IdRun {
+            name: "triangles",
+            count: p.triangles.len(),
+        },
+        IdRun {
+            name: "lines",
+            count: p.lines.len(),
+        },
+        IdRun {
+            name: "polygons",
+            count: p.polygons.len(),
+        },
+        IdRun {
+            name: "clip_space_triangles",
+            count: p.clip_space_triangles.len(),
+        },
+    ]
 }

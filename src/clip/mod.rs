@@ -11,6 +11,16 @@
 //! `raster(clip(P, W)) == raster(P) ∩ raster(W)` pixel for pixel, with `raster(W)` the
 //! window filled as a polygon (top-left: samples on its left and top sides are in, on
 //! its right and bottom sides out). Property test: `tests/clip.rs`.
+//!
+//! # Results without area
+//!
+//! Clipping an area primitive (a triangle, a polygon's contour) can leave a point or a
+//! segment: a triangle that touches the window at a corner, or shares only part of an
+//! edge with it. Such a result has no interior, so its moved samples `p + (ε, ±ε²)` (never
+//! on a line) have winding number 0 and it covers no sample under any tie rule, as
+//! `raster(P) ∩ raster(W)` says; [`area_or_empty`] turns it into the empty contour. A
+//! clipped *segment* that shrinks to one point is a real result (a segment of length
+//! zero: the one point of the closed segment in the closed window) and is kept.
 
 pub mod cohen_sutherland;
 pub mod halfplane;
@@ -185,5 +195,47 @@ impl Window {
     /// every call: for many points, take [`Window::half_planes`] once.
     pub fn contains(&self, p: &Point) -> bool {
         self.half_planes().iter().all(|h| h.contains(p))
+    }
+}
+
+/// Whether a closed contour encloses any area: false when all its vertices lie on one
+/// line (no vertex, one point, a segment, or collinear points), exactly.
+///
+/// ```
+/// use rasterproof::clip::encloses_area;
+/// use rasterproof::geom::Point;
+/// assert!(encloses_area(&[Point::from_ints(0, 0), Point::from_ints(4, 0), Point::from_ints(0, 4)]));
+/// assert!(!encloses_area(&[Point::from_ints(0, 0), Point::from_ints(2, 2), Point::from_ints(4, 4)]));
+/// assert!(!encloses_area(&[Point::from_ints(3, 3)]));
+/// ```
+pub fn encloses_area(contour: &[Point]) -> bool {
+    let Some(first) = contour.first() else {
+        return false;
+    };
+    let Some(second) = contour.iter().find(|p| *p != first) else {
+        return false;
+    };
+    contour.iter().any(|p| !edge_function(first, second, p).is_zero())
+}
+
+/// `contour` when it encloses area, else the empty contour: the rule for a clipped area
+/// primitive (see [Results without area](self#results-without-area)).
+///
+/// ```
+/// use rasterproof::clip::{area_or_empty, sutherland_hodgman::clip_exact, Window};
+/// use rasterproof::geom::Point;
+/// let q = |n: i64| num_rational::BigRational::from_integer(n.into());
+/// let w = Window::rect(q(0), q(0), q(8), q(8)).unwrap();
+/// // Touching the window at its corner (8, 8) only: Sutherland-Hodgman keeps that point.
+/// let corner = [Point::from_ints(8, 8), Point::from_ints(12, 8), Point::from_ints(8, 12)];
+/// let cut = clip_exact(&corner, &w.half_planes());
+/// assert_eq!(cut, vec![Point::from_ints(8, 8)]);
+/// assert_eq!(area_or_empty(cut), vec![]);
+/// ```
+pub fn area_or_empty(contour: Vec<Point>) -> Vec<Point> {
+    if encloses_area(&contour) {
+        contour
+    } else {
+        Vec::new()
     }
 }

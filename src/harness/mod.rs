@@ -12,4 +12,4 @@ pub mod search;
 pub mod suite;
 
 pub use search::{find_counterexample, Counterexample, HarnessConfig};
-pub use suite::{generate, must_hold, run_case, Case, CaseRun, Outcome, Tally};
+pub use suite::{generate, must_hold, run_case, Case, CaseRun, Outcome, Row, Skip, Tally};

@@ -2,7 +2,7 @@
 
 use num_rational::BigRational;
 
-use super::{Case, CaseRun, Outcome, CANVAS};
+use super::{Case, CaseRun, Outcome, Skip, CANVAS};
 use crate::check::{
     check_agreement, check_barycentric_exact, check_barycentric_fixed, check_clip_raster, check_diamond_agreement,
     check_inside, check_line_pixels, check_line_reference, check_line_symmetry, check_rotation_and_winding,
@@ -14,6 +14,7 @@ use crate::clip::{cohen_sutherland, Window};
 use crate::convention::{Preset, Target, MAX_CANVAS};
 use crate::fill::triangulate::{triangulate, validate};
 use crate::geom::{FixedTriangle, Point, Polygon, Triangle};
+use crate::interp::barycentric_exact;
 use crate::line::{bresenham, dda, BresenhamTie, Line, LineRule};
 use crate::model::{render, render_triangles, Model, Primitives};
 use crate::raster::sample_exact;
@@ -32,8 +33,9 @@ fn scene(c: &Case, side: u32, triangles: &[Triangle]) -> Scene {
 }
 
 /// Runs every checker of the suite on `c`: triangles, meshes, lines, polygons and
-/// clipping, each outcome with the scene that reproduces it, and the float32 barycentric
-/// sum errors measured at the case's samples.
+/// clipping, each outcome with the scene that reproduces it, each check that could not
+/// run with its reason, and the float32 barycentric sum errors measured at the case's
+/// samples.
 ///
 /// ```
 /// use rasterproof::harness::{generate, run_case};
@@ -42,20 +44,33 @@ fn scene(c: &Case, side: u32, triangles: &[Triangle]) -> Scene {
 /// ```
 pub fn run_case(c: &Case) -> CaseRun {
     let mut out = Vec::new();
-    let float32_sum_ulps = triangle_checks(c, &mut out);
+    let mut skipped = Vec::new();
+    let (float32_sum_ulps, float32_sum_skipped) = triangle_checks(c, &mut out, &mut skipped);
     line_checks(c, &mut out);
-    polygon_checks(c, &mut out);
-    clip_checks(c, &mut out);
+    polygon_checks(c, &mut out, &mut skipped);
+    clip_checks(c, &mut out, &mut skipped);
     CaseRun {
         mesh_family: c.mesh_family,
         outcomes: out,
+        skipped,
         float32_sum_ulps,
+        float32_sum_skipped,
+    }
+}
+
+/// A check of `model` (named by the model) that could not run.
+fn skip(invariant: &'static str, model: Model, reason: &'static str) -> Skip {
+    Skip {
+        invariant,
+        model,
+        label: model.name(),
+        reason,
     }
 }
 
 /// Invariants 1-4 on the case's triangle and meshes; returns the float32 barycentric sum
-/// errors (ulps of 1).
-fn triangle_checks(c: &Case, out: &mut Vec<Outcome>) -> Vec<f64> {
+/// errors (ulps of 1) and the number of samples where none could be measured.
+fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) -> (Vec<f64>, u64) {
     let tri_target = target(CANVAS, c.preset);
     let tri = std::slice::from_ref(&c.triangle);
     let mut push = |invariant, model: Model, result, triangles: &[Triangle], canvas| {
@@ -68,25 +83,35 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>) -> Vec<f64> {
         });
     };
 
-    // 1. barycentrics: exact sums at a few samples, integer sums where the envelope allows.
+    // 1. barycentrics: exact sums at a few samples (a zero-area triangle has none: the
+    // checker would pass it vacuously), integer sums where the envelope allows.
     let samples = [(0u32, 0u32), (CANVAS / 2, CANVAS / 3), (CANVAS - 1, CANVAS - 1)];
-    let exact_sum = samples.iter().try_for_each(|&(x, y)| {
-        let p = sample_exact(x, y, &tri_target);
-        check_barycentric_exact(&c.triangle, &p)
-    });
-    push("barycentric sum", Model::Exact, exact_sum, tri, CANVAS);
-    let ulps: Vec<f64> = samples
-        .iter()
-        .filter_map(|&(x, y)| {
-            let p = sample_exact(x, y, &tri_target);
-            float_sum_error_ulps(&c.triangle, &p)
-        })
-        .collect();
-    if let Ok(f) = c.triangle.snapped(&tri_target.convention).to_fixed() {
-        let sum = samples
-            .iter()
-            .try_for_each(|&(x, y)| check_barycentric_fixed(&f, x, y, &tri_target));
-        push("integer edge sum", Model::Fixed, sum, tri, CANVAS);
+    let points: Vec<Point> = samples.iter().map(|&(x, y)| sample_exact(x, y, &tri_target)).collect();
+    if barycentric_exact(&c.triangle, &points[0]).is_none() {
+        skipped.push(skip(
+            "barycentric sum",
+            Model::Exact,
+            "the triangle has zero area (no barycentrics)",
+        ));
+    } else {
+        let exact_sum = points.iter().try_for_each(|p| check_barycentric_exact(&c.triangle, p));
+        push("barycentric sum", Model::Exact, exact_sum, tri, CANVAS);
+    }
+    let measured: Vec<Option<f64>> = points.iter().map(|p| float_sum_error_ulps(&c.triangle, p)).collect();
+    let ulps_skipped = measured.iter().filter(|u| u.is_none()).count() as u64;
+    let ulps: Vec<f64> = measured.into_iter().flatten().collect();
+    match c.triangle.snapped(&tri_target.convention).to_fixed() {
+        Ok(f) => {
+            let sum = samples
+                .iter()
+                .try_for_each(|&(x, y)| check_barycentric_fixed(&f, x, y, &tri_target));
+            push("integer edge sum", Model::Fixed, sum, tri, CANVAS);
+        }
+        Err(_) => skipped.push(skip(
+            "integer edge sum",
+            Model::Fixed,
+            "the snapped triangle is outside the integer envelope",
+        )),
     }
 
     // 2. watertight meshes, and 3. agreement on them: the snapped models against
@@ -144,12 +169,23 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>) -> Vec<f64> {
     }
 
     // 3. agreement on a single random triangle (every family).
-    if let Ok(reference) = render_triangles(Model::ExactSnapped, tri, &tri_target) {
-        for model in [Model::Fixed, Model::Scanline] {
-            let result = render_triangles(model, tri, &tri_target)
-                .map_err(|e| Violation::new("agreement", e.to_string()))
-                .and_then(|cov| check_agreement("exact-snapped", &reference, model.name(), &cov, tri, &tri_target));
-            push("agreement (triangle)", model, result, tri, CANVAS);
+    match render_triangles(Model::ExactSnapped, tri, &tri_target) {
+        Ok(reference) => {
+            for model in [Model::Fixed, Model::Scanline] {
+                let result = render_triangles(model, tri, &tri_target)
+                    .map_err(|e| Violation::new("agreement", e.to_string()))
+                    .and_then(|cov| check_agreement("exact-snapped", &reference, model.name(), &cov, tri, &tri_target));
+                push("agreement (triangle)", model, result, tri, CANVAS);
+            }
+        }
+        Err(_) => {
+            for model in [Model::Fixed, Model::Scanline] {
+                skipped.push(skip(
+                    "agreement (triangle)",
+                    model,
+                    "exact-snapped refused the triangle (no reference)",
+                ));
+            }
         }
     }
 
@@ -173,13 +209,13 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>) -> Vec<f64> {
             CANVAS,
         );
     }
-    ulps
+    (ulps, ulps_skipped)
 }
 
 /// Invariant 6 (clipping): exact Sutherland-Hodgman output inside the window and
 /// rasterizing to raster(P) ∩ raster(W); exact Cohen-Sutherland keeping exactly the part
 /// inside; the float forms' outputs outside the window counted (the measured trade).
-fn clip_checks(c: &Case, out: &mut Vec<Outcome>) {
+fn clip_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
     let target = target(CANVAS, c.preset);
     let polygon_case = || Scene {
         polygons: vec![c.polygon.clone()],
@@ -231,6 +267,13 @@ fn clip_checks(c: &Case, out: &mut Vec<Outcome>) {
                 ..scene(c, CANVAS, &[])
             },
         );
+    } else {
+        skipped.push(Skip {
+            invariant: "segment clip",
+            model: Model::Exact,
+            label: "cohen-sutherland",
+            reason: "the case's rect window is not a rectangle",
+        });
     }
     // Float Sutherland-Hodgman: every output vertex read back exactly and checked exactly;
     // a non-finite one is a violation in itself.
@@ -254,6 +297,13 @@ fn clip_checks(c: &Case, out: &mut Vec<Outcome>) {
             inside(sutherland_hodgman::clip_f64(&s64, &p64)),
             polygon_case(),
         );
+    } else {
+        skipped.push(Skip {
+            invariant: "clip inside",
+            model: Model::Float64,
+            label: "sh-f64",
+            reason: "a vertex or window line does not fit f64",
+        });
     }
     let p32 = planes.iter().map(HalfPlane::to_f32).collect::<Option<Vec<_>>>();
     let s32 = subject.iter().map(Point::to_f32).collect::<Option<Vec<_>>>();
@@ -266,12 +316,19 @@ fn clip_checks(c: &Case, out: &mut Vec<Outcome>) {
             inside(pts.into_iter().map(|p| p.as_dvec2()).collect()),
             polygon_case(),
         );
+    } else {
+        skipped.push(Skip {
+            invariant: "clip inside",
+            model: Model::Float32,
+            label: "sh-f32",
+            reason: "a vertex or window line does not fit f32",
+        });
     }
 }
 
 /// Invariant 7: the scanline filler equals the oracle on any polygon; a simple polygon's
 /// triangulation covers exactly its fill, once (the `fixed` model's route).
-fn polygon_checks(c: &Case, out: &mut Vec<Outcome>) {
+fn polygon_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
     let target = target(CANVAS, c.preset);
     let mut push = |invariant, model: Model, result, polygon: &Polygon| {
         out.push(Outcome {
@@ -303,9 +360,19 @@ fn polygon_checks(c: &Case, out: &mut Vec<Outcome>) {
     push("polygon agreement", Model::Scanline, agreement, &c.polygon);
     // Grid rounding can fold a tiny star: only simple polygons are triangulated.
     let Ok(fixed) = c.simple.to_fixed(&target.convention) else {
+        skipped.push(skip(
+            "triangulation",
+            Model::Fixed,
+            "a snapped vertex is outside the integer envelope",
+        ));
         return;
     };
     if validate(&fixed).is_err() {
+        skipped.push(skip(
+            "triangulation",
+            Model::Fixed,
+            "snapping folded the polygon (not simple on the subpixel grid)",
+        ));
         return;
     }
     let result = triangulate(&fixed)

@@ -19,8 +19,11 @@
 //!
 //! A violation by an exact or integer model ([`must_hold`]) is a failure. A violation by a
 //! float model is not: it is the measured trade (DESIGN.md invariant 8), counted in the
-//! table so that its rate can be read off. [`Tally`] accumulates the outcomes and renders
-//! the table and summary `rasterproof check` prints.
+//! table so that its rate can be read off. A check that cannot run on a case (snapping
+//! folded the simple polygon, the triangle has zero area, ...) is a [`Skip`] with its
+//! reason, counted in the table's `skipped` column, never dropped silently. [`Tally`]
+//! accumulates the outcomes and renders the table, its legend ([`legend`]: one line per
+//! invariant, model and column) and the summary `rasterproof check` prints.
 //!
 //! ```
 //! use rasterproof::harness::{generate, run_case, Tally};
@@ -35,11 +38,12 @@
 
 mod cases;
 mod checks;
+pub mod legend;
 mod tally;
 
 pub use cases::{generate, Case, CANVAS};
 pub use checks::run_case;
-pub use tally::Tally;
+pub use tally::{Row, Tally};
 
 use crate::check::Violation;
 use crate::model::Model;
@@ -75,6 +79,19 @@ impl Outcome {
     }
 }
 
+/// A check that did not run on a case: its row of the table and why.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Skip {
+    /// The invariant, as the table names it.
+    pub invariant: &'static str,
+    /// The model it would have checked.
+    pub model: Model,
+    /// The model's name in the table (see [`Outcome::label`]).
+    pub label: &'static str,
+    /// Why it could not run, e.g. `"snapping folded the polygon"`.
+    pub reason: &'static str,
+}
+
 /// Every outcome of one case, with what the case measured.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CaseRun {
@@ -82,8 +99,15 @@ pub struct CaseRun {
     pub mesh_family: &'static str,
     /// One outcome per checker run, in the order they ran.
     pub outcomes: Vec<Outcome>,
-    /// The float32 barycentric sum errors at the case's samples, in ulps of 1.
+    /// The checks that could not run on this case, with their reasons: with
+    /// [`CaseRun::outcomes`], one entry per row of the table.
+    pub skipped: Vec<Skip>,
+    /// The float32 barycentric sum errors at the case's samples, in ulps of 1
+    /// (`f32::EPSILON`, the spacing of f32 just above 1).
     pub float32_sum_ulps: Vec<f64>,
+    /// Samples at which the float32 sum error could not be measured (the triangle has
+    /// zero area in f32, or does not fit f32).
+    pub float32_sum_skipped: u64,
 }
 
 /// Whether `model`'s violations fail the run: the exact and integer models (`exact`,

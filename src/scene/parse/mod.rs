@@ -27,12 +27,15 @@
 //! and optional `holes`, each at least 3 vertices, no hole vertex outside the outline,
 //! `fill_rule` `nonzero` (default) or `even-odd`; ids after the triangles and lines. A coordinate is a JSON number read exactly as
 //! written (`0.1` is 1/10, never an f64) or a string with a decimal or a fraction. Unknown
-//! fields are errors (a typo must not silently change the convention). Every error names
-//! the file, the field path and the value.
+//! fields are errors (a typo must not silently change the convention), and so is a key
+//! repeated in one object (JSON leaves its meaning open; serde_json would keep the last).
+//! `NaN` and `Infinity` are not JSON: a bare one is a syntax error, explained as such.
+//! Every error names the file, the field path and the value.
 
 use num_rational::BigRational;
 use serde_json::{Map, Value};
 
+mod keys;
 mod reader;
 mod shapes;
 
@@ -70,7 +73,7 @@ pub fn parse_scene_bytes(bytes: &[u8], source: &str) -> Result<Scene, SceneError
 /// ```
 pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
     let p = Reader { source };
-    let value: Value = serde_json::from_str(text).map_err(|e| p.err("", format!("malformed JSON: {e}")))?;
+    let value = read_json(text, &p)?;
     let Value::Object(root) = &value else {
         return Err(p.err("", format!("the top level must be an object, found {}", kind(&value))));
     };
@@ -147,6 +150,23 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
         viewport,
         clip,
     })
+}
+
+/// The JSON of `text`, refusing what serde_json's `Value` would let through or explain
+/// poorly: a key repeated in one object (the object's path and the key), and a bare `NaN`
+/// or `Infinity` (the position and what to write instead).
+fn read_json(text: &str, p: &Reader<'_>) -> Result<Value, SceneError> {
+    let value: Value = serde_json::from_str(text).map_err(|e| {
+        let message = match keys::non_json_literal_hint(text, e.line(), e.column()) {
+            Some(hint) => format!("malformed JSON: {e}: {hint}"),
+            None => format!("malformed JSON: {e}"),
+        };
+        p.err("", message)
+    })?;
+    if let Some(d) = keys::first_duplicate(text) {
+        return Err(p.err(&d.path, format!("duplicate key {:?}", d.key)));
+    }
+    Ok(value)
 }
 
 impl Reader<'_> {
@@ -294,6 +314,64 @@ mod tests {
             let s = parse_scene(&text, "s").unwrap();
             assert_eq!(parse_scene(&s.to_json(), "again").unwrap(), s, "{coord}");
         }
+    }
+
+    /// JSON leaves a repeated key's meaning open and serde_json keeps the last: refused,
+    /// naming the object's path and the key, wherever the object is.
+    #[test]
+    fn duplicate_keys_are_refused_with_their_path() {
+        assert_eq!(
+            err(r#"{"width": 4, "height": 4, "width": 9}"#),
+            "s.json: duplicate key \"width\""
+        );
+        let tris = format!(r#"{TRI}, {TRI}, {{"v": [[0,0],[4,0],[0,4]], "v": [[0,0],[1,0],[0,1]]}}"#);
+        assert_eq!(err(&scene_with(&tris)), "s.json: triangles[2]: duplicate key \"v\"");
+        assert_eq!(
+            err(r#"{"width": 8, "height": 8, "clip": {"rect": [0, 0, 4, 4], "rect": [0, 0, 8, 8]}}"#),
+            "s.json: clip: duplicate key \"rect\""
+        );
+        // Deeper, inside an array inside an object inside an array.
+        assert_eq!(
+            err(
+                r#"{"width": 8, "height": 8, "lines": [{"from": [0, 0], "to": [1, 1]}, {"from": [0, 0], "to": [1, 1], "rule": "diamond", "rule": "bresenham"}]}"#
+            ),
+            "s.json: lines[1]: duplicate key \"rule\""
+        );
+    }
+
+    /// The same key in two different objects (or at two levels) is no duplicate.
+    #[test]
+    fn a_key_in_two_objects_is_fine() {
+        let s = parse_scene(
+            r#"{"width": 8, "height": 8, "triangles": [{"v": [[0,0],[4,0],[0,4]]}, {"v": [[1,1],[5,1],[1,5]]}],
+                "viewport": {"width": 8, "height": 8}}"#,
+            "s",
+        )
+        .unwrap();
+        assert_eq!(s.triangles.len(), 2);
+        assert_eq!(s.triangles[1].triangle.v[0], crate::geom::Point::from_ints(1, 1));
+    }
+
+    /// A bare NaN (or Infinity) is not JSON: the error says so, where, and what to write.
+    #[test]
+    fn a_bare_nan_is_explained() {
+        let text = "{\"width\": 8, \"height\": 8,\n \"triangles\": [{\"v\": [[0,0],[4,NaN],[0,4]]}]}";
+        // Line 2 is ` "triangles": [{"v": [[0,0],[4,NaN],[0,4]]}]}`: a space, `"triangles"`
+        // (11 bytes, to column 12), `: [{` (to 16), `"v"` (to 19), `: ` (to 21), `[[0,0],`
+        // (to 28), `[4,` (to 31): NaN starts at column 32.
+        assert_eq!(
+            err(text),
+            "s.json: malformed JSON: expected value at line 2 column 32: NaN is not JSON (JSON has no NaN \
+             or infinity); a coordinate is a JSON number or a string holding a decimal or a fraction, \
+             e.g. \"1/3\" or \"0.1\", and it must be finite"
+        );
+        assert!(err(&scene_with(r#"{"v": [[0,0],[4,-Infinity],[0,4]]}"#))
+            .contains("-Infinity is not JSON (JSON has no NaN or infinity)"));
+        // Other syntax errors keep serde_json's message alone.
+        assert_eq!(
+            err(r#"{"width": 8, "height": 8, "triangles": [}"#),
+            "s.json: malformed JSON: expected value at line 1 column 41"
+        );
     }
 
     #[test]

@@ -1,12 +1,14 @@
 //! The output every model writes: which primitives cover which pixel. Models write through
 //! the [`CoverageSink`] trait; [`Coverage`] keeps the owner list of every covered pixel,
-//! [`CountBuffer`] only counts (for benchmarks). PNG export uses the `image` crate.
+//! [`CountBuffer`] only counts (for benchmarks). Pictures for people (the palette, the
+//! scaled PNG, its legend, the ASCII grid) are in [`picture`].
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::path::Path;
 
-use image::{ImageFormat, RgbImage};
+pub mod picture;
+
+pub use picture::{primitive_colour, IdRun, Scale, ScaleError, ASCII_GRID_MAX_SIDE, DOUBLE_COVER_COLOUR};
 
 /// Where a rasterizer writes covered pixels.
 pub trait CoverageSink {
@@ -135,43 +137,6 @@ impl Coverage {
         s.push_str("]}");
         s
     }
-
-    /// The coverage picture: black background, one colour per primitive, pixels covered
-    /// more than once in [`DOUBLE_COVER_COLOUR`].
-    pub fn to_image(&self) -> RgbImage {
-        let mut img = RgbImage::new(self.width, self.height);
-        for (x, y, ids) in self.iter() {
-            let colour = match ids {
-                [id] => primitive_colour(*id),
-                _ => DOUBLE_COVER_COLOUR,
-            };
-            img.put_pixel(x, y, image::Rgb(colour));
-        }
-        img
-    }
-
-    /// Writes [`Coverage::to_image`] as a PNG.
-    pub fn save_png(&self, path: &Path) -> Result<(), image::ImageError> {
-        self.to_image().save_with_format(path, ImageFormat::Png)
-    }
-}
-
-/// The loud colour of a pixel covered more than once (magenta; no primitive gets it).
-pub const DOUBLE_COVER_COLOUR: [u8; 3] = [255, 0, 255];
-
-/// A stable, muted colour for primitive `id` (never [`DOUBLE_COVER_COLOUR`]).
-pub fn primitive_colour(id: u32) -> [u8; 3] {
-    const PALETTE: [[u8; 3]; 8] = [
-        [70, 130, 180],
-        [60, 179, 113],
-        [218, 165, 32],
-        [205, 92, 92],
-        [106, 90, 205],
-        [72, 209, 204],
-        [188, 143, 143],
-        [154, 205, 50],
-    ];
-    PALETTE[(id % 8) as usize]
 }
 
 /// A dense per-pixel count, the cheapest sink: what the benchmarks write into.
@@ -249,16 +214,5 @@ mod tests {
         let t = c.translated(1, 0);
         assert_eq!(t.owners(1, 0), &[0]);
         assert_eq!(t.covered_pixels(), 1);
-    }
-
-    #[test]
-    fn picture_marks_double_cover() {
-        let mut c = Coverage::new(2, 1);
-        c.cover(0, 0, 0);
-        c.cover(1, 0, 0);
-        c.cover(1, 0, 1);
-        let img = c.to_image();
-        assert_eq!(img.get_pixel(1, 0).0, DOUBLE_COVER_COLOUR);
-        assert_eq!(img.get_pixel(0, 0).0, primitive_colour(0));
     }
 }
