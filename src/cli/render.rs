@@ -32,7 +32,12 @@ pub struct Options {
     /// Write the interpolated-colour (Gouraud) picture (PNG), at the same scale.
     #[arg(long = "colors-out", value_name = "COLOURS.png")]
     colors_out: Option<PathBuf>,
-    /// Enlarge the pictures: each pixel becomes a KxK block. Default: the smallest K that
+    /// Write the ids PNG, for programs: 8-bit RGBA, each pixel id + 1 as a 24-bit number
+    /// (R low byte, G, B high byte), alpha 255; 0 = uncovered; several owners: the highest
+    /// id with alpha 254. Never scaled. Ids above 2^24 - 2 are refused.
+    #[arg(long = "ids-out", value_name = "IDS.png")]
+    ids_out: Option<PathBuf>,
+    /// Enlarge the pictures (not the ids PNG): each pixel becomes a KxK block. Default: the smallest K that
     /// makes the picture at least 256 px wide, lowered to keep each side at most 4096 px.
     #[arg(long, value_name = "K", allow_hyphen_values = true)]
     scale: Option<String>,
@@ -94,6 +99,13 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         outputs.stage_png(path, &upscale(&colours, scale))?;
         wrote.push(path.display().to_string());
     }
+    if let Some(path) = &o.ids_out {
+        let ids = coverage
+            .to_ids_image()
+            .map_err(|e| format!("--ids-out {}: {e} (scene {name})", path.display()))?;
+        outputs.stage_png(path, &ids)?;
+        wrote.push(format!("{} (ids, unscaled)", path.display()));
+    }
     outputs.commit()?;
 
     let mut summary = format!(
@@ -108,7 +120,10 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     }
     match o.format {
         Format::Json => {
-            crate::cli::print_stdout(&coverage.to_json())?;
+            crate::cli::write_stdout(|out| {
+                coverage.write_json(out)?;
+                writeln!(out)
+            })?;
             eprintln!("{summary}");
         }
         Format::Text => {

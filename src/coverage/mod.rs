@@ -1,12 +1,21 @@
 //! The output every model writes: which primitives cover which pixel. Models write through
-//! the [`CoverageSink`] trait; [`Coverage`] keeps the owner list of every covered pixel,
-//! [`CountBuffer`] only counts (for benchmarks). Pictures for people (the palette, the
+//! the [`CoverageSink`] trait; [`Coverage`] keeps the owner list of every covered pixel
+//! (in 64x64 tiles allocated on demand, so memory follows the touched area) and writes the
+//! JSON interface as a stream; [`CountBuffer`] only counts (for benchmarks). The ids PNG
+//! for programs is in [`ids`]. Pictures for people (the palette, the
 //! scaled PNG, its legend, the ASCII grid) are in [`picture`].
 
 use std::collections::BTreeMap;
-use std::fmt::Write as _;
+use std::fmt;
 
+pub mod ids;
+mod json;
 pub mod picture;
+mod tiles;
+
+use tiles::TileGrid;
+
+pub use ids::IdOutOfRange;
 
 pub use picture::{primitive_colour, IdRun, Scale, ScaleError, ASCII_GRID_MAX_SIDE, DOUBLE_COVER_COLOUR};
 
@@ -23,23 +32,104 @@ pub trait CoverageSink {
     }
 }
 
-/// The covering primitive ids of every covered pixel, sparse (a 16384² canvas with one
-/// small triangle costs only that triangle's pixels).
-#[derive(Debug, Clone, PartialEq, Eq)]
+/// The largest primitive id a [`Coverage`] takes: `u32::MAX - 2` (the two values above it
+/// mark a pixel's slot as uncovered or shared). Scenes stay far below it: a scene file has
+/// at most `scene::parse::MAX_TRIANGLES` (10^7) primitives, ids `0..` in file order.
+pub const MAX_ID: u32 = tiles::SHARED - 1;
+
+/// The covering primitive ids of every covered pixel. Memory follows the touched area: one
+/// `u32` per pixel in 64x64 tiles allocated on demand (an empty 16384² coverage holds no
+/// tile), the owner stored in the pixel's slot, and the pixels with two or more owners in
+/// a side table (ids ascending, repeats kept: a model that covers a pixel twice for one
+/// primitive is reported, not hidden).
+///
+/// # Guarantees
+/// - every id is at most [`MAX_ID`] ([`CoverageSink::cover`] panics beyond it);
+/// - a tile is allocated iff a pixel in it is covered, so two coverages with the same
+///   owners are equal whatever order they were drawn in.
+#[derive(Clone, PartialEq, Eq)]
 pub struct Coverage {
     width: u32,
     height: u32,
-    /// Keyed by (y, x) so iteration is row-major; ids ascending, repeats kept (a model
-    /// that covers a pixel twice for one primitive is reported, not hidden).
-    pixels: BTreeMap<(u32, u32), Vec<u32>>,
+    /// The owner of each pixel with one owner; [`tiles::SHARED`] where `shared` has them.
+    tiles: TileGrid,
+    /// Keyed by (y, x): the owners of each pixel with two or more, ascending.
+    shared: BTreeMap<(u32, u32), Vec<u32>>,
+    /// The number of covered pixels.
+    covered: usize,
+}
+
+impl fmt::Debug for Coverage {
+    /// `Coverage { width, height, pixels: {(y, x): [ids], ...} }`, covered pixels only.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let pixels = PixelsDebug(self);
+        f.debug_struct("Coverage")
+            .field("width", &self.width)
+            .field("height", &self.height)
+            .field("pixels", &pixels)
+            .finish()
+    }
+}
+
+/// The covered pixels of a coverage as a `{(y, x): [ids]}` map, for `Debug`.
+struct PixelsDebug<'a>(&'a Coverage);
+
+impl fmt::Debug for PixelsDebug<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_map()
+            .entries(self.0.iter().map(|(x, y, ids)| ((y, x), ids)))
+            .finish()
+    }
+}
+
+/// Adds `id` to the owners of `(x, y)`, whose slot is `slot`.
+fn add_owner(
+    slot: &mut u32,
+    (x, y): (u32, u32),
+    id: u32,
+    shared: &mut BTreeMap<(u32, u32), Vec<u32>>,
+    covered: &mut usize,
+) {
+    match *slot {
+        tiles::EMPTY => {
+            *slot = id;
+            *covered += 1;
+        }
+        tiles::SHARED => {
+            let ids = shared.get_mut(&(y, x)).expect("a shared slot has its owner list");
+            let at = ids.partition_point(|&i| i <= id);
+            ids.insert(at, id);
+        }
+        first => {
+            shared.insert((y, x), vec![first.min(id), first.max(id)]);
+            *slot = tiles::SHARED;
+        }
+    }
 }
 
 impl CoverageSink for Coverage {
+    /// # Panics
+    /// `id` above [`MAX_ID`], or `(x, y)` off the canvas.
     fn cover(&mut self, x: u32, y: u32, id: u32) {
-        debug_assert!(x < self.width && y < self.height, "({x},{y}) off the canvas");
-        let ids = self.pixels.entry((y, x)).or_default();
-        let at = ids.partition_point(|&i| i <= id);
-        ids.insert(at, id);
+        self.cover_span(y, x, x, id);
+    }
+
+    /// Fills the row a tile at a time.
+    ///
+    /// # Panics
+    /// `id` above [`MAX_ID`], or the span off the canvas.
+    fn cover_span(&mut self, y: u32, x0: u32, x1: u32, id: u32) {
+        assert!(id <= MAX_ID, "primitive id {id} above the largest, {MAX_ID}");
+        assert!(
+            x0 > x1 || (x1 < self.width && y < self.height),
+            "({x1},{y}) off the canvas"
+        );
+        let (shared, covered) = (&mut self.shared, &mut self.covered);
+        self.tiles.row_mut(y, x0, x1, |first, slots| {
+            for (x, slot) in (first..).zip(slots) {
+                add_owner(slot, (x, y), id, shared, covered);
+            }
+        });
     }
 }
 
@@ -49,7 +139,9 @@ impl Coverage {
         Coverage {
             width,
             height,
-            pixels: BTreeMap::new(),
+            tiles: TileGrid::new(width, height),
+            shared: BTreeMap::new(),
+            covered: 0,
         }
     }
 
@@ -63,24 +155,55 @@ impl Coverage {
         self.height
     }
 
-    /// The ids covering `(x, y)`, ascending; empty when uncovered.
+    /// The owner list that slot `slot` of `(x, y)` stands for.
+    fn owners_of<'a>(&'a self, slot: &'a u32, x: u32, y: u32) -> &'a [u32] {
+        match *slot {
+            tiles::EMPTY => &[],
+            tiles::SHARED => &self.shared[&(y, x)],
+            _ => std::slice::from_ref(slot),
+        }
+    }
+
+    /// The ids covering `(x, y)`, ascending; empty when uncovered (or off the canvas).
     pub fn owners(&self, x: u32, y: u32) -> &[u32] {
-        self.pixels.get(&(y, x)).map_or(&[], Vec::as_slice)
+        if x >= self.width || y >= self.height {
+            return &[];
+        }
+        self.owners_of(self.tiles.get(x, y), x, y)
     }
 
     /// Covered pixels as `(x, y, ids)`, sorted by y then x.
     pub fn iter(&self) -> impl Iterator<Item = (u32, u32, &[u32])> + '_ {
-        self.pixels.iter().map(|(&(y, x), ids)| (x, y, ids.as_slice()))
+        (0..self.height)
+            .filter(|&y| self.tiles.row_touched(y))
+            .flat_map(move |y| {
+                self.tiles
+                    .row(y)
+                    .map(move |(x, slot)| (x, y, self.owners_of(slot, x, y)))
+            })
     }
 
     /// The number of covered pixels.
     pub fn covered_pixels(&self) -> usize {
-        self.pixels.len()
+        self.covered
     }
 
-    /// Pixels covered more than once, as `(x, y, ids)`.
+    /// Pixels covered more than once, as `(x, y, ids)`, sorted by y then x.
     pub fn double_covered(&self) -> impl Iterator<Item = (u32, u32, &[u32])> + '_ {
-        self.iter().filter(|(_, _, ids)| ids.len() > 1)
+        self.shared.iter().map(|(&(y, x), ids)| (x, y, ids.as_slice()))
+    }
+
+    /// The number of allocated 64x64 tiles (what the coverage costs beyond its grid).
+    #[doc(hidden)]
+    pub fn allocated_tiles(&self) -> usize {
+        self.tiles.allocated()
+    }
+
+    /// Adds every id of `ids` (ascending) to `(x, y)`.
+    fn cover_all(&mut self, x: u32, y: u32, ids: &[u32]) {
+        for &id in ids {
+            self.cover(x, y, id);
+        }
     }
 
     /// The coverage moved by whole pixels, dropping what leaves the canvas.
@@ -90,7 +213,7 @@ impl Coverage {
             let (nx, ny) = (i64::from(x) + dx, i64::from(y) + dy);
             if let (Ok(nx), Ok(ny)) = (u32::try_from(nx), u32::try_from(ny)) {
                 if nx < self.width && ny < self.height {
-                    out.pixels.insert((ny, nx), ids.to_vec());
+                    out.cover_all(nx, ny, ids);
                 }
             }
         }
@@ -102,40 +225,10 @@ impl Coverage {
         let mut out = Coverage::new(self.width, self.height);
         for (x, y, ids) in self.iter() {
             if (x0..x1).contains(&x) && (y0..y1).contains(&y) {
-                out.pixels.insert((y, x), ids.to_vec());
+                out.cover_all(x, y, ids);
             }
         }
         out
-    }
-
-    /// The machine interface: `{"width":W,"height":H,"pixels":[[x,y,[ids...]],...]}`,
-    /// covered pixels only, sorted by y then x, ids ascending, no whitespace.
-    ///
-    /// ```
-    /// use rasterproof::coverage::{Coverage, CoverageSink};
-    /// let mut c = Coverage::new(4, 3);
-    /// c.cover(2, 1, 7);
-    /// c.cover(0, 2, 1);
-    /// c.cover(2, 1, 3);
-    /// assert_eq!(c.to_json(), r#"{"width":4,"height":3,"pixels":[[2,1,[3,7]],[0,2,[1]]]}"#);
-    /// ```
-    pub fn to_json(&self) -> String {
-        let mut s = format!("{{\"width\":{},\"height\":{},\"pixels\":[", self.width, self.height);
-        for (n, (x, y, ids)) in self.iter().enumerate() {
-            if n > 0 {
-                s.push(',');
-            }
-            let _ = write!(s, "[{x},{y},[");
-            for (k, id) in ids.iter().enumerate() {
-                if k > 0 {
-                    s.push(',');
-                }
-                let _ = write!(s, "{id}");
-            }
-            s.push_str("]]");
-        }
-        s.push_str("]}");
-        s
     }
 }
 
@@ -214,5 +307,115 @@ mod tests {
         let t = c.translated(1, 0);
         assert_eq!(t.owners(1, 0), &[0]);
         assert_eq!(t.covered_pixels(), 1);
+    }
+
+    #[test]
+    fn tile_boundaries_63_and_64() {
+        let mut c = Coverage::new(130, 70);
+        c.cover_span(63, 60, 70, 1);
+        c.cover(63, 64, 2);
+        c.cover(64, 63, 3);
+        assert_eq!(c.allocated_tiles(), 3);
+        let row: Vec<u32> = c.iter().filter(|p| p.1 == 63).map(|p| p.0).collect();
+        assert_eq!(row, (60..=70).collect::<Vec<_>>());
+        assert_eq!((c.owners(63, 63), c.owners(64, 63)), (&[1][..], &[1, 3][..]));
+        assert_eq!((c.owners(63, 64), c.owners(64, 64)), (&[2][..], &[][..]));
+        assert_eq!(c.covered_pixels(), 12);
+    }
+
+    #[test]
+    fn the_last_partial_tile() {
+        let mut c = Coverage::new(100, 65);
+        c.cover_span(64, 0, 99, 9);
+        assert_eq!(c.allocated_tiles(), 2);
+        assert_eq!(c.owners(99, 64), &[9]);
+        assert_eq!(c.owners(100, 64), &[] as &[u32]);
+        assert_eq!(c.owners(99, 65), &[] as &[u32]);
+        let xs: Vec<u32> = c
+            .iter()
+            .map(|(x, y, _)| {
+                assert_eq!(y, 64);
+                x
+            })
+            .collect();
+        assert_eq!(xs, (0..100).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn three_owners_of_one_pixel() {
+        let mut c = Coverage::new(65, 65);
+        c.cover(64, 64, 8);
+        c.cover(64, 64, 3);
+        c.cover_span(64, 0, 64, 8);
+        assert_eq!(c.owners(64, 64), &[3, 8, 8]);
+        assert_eq!(c.covered_pixels(), 65);
+        let double: Vec<_> = c.double_covered().collect();
+        assert_eq!(double, vec![(64, 64, &[3, 8, 8][..])]);
+        assert_eq!(c.iter().last(), Some((64, 64, &[3, 8, 8][..])));
+    }
+
+    #[test]
+    fn drawing_order_does_not_matter() {
+        let mut a = Coverage::new(200, 100);
+        let mut b = Coverage::new(200, 100);
+        a.cover_span(10, 5, 150, 1);
+        a.cover(70, 10, 0);
+        a.cover(199, 99, 2);
+        b.cover(199, 99, 2);
+        b.cover(70, 10, 0);
+        for x in (5..=150).rev() {
+            b.cover(x, 10, 1);
+        }
+        assert_eq!(a, b);
+        assert_eq!(format!("{a:?}"), format!("{b:?}"));
+        b.cover(0, 0, 0);
+        assert_ne!(a, b);
+    }
+
+    #[test]
+    fn an_empty_large_coverage_has_no_tiles() {
+        let c = Coverage::new(16384, 16384);
+        assert_eq!(c.allocated_tiles(), 0);
+        assert_eq!((c.iter().count(), c.covered_pixels()), (0, 0));
+        assert_eq!(c.to_json(), r#"{"width":16384,"height":16384,"pixels":[]}"#);
+    }
+
+    #[test]
+    fn debug_lists_pixels_as_before() {
+        let mut c = Coverage::new(3, 2);
+        c.cover(2, 1, 4);
+        c.cover(2, 1, 1);
+        assert_eq!(
+            format!("{c:?}"),
+            "Coverage { width: 3, height: 2, pixels: {(1, 2): [1, 4]} }"
+        );
+    }
+
+    #[test]
+    fn streamed_json_equals_the_string() {
+        let mut big = Coverage::new(300, 200);
+        for y in 0..200 {
+            big.cover_span(y, y / 2, 299 - y, y % 7);
+        }
+        big.cover(150, 100, 9);
+        let mut small = Coverage::new(4, 3);
+        small.cover(2, 1, 7);
+        small.cover(2, 1, 3);
+        for c in [Coverage::new(1, 1), small, big.translated(-3, 5), big] {
+            let mut out = Vec::new();
+            c.write_json(&mut out).unwrap();
+            assert_eq!(out, c.to_json().as_bytes());
+        }
+    }
+
+    #[test]
+    fn restriction_keeps_the_inside() {
+        let mut c = Coverage::new(130, 130);
+        c.cover_span(64, 0, 129, 1);
+        c.cover(64, 64, 2);
+        let r = c.restricted(60, 60, 70, 70);
+        assert_eq!(r.covered_pixels(), 10);
+        assert_eq!(r.owners(64, 64), &[1, 2]);
+        assert_eq!(r.allocated_tiles(), 2);
     }
 }
