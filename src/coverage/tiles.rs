@@ -1,8 +1,8 @@
 //! The storage under [`super::Coverage`]: one `u32` slot per pixel, in 64x64 tiles
 //! allocated on the first write into them, so memory follows the touched area (a 16384²
 //! canvas with one small triangle costs the grid of empty tile pointers, 512 KiB, and the
-//! few tiles the triangle touches, 16 KiB each). The grid is the layout of tiled
-//! framebuffers (e.g. tiny-skia's `pipeline::lowp` tiles, llvmpipe's 64x64 bins).
+//! few tiles the triangle touches, 16 KiB each). 64x64 is the tile size of Mesa
+//! llvmpipe's binned rasterizer.
 
 /// The side of a tile in pixels.
 pub const TILE: u32 = 64;
