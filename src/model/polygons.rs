@@ -62,52 +62,52 @@ pub(crate) fn prepare_polygon(
             triangulate(&fixed()?).map_err(|error| ModelError::Triangulate { polygon: k, error })?,
         ),
         Arithmetic::Float(FloatType::F32, rule) => {
-            let contour = |c: usize, points: &[Point]| {
-                let at = |i: usize| move || contour_vertex(k, c, i);
-                points
-                    .iter()
-                    .enumerate()
-                    .map(|(i, v)| point_f32(v, at(i), model))
-                    .collect()
-            };
+            let (outline, holes) = float_contours(p, |v, c, i| point_f32(v, || contour_vertex(k, c, i), model))?;
+            let fill_rule = p.fill_rule;
             PreparedPolygon::Float32(
                 PolygonF32 {
-                    outline: contour(0, &p.outline)?,
-                    holes: p
-                        .holes
-                        .iter()
-                        .enumerate()
-                        .map(|(h, c)| contour(h + 1, c))
-                        .collect::<Result<_, _>>()?,
-                    fill_rule: p.fill_rule,
+                    outline,
+                    holes,
+                    fill_rule,
                 },
                 rule,
             )
         }
         Arithmetic::Float(FloatType::F64, rule) => {
-            let contour = |c: usize, points: &[Point]| {
-                let at = |i: usize| move || contour_vertex(k, c, i);
-                points
-                    .iter()
-                    .enumerate()
-                    .map(|(i, v)| point_f64(v, at(i), model))
-                    .collect()
-            };
+            let (outline, holes) = float_contours(p, |v, c, i| point_f64(v, || contour_vertex(k, c, i), model))?;
+            let fill_rule = p.fill_rule;
             PreparedPolygon::Float64(
                 PolygonF64 {
-                    outline: contour(0, &p.outline)?,
-                    holes: p
-                        .holes
-                        .iter()
-                        .enumerate()
-                        .map(|(h, c)| contour(h + 1, c))
-                        .collect::<Result<_, _>>()?,
-                    fill_rule: p.fill_rule,
+                    outline,
+                    holes,
+                    fill_rule,
                 },
                 rule,
             )
         }
     })
+}
+
+/// A polygon's outline and holes in a float type.
+type FloatContours<V> = (Vec<V>, Vec<Vec<V>>);
+
+/// The outline and holes of `p` converted vertex by vertex: `convert(vertex, contour, index)`
+/// with contour 0 the outline and `h + 1` hole `h`; the first error stops it.
+fn float_contours<V>(
+    p: &Polygon,
+    convert: impl Fn(&Point, usize, usize) -> Result<V, ModelError>,
+) -> Result<FloatContours<V>, ModelError> {
+    let contour = |c: usize, points: &[Point]| -> Result<Vec<V>, ModelError> {
+        points.iter().enumerate().map(|(i, v)| convert(v, c, i)).collect()
+    };
+    let outline = contour(0, &p.outline)?;
+    let holes = p
+        .holes
+        .iter()
+        .enumerate()
+        .map(|(h, points)| contour(h + 1, points))
+        .collect::<Result<_, _>>()?;
+    Ok((outline, holes))
 }
 
 /// The path of vertex `i` of contour `c` (0 the outline, `h + 1` hole `h`) of polygon `k`.
