@@ -5,8 +5,8 @@ use std::process::ExitCode;
 
 use rasterproof::convention::Preset;
 use rasterproof::coverage::picture::{legend_path, upscale};
-use rasterproof::coverage::{IdRun, Scale, ASCII_GRID_MAX_SIDE};
-use rasterproof::model::{prepare, Model, Primitives};
+use rasterproof::coverage::{Scale, ASCII_GRID_MAX_SIDE};
+use rasterproof::model::{prepare, Model};
 use rasterproof::scene::parse_scene_bytes;
 
 use super::Outputs;
@@ -91,7 +91,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     if let Some(path) = &o.out {
         outputs.stage_png(path, &coverage.picture(scale))?;
         let legend = legend_path(path);
-        outputs.stage_text(&legend, &coverage.legend(&id_runs(&primitives), scale))?;
+        outputs.stage_text(&legend, &coverage.legend(&primitives.id_runs(), scale))?;
         wrote.extend([path.display().to_string(), legend.display().to_string()]);
     }
     if let Some(path) = &o.colors_out {
@@ -140,27 +140,4 @@ fn parse_scale(text: &str) -> Result<u32, String> {
     text.trim()
         .parse::<u32>()
         .map_err(|_| format!("--scale: {text:?} is not a whole number K >= 1 (each pixel becomes a KxK block)"))
-}
-
-/// The scene's primitive kinds in id order, named as the scene file's fields (the order
-/// of [`Primitives`]).
-fn id_runs(p: &Primitives) -> [IdRun<'static>; 4] {
-    [
-        IdRun {
-            name: "triangles",
-            count: p.triangles.len(),
-        },
-        IdRun {
-            name: "lines",
-            count: p.lines.len(),
-        },
-        IdRun {
-            name: "polygons",
-            count: p.polygons.len(),
-        },
-        IdRun {
-            name: "clip_space_triangles",
-            count: p.clip_space_triangles.len(),
-        },
-    ]
 }

@@ -8,7 +8,7 @@ use crate::clip::mask::ClipMask;
 use crate::clip::sutherland_hodgman::{self, clip_polygon};
 use crate::clip::Window;
 use crate::convention::Target;
-use crate::coverage::{Coverage, CoverageSink};
+use crate::coverage::{Coverage, CoverageSink, IdRun};
 use crate::geom::{FillRule, Polygon, Rgb, Triangle};
 use crate::line::Line;
 
@@ -44,6 +44,18 @@ impl Primitives {
             triangles: triangles.to_vec(),
             ..Primitives::default()
         }
+    }
+
+    /// The primitive kinds in id order, named as a scene file's fields, with their
+    /// counts: what the coverage picture's legend names each id by.
+    pub fn id_runs(&self) -> [IdRun<'static>; 4] {
+        let run = |name, count| IdRun { name, count };
+        [
+            run("triangles", self.triangles.len()),
+            run("lines", self.lines.len()),
+            run("polygons", self.polygons.len()),
+            run("clip_space_triangles", self.clip_space_triangles.len()),
+        ]
     }
 
     /// The id of the first line, polygon and clip-space triangle.
