@@ -8,7 +8,7 @@
 //!
 //! | arithmetic | sample of pixel `i` | here |
 //! |---|---|---|
-//! | exact | `i + c` (a rational) | [`sample_exact`], [`sample_coordinate_exact`] |
+//! | exact | `i + c` (a rational) | [`ExactGrid`], [`sample_exact`] |
 //! | fixed | `i * 2^S + c * 2^S` subpixels | [`FixedGrid`] |
 //! | f64 / f32 | `i + c`, exact in both types on any canvas | [`sample_f64`], [`sample_f32`] |
 //!
@@ -78,27 +78,64 @@ pub fn saturating_index(v: BigInt) -> i64 {
     })
 }
 
-/// The exact sample coordinate of pixel index `i` (`u32` on the canvas, `i64` for
-/// pixels off it) on either axis: `i + c`.
+/// The sample grid in exact rationals: pixel `i`'s sample is at `i + centre`. Built once
+/// per primitive (the centre is a `BigRational`), then asked per pixel.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ExactGrid {
+    /// The sample's offset inside its pixel: 1/2 or 0.
+    pub centre: BigRational,
+}
+
+impl ExactGrid {
+    /// The grid of `target`'s convention.
+    pub fn of(target: &Target) -> ExactGrid {
+        ExactGrid {
+            centre: target.convention.pixel_centre.offset(),
+        }
+    }
+
+    /// The sample coordinate of pixel index `i` (`u32` on the canvas, `i64` for pixels off
+    /// it) on either axis: `i + c`.
+    pub fn coordinate(&self, i: impl Into<BigInt>) -> BigRational {
+        BigRational::from_integer(i.into()) + &self.centre
+    }
+
+    /// The sample of pixel `(x, y)`: `(x + c, y + c)`.
+    pub fn sample(&self, x: u32, y: u32) -> Point {
+        Point::new(self.coordinate(x), self.coordinate(y))
+    }
+
+    /// The first pixel index whose sample is at or after `v`: `ceil(v - c)`, saturating
+    /// (not clamped to the canvas).
+    pub fn first_at_or_after(&self, v: &BigRational) -> i64 {
+        saturating_index((v - &self.centre).ceil().to_integer())
+    }
+
+    /// The last pixel index whose sample is at or before `v`: `floor(v - c)`, saturating.
+    pub fn last_at_or_before(&self, v: &BigRational) -> i64 {
+        saturating_index((v - &self.centre).floor().to_integer())
+    }
+}
+
+/// The exact sample coordinate of pixel index `i` on either axis ([`ExactGrid::coordinate`]).
 pub fn sample_coordinate_exact(i: impl Into<BigInt>, target: &Target) -> BigRational {
-    BigRational::from_integer(i.into()) + target.convention.pixel_centre.offset()
+    ExactGrid::of(target).coordinate(i)
 }
 
-/// The exact sample of pixel `(x, y)`: `(x + c, y + c)`.
+/// The exact sample of pixel `(x, y)` ([`ExactGrid::sample`]); in a loop over pixels, build
+/// the [`ExactGrid`] once instead.
 pub fn sample_exact(x: u32, y: u32, target: &Target) -> Point {
-    Point::new(sample_coordinate_exact(x, target), sample_coordinate_exact(y, target))
+    ExactGrid::of(target).sample(x, y)
 }
 
-/// The first pixel index whose sample is at or after `v` on its axis: `ceil(v - c)`,
-/// saturating (not clamped to the canvas).
+/// The first pixel index whose sample is at or after `v` ([`ExactGrid::first_at_or_after`]).
 pub fn first_sample_at_or_after(v: &BigRational, target: &Target) -> i64 {
-    saturating_index((v - target.convention.pixel_centre.offset()).ceil().to_integer())
+    ExactGrid::of(target).first_at_or_after(v)
 }
 
-/// The last pixel index whose sample is at or before `v` on its axis: `floor(v - c)`,
-/// saturating (not clamped to the canvas).
+/// The last pixel index whose sample is at or before `v` ([`ExactGrid::last_at_or_before`]).
 pub fn last_sample_at_or_before(v: &BigRational, target: &Target) -> i64 {
-    saturating_index((v - target.convention.pixel_centre.offset()).floor().to_integer())
+    ExactGrid::of(target).last_at_or_before(v)
 }
 
 /// The f64 sample of pixel `(x, y)`: exact (integers below 2^32 plus 1/2).
@@ -166,8 +203,9 @@ where
     let ys = points.map(|p| &p.y);
     let (min_x, max_x) = (xs.clone().min()?, xs.max()?);
     let (min_y, max_y) = (ys.clone().min()?, ys.max()?);
-    let lo = |m: &BigRational| first_sample_at_or_after(m, target);
-    let hi = |m: &BigRational| last_sample_at_or_before(m, target);
+    let grid = ExactGrid::of(target);
+    let lo = |m: &BigRational| grid.first_at_or_after(m);
+    let hi = |m: &BigRational| grid.last_at_or_before(m);
     PixelRange::clamped(
         [lo(min_x), lo(min_y)],
         [hi(max_x), hi(max_y)],

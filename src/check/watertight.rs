@@ -41,8 +41,9 @@ pub fn check_watertight(
     target: &Target,
 ) -> Result<(), Violation> {
     let edges = outline_edges(outline, target);
+    let grid = crate::raster::ExactGrid::of(target);
     let inside = |x: u32, y: u32| {
-        let p = crate::raster::sample_exact(x, y, target);
+        let p = grid.sample(x, y);
         !edges.is_empty() && edges.iter().all(|e| e.contains(&p))
     };
     let mut problems = Vec::new();

@@ -14,7 +14,7 @@ use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::fill::polygon::rasterize_rows_exact;
 use crate::geom::{FillRule, Polygon};
-use crate::raster::{first_sample_at_or_after, last_sample_at_or_before, sample_coordinate_exact};
+use crate::raster::ExactGrid;
 
 /// For each row, the inclusive pixel span inside the window (a convex window meets a row
 /// in one interval), or `None`.
@@ -54,9 +54,10 @@ impl ClipMask {
     /// each half-plane `a x + b y + c >= 0` bounds the row's x from one side.
     pub fn for_points(window: &Window, target: &Target) -> ClipMask {
         let planes = window.half_planes();
+        let grid = ExactGrid::of(target);
         let rows = (0..target.height)
             .map(|j| {
-                let y = sample_coordinate_exact(j, target);
+                let y = grid.coordinate(j);
                 let (mut lo, mut hi): (Option<BigRational>, Option<BigRational>) = (None, None);
                 for h in &planes {
                     let rest = &h.b * &y + &h.c; // a x + rest >= 0
@@ -74,9 +75,9 @@ impl ClipMask {
                     }
                 }
                 // pixel i: lo <= i + c <= hi
-                let first = lo.map_or(0, |l| first_sample_at_or_after(&l, target).max(0));
+                let first = lo.map_or(0, |l| grid.first_at_or_after(&l).max(0));
                 let last = hi.map_or(i64::from(target.width) - 1, |u| {
-                    last_sample_at_or_before(&u, target).min(i64::from(target.width) - 1)
+                    grid.last_at_or_before(&u).min(i64::from(target.width) - 1)
                 });
                 (first <= last).then(|| {
                     (

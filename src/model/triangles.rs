@@ -48,28 +48,33 @@ pub(crate) fn prepare_triangles(
             PreparedTriangles::Scanline(fixed_triangles(triangles, conv)?)
         }
         Arithmetic::Float(FloatType::F32, rule) => PreparedTriangles::F32(
-            triangles
-                .iter()
-                .enumerate()
-                .map(|(k, t)| {
-                    let f = |i: usize| point_f32(&t.v[i], at(k, i), model);
-                    Ok([f(0)?, f(1)?, f(2)?])
-                })
-                .collect::<Result<_, _>>()?,
+            float_triangles(triangles, |v, k, i| point_f32(v, at(k, i), model))?,
             rule,
         ),
         Arithmetic::Float(FloatType::F64, rule) => PreparedTriangles::F64(
-            triangles
-                .iter()
-                .enumerate()
-                .map(|(k, t)| {
-                    let f = |i: usize| point_f64(&t.v[i], at(k, i), model);
-                    Ok([f(0)?, f(1)?, f(2)?])
-                })
-                .collect::<Result<_, _>>()?,
+            float_triangles(triangles, |v, k, i| point_f64(v, at(k, i), model))?,
             rule,
         ),
     })
+}
+
+/// Every triangle converted vertex by vertex, `convert(vertex, triangle, index)`; the first
+/// error stops it.
+fn float_triangles<V>(
+    triangles: &[Triangle],
+    convert: impl Fn(&crate::geom::Point, usize, usize) -> Result<V, ModelError>,
+) -> Result<Vec<[V; 3]>, ModelError> {
+    triangles
+        .iter()
+        .enumerate()
+        .map(|(k, t)| {
+            Ok([
+                convert(&t.v[0], k, 0)?,
+                convert(&t.v[1], k, 1)?,
+                convert(&t.v[2], k, 2)?,
+            ])
+        })
+        .collect()
 }
 
 /// Snaps every triangle and checks it against the integer envelope.

@@ -6,7 +6,7 @@ use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::edge::exact::triangle_edges;
 use crate::geom::Triangle;
-use crate::raster::{exact_sample_range, sample_exact};
+use crate::raster::{exact_sample_range, ExactGrid};
 
 /// Covers every pixel whose sample is inside `tri` under `target`'s convention.
 ///
@@ -38,9 +38,10 @@ pub fn rasterize<S: CoverageSink + ?Sized>(tri: &Triangle, id: u32, target: &Tar
     let Some(range) = exact_sample_range(tri.v.iter(), target) else {
         return;
     };
+    let grid = ExactGrid::of(target);
     for j in range.y0..=range.y1 {
         for i in range.x0..=range.x1 {
-            let sample = sample_exact(i, j, target);
+            let sample = grid.sample(i, j);
             if edges.iter().all(|e| e.contains(&sample)) {
                 sink.cover(i, j, id);
             }

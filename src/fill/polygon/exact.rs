@@ -8,7 +8,7 @@ use crate::convention::{Target, TieRule};
 use crate::coverage::CoverageSink;
 use crate::edge::exact::edge_function;
 use crate::geom::{Point, Polygon};
-use crate::raster::{exact_sample_range, sample_exact};
+use crate::raster::{exact_sample_range, ExactGrid};
 
 /// The winding number of the moved sample of `p` around one closed contour, exactly
 /// (see the [module docs](super)), in the contour's own orientation.
@@ -76,9 +76,10 @@ pub fn rasterize_exact<S: CoverageSink + ?Sized>(poly: &Polygon, id: u32, target
     let Some(range) = exact_sample_range(poly.outline.iter().chain(poly.holes.iter().flatten()), target) else {
         return;
     };
+    let grid = ExactGrid::of(target);
     for j in range.y0..=range.y1 {
         for i in range.x0..=range.x1 {
-            let sample = sample_exact(i, j, target);
+            let sample = grid.sample(i, j);
             if contains_exact(&sample, poly, target.convention.tie_rule) {
                 sink.cover(i, j, id);
             }

@@ -7,7 +7,7 @@ use super::{closed_edges, crosses_moved_row, Crossing, Sweep};
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::geom::Polygon;
-use crate::raster::{exact_sample_range, first_sample_at_or_after, sample_coordinate_exact};
+use crate::raster::{exact_sample_range, ExactGrid};
 
 /// A second exact model, row by row on the polygon as written (rationals, no snapping):
 /// for each row, the crossing of every edge with the moved sample's row is computed
@@ -33,10 +33,11 @@ pub fn rasterize_rows_exact<S: CoverageSink + ?Sized>(poly: &Polygon, id: u32, t
         return;
     };
     let rule = target.convention.tie_rule;
+    let grid = ExactGrid::of(target);
     let mut crossings: Vec<Crossing> = Vec::new();
     let mut sweep = Sweep::new(poly.contours().count(), poly.fill_rule);
     for j in range.y0..=range.y1 {
-        let sy = sample_coordinate_exact(j, target);
+        let sy = grid.coordinate(j);
         crossings.clear();
         for (k, contour) in poly.contours().enumerate() {
             for (a, b) in closed_edges(contour) {
@@ -45,7 +46,7 @@ pub fn rasterize_rows_exact<S: CoverageSink + ?Sized>(poly: &Polygon, id: u32, t
                 }
                 let dy = &b.y - &a.y;
                 let xc = &a.x + (&sy - &a.y) * (&b.x - &a.x) / &dy;
-                let threshold = i128::from(first_sample_at_or_after(&xc, target));
+                let threshold = i128::from(grid.first_at_or_after(&xc));
                 crossings.push(Crossing {
                     threshold,
                     contour: k,
