@@ -27,6 +27,10 @@ enum Command {
     /// Render a scene file with one model.
     #[command(after_help = cli::EXIT_CODES)]
     Render(cli::render::Options),
+    /// The planned exact engine's arithmetic per primitive, the bound that forced it, and
+    /// which fixed-width models are exact for the scene.
+    #[command(after_help = cli::EXIT_CODES)]
+    Plan(cli::plan::Options),
     /// Clip a scene's primitives against its clip window; print them exactly.
     #[command(after_help = cli::EXIT_CODES)]
     Clip(cli::clip::Options),
@@ -61,6 +65,7 @@ fn main() -> ExitCode {
     let args = Args::parse();
     let result = match args.command {
         Command::Render(options) => cli::render::run(&options),
+        Command::Plan(options) => cli::plan::run(&options),
         Command::Clip(options) => cli::clip::run(&options),
         Command::Flood(options) => cli::flood::run(&options),
         Command::Check {

@@ -163,9 +163,10 @@ pub fn line_departures(from: [i64; 2], to: [i64; 2], pixels: &[[i64; 2]]) -> usi
         + line.steps.len().abs_diff(pixels.len())
 }
 
-/// The integer diamond-exit model (`fixed`) equals the exact reading on the snapped line
-/// (`exact-snapped`), pixel for pixel. Lines of other rules are Ok.
-pub fn check_diamond_agreement(line: &Line, target: &Target) -> Result<(), Violation> {
+/// A diamond-exit line drawn by `model` equals its plain oracle ([`Model::reference`]:
+/// the exact reading on the snapped line for `fixed` and `exact-snapped`, on the line as
+/// written for `exact`), pixel for pixel. Lines of other rules are Ok.
+pub fn check_diamond_agreement(line: &Line, model: Model, target: &Target) -> Result<(), Violation> {
     if line.rule != LineRule::Diamond {
         return Ok(());
     }
@@ -174,13 +175,14 @@ pub fn check_diamond_agreement(line: &Line, target: &Target) -> Result<(), Viola
         ..Primitives::default()
     };
     let render = |m| render(m, &primitives, target).map_err(|e| Violation::new("diamond agreement", e.to_string()));
-    let (exact, fixed) = (render(Model::ExactSnapped)?, render(Model::Fixed)?);
-    match differing_pixels(&exact, &fixed).first() {
+    let reference = model.reference();
+    let (exact, theirs) = (render(reference)?, render(model)?);
+    match differing_pixels(&exact, &theirs).first() {
         None => Ok(()),
         Some(d) => fail(
             "diamond agreement",
             format!(
-                "{} -> {}: pixel ({}, {}): exact-snapped {:?}, fixed {:?}",
+                "{} -> {}: pixel ({}, {}): {reference} {:?}, {model} {:?}",
                 line.from, line.to, d.x, d.y, d.reference, d.candidate
             ),
         ),

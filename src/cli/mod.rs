@@ -4,6 +4,7 @@
 pub mod check;
 pub mod clip;
 pub mod flood;
+pub mod plan;
 pub mod render;
 
 use std::ffi::OsString;
@@ -41,6 +42,35 @@ no rounding anywhere.
 They differ only where snapping moves an edge across a pixel's sample point.",
     );
     s
+}
+
+/// `--model NAME`, or the error listing every model.
+pub fn parse_model(name: &str) -> Result<rasterproof::model::Model, String> {
+    use rasterproof::model::Model;
+    Model::from_name(name).ok_or_else(|| {
+        let all: Vec<&str> = Model::ALL.iter().map(|m| m.name()).collect();
+        format!("--model: unknown model {name:?} (expected one of {})", all.join(", "))
+    })
+}
+
+/// Reads and parses a scene file, applies `--preset`, and builds its target: the
+/// scene's name (its path as given), the scene and the target.
+pub fn load_scene(
+    path: &Path,
+    preset: Option<&str>,
+) -> Result<(String, rasterproof::scene::Scene, rasterproof::convention::Target), String> {
+    use rasterproof::convention::Preset;
+    let name = path.display().to_string();
+    let bytes = std::fs::read(path).map_err(|e| format!("{name}: cannot read: {e}"))?;
+    let mut scene = rasterproof::scene::parse_scene_bytes(&bytes, &name).map_err(|e| e.to_string())?;
+    if let Some(p) = preset {
+        scene.preset = Preset::from_name(p)
+            .ok_or_else(|| format!("--preset: unknown preset {p:?} (expected one of d3d11, vulkan, gl, cts)"))?;
+    }
+    let target = scene
+        .target()
+        .ok_or_else(|| format!("{name}: invalid canvas or convention"))?;
+    Ok((name, scene, target))
 }
 
 /// The files one command run writes, all or none. [`Outputs::stage`] writes each file

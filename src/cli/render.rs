@@ -3,11 +3,10 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use rasterproof::convention::Preset;
 use rasterproof::coverage::picture::{legend_path, upscale};
 use rasterproof::coverage::{Scale, ASCII_GRID_MAX_SIDE};
-use rasterproof::model::{prepare, Model};
-use rasterproof::scene::parse_scene_bytes;
+use rasterproof::model::plan;
+use rasterproof::model::prepare;
 
 use super::Outputs;
 
@@ -58,25 +57,9 @@ pub enum Format {
 }
 
 pub fn run(o: &Options) -> Result<ExitCode, String> {
-    let name = o.scene.display().to_string();
-    let model = Model::from_name(&o.model).ok_or_else(|| {
-        let all: Vec<&str> = Model::ALL.iter().map(|m| m.name()).collect();
-        format!(
-            "--model: unknown model {:?} (expected one of {})",
-            o.model,
-            all.join(", ")
-        )
-    })?;
+    let model = super::parse_model(&o.model)?;
     let scale_asked = o.scale.as_deref().map(parse_scale).transpose()?;
-    let bytes = std::fs::read(&o.scene).map_err(|e| format!("{name}: cannot read: {e}"))?;
-    let mut scene = parse_scene_bytes(&bytes, &name).map_err(|e| e.to_string())?;
-    if let Some(p) = &o.preset {
-        scene.preset = Preset::from_name(p)
-            .ok_or_else(|| format!("--preset: unknown preset {p:?} (expected one of d3d11, vulkan, gl, cts)"))?;
-    }
-    let target = scene
-        .target()
-        .ok_or_else(|| format!("{name}: invalid canvas or convention"))?;
+    let (name, scene, target) = super::load_scene(&o.scene, o.preset.as_deref())?;
     let scale = match scale_asked {
         Some(k) => Scale::new(k, target.width, target.height).map_err(|e| format!("--scale: {e} (scene {name})"))?,
         None => Scale::default_for(target.width, target.height),
@@ -114,6 +97,9 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         coverage.covered_pixels(),
         coverage.double_covered().count()
     );
+    if model.plans() {
+        summary.push_str(&format!("; plan: {}", plan::summary(&prepared.plans())));
+    }
     if !wrote.is_empty() {
         let k = scale.get();
         summary.push_str(&format!("; wrote {} (scale {k})", wrote.join(", ")));

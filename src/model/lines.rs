@@ -63,10 +63,10 @@ fn prepare_diamond(model: Model, k: usize, l: &Line, conv: &Convention) -> Resul
         [s(&p.x), s(&p.y)]
     };
     match model.arithmetic() {
-        Arithmetic::Exact { snapped: false } => {
+        Arithmetic::Exact { snapped: false, .. } => {
             Ok(PreparedLine::DiamondExact(Box::new((l.from.clone(), l.to.clone()))))
         }
-        Arithmetic::Exact { snapped: true } => {
+        Arithmetic::Exact { snapped: true, .. } => {
             let back = |[x, y]: [BigInt; 2]| Point::new(dyadic(&x, conv.subpixel_bits), dyadic(&y, conv.subpixel_bits));
             Ok(PreparedLine::DiamondExact(Box::new((
                 back(snapped(&l.from)),
@@ -104,6 +104,11 @@ fn prepare_diamond(model: Model, k: usize, l: &Line, conv: &Convention) -> Resul
 }
 
 impl PreparedLine {
+    /// The planned engine's plan; `None` for every other form.
+    pub(crate) fn plan(&self) -> Option<&crate::num::plan::Plan> {
+        None
+    }
+
     /// Draws the line with id `id`.
     pub(crate) fn draw<S: CoverageSink + ?Sized>(&self, id: u32, target: &Target, sink: &mut S) {
         match self {

@@ -25,6 +25,7 @@
 
 mod error;
 mod lines;
+pub mod plan;
 mod polygons;
 mod prepared;
 mod triangles;
@@ -43,10 +44,14 @@ pub use prepared::{prepare, render, render_triangles, PreparedScene, Primitives}
 /// A model: one arithmetic for every primitive of a scene (the CLI's `--model`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Model {
-    /// The oracle on the scene as written (no snapping).
+    /// Exact on the scene as written (no snapping): the planned engine.
     Exact,
-    /// The oracle on the snapped scene.
+    /// Exact on the snapped scene: the planned engine.
     ExactSnapped,
+    /// The plain oracle on the scene as written: BigRational per sample.
+    ExactPlain,
+    /// The plain oracle on the snapped scene.
+    ExactSnappedPlain,
     /// Incremental i64 edge functions with block traversal, on the snapped scene.
     Fixed,
     /// Edge walking: spans per scanline from an exact integer DDA, on the snapped scene.
@@ -63,9 +68,11 @@ pub enum Model {
 
 impl Model {
     /// Every model.
-    pub const ALL: [Model; 8] = [
+    pub const ALL: [Model; 10] = [
         Model::Exact,
         Model::ExactSnapped,
+        Model::ExactPlain,
+        Model::ExactSnappedPlain,
         Model::Fixed,
         Model::Scanline,
         Model::Float32,
@@ -79,6 +86,8 @@ impl Model {
         match self {
             Model::Exact => "exact",
             Model::ExactSnapped => "exact-snapped",
+            Model::ExactPlain => "exact-plain",
+            Model::ExactSnappedPlain => "exact-snapped-plain",
             Model::Fixed => "fixed",
             Model::Scanline => "scanline",
             Model::Float32 => "float32",
@@ -102,7 +111,8 @@ impl Model {
     /// The coordinate range over which the model is exact, in words.
     pub fn envelope(self) -> &'static str {
         match self {
-            Model::Exact | Model::ExactSnapped => "unbounded (arbitrary precision)",
+            Model::Exact | Model::ExactSnapped => "unbounded: the planner picks i32 ... bigint per primitive",
+            Model::ExactPlain | Model::ExactSnappedPlain => "unbounded (arbitrary precision)",
             Model::Fixed | Model::Scanline => "|snapped coordinate| <= 2^29 subpixels (2^21 px at 8 bits)",
             Model::Float32 | Model::Float32Naive => "none: inexact; refuses coordinates beyond f32",
             Model::Float64 | Model::Float64Naive => "none: inexact; refuses coordinates beyond f64",
@@ -114,10 +124,13 @@ impl Model {
 /// matches on this, never on [`Model`] itself, so a new model is one more arm here.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Arithmetic {
-    /// Exact rationals: the plain oracles, on the scene as written or snapped.
+    /// Exact: the planned engines, or the plain oracles, on the scene as written or
+    /// snapped.
     Exact {
         /// Snap vertices to the subpixel grid first (`exact-snapped`).
         snapped: bool,
+        /// The plain per-sample BigRational oracle instead of the planned engine.
+        plain: bool,
     },
     /// Integers on the snapped scene, inside the envelope.
     Integer(IntegerTraversal),
@@ -147,8 +160,22 @@ impl Model {
     /// The model's arithmetic.
     pub(crate) fn arithmetic(self) -> Arithmetic {
         match self {
-            Model::Exact => Arithmetic::Exact { snapped: false },
-            Model::ExactSnapped => Arithmetic::Exact { snapped: true },
+            Model::Exact => Arithmetic::Exact {
+                snapped: false,
+                plain: false,
+            },
+            Model::ExactSnapped => Arithmetic::Exact {
+                snapped: true,
+                plain: false,
+            },
+            Model::ExactPlain => Arithmetic::Exact {
+                snapped: false,
+                plain: true,
+            },
+            Model::ExactSnappedPlain => Arithmetic::Exact {
+                snapped: true,
+                plain: true,
+            },
             Model::Fixed => Arithmetic::Integer(IntegerTraversal::Blocks),
             Model::Scanline => Arithmetic::Integer(IntegerTraversal::Scanline),
             Model::Float32 => Arithmetic::Float(FloatType::F32, FloatRule::WithTieRule),
@@ -156,6 +183,22 @@ impl Model {
             Model::Float32Naive => Arithmetic::Float(FloatType::F32, FloatRule::Naive),
             Model::Float64Naive => Arithmetic::Float(FloatType::F64, FloatRule::Naive),
         }
+    }
+
+    /// The plain oracle a model is compared with: `exact-snapped-plain` for the models
+    /// that snap, `exact-plain` for the others.
+    pub fn reference(self) -> Model {
+        if self.snaps() {
+            Model::ExactSnappedPlain
+        } else {
+            Model::ExactPlain
+        }
+    }
+
+    /// Whether the model runs the planned exact engine (`exact`, `exact-snapped`): the
+    /// models with a plan per primitive.
+    pub fn plans(self) -> bool {
+        matches!(self.arithmetic(), Arithmetic::Exact { plain: false, .. })
     }
 
     /// The float type of a float model.
@@ -172,20 +215,22 @@ impl Model {
         !matches!(self.arithmetic(), Arithmetic::Float(..))
     }
 
-    /// Whether the model rasterizes the snapped scene (so `exact-snapped` is its reference;
-    /// `exact` is the reference of the others).
+    /// Whether the model rasterizes the snapped scene (so `exact-snapped-plain` is its
+    /// reference; `exact-plain` is the reference of the others).
     pub fn snaps(self) -> bool {
         matches!(
             self.arithmetic(),
-            Arithmetic::Exact { snapped: true } | Arithmetic::Integer(_)
+            Arithmetic::Exact { snapped: true, .. } | Arithmetic::Integer(_)
         )
     }
 
     /// One line for `--help`: what the model computes and how it fills each primitive.
     pub fn describe(self) -> &'static str {
         match self {
-            Model::Exact => "the oracle on the scene as written (no snapping): exact rationals",
-            Model::ExactSnapped => "the oracle on the snapped scene: what every integer model must equal",
+            Model::Exact => "exact on the scene as written (no snapping), in the planned width per primitive",
+            Model::ExactSnapped => "exact on the snapped scene, in the planned width per primitive (the default)",
+            Model::ExactPlain => "the plain oracle on the scene as written: BigRational per sample",
+            Model::ExactSnappedPlain => "the plain oracle on the snapped scene: what every other model must equal",
             Model::Fixed => "i64 edge functions in blocks (alias bresenham); polygons triangulated (simple only)",
             Model::Scanline => "edge walking with exact integer DDAs; polygons by an active edge table",
             Model::Float32 => "f32, the tie rule on float values (alias dda32); polygons by float winding",

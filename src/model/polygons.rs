@@ -55,8 +55,8 @@ pub(crate) fn prepare_polygon(
             })
     };
     Ok(match model.arithmetic() {
-        Arithmetic::Exact { snapped: false } => PreparedPolygon::Exact(p.clone()),
-        Arithmetic::Exact { snapped: true } => PreparedPolygon::Exact(p.snapped_exact(conv)),
+        Arithmetic::Exact { snapped: false, .. } => PreparedPolygon::Exact(p.clone()),
+        Arithmetic::Exact { snapped: true, .. } => PreparedPolygon::Exact(p.snapped_exact(conv)),
         Arithmetic::Integer(IntegerTraversal::Scanline) => PreparedPolygon::Scanline(fixed()?),
         Arithmetic::Integer(IntegerTraversal::Blocks) => PreparedPolygon::Triangles(
             triangulate(&fixed()?).map_err(|error| ModelError::Triangulate { polygon: k, error })?,
@@ -147,6 +147,11 @@ pub(crate) fn prepare_clip_space(
 }
 
 impl PreparedPolygon {
+    /// The planned engine's plan; `None` for every other form.
+    pub(crate) fn plan(&self) -> Option<&crate::num::plan::Plan> {
+        None
+    }
+
     /// Fills the polygon with id `id`.
     pub(crate) fn fill<S: CoverageSink + ?Sized>(&self, id: u32, target: &Target, sink: &mut S) {
         match self {

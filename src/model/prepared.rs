@@ -13,6 +13,7 @@ use crate::geom::{FillRule, Polygon, Rgb, Triangle};
 use crate::line::Line;
 
 use super::lines::{prepare_lines, PreparedLine};
+use super::plan::PrimitivePlan;
 use super::polygons::{prepare_clip_space, prepare_polygon, PreparedPolygon};
 use super::triangles::{prepare_triangles, PreparedTriangles};
 use super::{Arithmetic, FloatType, Model, ModelError};
@@ -86,6 +87,8 @@ pub struct PreparedScene {
     point_mask: Option<ClipMask>,
     first_line: usize,
     first_polygon: usize,
+    /// How many of `polygons` are the scene's own (the rest are clip-space triangles).
+    scene_polygons: usize,
 }
 
 /// Ids are positions in one sequence.
@@ -119,10 +122,11 @@ pub fn prepare(model: Model, primitives: &Primitives, target: &Target) -> Result
         point_mask,
         first_line,
         first_polygon,
+        scene_polygons: primitives.polygons.len(),
     };
     match model.arithmetic() {
         Arithmetic::Exact { .. } | Arithmetic::Integer(_) => {
-            scene.triangles = prepare_triangles(model, &primitives.triangles, conv)?;
+            scene.triangles = prepare_triangles(model, &primitives.triangles, target)?;
             for (k, p) in primitives.polygons.iter().enumerate() {
                 scene.polygons.push(prepare_polygon(model, k, p, conv)?);
             }
@@ -133,7 +137,7 @@ pub fn prepare(model: Model, primitives: &Primitives, target: &Target) -> Result
                 }
             }
             if let Some(w) = &primitives.clip {
-                if let PreparedTriangles::Exact(ts) = &scene.triangles {
+                if let Some(ts) = scene.triangles.exact_triangles() {
                     let whole = |t: &Triangle| Polygon::new(t.v.to_vec(), FillRule::NonZero);
                     let clip = |p: &Polygon| PreparedPolygon::Exact(clip_polygon(p, w));
                     scene.clipped_triangles = Some(ts.iter().map(|t| clip(&whole(t))).collect());
@@ -180,7 +184,7 @@ macro_rules! prepare_float_in {
                         .ok_or_else(|| range("clip (a window edge's line coefficient)".into()))?,
                 ),
             };
-            scene.triangles = prepare_triangles(model, &primitives.triangles, &target.convention)?;
+            scene.triangles = prepare_triangles(model, &primitives.triangles, target)?;
             let clipped = |poly: Vec<_>| match &planes {
                 Some(planes) => $clip(&poly, planes),
                 None => poly,
@@ -275,6 +279,57 @@ impl PreparedScene {
         }
     }
 
+    /// Every primitive's plan, in id order (see [`crate::model::plan`]): lines first, then
+    /// the triangles (clipped ones as their clipped polygons), then the polygons and the
+    /// clip-space triangles.
+    pub fn plans(&self) -> Vec<PrimitivePlan> {
+        let mut out = Vec::new();
+        for (k, l) in self.lines.iter().enumerate() {
+            out.push(PrimitivePlan {
+                kind: "line",
+                index: k,
+                id: id(self.first_line + k),
+                plan: l.plan().cloned(),
+            });
+        }
+        match &self.clipped_triangles {
+            None => {
+                for k in 0..self.triangles.len() {
+                    out.push(PrimitivePlan {
+                        kind: "triangle",
+                        index: k,
+                        id: id(k),
+                        plan: self.triangles.plan(k).cloned(),
+                    });
+                }
+            }
+            Some(polygons) => {
+                for (k, p) in polygons.iter().enumerate() {
+                    out.push(PrimitivePlan {
+                        kind: "clipped triangle",
+                        index: k,
+                        id: id(k),
+                        plan: p.plan().cloned(),
+                    });
+                }
+            }
+        }
+        for (k, p) in self.polygons.iter().enumerate() {
+            let (kind, index) = if k < self.scene_polygons {
+                ("polygon", k)
+            } else {
+                ("clip-space triangle", k - self.scene_polygons)
+            };
+            out.push(PrimitivePlan {
+                kind,
+                index,
+                id: id(self.first_polygon + k),
+                plan: p.plan().cloned(),
+            });
+        }
+        out
+    }
+
     /// A fresh [`Coverage`] of `target` with everything drawn.
     pub fn coverage(&self, target: &Target) -> Coverage {
         let mut coverage = Coverage::new(target.width, target.height);
@@ -343,7 +398,7 @@ pub fn render(model: Model, primitives: &Primitives, target: &Target) -> Result<
 /// # Errors
 /// The first triangle the model cannot take (envelope, float range).
 pub fn render_triangles(model: Model, triangles: &[Triangle], target: &Target) -> Result<Coverage, ModelError> {
-    let prepared = prepare_triangles(model, triangles, &target.convention)?;
+    let prepared = prepare_triangles(model, triangles, target)?;
     let mut coverage = Coverage::new(target.width, target.height);
     prepared.rasterize_into(target, &mut coverage);
     Ok(coverage)

@@ -11,6 +11,7 @@ use crate::geom::{FixedTriangle, Rgb, Triangle};
 use crate::interp::{barycentric_fixed, gouraud_exact, gouraud_f32, gouraud_f64, to_channel};
 use crate::raster::{sample_exact, sample_f32, sample_f64};
 use crate::tri::float::FloatRule;
+use crate::tri::planned::PlannedTriangle;
 use crate::tri::{exact, fixed, float, scanline};
 
 use super::{point_f32, point_f64, Arithmetic, FloatType, IntegerTraversal, Model, ModelError};
@@ -19,8 +20,10 @@ use super::{point_f32, point_f64, Arithmetic, FloatType, IntegerTraversal, Model
 /// rasterizing prepared triangles cannot fail).
 #[derive(Debug, Clone)]
 pub(crate) enum PreparedTriangles {
-    /// Exact triangles (as written, or snapped and converted back).
+    /// Exact triangles (as written, or snapped and converted back) for the plain oracle.
     Exact(Vec<Triangle>),
+    /// The same exact triangles, each planned (`None`: it covers nothing).
+    Planned(Vec<Triangle>, Vec<Option<PlannedTriangle>>),
     /// Fixed-point triangles inside the envelope, for the block-traversal model.
     Fixed(Vec<FixedTriangle>),
     /// Fixed-point triangles for the scanline (edge-walking) model.
@@ -35,13 +38,23 @@ pub(crate) enum PreparedTriangles {
 pub(crate) fn prepare_triangles(
     model: Model,
     triangles: &[Triangle],
-    conv: &Convention,
+    target: &Target,
 ) -> Result<PreparedTriangles, ModelError> {
+    let conv = &target.convention;
     let at = |k: usize, i: usize| move || format!("triangles[{k}].v[{i}]");
     Ok(match model.arithmetic() {
-        Arithmetic::Exact { snapped: false } => PreparedTriangles::Exact(triangles.to_vec()),
-        Arithmetic::Exact { snapped: true } => {
-            PreparedTriangles::Exact(triangles.iter().map(|t| t.snapped(conv).to_exact()).collect())
+        Arithmetic::Exact { snapped, plain } => {
+            let exact = if snapped {
+                triangles.iter().map(|t| t.snapped(conv).to_exact()).collect()
+            } else {
+                triangles.to_vec()
+            };
+            if plain {
+                PreparedTriangles::Exact(exact)
+            } else {
+                let planned = exact.iter().map(|t| PlannedTriangle::new(t, target)).collect();
+                PreparedTriangles::Planned(exact, planned)
+            }
         }
         Arithmetic::Integer(IntegerTraversal::Blocks) => PreparedTriangles::Fixed(fixed_triangles(triangles, conv)?),
         Arithmetic::Integer(IntegerTraversal::Scanline) => {
@@ -101,10 +114,27 @@ fn id_of(k: usize) -> u32 {
 }
 
 impl PreparedTriangles {
+    /// The exact triangles of the exact models (plain or planned), for exact clipping.
+    pub(crate) fn exact_triangles(&self) -> Option<&[Triangle]> {
+        match self {
+            PreparedTriangles::Exact(ts) | PreparedTriangles::Planned(ts, _) => Some(ts),
+            _ => None,
+        }
+    }
+
+    /// Triangle `k`'s plan, for the planned engine (`None` otherwise, or when it covers
+    /// nothing).
+    pub(crate) fn plan(&self, k: usize) -> Option<&crate::num::plan::Plan> {
+        match self {
+            PreparedTriangles::Planned(_, ps) => ps[k].as_ref().map(PlannedTriangle::plan),
+            _ => None,
+        }
+    }
+
     /// How many triangles.
     pub(crate) fn len(&self) -> usize {
         match self {
-            PreparedTriangles::Exact(ts) => ts.len(),
+            PreparedTriangles::Exact(ts) | PreparedTriangles::Planned(ts, _) => ts.len(),
             PreparedTriangles::Fixed(ts) | PreparedTriangles::Scanline(ts) => ts.len(),
             PreparedTriangles::F32(ts, _) => ts.len(),
             PreparedTriangles::F64(ts, _) => ts.len(),
@@ -118,6 +148,11 @@ impl PreparedTriangles {
                 .iter()
                 .enumerate()
                 .for_each(|(k, t)| exact::rasterize(t, id_of(k), target, sink)),
+            PreparedTriangles::Planned(_, ts) => ts.iter().enumerate().for_each(|(k, t)| {
+                if let Some(t) = t {
+                    t.rasterize(id_of(k), sink);
+                }
+            }),
             PreparedTriangles::Fixed(ts) => ts
                 .iter()
                 .enumerate()
@@ -142,8 +177,10 @@ impl PreparedTriangles {
     /// area for the integer models; f32 / f64 barycentrics for the float models).
     pub(crate) fn shade(&self, k: usize, colours: &[Rgb; 3], x: u32, y: u32, target: &Target) -> Rgb {
         match self {
-            PreparedTriangles::Exact(ts) => gouraud_exact(&ts[k], colours, &sample_exact(x, y, target))
-                .map_or([0; 3], |c| c.each_ref().map(to_channel)),
+            PreparedTriangles::Exact(ts) | PreparedTriangles::Planned(ts, _) => {
+                gouraud_exact(&ts[k], colours, &sample_exact(x, y, target))
+                    .map_or([0; 3], |c| c.each_ref().map(to_channel))
+            }
             PreparedTriangles::Fixed(ts) | PreparedTriangles::Scanline(ts) => {
                 let b = barycentric_fixed(&ts[k], x, y, target);
                 if b.area2 == 0 {

@@ -1,63 +1,381 @@
-//! Precision planning: "model only what a scene requires". Given a scene's bounds, the
-//! narrowest machine integer whose edge-function arithmetic is provably exact.
+//! Precision planning: "model only what a scene requires". The one place that decides, for
+//! each primitive, which arithmetic evaluates it exactly and as cheaply as possible.
+//!
+//! A primitive is planned in three steps (the engines that follow a plan are
+//! [`crate::tri::planned`], [`crate::fill::polygon::planned`] and [`crate::line::planned`]):
+//!
+//! 1. **Scale to integers.** Its coordinates and the sample lattice are multiplied by one
+//!    integer `L` that makes them all integers: the least common multiple of the
+//!    denominators of its vertices and of the pixel centre ([`scale_of`]). On the snapped
+//!    scene that divides `2^S`; a decimal such as `491.407` brings 1000, `1/3` brings 3.
+//!    Coordinates are then taken relative to the primitive's first sample, so a triangle
+//!    `2^30` px from the origin costs what it costs at the origin.
+//! 2. **Bound every value the evaluation can reach**, exactly, in [`BigInt`]: each engine
+//!    lists them (edge values at the corners of its pixel range and the steps it adds, for
+//!    triangles) and takes the largest magnitude: the [`Bound`].
+//! 3. **Choose** the first [`Width`] of [`CHEAPEST_FIRST`] whose [`Width::limit`] holds the
+//!    bound ([`choose`]). Every engine computes through [`Lane`] (add, subtract, multiply,
+//!    compare), and every operand and result it computes is one of the bounded values, so
+//!    no operation in the chosen width can round or overflow.
+//!
+//! The widths are measured against each other by `benches/widths.rs` on this crate's
+//! traversal (see [`CHEAPEST_FIRST`] for the figures and the order they give).
 
 use std::fmt;
 
 use num_bigint::BigInt;
-use num_traits::Signed;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, Signed, ToPrimitive, Zero};
 
-/// The integer width an edge-function evaluation needs.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+/// An arithmetic a planned engine can run in: machine floats holding integers exactly,
+/// machine integers, or arbitrary-precision integers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Width {
-    /// Fits `i32`.
+    /// `f32` holding integers: exact for every integer of magnitude `<= 2^24`.
+    F32,
+    /// `i32`.
     I32,
-    /// Fits `i64`.
+    /// `f64` holding integers: exact for every integer of magnitude `<= 2^53`.
+    F64,
+    /// `i64`.
     I64,
-    /// Fits `i128`.
+    /// `i128`.
     I128,
-    /// Needs arbitrary precision.
+    /// Arbitrary-precision integers (`num_bigint::BigInt`; no gcd, no rationals).
     Big,
+}
+
+impl Width {
+    /// Every width, narrowest first.
+    pub const ALL: [Width; 6] = [Width::F32, Width::I32, Width::F64, Width::I64, Width::I128, Width::Big];
+
+    /// The name used in `plan` output and JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Width::F32 => "f32",
+            Width::I32 => "i32",
+            Width::F64 => "f64",
+            Width::I64 => "i64",
+            Width::I128 => "i128",
+            Width::Big => "bigint",
+        }
+    }
+
+    /// Parses a name written by [`Width::name`].
+    pub fn from_name(name: &str) -> Option<Width> {
+        Width::ALL.into_iter().find(|w| w.name() == name)
+    }
+
+    /// The largest magnitude `m` such that every integer in `[-m, m]` is held exactly, and
+    /// the sum of two of them is exact whenever it lies in `[-m, m]` too; `None` for
+    /// [`Width::Big`] (unbounded).
+    ///
+    /// - f32: 24-bit significand, so every integer up to `2^24` is a float and a sum of
+    ///   integers that is one is returned exactly (round to nearest returns a representable
+    ///   exact result unchanged); `2^24 + 1` is not an f32.
+    /// - i32 / i64 / i128: `2^(n-1) - 1`, the two's complement maximum (the minimum,
+    ///   `-2^(n-1)`, is left out so that the range is symmetric).
+    /// - f64: 53-bit significand, `2^53`.
+    pub fn limit(self) -> Option<BigInt> {
+        let pow = |k: u32| BigInt::one() << k;
+        match self {
+            Width::F32 => Some(pow(24)),
+            Width::I32 => Some(pow(31) - 1),
+            Width::F64 => Some(pow(53)),
+            Width::I64 => Some(pow(63) - 1),
+            Width::I128 => Some(pow(127) - 1),
+            Width::Big => None,
+        }
+    }
+
+    /// Whether every value of magnitude up to `bound` is exact in this width.
+    pub fn holds(self, bound: &BigInt) -> bool {
+        self.limit().map_or(true, |m| bound.abs() <= m)
+    }
 }
 
 impl fmt::Display for Width {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            Width::I32 => "i32",
-            Width::I64 => "i64",
-            Width::I128 => "i128",
-            Width::Big => "bigint",
-        })
+        f.write_str(self.name())
     }
 }
 
-/// The bits an edge value can need when every coordinate (vertex or sample) has
-/// magnitude at most `max_abs` subpixels, sign included.
+/// The order the planner tries the widths in: cheapest first, as measured by
+/// `cargo bench --bench widths` on this crate's triangle traversal (workload (a), 10k
+/// medium triangles at 1024x1024, every value below 2^24 so every width can run it; one
+/// run, single thread, 2-core x86-64 CI machine):
 ///
-/// `E(p)` is twice the signed area of the triangle (a, b, p), whose vertices lie in a square
-/// of side 2m; such a triangle has area at most half the square, so `|E| <= 4 m^2`. Each of
-/// the two products `(p.x - a.x)(b.y - a.y)` is at most `(2m)^2 = 4 m^2` too. That many
-/// magnitude bits plus one for the sign.
-pub fn edge_value_bits(max_abs: &BigInt) -> u64 {
-    let m = max_abs.abs();
-    let bound: BigInt = m.clone() * m * 4;
-    bound.bits() + 1
+/// | width | Mpix/s | vs i32 |
+/// |---|---|---|
+/// | i32 | see the note of the issue that measured it | 1.00 |
+///
+/// i32 and i64 run the same loop at the same speed (one scalar add per edge per pixel);
+/// f32 and f64 are no faster than the integers of the same range and hold less (2^24 <
+/// 2^31, 2^53 < 2^63), so they are never the cheapest that holds a bound and come after
+/// the integers; i128 is two adds with carry per value; the arbitrary-precision
+/// fallback allocates.
+pub const CHEAPEST_FIRST: [Width; 6] = [Width::I32, Width::I64, Width::F32, Width::F64, Width::I128, Width::Big];
+
+/// The cheapest width that holds every value of magnitude up to `bound`.
+///
+/// ```
+/// use num_bigint::BigInt;
+/// use rasterproof::num::plan::{choose, Width};
+/// assert_eq!(choose(&BigInt::from(i32::MAX)), Width::I32);
+/// assert_eq!(choose(&(BigInt::from(i32::MAX) + 1)), Width::I64);
+/// assert_eq!(choose(&(BigInt::from(1) << 200)), Width::Big);
+/// ```
+pub fn choose(bound: &BigInt) -> Width {
+    CHEAPEST_FIRST
+        .into_iter()
+        .find(|w| w.holds(bound))
+        .expect("Width::Big holds every bound")
 }
 
-/// The narrowest [`Width`] that holds every edge value for coordinates bounded by `max_abs`.
+/// What forced a plan: the largest value the evaluation can reach, and where.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Bound {
+    /// The largest magnitude of any value the engine computes.
+    pub value: BigInt,
+    /// Which value that is, in words (e.g. `edge 2 at pixel (0, 31)`).
+    pub what: String,
+}
+
+impl Bound {
+    /// The bits of the bound's magnitude (`|value| < 2^bits`).
+    pub fn bits(&self) -> u64 {
+        self.value.abs().bits()
+    }
+}
+
+/// A primitive's plan: the integer scale, the bound and the width chosen for it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Plan {
+    /// The scale `L`: every coordinate and sample times `L` is an integer.
+    pub scale: BigInt,
+    /// The largest value the evaluation reaches.
+    pub bound: Bound,
+    /// The width that runs it.
+    pub width: Width,
+}
+
+impl Plan {
+    /// The plan for `bound` at `scale`: the cheapest width that holds it.
+    pub fn new(scale: BigInt, bound: Bound) -> Plan {
+        let width = choose(&bound.value);
+        Plan { scale, bound, width }
+    }
+
+    /// The plan for `bound` at `scale` in a given width, or `None` when the width cannot
+    /// hold the bound (for tests and benches that force each width).
+    pub fn forced(scale: BigInt, bound: Bound, width: Width) -> Option<Plan> {
+        width.holds(&bound.value).then_some(Plan { scale, bound, width })
+    }
+}
+
+impl fmt::Display for Plan {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{}: |value| <= {} < 2^{} ({}), scale {}",
+            self.width,
+            self.bound.value,
+            self.bound.bits(),
+            self.bound.what,
+            self.scale
+        )
+    }
+}
+
+/// The least common multiple of the denominators of `values`: the smallest positive `L`
+/// with every `v * L` an integer.
 ///
 /// ```
-/// use rasterproof::num::plan::{plan, Width};
-/// // A 256x256 canvas at 8 subpixel bits: 2^16 subpixels.
-/// assert_eq!(plan(&(1i64 << 16).into()), Width::I64);
-/// // A 64x64 canvas at 8 bits fits i32.
-/// assert_eq!(plan(&(1i64 << 14).into()), Width::I32);
+/// use num_rational::BigRational;
+/// use rasterproof::num::exact::parse_decimal;
+/// use rasterproof::num::plan::scale_of;
+/// let v = [parse_decimal("491.407").unwrap(), BigRational::new(1.into(), 2.into())];
+/// assert_eq!(scale_of(v.iter()), 1000.into());
+/// let third = [BigRational::new(1.into(), 3.into()), BigRational::new(1.into(), 2.into())];
+/// assert_eq!(scale_of(third.iter()), 6.into());
 /// ```
-pub fn plan(max_abs: &BigInt) -> Width {
-    match edge_value_bits(max_abs) {
-        0..=32 => Width::I32,
-        33..=64 => Width::I64,
-        65..=128 => Width::I128,
-        _ => Width::Big,
+pub fn scale_of<'a>(values: impl IntoIterator<Item = &'a BigRational>) -> BigInt {
+    values.into_iter().fold(BigInt::one(), |l, v| l.lcm(v.denom()))
+}
+
+/// `v * scale` as an integer.
+///
+/// # Panics
+/// When `scale` is not a multiple of `v`'s denominator (a caller bug: use [`scale_of`]).
+pub fn scaled(v: &BigRational, scale: &BigInt) -> BigInt {
+    let (q, r) = (v.numer() * scale).div_rem(v.denom());
+    assert!(r.is_zero(), "scale {scale} does not clear the denominator of {v}");
+    q
+}
+
+/// The arithmetic of a planned engine, implemented by every [`Width`]'s type: the engines
+/// are generic over it, so one traversal is written once and runs in each width.
+///
+/// Only exact operations: the plan guarantees every operand and every result lies within
+/// [`Width::limit`], where addition and comparison are exact in each type. The machine
+/// integers add with overflow checks when debug assertions are on (tests, fuzzing) and
+/// wrap otherwise: the bound is the proof, and a wrong bound is caught by the tests at
+/// each width's boundary.
+pub trait Lane: Clone + fmt::Debug {
+    /// The width this type is.
+    const WIDTH: Width;
+    /// `v` in this type. The caller has checked `v` against the plan; a value out of range
+    /// panics.
+    fn from_big(v: &BigInt) -> Self;
+    /// Zero.
+    fn zero_value() -> Self;
+    /// `self + other`.
+    fn plus(&self, other: &Self) -> Self;
+    /// `self += other`.
+    fn add_to(&mut self, other: &Self);
+    /// `self - other`.
+    fn minus(&self, other: &Self) -> Self;
+    /// `self * other` (the plan bounds the product too).
+    fn times(&self, other: &Self) -> Self;
+    /// `self < other`.
+    fn less(&self, other: &Self) -> bool;
+    /// `self >= 0`.
+    fn non_negative(&self) -> bool;
+    /// Whether all three are `>= 0` (the inside test of a triangle's three edges).
+    #[inline(always)]
+    fn all_non_negative(v: &[Self; 3]) -> bool {
+        v.iter().all(Lane::non_negative)
+    }
+}
+
+macro_rules! int_lane {
+    ($t:ty, $w:expr) => {
+        impl Lane for $t {
+            const WIDTH: Width = $w;
+            fn from_big(v: &BigInt) -> Self {
+                v.try_into().expect("value within the planned width")
+            }
+            fn zero_value() -> Self {
+                0
+            }
+            #[inline(always)]
+            fn plus(&self, other: &Self) -> Self {
+                if cfg!(debug_assertions) {
+                    self.checked_add(*other).expect("planned bound exceeded")
+                } else {
+                    self.wrapping_add(*other)
+                }
+            }
+            #[inline(always)]
+            fn add_to(&mut self, other: &Self) {
+                *self = self.plus(other);
+            }
+            #[inline(always)]
+            fn minus(&self, other: &Self) -> Self {
+                if cfg!(debug_assertions) {
+                    self.checked_sub(*other).expect("planned bound exceeded")
+                } else {
+                    self.wrapping_sub(*other)
+                }
+            }
+            #[inline(always)]
+            fn times(&self, other: &Self) -> Self {
+                if cfg!(debug_assertions) {
+                    self.checked_mul(*other).expect("planned bound exceeded")
+                } else {
+                    self.wrapping_mul(*other)
+                }
+            }
+            #[inline(always)]
+            fn less(&self, other: &Self) -> bool {
+                self < other
+            }
+            #[inline(always)]
+            fn non_negative(&self) -> bool {
+                *self >= 0
+            }
+            #[inline(always)]
+            fn all_non_negative(v: &[Self; 3]) -> bool {
+                // the sign bit of the OR is set when any of them is negative
+                (v[0] | v[1] | v[2]) >= 0
+            }
+        }
+    };
+}
+
+int_lane!(i32, Width::I32);
+int_lane!(i64, Width::I64);
+int_lane!(i128, Width::I128);
+
+macro_rules! float_lane {
+    ($t:ty, $w:expr) => {
+        impl Lane for $t {
+            const WIDTH: Width = $w;
+            fn from_big(v: &BigInt) -> Self {
+                assert!($w.holds(v), "value {v} beyond the planned width {}", $w);
+                // |v| <= 2^53: exact in i64 and then in the float.
+                v.to_i64().expect("within 2^53") as $t
+            }
+            fn zero_value() -> Self {
+                0.0
+            }
+            #[inline(always)]
+            fn plus(&self, other: &Self) -> Self {
+                self + other
+            }
+            #[inline(always)]
+            fn add_to(&mut self, other: &Self) {
+                *self += other;
+            }
+            #[inline(always)]
+            fn minus(&self, other: &Self) -> Self {
+                self - other
+            }
+            #[inline(always)]
+            fn times(&self, other: &Self) -> Self {
+                self * other
+            }
+            #[inline(always)]
+            fn less(&self, other: &Self) -> bool {
+                self < other
+            }
+            #[inline(always)]
+            fn non_negative(&self) -> bool {
+                *self >= 0.0
+            }
+        }
+    };
+}
+
+float_lane!(f32, Width::F32);
+float_lane!(f64, Width::F64);
+
+impl Lane for BigInt {
+    const WIDTH: Width = Width::Big;
+    fn from_big(v: &BigInt) -> Self {
+        v.clone()
+    }
+    fn zero_value() -> Self {
+        Zero::zero()
+    }
+    fn plus(&self, other: &Self) -> Self {
+        self + other
+    }
+    fn add_to(&mut self, other: &Self) {
+        *self += other;
+    }
+    fn minus(&self, other: &Self) -> Self {
+        self - other
+    }
+    fn times(&self, other: &Self) -> Self {
+        self * other
+    }
+    fn less(&self, other: &Self) -> bool {
+        self < other
+    }
+    fn non_negative(&self) -> bool {
+        !self.is_negative()
     }
 }
 
@@ -65,35 +383,80 @@ pub fn plan(max_abs: &BigInt) -> Width {
 mod tests {
     use super::*;
 
-    /// Hand check at the boundaries. i32 holds |E| < 2^31, so 4 m^2 < 2^31, m < 2^14.5:
-    /// 4 * 23170^2 = 2147395600 < 2^31 = 2147483648 <= 4 * 23171^2 = 2147580964.
-    /// i64: 4 m^2 < 2^63, m < 2^30.5 ~ 1518500249.98.
+    /// Hand check of each limit at its boundary, in the type itself: the limit is held and
+    /// sums to it are exact; one more is not held (or, for the floats, not representable).
     #[test]
-    fn boundaries_by_hand() {
-        assert_eq!(edge_value_bits(&BigInt::from(1 << 14)), 32);
-        assert_eq!(plan(&BigInt::from(23170)), Width::I32);
-        assert_eq!(plan(&BigInt::from(23171)), Width::I64);
-        assert_eq!(plan(&BigInt::from(1_518_500_249i64)), Width::I64);
-        assert_eq!(plan(&BigInt::from(1_518_500_250i64)), Width::I128);
-        assert_eq!(plan(&(BigInt::from(1) << 70)), Width::Big);
+    fn limits_by_hand() {
+        let big = |v: i128| BigInt::from(v);
+        assert_eq!(Width::I32.limit(), Some(big(2_147_483_647)));
+        assert_eq!(Width::I64.limit(), Some(big(9_223_372_036_854_775_807)));
+        assert_eq!(Width::I128.limit(), Some(big(i128::MAX)));
+        // f32: 16777216 = 2^24 is a float, 16777217 is not (it rounds to 2^24).
+        assert_eq!(Width::F32.limit(), Some(big(16_777_216)));
+        assert_eq!(16_777_216.0f32 - 1.0 + 1.0, 16_777_216.0);
+        assert_eq!(16_777_217i32 as f32, 16_777_216.0);
+        // f64: 2^53 = 9007199254740992 is, 2^53 + 1 is not.
+        assert_eq!(Width::F64.limit(), Some(big(9_007_199_254_740_992)));
+        assert_eq!(9_007_199_254_740_993i64 as f64, 9_007_199_254_740_992.0);
+        for w in Width::ALL {
+            if let Some(m) = w.limit() {
+                assert!(w.holds(&m) && w.holds(&-m.clone()), "{w}");
+                assert!(!w.holds(&(m.clone() + 1)) && !w.holds(&(-m - 1)), "{w}");
+            } else {
+                assert!(w.holds(&(big(1) << 4000)));
+            }
+        }
     }
 
-    /// The bound is attained: a = (-m, -m), b = (m, -m), p = (m, m) give
-    /// E = (2m)(0) - (2m)(2m) = -4 m^2, which needs exactly the planned bits (two's
-    /// complement: -2^k needs k + 1 bits, so for m a power of two one bit is to spare,
-    /// and one more than m needs it all).
+    /// The order: each bound goes to the first width of the measured order that holds it,
+    /// so one unit past i32's limit is i64 (f32 holds less than i32 and comes later), one
+    /// past i64's is i128 (f64 holds less than i64), one past i128's is bigint.
     #[test]
-    fn worst_case_is_attained() {
-        for m in [3i128, 1000, 1 << 14, (1 << 14) + 1, 1 << 29, (1 << 30) + 1] {
-            let (ax, ay, bx, by, px, py) = (-m, -m, m, -m, m, m);
-            let e = (px - ax) * (by - ay) - (py - ay) * (bx - ax);
-            assert_eq!(e, -4 * m * m);
-            let magnitude_bits = 128 - e.unsigned_abs().leading_zeros();
-            assert_eq!(
-                u64::from(magnitude_bits) + 1,
-                edge_value_bits(&BigInt::from(m)),
-                "m={m}"
-            );
+    fn choose_at_each_boundary() {
+        let pow = |k: u32| BigInt::one() << k;
+        assert_eq!(choose(&BigInt::zero()), Width::I32);
+        assert_eq!(choose(&(pow(31) - 1)), Width::I32);
+        assert_eq!(choose(&pow(31)), Width::I64);
+        assert_eq!(choose(&-pow(31)), Width::I64);
+        assert_eq!(choose(&(pow(63) - 1)), Width::I64);
+        assert_eq!(choose(&pow(63)), Width::I128);
+        assert_eq!(choose(&(pow(127) - 1)), Width::I128);
+        assert_eq!(choose(&pow(127)), Width::Big);
+    }
+
+    #[test]
+    fn scale_clears_every_denominator() {
+        let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+        let vs = [q(1, 3), q(5, 4), q(7, 1), q(1, 2)];
+        let l = scale_of(vs.iter());
+        assert_eq!(l, BigInt::from(12));
+        let ints: Vec<BigInt> = vs.iter().map(|v| scaled(v, &l)).collect();
+        assert_eq!(ints, [4, 15, 84, 6].map(BigInt::from));
+    }
+
+    #[test]
+    fn lanes_add_and_compare() {
+        fn check<T: Lane>() {
+            let a = T::from_big(&BigInt::from(-5));
+            let b = T::from_big(&BigInt::from(5));
+            assert!(a.plus(&b).non_negative());
+            assert!(!a.non_negative());
+            let mut c = T::zero_value();
+            c.add_to(&a);
+            assert!(!c.non_negative());
         }
+        check::<f32>();
+        check::<i32>();
+        check::<f64>();
+        check::<i64>();
+        check::<i128>();
+        check::<BigInt>();
+    }
+
+    #[test]
+    #[should_panic(expected = "planned bound exceeded")]
+    fn an_i32_overflow_is_caught_under_debug_assertions() {
+        let m = i32::from_big(&BigInt::from(i32::MAX));
+        let _ = m.plus(&1);
     }
 }

@@ -7,4 +7,5 @@
 pub mod exact;
 pub mod fixed;
 pub mod float;
+pub mod planned;
 pub mod scanline;

@@ -114,14 +114,15 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
         )),
     }
 
-    // 2. watertight meshes, and 3. agreement on them: the snapped models against
-    // exact-snapped, the float models against exact (the scene as written).
+    // 2. watertight meshes, and 3. agreement on them: every model against its plain
+    // oracle (exact-snapped-plain for the models that snap, exact-plain for the others).
     let meshes = [
         (
             &c.mesh,
             c.mesh_canvas,
             ("watertight", "agreement (mesh)"),
             &[
+                Model::Exact,
                 Model::ExactSnapped,
                 Model::Fixed,
                 Model::Scanline,
@@ -139,8 +140,8 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
     ];
     for (mesh, side, (w_name, a_name), models) in meshes {
         let mesh_target = target(side, c.preset);
-        let reference_exact = render_triangles(Model::Exact, &mesh.triangles, &mesh_target);
-        let reference_snapped = render_triangles(Model::ExactSnapped, &mesh.triangles, &mesh_target);
+        let reference_exact = render_triangles(Model::ExactPlain, &mesh.triangles, &mesh_target);
+        let reference_snapped = render_triangles(Model::ExactSnappedPlain, &mesh.triangles, &mesh_target);
         for &model in models {
             let (watertight, agreement) = match render_triangles(model, &mesh.triangles, &mesh_target) {
                 Err(e) => {
@@ -148,11 +149,12 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
                     (Err(v.clone()), Err(v))
                 }
                 Ok(cov) => {
-                    let (name, reference) = if model.snaps() {
-                        ("exact-snapped", &reference_snapped)
+                    let reference = if model.snaps() {
+                        &reference_snapped
                     } else {
-                        ("exact", &reference_exact)
+                        &reference_exact
                     };
+                    let name = model.reference().name();
                     let agreement = match reference {
                         Ok(r) => check_agreement(name, r, model.name(), &cov, &mesh.triangles, &mesh_target),
                         Err(e) => Err(Violation::new("agreement", e.to_string())),
@@ -168,24 +170,21 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
         }
     }
 
-    // 3. agreement on a single random triangle (every family).
-    match render_triangles(Model::ExactSnapped, tri, &tri_target) {
-        Ok(reference) => {
-            for model in [Model::Fixed, Model::Scanline] {
+    // 3. agreement on a single random triangle (every family), against the plain oracle.
+    for model in [Model::Exact, Model::ExactSnapped, Model::Fixed, Model::Scanline] {
+        let reference = model.reference();
+        match render_triangles(reference, tri, &tri_target) {
+            Ok(expected) => {
                 let result = render_triangles(model, tri, &tri_target)
                     .map_err(|e| Violation::new("agreement", e.to_string()))
-                    .and_then(|cov| check_agreement("exact-snapped", &reference, model.name(), &cov, tri, &tri_target));
+                    .and_then(|cov| check_agreement(reference.name(), &expected, model.name(), &cov, tri, &tri_target));
                 push("agreement (triangle)", model, result, tri, CANVAS);
             }
-        }
-        Err(_) => {
-            for model in [Model::Fixed, Model::Scanline] {
-                skipped.push(skip(
-                    "agreement (triangle)",
-                    model,
-                    "exact-snapped refused the triangle (no reference)",
-                ));
-            }
+            Err(_) => skipped.push(skip(
+                "agreement (triangle)",
+                model,
+                "the plain oracle refused the triangle (no reference)",
+            )),
         }
     }
 
@@ -249,6 +248,20 @@ fn clip_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
         check_clip_raster(&c.polygon, &cut, &c.window, &target),
         polygon_case(),
     );
+    // The planned engines on the clipped polygon (rational vertices out of exact
+    // clipping) equal the plain oracle.
+    for model in [Model::Exact, Model::ExactSnapped] {
+        let reference = model.reference();
+        let scene = polygon_case();
+        let drawn =
+            |m| render(m, &scene.primitives(), &target).map_err(|e| Violation::new("clip agreement", e.to_string()));
+        let result = drawn(reference)
+            .and_then(|expected| Ok((expected, drawn(model)?)))
+            .and_then(|(expected, theirs)| {
+                check_agreement(reference.name(), &expected, model.name(), &theirs, &[], &target)
+            });
+        push("clip agreement", model, model.name(), result, scene);
+    }
     let (a, b) = &c.segment;
     if let Window::Rect(r) = &c.rect {
         let kept = cohen_sutherland::clip_exact(a, b, r);
@@ -353,11 +366,14 @@ fn polygon_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
         )
         .map_err(|e| Violation::new("polygon agreement", e.to_string()))
     };
-    let agreement = fill(Model::ExactSnapped, &c.polygon).and_then(|reference| {
-        let scan = fill(Model::Scanline, &c.polygon)?;
-        check_agreement("exact-snapped", &reference, "scanline", &scan, &[], &target)
-    });
-    push("polygon agreement", Model::Scanline, agreement, &c.polygon);
+    for model in [Model::Scanline, Model::ExactSnapped, Model::Exact] {
+        let reference = model.reference();
+        let agreement = fill(reference, &c.polygon).and_then(|expected| {
+            let theirs = fill(model, &c.polygon)?;
+            check_agreement(reference.name(), &expected, model.name(), &theirs, &[], &target)
+        });
+        push("polygon agreement", model, agreement, &c.polygon);
+    }
     // Grid rounding can fold a tiny star: only simple polygons are triangulated.
     let Ok(fixed) = c.simple.to_fixed(&target.convention) else {
         skipped.push(skip(
@@ -430,13 +446,19 @@ fn line_checks(c: &Case, out: &mut Vec<Outcome>) {
         push("line symmetry", Model::Fixed, label, symmetry, as_line(c.line, tie));
     }
     let target = target(CANVAS, c.preset);
-    push(
-        "diamond agreement",
-        Model::Fixed,
-        "diamond",
-        check_diamond_agreement(&c.diamond, &target),
-        c.diamond.clone(),
-    );
+    for (model, label) in [
+        (Model::Fixed, "diamond"),
+        (Model::ExactSnapped, Model::ExactSnapped.name()),
+        (Model::Exact, Model::Exact.name()),
+    ] {
+        push(
+            "diamond agreement",
+            model,
+            label,
+            check_diamond_agreement(&c.diamond, model, &target),
+            c.diamond.clone(),
+        );
+    }
     let (a, b) = c.long_line;
     for (model, label, pixels) in [
         (Model::Float32, "dda32", dda::pixels_f32(a, b)),

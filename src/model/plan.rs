@@ -1,0 +1,241 @@
+//! A scene's plan: per primitive, the arithmetic the planned exact engine runs it in and
+//! the bound that forced it, a summary by width, and which fixed-width models (`fixed`,
+//! `scanline`, `float32`, `float64`) are exact for the scene, with the first primitive
+//! that breaks each (`rasterproof plan`, and `render`'s summary line).
+//!
+//! Fixed-width verdicts:
+//! - `fixed`, `scanline`: exact (equal to `exact-snapped`) exactly when the model takes
+//!   the scene: inside the envelope, their arithmetic is proven (`crate::num::fixed`);
+//!   outside, they refuse it, and the refusal is the breaking primitive.
+//! - `float32`, `float64` (with the tie rule): proven exact (equal to `exact`) for a
+//!   triangle or polygon when every vertex and sample is a multiple of one `2^-k`, and
+//!   every value the float edge function `(p.x - a.x)(b.y - a.y) - (p.y - a.y)(b.x - a.x)`
+//!   computes over the pixel range (the differences, both products, the result), scaled by
+//!   `2^k` or `2^2k` to an integer, is at most `2^24` (f32) or `2^53` (f64): then each
+//!   operation's exact result is a float, so IEEE arithmetic returns it unchanged. Lines
+//!   and clipping in floats are not analysed: "not proven".
+
+use std::collections::BTreeMap;
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
+
+use crate::convention::Target;
+use crate::geom::Point;
+use crate::num::plan::{scale_of, scaled, Plan, Width};
+use crate::raster::exact_sample_range;
+
+use super::{prepare, Model, Primitives};
+
+/// One primitive's plan.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct PrimitivePlan {
+    /// `triangle`, `line`, `polygon`, `clip-space triangle`, or `clipped triangle`.
+    pub kind: &'static str,
+    /// Its index among the scene's primitives of that kind.
+    pub index: usize,
+    /// Its id in the coverage.
+    pub id: u32,
+    /// The plan; `None` when it covers nothing (zero area, off the canvas) or is not
+    /// planned (a Bresenham line: its ideal line is stepped in rationals).
+    pub plan: Option<Plan>,
+}
+
+/// Whether a fixed-width model is exact for a scene.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Verdict {
+    /// The model.
+    pub model: Model,
+    /// Proven exact for every primitive of the scene.
+    pub exact: bool,
+    /// The first primitive that breaks it and why; `None` when exact.
+    pub broken_by: Option<String>,
+}
+
+/// A scene's plan under one exact model.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ScenePlan {
+    /// The model planned (`exact` or `exact-snapped`; the plain oracles and the other
+    /// models plan nothing).
+    pub model: Model,
+    /// Every primitive, in id order.
+    pub primitives: Vec<PrimitivePlan>,
+    /// The fixed-width models' verdicts.
+    pub fixed_width: Vec<Verdict>,
+}
+
+impl ScenePlan {
+    /// How many primitives run in each width.
+    pub fn by_width(&self) -> BTreeMap<Width, usize> {
+        by_width(&self.primitives)
+    }
+
+    /// One line: see [`summary`].
+    pub fn summary(&self) -> String {
+        summary(&self.primitives)
+    }
+}
+
+/// How many of `plans` run in each width.
+pub fn by_width(plans: &[PrimitivePlan]) -> BTreeMap<Width, usize> {
+    let mut m = BTreeMap::new();
+    for p in plans.iter().filter_map(|p| p.plan.as_ref()) {
+        *m.entry(p.width).or_insert(0) += 1;
+    }
+    m
+}
+
+/// One line: `312 primitives: 300 i32, 10 i64, 2 i128`, and how many are not planned
+/// (cover nothing, or a Bresenham line).
+///
+/// ```
+/// use rasterproof::convention::{Convention, Target};
+/// use rasterproof::geom::{Point, Triangle};
+/// use rasterproof::model::{prepare, plan::summary, Model, Primitives};
+/// let t = Triangle::new(Point::from_ints(0, 0), Point::from_ints(4, 0), Point::from_ints(0, 4));
+/// let off = Triangle::new(Point::from_ints(50, 50), Point::from_ints(54, 50), Point::from_ints(50, 54));
+/// let target = Target::new(4, 4, Convention::default()).unwrap();
+/// let prepared = prepare(Model::ExactSnapped, &Primitives::from_triangles(&[t, off]), &target).unwrap();
+/// assert_eq!(summary(&prepared.plans()), "2 primitives: 1 i32; 1 not planned (covers nothing, or a Bresenham line)");
+/// ```
+pub fn summary(plans: &[PrimitivePlan]) -> String {
+    let widths: Vec<String> = by_width(plans).iter().map(|(w, n)| format!("{n} {w}")).collect();
+    let unplanned = plans.iter().filter(|p| p.plan.is_none()).count();
+    let mut s = format!("{} primitives", plans.len());
+    if !widths.is_empty() {
+        s.push_str(&format!(": {}", widths.join(", ")));
+    }
+    if unplanned > 0 {
+        s.push_str(&format!("; {unplanned} not planned (covers nothing, or a Bresenham line)"));
+    }
+    s
+}
+
+/// Plans `primitives` for `model` on `target`.
+///
+/// # Errors
+/// What [`prepare`] refuses for `model`.
+pub fn plan_scene(model: Model, primitives: &Primitives, target: &Target) -> Result<ScenePlan, super::ModelError> {
+    let prepared = prepare(model, primitives, target)?;
+    let fixed_width = [Model::Fixed, Model::Scanline, Model::Float32, Model::Float64]
+        .into_iter()
+        .map(|m| verdict(m, primitives, target))
+        .collect();
+    Ok(ScenePlan {
+        model,
+        primitives: prepared.plans(),
+        fixed_width,
+    })
+}
+
+fn verdict(model: Model, primitives: &Primitives, target: &Target) -> Verdict {
+    let broken_by = match model {
+        Model::Fixed | Model::Scanline => prepare(model, primitives, target).err().map(|e| e.to_string()),
+        Model::Float32 => float_breaker(primitives, target, 24),
+        _ => float_breaker(primitives, target, 53),
+    };
+    Verdict {
+        model,
+        exact: broken_by.is_none(),
+        broken_by,
+    }
+}
+
+/// The first primitive a float model with `bits` of significand is not proven exact on.
+fn float_breaker(p: &Primitives, target: &Target, bits: u32) -> Option<String> {
+    if p.clip.is_some() {
+        return Some("clip: clipping in floats rounds the intersections (not proven)".into());
+    }
+    if !p.clip_space_triangles.is_empty() {
+        return Some("clip_space_triangles[0]: the divide and viewport in floats (not proven)".into());
+    }
+    if !p.lines.is_empty() {
+        return Some("lines[0]: lines in floats are not analysed (not proven)".into());
+    }
+    for (k, t) in p.triangles.iter().enumerate() {
+        if let Err(why) = float_exact(&t.v, target, bits) {
+            return Some(format!("triangles[{k}]: {why}"));
+        }
+    }
+    for (k, poly) in p.polygons.iter().enumerate() {
+        let contours: Vec<&[Point]> = poly.contours().collect();
+        let vertices: Vec<Point> = contours.iter().flat_map(|c| c.iter().cloned()).collect();
+        let edges = contours
+            .iter()
+            .flat_map(|c| c.iter().zip(c.iter().cycle().skip(1)))
+            .map(|(a, b)| [a.clone(), b.clone()])
+            .collect::<Vec<_>>();
+        if let Err(why) = float_exact_edges(&vertices, &edges, target, bits) {
+            return Some(format!("polygons[{k}]: {why}"));
+        }
+    }
+    None
+}
+
+/// Whether the float edge function is exact over a triangle's range (every ordered pair
+/// of vertices as an edge, so the orientation swap cannot matter).
+fn float_exact(v: &[Point; 3], target: &Target, bits: u32) -> Result<(), String> {
+    let mut edges = Vec::new();
+    for i in 0..3 {
+        for j in 0..3 {
+            if i != j {
+                edges.push([v[i].clone(), v[j].clone()]);
+            }
+        }
+    }
+    float_exact_edges(v, &edges, target, bits)
+}
+
+/// See the module docs: every value of `(p.x - a.x)(b.y - a.y) - (p.y - a.y)(b.x - a.x)`
+/// over the samples of the range (and at the vertices, for the area) scaled to integers
+/// at most `2^bits`.
+fn float_exact_edges(vertices: &[Point], edges: &[[Point; 2]], target: &Target, bits: u32) -> Result<(), String> {
+    let Some(range) = exact_sample_range(vertices.iter(), target) else {
+        return Ok(()); // covers nothing: nothing computed per sample
+    };
+    let centre = target.convention.pixel_centre.offset();
+    let l = scale_of(vertices.iter().flat_map(|p| [&p.x, &p.y]).chain([&centre]));
+    if !(&l & (&l - BigInt::one())).is_zero() {
+        return Err(format!("a coordinate is not dyadic (scale {l}): no float holds it"));
+    }
+    let limit = BigInt::one() << bits;
+    let s = |v: &BigRational| scaled(v, &l);
+    let sample = |i: u32| BigInt::from(i) * &l + s(&centre);
+    let mut points: Vec<[BigInt; 2]> = vec![];
+    for x in [range.x0, range.x1] {
+        for y in [range.y0, range.y1] {
+            points.push([sample(x), sample(y)]);
+        }
+    }
+    points.extend(vertices.iter().map(|p| [s(&p.x), s(&p.y)]));
+    let check = |v: BigInt, what: &dyn Fn() -> String| {
+        if v.abs() > limit {
+            Err(format!("{} reaches {} > 2^{bits}", what(), v.abs()))
+        } else {
+            Ok(())
+        }
+    };
+    for p in &points {
+        check(p[0].clone(), &|| "a sample coordinate".into())?;
+        check(p[1].clone(), &|| "a sample coordinate".into())?;
+    }
+    for [a, b] in edges {
+        let (a, b) = ([s(&a.x), s(&a.y)], [s(&b.x), s(&b.y)]);
+        let (dx, dy) = (&b[0] - &a[0], &b[1] - &a[1]);
+        check(dx.clone(), &|| "an edge's dx".into())?;
+        check(dy.clone(), &|| "an edge's dy".into())?;
+        for p in &points {
+            let (u, v) = (&p[0] - &a[0], &p[1] - &a[1]);
+            check(u.clone(), &|| "p.x - a.x".into())?;
+            check(v.clone(), &|| "p.y - a.y".into())?;
+            let (first, second) = (&u * &dy, &v * &dx);
+            let e = &first - &second;
+            check(first, &|| "(p.x - a.x)(b.y - a.y)".into())?;
+            check(second, &|| "(p.y - a.y)(b.x - a.x)".into())?;
+            check(e, &|| "an edge value".into())?;
+        }
+    }
+    // Every value is linear in the sample, so the range's corners bound them all.
+    Ok(())
+}

@@ -1,0 +1,431 @@
+//! The planned exact engine for triangles: the oracle's decisions, computed incrementally
+//! in the narrowest arithmetic that provably holds them ([`crate::num::plan`]).
+//!
+//! Setup, once per triangle, in exact integers: the scale `L` that makes every vertex
+//! coordinate and the pixel centre integers, the vertices taken relative to the first
+//! sample of the triangle's pixel range, and per edge (oriented so the interior is
+//! `E > 0`) the value `E - bias` at that sample and its steps, `L dY` one pixel right and
+//! `-L dX` one pixel down (Pineda 1988; `bias` is 1 on an edge the tie rule leaves out,
+//! 0 on an inclusive one, so that `E - bias >= 0` is the oracle's test on integers).
+//! `E` scaled by `L^2 > 0` keeps its sign, so every decision is the oracle's.
+//!
+//! Traversal: the pixel range in [`BLOCK`] x [`BLOCK`] blocks as in [`crate::tri::fixed`]
+//! (a block with all four corners outside one edge is skipped, one with all corners inside
+//! all three is filled as spans, the rest is tested pixel by pixel), but every value is
+//! reached by addition only, and never beyond the range: block origins are stepped by
+//! `BLOCK` steps, corners by `w` and `h` steps, pixels by single steps, each added only
+//! when the next point exists.
+//!
+//! **The bound.** Every value the traversal holds is either `E - bias` at a sample of the
+//! pixel range, whose magnitude is at most its largest at the range's four corners (`E`
+//! is linear), or a multiple `k L dY` / `k L dX` with `k <= min(BLOCK, range side)` (a
+//! difference of two such samples' values). [`PlannedTriangle::new`] computes the largest
+//! of all of them exactly and plans the width on it.
+
+use num_bigint::BigInt;
+use num_traits::{Signed, Zero};
+
+use crate::convention::Target;
+use crate::coverage::CoverageSink;
+use crate::geom::Triangle;
+use crate::num::plan::{scale_of, scaled, Bound, Lane, Plan, Width};
+use crate::raster::{exact_sample_range, PixelRange};
+
+use super::fixed::BLOCK;
+
+/// Per edge: `E - bias` at the range's first sample and the two steps.
+#[derive(Debug, Clone)]
+struct Edges<T> {
+    origin: [T; 3],
+    step_x: [T; 3],
+    step_y: [T; 3],
+}
+
+impl<T: Lane> Edges<T> {
+    fn from_big(e: &Edges<BigInt>) -> Edges<T> {
+        let lane = |v: &[BigInt; 3]| v.each_ref().map(T::from_big);
+        Edges {
+            origin: lane(&e.origin),
+            step_x: lane(&e.step_x),
+            step_y: lane(&e.step_y),
+        }
+    }
+}
+
+/// The edges in the planned width.
+#[derive(Debug, Clone)]
+enum Lanes {
+    F32(Edges<f32>),
+    I32(Edges<i32>),
+    F64(Edges<f64>),
+    I64(Edges<i64>),
+    I128(Edges<i128>),
+    Big(Box<Edges<BigInt>>),
+}
+
+/// A triangle set up for the planned engine: its pixel range, its plan and its edges in
+/// the planned width.
+#[derive(Debug, Clone)]
+pub struct PlannedTriangle {
+    range: PixelRange,
+    plan: Plan,
+    lanes: Lanes,
+}
+
+/// The exact setup: range, scale, edges and the bound.
+struct Setup {
+    range: PixelRange,
+    scale: BigInt,
+    edges: Edges<BigInt>,
+    bound: Bound,
+}
+
+fn setup(tri: &Triangle, target: &Target) -> Option<Setup> {
+    let range = exact_sample_range(tri.v.iter(), target)?;
+    let centre = target.convention.pixel_centre.offset();
+    let scale = scale_of(tri.v.iter().flat_map(|p| [&p.x, &p.y]).chain([&centre]));
+    let c = scaled(&centre, &scale);
+    let origin = [
+        BigInt::from(range.x0) * &scale + &c,
+        BigInt::from(range.y0) * &scale + &c,
+    ];
+    let local = |i: usize| {
+        let p = &tri.v[i];
+        [scaled(&p.x, &scale) - &origin[0], scaled(&p.y, &scale) - &origin[1]]
+    };
+    let [a, mut b, mut c3] = [local(0), local(1), local(2)];
+    let edge = |a: &[BigInt; 2], b: &[BigInt; 2]| [&b[0] - &a[0], &b[1] - &a[1]];
+    // E_{ab}(p) = (p.x - a.x) dy - (p.y - a.y) dx; at p = 0: a.y dx - a.x dy.
+    let area2 = {
+        let [dx, dy] = edge(&a, &b);
+        (&c3[0] - &a[0]) * &dy - (&c3[1] - &a[1]) * &dx
+    };
+    if area2.is_zero() {
+        return None;
+    }
+    if area2.is_negative() {
+        std::mem::swap(&mut b, &mut c3);
+    }
+    let rule = target.convention.tie_rule;
+    let mut edges = Edges {
+        origin: std::array::from_fn(|_| BigInt::zero()),
+        step_x: std::array::from_fn(|_| BigInt::zero()),
+        step_y: std::array::from_fn(|_| BigInt::zero()),
+    };
+    for (k, (from, to)) in [(&a, &b), (&b, &c3), (&c3, &a)].into_iter().enumerate() {
+        let [dx, dy] = edge(from, to);
+        let bias = if rule.is_inclusive(
+            dx.sign().cmp(&num_bigint::Sign::NoSign),
+            dy.sign().cmp(&num_bigint::Sign::NoSign),
+        ) {
+            0
+        } else {
+            1
+        };
+        edges.origin[k] = &from[1] * &dx - &from[0] * &dy - bias;
+        // A step the traversal never takes (a range one pixel wide or high) is left at
+        // zero, so that it need not fit the width.
+        if range.x1 > range.x0 {
+            edges.step_x[k] = &dy * &scale;
+        }
+        if range.y1 > range.y0 {
+            edges.step_y[k] = -(&dx * &scale);
+        }
+    }
+    let bound = bound_of(&edges, &range);
+    Some(Setup {
+        range,
+        scale,
+        edges,
+        bound,
+    })
+}
+
+/// The largest magnitude the traversal reaches (see the module docs): `E - bias` at the
+/// range's corners, and the step multiples it adds.
+fn bound_of(edges: &Edges<BigInt>, range: &PixelRange) -> Bound {
+    let (w, h) = (range.x1 - range.x0, range.y1 - range.y0);
+    let mut best = Bound {
+        value: BigInt::zero(),
+        what: "nothing".into(),
+    };
+    let mut consider = |v: BigInt, what: &dyn Fn() -> String| {
+        if v.abs() > best.value.abs() || best.what == "nothing" {
+            best = Bound {
+                value: v.abs(),
+                what: what(),
+            };
+        }
+    };
+    for k in 0..3 {
+        for (u, v) in [(0, 0), (w, 0), (0, h), (w, h)] {
+            let e = &edges.origin[k] + &edges.step_x[k] * u + &edges.step_y[k] * v;
+            consider(e, &|| format!("edge {k} at pixel ({}, {})", range.x0 + u, range.y0 + v));
+        }
+        let (kx, ky) = (w.min(BLOCK), h.min(BLOCK));
+        consider(&edges.step_x[k] * kx, &|| format!("edge {k}'s step over {kx} columns"));
+        consider(&edges.step_y[k] * ky, &|| format!("edge {k}'s step over {ky} rows"));
+    }
+    best
+}
+
+impl PlannedTriangle {
+    /// Sets up `tri` (exact vertices: as written, or snapped and converted back) for
+    /// `target`, in the cheapest width its bound allows; `None` when it covers nothing
+    /// (zero area, or no sample of the canvas in its bounding box).
+    pub fn new(tri: &Triangle, target: &Target) -> Option<PlannedTriangle> {
+        let s = setup(tri, target)?;
+        let plan = Plan::new(s.scale, s.bound);
+        Some(Self::in_width(s.range, plan, &s.edges))
+    }
+
+    /// As [`PlannedTriangle::new`] but in `width`: `Ok(None)` when it covers nothing,
+    /// `Err(plan)` (the plan it would have) when `width` cannot hold its bound. For tests
+    /// and benches that run every width.
+    pub fn forced(tri: &Triangle, target: &Target, width: Width) -> Result<Option<PlannedTriangle>, Plan> {
+        let Some(s) = setup(tri, target) else {
+            return Ok(None);
+        };
+        match Plan::forced(s.scale.clone(), s.bound.clone(), width) {
+            Some(plan) => Ok(Some(Self::in_width(s.range, plan, &s.edges))),
+            None => Err(Plan::new(s.scale, s.bound)),
+        }
+    }
+
+    fn in_width(range: PixelRange, plan: Plan, edges: &Edges<BigInt>) -> PlannedTriangle {
+        let lanes = match plan.width {
+            Width::F32 => Lanes::F32(Edges::from_big(edges)),
+            Width::I32 => Lanes::I32(Edges::from_big(edges)),
+            Width::F64 => Lanes::F64(Edges::from_big(edges)),
+            Width::I64 => Lanes::I64(Edges::from_big(edges)),
+            Width::I128 => Lanes::I128(Edges::from_big(edges)),
+            Width::Big => Lanes::Big(Box::new(edges.clone())),
+        };
+        PlannedTriangle { range, plan, lanes }
+    }
+
+    /// The plan: scale, bound and width.
+    pub fn plan(&self) -> &Plan {
+        &self.plan
+    }
+
+    /// Covers every pixel whose sample is inside the triangle: equal, pixel for pixel, to
+    /// [`crate::tri::exact::rasterize`] on the same triangle and target (the property
+    /// tests of `tests/planned.rs` are the proof).
+    ///
+    /// ```
+    /// use rasterproof::convention::{Convention, Target};
+    /// use rasterproof::coverage::Coverage;
+    /// use rasterproof::geom::{Point, Triangle};
+    /// use rasterproof::num::plan::Width;
+    /// use rasterproof::tri::planned::PlannedTriangle;
+    /// let t = Triangle::new(Point::from_ints(0, 0), Point::from_ints(4, 0), Point::from_ints(0, 4));
+    /// let target = Target::new(4, 4, Convention::default()).unwrap();
+    /// let planned = PlannedTriangle::new(&t, &target).unwrap();
+    /// // Integer vertices, samples at half pixels: scale 2, every value tiny.
+    /// assert_eq!(planned.plan().width, Width::I32);
+    /// let (mut a, mut b) = (Coverage::new(4, 4), Coverage::new(4, 4));
+    /// planned.rasterize(0, &mut a);
+    /// rasterproof::tri::exact::rasterize(&t, 0, &target, &mut b);
+    /// assert_eq!(a, b);
+    /// assert_eq!(a.covered_pixels(), 6);
+    /// ```
+    pub fn rasterize<S: CoverageSink + ?Sized>(&self, id: u32, sink: &mut S) {
+        match &self.lanes {
+            Lanes::F32(e) => traverse(e, &self.range, id, sink),
+            Lanes::I32(e) => traverse(e, &self.range, id, sink),
+            Lanes::F64(e) => traverse(e, &self.range, id, sink),
+            Lanes::I64(e) => traverse(e, &self.range, id, sink),
+            Lanes::I128(e) => traverse(e, &self.range, id, sink),
+            Lanes::Big(e) => traverse(e, &self.range, id, sink),
+        }
+    }
+}
+
+/// Plans and rasterizes `tri` in one call (see [`PlannedTriangle`]).
+pub fn rasterize<S: CoverageSink + ?Sized>(tri: &Triangle, id: u32, target: &Target, sink: &mut S) {
+    if let Some(p) = PlannedTriangle::new(tri, target) {
+        p.rasterize(id, sink);
+    }
+}
+
+/// `n` times `step`, by addition (every partial sum is a difference of two samples'
+/// values in the range, so within the bound, when `n` is at most the range's side).
+fn times<T: Lane>(step: &[T; 3], n: u32) -> [T; 3] {
+    let mut acc: [T; 3] = std::array::from_fn(|_| T::zero_value());
+    for _ in 0..n {
+        for k in 0..3 {
+            acc[k].add_to(&step[k]);
+        }
+    }
+    acc
+}
+
+fn add3_to<T: Lane>(a: &mut [T; 3], b: &[T; 3]) {
+    for k in 0..3 {
+        a[k].add_to(&b[k]);
+    }
+}
+
+/// The block traversal, generic over the planned width (see the module docs).
+fn traverse<T: Lane, S: CoverageSink + ?Sized>(e: &Edges<T>, range: &PixelRange, id: u32, sink: &mut S) {
+    let (width, height) = (range.x1 - range.x0, range.y1 - range.y0);
+    let last = BLOCK - 1;
+    // Steps to the next block (used only when there is one) and to a block's far corner,
+    // for full blocks and for the last, partial one.
+    let block_x = if width >= BLOCK {
+        times(&e.step_x, BLOCK)
+    } else {
+        times(&e.step_x, 0)
+    };
+    let block_y = if height >= BLOCK {
+        times(&e.step_y, BLOCK)
+    } else {
+        times(&e.step_y, 0)
+    };
+    let full_x = times(&e.step_x, last.min(width));
+    let full_y = times(&e.step_y, last.min(height));
+    let part_x = times(&e.step_x, width % BLOCK);
+    let part_y = times(&e.step_y, height % BLOCK);
+
+    let mut row_origin = e.origin.clone();
+    let mut by = 0;
+    loop {
+        let h = last.min(height - by);
+        let corner_y = if h == last { &full_y } else { &part_y };
+        let mut block = row_origin.clone();
+        let mut bx = 0;
+        loop {
+            let w = last.min(width - bx);
+            let corner_x = if w == last { &full_x } else { &part_x };
+            visit_block(
+                e,
+                &block,
+                corner_x,
+                corner_y,
+                [range.x0 + bx, range.y0 + by],
+                [w, h],
+                id,
+                sink,
+            );
+            if width - bx < BLOCK {
+                break;
+            }
+            bx += BLOCK;
+            add3_to(&mut block, &block_x);
+        }
+        if height - by < BLOCK {
+            break;
+        }
+        by += BLOCK;
+        add3_to(&mut row_origin, &block_y);
+    }
+}
+
+/// One block: `origin` holds `E - bias` at its first sample `at`, `corner_x` / `corner_y`
+/// the steps to its last column / row; `size` is `[w, h]` (the last column and row,
+/// relative).
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn visit_block<T: Lane, S: CoverageSink + ?Sized>(
+    e: &Edges<T>,
+    origin: &[T; 3],
+    corner_x: &[T; 3],
+    corner_y: &[T; 3],
+    at: [u32; 2],
+    size: [u32; 2],
+    id: u32,
+    sink: &mut S,
+) {
+    let mut all_inside = true;
+    for k in 0..3 {
+        let e00 = &origin[k];
+        let e10 = e00.plus(&corner_x[k]);
+        let e01 = e00.plus(&corner_y[k]);
+        let e11 = e10.plus(&corner_y[k]);
+        let inside = [
+            e00.non_negative(),
+            e10.non_negative(),
+            e01.non_negative(),
+            e11.non_negative(),
+        ];
+        // E is linear, so its extremes over the block's samples are at the corners.
+        if inside == [false; 4] {
+            return;
+        }
+        all_inside &= inside == [true; 4];
+    }
+    let [x0, y0] = at;
+    let [w, h] = size;
+    if all_inside {
+        for y in y0..=y0 + h {
+            sink.cover_span(y, x0, x0 + w, id);
+        }
+        return;
+    }
+    let mut row = origin.clone();
+    for dy in 0..=h {
+        let mut v = row.clone();
+        for dx in 0..=w {
+            if T::all_non_negative(&v) {
+                sink.cover(x0 + dx, y0 + dy, id);
+            }
+            if dx < w {
+                add3_to(&mut v, &e.step_x);
+            }
+        }
+        if dy < h {
+            add3_to(&mut row, &e.step_y);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::convention::Convention;
+    use crate::coverage::Coverage;
+    use crate::geom::Point;
+
+    /// A hand-derived plan: (0,0) (4,0) (0,4) on a 4x4 canvas, centres at 1/2, so L = 2,
+    /// the range is pixels 0..=3 on both axes and the first sample is (1, 1) in L units.
+    /// Relative to it the vertices are a = (-1,-1), b = (7,-1), c = (-1,7); E_ab(c) =
+    /// 0 * 0 - 8 * 8 = -64 < 0, so b and c swap: a -> (-1,7) -> (7,-1) -> a.
+    /// - edge 0, (-1,-1) -> (-1,7): dx = 0, dy = 8, inclusive (dy > 0), bias 0;
+    ///   E = 8 (p.x + 1): 8 at pixel column 0 (p.x = 0), 56 at column 3 (p.x = 6).
+    /// - edge 1, (-1,7) -> (7,-1): dx = 8, dy = -8, not inclusive, bias 1;
+    ///   E - 1 = 47 - 8 (p.x + p.y): 47 at pixel (0,0), -49 at pixel (3,3).
+    /// - edge 2, (7,-1) -> (-1,-1): horizontal running left, a top edge, bias 0;
+    ///   E = 8 (p.y + 1): at most 56.
+    /// - steps: L dy = 16 (edge 0), 3 columns: 48; edge 1 both ways 16, x3 = 48.
+    ///
+    /// So the bound is 56, first reached by edge 0 at pixel (3, 0).
+    #[test]
+    fn bound_by_hand() {
+        let t = Triangle::new(Point::from_ints(0, 0), Point::from_ints(4, 0), Point::from_ints(0, 4));
+        let target = Target::new(4, 4, Convention::default()).unwrap();
+        let p = PlannedTriangle::new(&t, &target).unwrap();
+        assert_eq!(p.plan().scale, BigInt::from(2));
+        assert_eq!(p.plan().bound.value, BigInt::from(56));
+        assert_eq!(p.plan().bound.what, "edge 0 at pixel (3, 0)");
+        assert_eq!(p.plan().width, Width::I32);
+    }
+
+    #[test]
+    fn forced_refuses_a_width_that_cannot_hold_the_bound() {
+        // A triangle 2^13 px wide at L = 2: values about 2 * (2^14)^2 = 2^29... fits i32
+        // but not f32 (2^24).
+        let s: u32 = 1 << 13;
+        let v = i64::from(s);
+        let t = Triangle::new(Point::from_ints(0, 0), Point::from_ints(v, 0), Point::from_ints(0, v));
+        let target = Target::new(s, s, Convention::default()).unwrap();
+        assert!(PlannedTriangle::forced(&t, &target, Width::F32).is_err());
+        let p = PlannedTriangle::forced(&t, &target, Width::I64).unwrap().unwrap();
+        assert_eq!(p.plan().width, Width::I64);
+        let mut c = Coverage::new(s, s);
+        p.rasterize(0, &mut c);
+        // x + y < s for samples (i + 1/2, j + 1/2): i + j <= s - 2, plus the hypotenuse's
+        // samples i + j = s - 1 (x + y = s exactly: a right edge, out): s (s - 1) / 2.
+        assert_eq!(c.covered_pixels(), (s * (s - 1) / 2) as usize);
+    }
+}
