@@ -92,7 +92,8 @@ fn bench_workload(
 /// scene file written with `%.3f` has them).
 fn decimal(tris: &[Triangle]) -> Vec<Triangle> {
     use num_rational::BigRational;
-    let to = |v: &BigRational| (v * BigRational::from_integer(1000.into())).round() / BigRational::from_integer(1000.into());
+    let to =
+        |v: &BigRational| (v * BigRational::from_integer(1000.into())).round() / BigRational::from_integer(1000.into());
     tris.iter()
         .map(|t| {
             let p = |i: usize| Point::new(to(&t.v[i].x), to(&t.v[i].y));

@@ -215,7 +215,9 @@ fn render_honours_clip() {
     let exact = render(Model::Exact, &scene.primitives(), &target).unwrap();
     assert_eq!(exact.covered_pixels(), 55);
     for model in [
+        Model::ExactPlain,
         Model::ExactSnapped,
+        Model::ExactSnappedPlain,
         Model::Fixed,
         Model::Scanline,
         Model::Float32,
@@ -409,8 +411,9 @@ proptest! {
         let Ok(fixed) = render(Model::Fixed, &scene.primitives(), &target) else {
             return Err(TestCaseError::reject("outside the envelope or not triangulable"));
         };
-        let exact = render(Model::ExactSnapped, &scene.primitives(), &target).unwrap();
+        let exact = render(Model::ExactSnappedPlain, &scene.primitives(), &target).unwrap();
         prop_assert_eq!(differing_pixels(&exact, &fixed), vec![]);
+        prop_assert_eq!(differing_pixels(&exact, &render(Model::ExactSnapped, &scene.primitives(), &target).unwrap()), vec![]);
         prop_assert_eq!(differing_pixels(&exact, &render(Model::Scanline, &scene.primitives(), &target).unwrap()), vec![]);
     }
 

@@ -103,7 +103,7 @@ proptest! {
         preset in prop::sample::select(vec![Preset::D3d11, Preset::Gl]),
     ) {
         let target = Target::new(32, 32, preset.convention()).unwrap();
-        let exact = render(Model::Exact, &polygons(vec![poly.clone()]), &target).unwrap();
+        let exact = render(Model::ExactPlain, &polygons(vec![poly.clone()]), &target).unwrap();
         let float = render(Model::Float64, &polygons(vec![poly]), &target).unwrap();
         prop_assert_eq!(differing_pixels(&exact, &float), vec![]);
     }
@@ -119,7 +119,7 @@ proptest! {
         let mut poly = Polygon::new(pts(&v), rule);
         poly.holes.push(pts(&hole));
         let target = Target::new(32, 32, preset.convention()).unwrap();
-        let exact = render(Model::Exact, &polygons(vec![poly.clone()]), &target).unwrap();
+        let exact = render(Model::ExactPlain, &polygons(vec![poly.clone()]), &target).unwrap();
         let float = render(Model::Float32, &polygons(vec![poly]), &target).unwrap();
         prop_assert_eq!(differing_pixels(&exact, &float), vec![]);
     }
@@ -142,7 +142,7 @@ proptest! {
             rule: LineRule::Diamond,
         };
         let target = Target::new(32, 32, Preset::D3d11.convention()).unwrap();
-        let exact = render(Model::Exact, &lines(vec![line.clone()]), &target).unwrap();
+        let exact = render(Model::ExactPlain, &lines(vec![line.clone()]), &target).unwrap();
         for model in [Model::Float32, Model::Float64] {
             let float = render(model, &lines(vec![line.clone()]), &target).unwrap();
             prop_assert_eq!(differing_pixels(&exact, &float), vec![], "{}", model);

@@ -27,9 +27,9 @@ fn target(side: u32, preset: Preset) -> Target {
 }
 
 fn agree(tris: &[Triangle], target: &Target) -> Result<(), TestCaseError> {
-    let exact = render_triangles(Model::ExactSnapped, tris, target).unwrap();
+    let exact = render_triangles(Model::ExactSnappedPlain, tris, target).unwrap();
     let fixed = render_triangles(Model::Fixed, tris, target).map_err(|e| TestCaseError::fail(e.to_string()))?;
-    check_agreement("exact-snapped", &exact, "fixed", &fixed, tris, target)
+    check_agreement("exact-snapped-plain", &exact, "fixed", &fixed, tris, target)
         .map_err(|v| TestCaseError::fail(v.to_string()))
 }
 

@@ -3,10 +3,14 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rasterproof::convention::Target;
 use rasterproof::coverage::picture::{legend_path, upscale};
+use rasterproof::coverage::Coverage;
 use rasterproof::coverage::{Scale, ASCII_GRID_MAX_SIDE};
 use rasterproof::model::plan;
-use rasterproof::model::prepare;
+use rasterproof::model::{prepare, PreparedScene};
+use std::time::{Duration, Instant};
 
 use super::Outputs;
 
@@ -67,7 +71,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let fail = |e: rasterproof::model::ModelError| format!("{name}: {e} (model {model})");
     let primitives = scene.primitives();
     let prepared = prepare(model, &primitives, &target).map_err(fail)?;
-    let coverage = prepared.coverage(&target);
+    let coverage = draw_with_progress(&prepared, &target);
 
     let mut outputs = Outputs::new();
     let mut wrote = Vec::new();
@@ -119,6 +123,29 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         }
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Draws the scene; once drawing has gone on for a second (an arbitrary-precision plan, a
+/// plain oracle on a big frame), a progress bar on stderr counts the primitives drawn
+/// (indicatif hides it when stderr is not a terminal).
+fn draw_with_progress(prepared: &PreparedScene, target: &Target) -> Coverage {
+    let start = Instant::now();
+    let bar = ProgressBar::with_draw_target(Some(prepared.primitive_count() as u64), ProgressDrawTarget::hidden());
+    bar.set_style(
+        ProgressStyle::with_template("{bar:40} {pos}/{len} primitives, {elapsed} ({eta} left)")
+            .expect("static template"),
+    );
+    let mut shown = false;
+    let mut coverage = Coverage::new(target.width, target.height);
+    prepared.draw_observed(target, &mut coverage, &mut || {
+        bar.inc(1);
+        if !shown && start.elapsed() > Duration::from_secs(1) {
+            bar.set_draw_target(ProgressDrawTarget::stderr());
+            shown = true;
+        }
+    });
+    bar.finish_and_clear();
+    coverage
 }
 
 /// `--scale K`: a whole number (its range is checked against the canvas later).

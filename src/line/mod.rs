@@ -12,6 +12,7 @@ pub mod dda;
 pub mod diamond;
 pub mod exact;
 pub mod float;
+pub mod planned;
 
 use num_traits::ToPrimitive;
 

@@ -4,10 +4,11 @@
 use glam::{DVec2, Vec2};
 use num_bigint::BigInt;
 
-use crate::convention::{Convention, Target};
+use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::geom::Point;
 use crate::line::diamond::FixedSegment;
+use crate::line::planned::PlannedSegment;
 use crate::line::{self, BresenhamTie, Line, LineRule};
 use crate::num::exact::dyadic;
 use crate::num::fixed::snap;
@@ -16,7 +17,7 @@ use crate::num::SubPixel;
 use super::{point_f32, point_f64, Arithmetic, FloatType, Model, ModelError};
 
 /// A line converted for one model.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub(crate) enum PreparedLine {
     /// Bresenham, drawn by the exact ideal-line reference.
     IdealBresenham([i64; 2], [i64; 2], BresenhamTie),
@@ -28,6 +29,8 @@ pub(crate) enum PreparedLine {
     Dda64([i64; 2], [i64; 2]),
     /// Diamond-exit, the plain exact reading (endpoints as written or snapped).
     DiamondExact(Box<(Point, Point)>),
+    /// Diamond-exit, the planned engine (`None`: it draws nothing).
+    DiamondPlanned(Option<Box<PlannedSegment>>),
     /// Diamond-exit, integer.
     DiamondFixed(FixedSegment),
     /// Diamond-exit read in f32.
@@ -37,7 +40,7 @@ pub(crate) enum PreparedLine {
 }
 
 /// Converts `lines` for `model`; the first line it cannot take is the error.
-pub(crate) fn prepare_lines(model: Model, lines: &[Line], conv: &Convention) -> Result<Vec<PreparedLine>, ModelError> {
+pub(crate) fn prepare_lines(model: Model, lines: &[Line], target: &Target) -> Result<Vec<PreparedLine>, ModelError> {
     lines
         .iter()
         .enumerate()
@@ -51,27 +54,34 @@ pub(crate) fn prepare_lines(model: Model, lines: &[Line], conv: &Convention) -> 
                     Arithmetic::Float(FloatType::F64, _) => PreparedLine::Dda64(a, b),
                 })
             }
-            LineRule::Diamond => prepare_diamond(model, k, l, conv),
+            LineRule::Diamond => prepare_diamond(model, k, l, target),
         })
         .collect()
 }
 
 /// A diamond-exit line for `model` (line `k`, for the error).
-fn prepare_diamond(model: Model, k: usize, l: &Line, conv: &Convention) -> Result<PreparedLine, ModelError> {
+fn prepare_diamond(model: Model, k: usize, l: &Line, target: &Target) -> Result<PreparedLine, ModelError> {
+    let conv = &target.convention;
     let snapped = |p: &Point| {
         let s = |v| snap(v, conv.subpixel_bits, conv.rounding);
         [s(&p.x), s(&p.y)]
     };
     match model.arithmetic() {
-        Arithmetic::Exact { snapped: false, .. } => {
-            Ok(PreparedLine::DiamondExact(Box::new((l.from.clone(), l.to.clone()))))
-        }
-        Arithmetic::Exact { snapped: true, .. } => {
+        Arithmetic::Exact {
+            snapped: is_snapped,
+            plain,
+        } => {
             let back = |[x, y]: [BigInt; 2]| Point::new(dyadic(&x, conv.subpixel_bits), dyadic(&y, conv.subpixel_bits));
-            Ok(PreparedLine::DiamondExact(Box::new((
-                back(snapped(&l.from)),
-                back(snapped(&l.to)),
-            ))))
+            let (a, b) = if is_snapped {
+                (back(snapped(&l.from)), back(snapped(&l.to)))
+            } else {
+                (l.from.clone(), l.to.clone())
+            };
+            Ok(if plain {
+                PreparedLine::DiamondExact(Box::new((a, b)))
+            } else {
+                PreparedLine::DiamondPlanned(PlannedSegment::new(&a, &b, target).map(Box::new))
+            })
         }
         Arithmetic::Integer(_) => {
             let fixed = |p: &Point, end: &'static str| -> Result<[SubPixel; 2], ModelError> {
@@ -106,7 +116,10 @@ fn prepare_diamond(model: Model, k: usize, l: &Line, conv: &Convention) -> Resul
 impl PreparedLine {
     /// The planned engine's plan; `None` for every other form.
     pub(crate) fn plan(&self) -> Option<&crate::num::plan::Plan> {
-        None
+        match self {
+            PreparedLine::DiamondPlanned(Some(seg)) => Some(seg.plan()),
+            _ => None,
+        }
     }
 
     /// Draws the line with id `id`.
@@ -117,6 +130,11 @@ impl PreparedLine {
             PreparedLine::Dda32(a, b) => line::dda::draw(*a, *b, line::dda::DdaFloat::F32, id, target, sink),
             PreparedLine::Dda64(a, b) => line::dda::draw(*a, *b, line::dda::DdaFloat::F64, id, target, sink),
             PreparedLine::DiamondExact(ends) => line::exact::draw_diamond(&ends.0, &ends.1, id, target, sink),
+            PreparedLine::DiamondPlanned(seg) => {
+                if let Some(seg) = seg {
+                    seg.draw(id, sink);
+                }
+            }
             PreparedLine::DiamondFixed(seg) => line::diamond::draw(seg, id, target, sink),
             PreparedLine::DiamondF32(a, b) => line::float::draw_diamond_f32(*a, *b, id, target, sink),
             PreparedLine::DiamondF64(a, b) => line::float::draw_diamond_f64(*a, *b, id, target, sink),

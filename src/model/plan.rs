@@ -107,7 +107,9 @@ pub fn summary(plans: &[PrimitivePlan]) -> String {
         s.push_str(&format!(": {}", widths.join(", ")));
     }
     if unplanned > 0 {
-        s.push_str(&format!("; {unplanned} not planned (covers nothing, or a Bresenham line)"));
+        s.push_str(&format!(
+            "; {unplanned} not planned (covers nothing, or a Bresenham line)"
+        ));
     }
     s
 }

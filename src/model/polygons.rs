@@ -6,10 +6,10 @@
 use glam::{DVec2, Vec2};
 
 use crate::clip::homogeneous::{clip_to_window_exact, ClipVertex, Viewport};
-use crate::convention::{Convention, Target};
+use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::fill;
-use crate::fill::polygon::{PolygonF32, PolygonF64};
+use crate::fill::polygon::{PlannedPolygon, PolygonF32, PolygonF64};
 use crate::fill::triangulate::triangulate;
 use crate::geom::{FillRule, FixedPolygon, FixedTriangle, Point, Polygon};
 use crate::tri::fixed;
@@ -18,10 +18,14 @@ use crate::tri::float::{rasterize_f32, rasterize_f64, FloatRule};
 use super::{point_f32, point_f64, Arithmetic, FloatType, IntegerTraversal, Model, ModelError};
 
 /// A polygon converted for one model.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub(crate) enum PreparedPolygon {
-    /// The oracle's input: the polygon as written (`exact`) or snapped (`exact-snapped`).
+    /// The plain oracle's input: the polygon as written (`exact-plain`) or snapped
+    /// (`exact-snapped-plain`).
     Exact(Polygon),
+    /// The same exact polygon and its planned form (`None`: it covers nothing), for
+    /// `exact` and `exact-snapped`.
+    Planned(Polygon, Option<Box<PlannedPolygon>>),
     /// The scanline filler's input.
     Scanline(FixedPolygon),
     /// The `fixed` model's input: the snapped polygon's triangulation.
@@ -42,8 +46,9 @@ pub(crate) fn prepare_polygon(
     model: Model,
     k: usize,
     p: &Polygon,
-    conv: &Convention,
+    target: &Target,
 ) -> Result<PreparedPolygon, ModelError> {
+    let conv = &target.convention;
     let fixed = || {
         p.to_fixed(conv)
             .map_err(|(contour, vertex, axis, error)| ModelError::PolygonEnvelope {
@@ -55,8 +60,10 @@ pub(crate) fn prepare_polygon(
             })
     };
     Ok(match model.arithmetic() {
-        Arithmetic::Exact { snapped: false, .. } => PreparedPolygon::Exact(p.clone()),
-        Arithmetic::Exact { snapped: true, .. } => PreparedPolygon::Exact(p.snapped_exact(conv)),
+        Arithmetic::Exact { snapped, plain } => {
+            let exact = if snapped { p.snapped_exact(conv) } else { p.clone() };
+            PreparedPolygon::exact(exact, plain, target)
+        }
         Arithmetic::Integer(IntegerTraversal::Scanline) => PreparedPolygon::Scanline(fixed()?),
         Arithmetic::Integer(IntegerTraversal::Blocks) => PreparedPolygon::Triangles(
             triangulate(&fixed()?).map_err(|error| ModelError::Triangulate { polygon: k, error })?,
@@ -132,9 +139,9 @@ pub(crate) fn prepare_clip_space(
     k: usize,
     t: &[ClipVertex; 3],
     viewport: &Viewport,
-    conv: &Convention,
+    target: &Target,
 ) -> Result<PreparedPolygon, ModelError> {
-    prepare_polygon(model, k, &clip_space_polygon(t, viewport), conv).map_err(|e| ModelError::ClipSpace {
+    prepare_polygon(model, k, &clip_space_polygon(t, viewport), target).map_err(|e| ModelError::ClipSpace {
         triangle: k,
         message: match e {
             ModelError::PolygonEnvelope {
@@ -147,15 +154,42 @@ pub(crate) fn prepare_clip_space(
 }
 
 impl PreparedPolygon {
+    /// An exact model's form of the exact polygon `p`: the plain oracle's or the planned
+    /// engine's.
+    pub(crate) fn exact(p: Polygon, plain: bool, target: &Target) -> PreparedPolygon {
+        if plain {
+            PreparedPolygon::Exact(p)
+        } else {
+            let planned = PlannedPolygon::new(&p, target).map(Box::new);
+            PreparedPolygon::Planned(p, planned)
+        }
+    }
+
+    /// The exact polygon of an exact model's form.
+    pub(crate) fn exact_polygon(&self) -> Option<&Polygon> {
+        match self {
+            PreparedPolygon::Exact(p) | PreparedPolygon::Planned(p, _) => Some(p),
+            _ => None,
+        }
+    }
+
     /// The planned engine's plan; `None` for every other form.
     pub(crate) fn plan(&self) -> Option<&crate::num::plan::Plan> {
-        None
+        match self {
+            PreparedPolygon::Planned(_, Some(p)) => Some(p.plan()),
+            _ => None,
+        }
     }
 
     /// Fills the polygon with id `id`.
     pub(crate) fn fill<S: CoverageSink + ?Sized>(&self, id: u32, target: &Target, sink: &mut S) {
         match self {
             PreparedPolygon::Exact(p) => fill::polygon::rasterize_exact(p, id, target, sink),
+            PreparedPolygon::Planned(_, p) => {
+                if let Some(p) = p {
+                    p.rasterize(id, sink);
+                }
+            }
             PreparedPolygon::Scanline(p) => fill::polygon::rasterize(p, id, target, sink),
             PreparedPolygon::Triangles(ts) => ts.iter().for_each(|t| fixed::rasterize(t, id, target, sink)),
             PreparedPolygon::Float32(p, rule) => fill::polygon::rasterize_f32(p, id, target, *rule, sink),

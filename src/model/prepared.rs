@@ -103,8 +103,7 @@ fn id(k: usize) -> u32 {
 /// or the float type, a polygon the `fixed` model cannot triangulate, clip-space
 /// triangles without a viewport. Lines are checked first, then the areas.
 pub fn prepare(model: Model, primitives: &Primitives, target: &Target) -> Result<PreparedScene, ModelError> {
-    let conv = &target.convention;
-    let lines = prepare_lines(model, &primitives.lines, conv)?;
+    let lines = prepare_lines(model, &primitives.lines, target)?;
     let viewport = || primitives.viewport.as_ref().ok_or(ModelError::NoViewport);
     let [first_line, first_polygon, _] = primitives.first_ids();
     let point_mask = primitives
@@ -128,21 +127,23 @@ pub fn prepare(model: Model, primitives: &Primitives, target: &Target) -> Result
         Arithmetic::Exact { .. } | Arithmetic::Integer(_) => {
             scene.triangles = prepare_triangles(model, &primitives.triangles, target)?;
             for (k, p) in primitives.polygons.iter().enumerate() {
-                scene.polygons.push(prepare_polygon(model, k, p, conv)?);
+                scene.polygons.push(prepare_polygon(model, k, p, target)?);
             }
             if !primitives.clip_space_triangles.is_empty() {
                 let viewport = viewport()?;
                 for (k, t) in primitives.clip_space_triangles.iter().enumerate() {
-                    scene.polygons.push(prepare_clip_space(model, k, t, viewport, conv)?);
+                    scene.polygons.push(prepare_clip_space(model, k, t, viewport, target)?);
                 }
             }
             if let Some(w) = &primitives.clip {
-                if let Some(ts) = scene.triangles.exact_triangles() {
+                if let (Some(ts), Arithmetic::Exact { plain, .. }) =
+                    (scene.triangles.exact_triangles(), model.arithmetic())
+                {
                     let whole = |t: &Triangle| Polygon::new(t.v.to_vec(), FillRule::NonZero);
-                    let clip = |p: &Polygon| PreparedPolygon::Exact(clip_polygon(p, w));
+                    let clip = |p: &Polygon| PreparedPolygon::exact(clip_polygon(p, w), plain, target);
                     scene.clipped_triangles = Some(ts.iter().map(|t| clip(&whole(t))).collect());
                     for p in &mut scene.polygons {
-                        if let PreparedPolygon::Exact(poly) = p {
+                        if let Some(poly) = p.exact_polygon() {
                             *p = clip(poly);
                         }
                     }
@@ -196,7 +197,7 @@ macro_rules! prepare_float_in {
                 scene.clipped_triangles = Some(fans.collect());
             }
             for (k, p) in primitives.polygons.iter().enumerate() {
-                let mut prepared = prepare_polygon(model, k, p, &target.convention)?;
+                let mut prepared = prepare_polygon(model, k, p, target)?;
                 if let (Some(planes), PreparedPolygon::$polygon(poly, _)) = (&planes, &mut prepared) {
                     poly.outline = $clip(&poly.outline, planes);
                     for hole in &mut poly.holes {
@@ -252,30 +253,51 @@ impl PreparedScene {
 
     /// Rasterizes every primitive into `sink` with its id.
     pub fn draw<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S) {
+        self.draw_observed(target, sink, &mut || {});
+    }
+
+    /// How many primitives [`PreparedScene::draw_observed`] draws (the clipped triangles
+    /// count as their triangles).
+    pub fn primitive_count(&self) -> usize {
+        let triangles = self.clipped_triangles.as_ref().map_or(self.triangles.len(), Vec::len);
+        self.lines.len() + triangles + self.polygons.len()
+    }
+
+    /// [`PreparedScene::draw`], calling `after` once each primitive is drawn (a progress
+    /// bar's tick: `render` shows one when a run goes on for more than a second).
+    pub fn draw_observed<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S, after: &mut dyn FnMut()) {
         for (k, l) in self.lines.iter().enumerate() {
             let k = id(self.first_line + k);
             match &self.point_mask {
                 None => l.draw(k, target, sink),
                 Some(m) => l.draw(k, target, &mut m.scissor(sink)),
             }
+            after();
         }
         match &self.area_mask {
-            None => self.draw_areas(target, sink),
-            Some(m) => self.draw_areas(target, &mut m.scissor(sink)),
+            None => self.draw_areas(target, sink, after),
+            Some(m) => self.draw_areas(target, &mut m.scissor(sink), after),
         }
     }
 
-    fn draw_areas<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S) {
+    fn draw_areas<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S, after: &mut dyn FnMut()) {
         match &self.clipped_triangles {
-            None => self.triangles.rasterize_into(target, sink),
+            None => {
+                for k in 0..self.triangles.len() {
+                    self.triangles.rasterize_one(k, target, sink);
+                    after();
+                }
+            }
             Some(polygons) => {
                 for (k, p) in polygons.iter().enumerate() {
                     p.fill(id(k), target, sink);
+                    after();
                 }
             }
         }
         for (k, p) in self.polygons.iter().enumerate() {
             p.fill(id(self.first_polygon + k), target, sink);
+            after();
         }
     }
 

@@ -143,32 +143,25 @@ impl PreparedTriangles {
 
     /// Rasterizes every triangle whole into `sink`, triangle k with id k.
     pub(crate) fn rasterize_into<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S) {
+        for k in 0..self.len() {
+            self.rasterize_one(k, target, sink);
+        }
+    }
+
+    /// Rasterizes triangle `k` whole into `sink` with id k.
+    pub(crate) fn rasterize_one<S: CoverageSink + ?Sized>(&self, k: usize, target: &Target, sink: &mut S) {
+        let id = id_of(k);
         match self {
-            PreparedTriangles::Exact(ts) => ts
-                .iter()
-                .enumerate()
-                .for_each(|(k, t)| exact::rasterize(t, id_of(k), target, sink)),
-            PreparedTriangles::Planned(_, ts) => ts.iter().enumerate().for_each(|(k, t)| {
-                if let Some(t) = t {
-                    t.rasterize(id_of(k), sink);
+            PreparedTriangles::Exact(ts) => exact::rasterize(&ts[k], id, target, sink),
+            PreparedTriangles::Planned(_, ts) => {
+                if let Some(t) = &ts[k] {
+                    t.rasterize(id, sink);
                 }
-            }),
-            PreparedTriangles::Fixed(ts) => ts
-                .iter()
-                .enumerate()
-                .for_each(|(k, t)| fixed::rasterize(t, id_of(k), target, sink)),
-            PreparedTriangles::Scanline(ts) => ts
-                .iter()
-                .enumerate()
-                .for_each(|(k, t)| scanline::rasterize(t, id_of(k), target, sink)),
-            PreparedTriangles::F32(ts, rule) => ts
-                .iter()
-                .enumerate()
-                .for_each(|(k, t)| float::rasterize_f32(t, id_of(k), target, *rule, sink)),
-            PreparedTriangles::F64(ts, rule) => ts
-                .iter()
-                .enumerate()
-                .for_each(|(k, t)| float::rasterize_f64(t, id_of(k), target, *rule, sink)),
+            }
+            PreparedTriangles::Fixed(ts) => fixed::rasterize(&ts[k], id, target, sink),
+            PreparedTriangles::Scanline(ts) => scanline::rasterize(&ts[k], id, target, sink),
+            PreparedTriangles::F32(ts, rule) => float::rasterize_f32(&ts[k], id, target, *rule, sink),
+            PreparedTriangles::F64(ts, rule) => float::rasterize_f64(&ts[k], id, target, *rule, sink),
         }
     }
 

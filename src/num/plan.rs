@@ -193,9 +193,9 @@ impl fmt::Display for Plan {
 ///
 /// ```
 /// use num_rational::BigRational;
-/// use rasterproof::num::exact::parse_decimal;
+/// use rasterproof::num::exact::parse_rational;
 /// use rasterproof::num::plan::scale_of;
-/// let v = [parse_decimal("491.407").unwrap(), BigRational::new(1.into(), 2.into())];
+/// let v = [parse_rational("491.407").unwrap(), BigRational::new(1.into(), 2.into())];
 /// assert_eq!(scale_of(v.iter()), 1000.into());
 /// let third = [BigRational::new(1.into(), 3.into()), BigRational::new(1.into(), 2.into())];
 /// assert_eq!(scale_of(third.iter()), 6.into());

@@ -34,11 +34,13 @@ use crate::geom::{FillRule, Point};
 
 mod exact;
 mod float;
+pub mod planned;
 mod rows;
 mod scanline;
 
 pub use exact::{contains_exact, contour_winding_exact, rasterize_exact};
 pub use float::{contour_winding_f32, contour_winding_f64, rasterize_f32, rasterize_f64, PolygonF32, PolygonF64};
+pub use planned::PlannedPolygon;
 pub use rows::rasterize_rows_exact;
 pub use scanline::rasterize;
 
