@@ -1,12 +1,13 @@
 //! The planner's order of widths, measured: the planned triangle traversal forced into
-//! each width on the same workload, side by side (criterion's element throughput is
-//! Mpix/s, elements = covered pixels). The workload has every value below 2^24 so that
+//! each width on the same workload, side by side, round-robin in one process (median of
+//! 21 repetitions, Mpix/s and the ratio to i32). The workload has every value below 2^24 so that
 //! all six widths can run it: 10k medium triangles with integer vertices (scale 2) at
 //! 1024x1024.
 //!
 //! `cargo bench --bench widths`; the figures are in `rasterproof::num::plan::CHEAPEST_FIRST`.
 
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use std::time::Instant;
+
 use rasterproof::convention::{Preset, Target};
 use rasterproof::coverage::CountBuffer;
 use rasterproof::geom::{Point, Triangle};
@@ -32,26 +33,50 @@ fn triangles(n: usize, side: i64, spread: i64, seed: u64) -> Vec<Triangle> {
         .collect()
 }
 
-fn widths(c: &mut Criterion) {
+fn main() {
     let side = 1024;
     let target = Target::new(side, side, Preset::D3d11.convention()).unwrap();
     let tris = triangles(10_000, i64::from(side), 24, 1);
-    let mut group = c.benchmark_group("widths_a_medium_10k_1024");
-    group.sample_size(10);
-    for width in Width::ALL {
-        let planned: Vec<PlannedTriangle> = tris
-            .iter()
-            .filter_map(|t| PlannedTriangle::forced(t, &target, width).expect("every value below 2^24"))
-            .collect();
-        let mut sink = CountBuffer::new(side, side);
-        planned.iter().for_each(|p| p.rasterize(0, &mut sink));
-        group.throughput(Throughput::Elements(sink.total()));
-        group.bench_function(BenchmarkId::from_parameter(width.name()), |b| {
-            b.iter(|| planned.iter().for_each(|p| p.rasterize(0, &mut sink)));
-        });
+    let planned: Vec<(Width, Vec<PlannedTriangle>)> = Width::ALL
+        .into_iter()
+        .map(|width| {
+            let ts = tris
+                .iter()
+                .filter_map(|t| PlannedTriangle::forced(t, &target, width).expect("every value below 2^24"))
+                .collect();
+            (width, ts)
+        })
+        .collect();
+    let mut sink = CountBuffer::new(side, side);
+    planned[0].1.iter().for_each(|p| p.rasterize(0, &mut sink));
+    let pixels = sink.total();
+    // Round-robin: every repetition times each width once, so drift hits all alike.
+    let reps = 21;
+    let mut times: Vec<Vec<f64>> = vec![Vec::new(); planned.len()];
+    for _ in 0..reps {
+        for (k, (_, ts)) in planned.iter().enumerate() {
+            let mut sink = CountBuffer::new(side, side);
+            let start = Instant::now();
+            ts.iter().for_each(|p| p.rasterize(0, &mut sink));
+            times[k].push(start.elapsed().as_secs_f64());
+            assert_eq!(sink.total(), pixels, "every width covers the same pixels");
+        }
     }
-    group.finish();
+    println!("planned traversal, 10k medium triangles at 1024x1024 ({pixels} pixels), median of {reps} round-robin reps");
+    println!("{:<8} {:>10} {:>10} {:>8}", "width", "ms", "Mpix/s", "vs i32");
+    let median = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    let medians: Vec<f64> = times.iter_mut().map(median).collect();
+    let i32_time = medians[1];
+    for ((width, _), t) in planned.iter().zip(&medians) {
+        println!(
+            "{:<8} {:>10.2} {:>10.1} {:>8.2}",
+            width.name(),
+            t * 1e3,
+            pixels as f64 / t / 1e6,
+            i32_time / t
+        );
+    }
 }
-
-criterion_group!(benches, widths);
-criterion_main!(benches);

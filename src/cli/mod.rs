@@ -22,21 +22,23 @@ pub const EXIT_CODES: &str = "Exit codes:
 
 /// The `--model` help: every model with its one-line description, from
 /// [`rasterproof::model::Model::ALL`] (a new model appears here by itself), then what
-/// `exact` and `exact-snapped` mean.
+/// the exact models mean.
 pub fn model_help() -> String {
     let mut s = String::from("The model that renders the scene (default exact-snapped):");
     for m in rasterproof::model::Model::ALL {
-        s.push_str(&format!("\n  {:<14} {}", m.name(), m.describe()));
+        s.push_str(&format!("\n  {:<20} {}", m.name(), m.describe()));
     }
     s.push_str(
         "\n\n\
-exact and exact-snapped are both the exact oracle: exact rational arithmetic,
-no rounding anywhere.
+exact and exact-snapped are exact: no rounding anywhere. Each primitive is scaled to
+integers and run in the cheapest arithmetic that provably holds every value it reaches
+(i32 ... arbitrary precision; `rasterproof plan` shows which); exact-plain and
+exact-snapped-plain are the plain BigRational oracles they equal, slow and simple.
   exact          takes the vertices exactly as the scene file writes them
                  (0.1 is 1/10): the ideal answer.
   exact-snapped  first rounds every vertex to the subpixel grid, as GPUs do
                  (1/256 px for every preset, or the scene's subpixel_bits; ties
-                 to even, cts: half away from zero), then runs the same oracle:
+                 to even, cts: half away from zero), then computes exactly:
                  the answer the integer models (fixed, scanline) must equal
                  pixel for pixel.
 They differ only where snapping moves an edge across a pixel's sample point.",

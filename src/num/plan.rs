@@ -102,19 +102,25 @@ impl fmt::Display for Width {
 }
 
 /// The order the planner tries the widths in: cheapest first, as measured by
-/// `cargo bench --bench widths` on this crate's triangle traversal (workload (a), 10k
-/// medium triangles at 1024x1024, every value below 2^24 so every width can run it; one
-/// run, single thread, 2-core x86-64 CI machine):
+/// `cargo bench --bench widths` (the planned triangle traversal forced into each width on
+/// 10k medium triangles with integer vertices at 1024x1024, every value below 2^24 so
+/// that every width runs it; round-robin in one process, median of 21 repetitions; two
+/// runs on the 2-core development machine, 2026-12-01):
 ///
-/// | width | Mpix/s | vs i32 |
-/// |---|---|---|
-/// | i32 | see the note of the issue that measured it | 1.00 |
+/// | width | run 1 Mpix/s | vs i32 | run 2 Mpix/s | vs i32 |
+/// |---|---|---|---|---|
+/// | i32 | 36.6 | 1.00 | 50.5 | 1.00 |
+/// | i64 | 34.5 | 0.94 | 48.8 | 0.97 |
+/// | f32 | 34.3 | 0.94 | 43.6 | 0.86 |
+/// | f64 | 33.8 | 0.92 | 45.2 | 0.89 |
+/// | i128 | 29.3 | 0.80 | 39.9 | 0.79 |
+/// | bigint | 3.9 | 0.11 | 4.5 | 0.09 |
 ///
-/// i32 and i64 run the same loop at the same speed (one scalar add per edge per pixel);
-/// f32 and f64 are no faster than the integers of the same range and hold less (2^24 <
-/// 2^31, 2^53 < 2^63), so they are never the cheapest that holds a bound and come after
-/// the integers; i128 is two adds with carry per value; the arbitrary-precision
-/// fallback allocates.
+/// i32 and i64 run the same scalar loop (one add per edge per pixel) within noise of each
+/// other; f32 and f64 are no faster than the integers and hold less (2^24 < 2^31,
+/// 2^53 < 2^63), so they are never the cheapest that holds a bound: they stay in the
+/// order (and in the tests, forced) but the planner never picks them. i128 is two adds
+/// with carry per value; the arbitrary-precision fallback is about a tenth of i32.
 pub const CHEAPEST_FIRST: [Width; 6] = [Width::I32, Width::I64, Width::F32, Width::F64, Width::I128, Width::Big];
 
 /// The cheapest width that holds every value of magnitude up to `bound`.
