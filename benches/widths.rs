@@ -62,7 +62,9 @@ fn main() {
             assert_eq!(sink.total(), pixels, "every width covers the same pixels");
         }
     }
-    println!("planned traversal, 10k medium triangles at 1024x1024 ({pixels} pixels), median of {reps} round-robin reps");
+    println!(
+        "planned traversal, 10k medium triangles at 1024x1024 ({pixels} pixels), median of {reps} round-robin reps"
+    );
     println!("{:<8} {:>10} {:>10} {:>8}", "width", "ms", "Mpix/s", "vs i32");
     let median = |v: &mut Vec<f64>| {
         v.sort_by(f64::total_cmp);

@@ -50,6 +50,7 @@ pub struct PixelRange {
 impl PixelRange {
     /// The pixels whose sample index lies in `[lo, hi]` on each axis (already rounded
     /// inwards to integers), clamped to a `width` x `height` canvas; `None` when empty.
+    #[inline]
     pub fn clamped(lo: [i64; 2], hi: [i64; 2], width: u32, height: u32) -> Option<PixelRange> {
         let clamp = |v: i64, side: u32| -> i64 { v.clamp(0, i64::from(side) - 1) };
         if hi[0] < 0 || hi[1] < 0 || lo[0] >= i64::from(width) || lo[1] >= i64::from(height) {
@@ -164,6 +165,7 @@ pub struct FixedGrid {
 
 impl FixedGrid {
     /// The grid of `conv` (`S = conv.subpixel_bits`, `1..=16`).
+    #[inline]
     pub fn of(conv: &Convention) -> FixedGrid {
         FixedGrid {
             one: 1i64 << conv.subpixel_bits,
@@ -172,23 +174,28 @@ impl FixedGrid {
     }
 
     /// The sample coordinate of pixel index `i`, in subpixels (below 2^49: no overflow).
+    #[inline]
     pub fn sample(&self, i: u32) -> i64 {
         i64::from(i) * self.one + self.centre
     }
 
     /// The sample of pixel `(x, y)`, in subpixels.
+    #[inline]
     pub fn sample_point(&self, x: u32, y: u32) -> [i64; 2] {
         [self.sample(x), self.sample(y)]
     }
 
     /// The first pixel index whose sample is at or after `v` subpixels: `ceil((v - centre) / one)`.
+    #[inline]
     pub fn first_at_or_after(&self, v: i64) -> i64 {
-        -(-(v - self.centre)).div_euclid(self.one)
+        // `one` is 2^S: an arithmetic shift is the floor division, and ceil(a) = -floor(-a)
+        -((self.centre - v) >> self.one.trailing_zeros())
     }
 
     /// The last pixel index whose sample is at or before `v` subpixels: `floor((v - centre) / one)`.
+    #[inline]
     pub fn last_at_or_before(&self, v: i64) -> i64 {
-        (v - self.centre).div_euclid(self.one)
+        (v - self.centre) >> self.one.trailing_zeros()
     }
 }
 
@@ -216,18 +223,26 @@ where
 
 /// The pixels whose sample lies in the closed bounding box of `points` (in subpixels of
 /// `target`'s grid), on the canvas; `None` when empty.
+#[inline]
 pub fn fixed_sample_range<I>(points: I, target: &Target) -> Option<PixelRange>
 where
-    I: Iterator<Item = [i64; 2]> + Clone,
+    I: Iterator<Item = [i64; 2]>,
 {
+    let mut points = points;
+    let first = points.next()?;
+    let (mut min, mut max) = (first, first);
+    for p in points {
+        for axis in 0..2 {
+            min[axis] = min[axis].min(p[axis]);
+            max[axis] = max[axis].max(p[axis]);
+        }
+    }
     let grid = FixedGrid::of(&target.convention);
-    let min = |axis: usize| points.clone().map(|p| p[axis]).min();
-    let max = |axis: usize| points.clone().map(|p| p[axis]).max();
     let lo = |m: i64| grid.first_at_or_after(m);
     let hi = |m: i64| grid.last_at_or_before(m);
     PixelRange::clamped(
-        [lo(min(0)?), lo(min(1)?)],
-        [hi(max(0)?), hi(max(1)?)],
+        [lo(min[0]), lo(min[1])],
+        [hi(max[0]), hi(max[1])],
         target.width,
         target.height,
     )

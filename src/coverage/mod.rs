@@ -260,10 +260,12 @@ impl CountBuffer {
 }
 
 impl CoverageSink for CountBuffer {
+    #[inline]
     fn cover(&mut self, x: u32, y: u32, _id: u32) {
         self.counts[y as usize * self.width as usize + x as usize] += 1;
     }
 
+    #[inline]
     fn cover_span(&mut self, y: u32, x0: u32, x1: u32, _id: u32) {
         let row = y as usize * self.width as usize;
         for c in &mut self.counts[row + x0 as usize..=row + x1 as usize] {

@@ -246,6 +246,15 @@ pub trait Lane: Clone + fmt::Debug {
     fn times(&self, other: &Self) -> Self;
     /// `self < other`.
     fn less(&self, other: &Self) -> bool;
+    /// `k * self`, for a small count `k` (the plan bounds the product). By addition here;
+    /// the machine types multiply.
+    fn scaled_by(&self, k: u32) -> Self {
+        let mut acc = Self::zero_value();
+        for _ in 0..k {
+            acc.add_to(self);
+        }
+        acc
+    }
     /// `self >= 0`.
     fn non_negative(&self) -> bool;
     /// Whether all three are `>= 0` (the inside test of a triangle's three edges).
@@ -296,6 +305,10 @@ macro_rules! int_lane {
             #[inline(always)]
             fn less(&self, other: &Self) -> bool {
                 self < other
+            }
+            #[inline(always)]
+            fn scaled_by(&self, k: u32) -> Self {
+                self.times(&<$t>::try_from(k).expect("a small count"))
             }
             #[inline(always)]
             fn non_negative(&self) -> bool {

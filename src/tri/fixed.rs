@@ -1,15 +1,18 @@
 //! The incremental integer rasterizer on the snapped scene: one setup per triangle, then
 //! `E(x+1, y) = E + dY`, `E(x, y+1) = E - dX` (Pineda 1988), traversed in [`BLOCK`] x
-//! [`BLOCK`] blocks: a block whose four corner samples are all outside one edge is
-//! skipped, a block whose corners are inside all three edges is filled as spans, only the
-//! rest is tested per pixel. i64 throughout; the envelope of [`crate::num::fixed`]
-//! guarantees no value can overflow (see there for the bound).
+//! [`BLOCK`] blocks by the planned engine's traversal ([`crate::tri::planned`]) run in
+//! i64: per edge, the block corner where E is largest rejects the block when negative and
+//! the opposite corner accepts it when not (the block is filled as spans); only the rest
+//! is tested per pixel, one span per row. Block origins are stepped by addition. i64
+//! throughout; the envelope of [`crate::num::fixed`] guarantees no value can overflow
+//! (see there for the bound).
 
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::edge::fixed::{triangle_edges, FixedEdge};
 use crate::geom::FixedTriangle;
 use crate::raster::{fixed_sample_range, FixedGrid, PixelRange};
+use crate::tri::planned::{traverse, Edges};
 
 /// Block side, in pixels (the L of Pineda's `E(x+L, y) = E + L dY`).
 pub const BLOCK: u32 = 8;
@@ -33,62 +36,23 @@ pub const BLOCK: u32 = 8;
 /// rasterproof::tri::exact::rasterize(&t, 0, &target, &mut b);
 /// assert_eq!(a, b);
 /// ```
+#[inline]
 pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target: &Target, sink: &mut S) {
     let Some(Setup { edges, grid, range }) = setup(tri, target) else {
         return;
     };
-    let (one, sample) = (grid.one, |x: u32, y: u32| grid.sample_point(x, y));
     // One pixel right adds dY (in pixel units: dY * 2^S); one pixel down subtracts dX.
-    let step_x = edges.map(|e| e.dy * one);
-    let step_y = edges.map(|e| -e.dx * one);
-
-    for by in (range.y0..=range.y1).step_by(BLOCK as usize) {
-        let by1 = (by + BLOCK - 1).min(range.y1);
-        for bx in (range.x0..=range.x1).step_by(BLOCK as usize) {
-            let bx1 = (bx + BLOCK - 1).min(range.x1);
-            let origin = edges.map(|e: FixedEdge| e.biased_value(sample(bx, by)));
-            let (w, h) = (i64::from(bx1 - bx), i64::from(by1 - by));
-            let mut all_inside = true;
-            let mut rejected = false;
-            for k in 0..3 {
-                let e00 = origin[k];
-                let e10 = e00 + w * step_x[k];
-                let e01 = e00 + h * step_y[k];
-                let e11 = e10 + h * step_y[k];
-                let corners = [e00, e10, e01, e11];
-                // E is linear, so its extremes over the block's samples are at the corners.
-                if corners.iter().all(|&e| e < 0) {
-                    rejected = true;
-                    break;
-                }
-                all_inside &= corners.iter().all(|&e| e >= 0);
-            }
-            if rejected {
-                continue;
-            }
-            if all_inside {
-                for y in by..=by1 {
-                    sink.cover_span(y, bx, bx1, id);
-                }
-                continue;
-            }
-            let mut row = origin;
-            for y in by..=by1 {
-                let mut e = row;
-                for x in bx..=bx1 {
-                    if e[0] >= 0 && e[1] >= 0 && e[2] >= 0 {
-                        sink.cover(x, y, id);
-                    }
-                    for k in 0..3 {
-                        e[k] += step_x[k];
-                    }
-                }
-                for k in 0..3 {
-                    row[k] += step_y[k];
-                }
-            }
-        }
-    }
+    let shift = grid.one.trailing_zeros();
+    let first = grid.sample_point(range.x0, range.y0);
+    let lanes = Edges {
+        origin: edges.map(|e: FixedEdge| e.biased_value(first)),
+        step_x: edges.map(|e| e.dy << shift),
+        step_y: edges.map(|e| -(e.dx << shift)),
+    };
+    // The planned engine's block traversal, in i64: every value it reaches is an edge
+    // value at a sample of the range or a multiple of a step by at most BLOCK, all far
+    // below 2^62 inside the envelope.
+    traverse(&lanes, &range, id, sink);
 }
 
 /// The per-triangle setup shared by the integer rasterizers.
@@ -106,6 +70,7 @@ pub(crate) struct Setup {
 ///
 /// # Panics
 /// When `tri` was snapped to another grid than `target`'s subpixel bits.
+#[inline]
 pub(crate) fn setup(tri: &FixedTriangle, target: &Target) -> Option<Setup> {
     let conv = &target.convention;
     assert_eq!(

@@ -16,11 +16,16 @@
 //! `BLOCK` steps, corners by `w` and `h` steps, pixels by single steps, each added only
 //! when the next point exists.
 //!
+//! Per block and edge only two corners are evaluated: the one where `E` is largest (the
+//! block is outside when it is negative) and the opposite one (inside when it is not);
+//! a partial block is filled one span per row (a triangle meets a row in one interval).
+//!
 //! **The bound.** Every value the traversal holds is either `E - bias` at a sample of the
 //! pixel range, whose magnitude is at most its largest at the range's four corners (`E`
-//! is linear), or a multiple `k L dY` / `k L dX` with `k <= min(BLOCK, range side)` (a
-//! difference of two such samples' values). [`PlannedTriangle::new`] computes the largest
-//! of all of them exactly and plans the width on it.
+//! is linear), or a multiple `k L dY` / `k L dX` with `k <= min(BLOCK, range side)`, or
+//! the step from a block's first sample to its largest or smallest corner (each a
+//! difference of two samples' values). [`PlannedTriangle::new`] computes the largest of
+//! all of them exactly and plans the width on it.
 
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
@@ -33,12 +38,16 @@ use crate::raster::{exact_sample_range, PixelRange};
 
 use super::fixed::BLOCK;
 
-/// Per edge: `E - bias` at the range's first sample and the two steps.
+/// Per edge: `E - bias` at the range's first sample and the two steps (shared with
+/// [`crate::tri::fixed`], which runs the same traversal in i64).
 #[derive(Debug, Clone)]
-struct Edges<T> {
-    origin: [T; 3],
-    step_x: [T; 3],
-    step_y: [T; 3],
+pub(crate) struct Edges<T> {
+    /// `E - bias` at the first sample of the range.
+    pub(crate) origin: [T; 3],
+    /// One pixel right.
+    pub(crate) step_x: [T; 3],
+    /// One pixel down.
+    pub(crate) step_y: [T; 3],
 }
 
 impl<T: Lane> Edges<T> {
@@ -162,9 +171,37 @@ fn bound_of(edges: &Edges<BigInt>, range: &PixelRange) -> Bound {
             let e = &edges.origin[k] + &edges.step_x[k] * u + &edges.step_y[k] * v;
             consider(e, &|| format!("edge {k} at pixel ({}, {})", range.x0 + u, range.y0 + v));
         }
-        let (kx, ky) = (w.min(BLOCK), h.min(BLOCK));
+        // A range within one block is filled row by row with single steps; a larger one
+        // steps by up to BLOCK columns or rows and to each block's extreme corners (see
+        // `traverse`).
+        let one_block = w < BLOCK && h < BLOCK;
+        let (kx, ky) = if one_block {
+            (w.min(1), h.min(1))
+        } else {
+            (w.min(BLOCK), h.min(BLOCK))
+        };
         consider(&edges.step_x[k] * kx, &|| format!("edge {k}'s step over {kx} columns"));
         consider(&edges.step_y[k] * ky, &|| format!("edge {k}'s step over {ky} rows"));
+        if one_block {
+            continue;
+        }
+        let (sx, sy) = (&edges.step_x[k], &edges.step_y[k]);
+        for cx in [(BLOCK - 1).min(w), w % BLOCK] {
+            for cy in [(BLOCK - 1).min(h), h % BLOCK] {
+                for high in [true, false] {
+                    let mut v = BigInt::zero();
+                    if sx.is_negative() != high {
+                        v += sx * cx;
+                    }
+                    if sy.is_negative() != high {
+                        v += sy * cy;
+                    }
+                    consider(v, &|| {
+                        format!("edge {k}'s step to a {}x{} block's corner", cx + 1, cy + 1)
+                    });
+                }
+            }
+        }
     }
     best
 }
@@ -249,65 +286,87 @@ pub fn rasterize<S: CoverageSink + ?Sized>(tri: &Triangle, id: u32, target: &Tar
     }
 }
 
-/// `n` times `step`, by addition (every partial sum is a difference of two samples'
-/// values in the range, so within the bound, when `n` is at most the range's side).
+/// `n` times `step` (every multiple used is a difference of two samples' values in the
+/// range, so within the bound, when `n` is at most the range's side).
+#[inline(always)]
 fn times<T: Lane>(step: &[T; 3], n: u32) -> [T; 3] {
-    let mut acc: [T; 3] = std::array::from_fn(|_| T::zero_value());
-    for _ in 0..n {
-        for k in 0..3 {
-            acc[k].add_to(&step[k]);
-        }
-    }
-    acc
+    step.each_ref().map(|s| s.scaled_by(n))
 }
 
+/// Per edge, the step to the block corner where `E` is largest (`high`) and smallest
+/// (`low`): `E` is linear, so that is the far column when it grows along x, the far row
+/// when it grows along y.
+#[derive(Debug, Clone)]
+struct CornerSteps<T> {
+    high: [T; 3],
+    low: [T; 3],
+}
+
+impl<T: Lane> CornerSteps<T> {
+    fn of(step_x: &[T; 3], step_y: &[T; 3], along_x: &[T; 3], along_y: &[T; 3]) -> CornerSteps<T> {
+        let pick = |k: usize, high: bool| {
+            let mut v = T::zero_value();
+            for (step, along) in [(step_x, along_x), (step_y, along_y)] {
+                if step[k].non_negative() == high {
+                    v.add_to(&along[k]);
+                }
+            }
+            v
+        };
+        CornerSteps {
+            high: std::array::from_fn(|k| pick(k, true)),
+            low: std::array::from_fn(|k| pick(k, false)),
+        }
+    }
+}
+
+#[inline(always)]
+fn add3<T: Lane>(a: &[T; 3], b: &[T; 3]) -> [T; 3] {
+    [a[0].plus(&b[0]), a[1].plus(&b[1]), a[2].plus(&b[2])]
+}
+
+#[inline(always)]
 fn add3_to<T: Lane>(a: &mut [T; 3], b: &[T; 3]) {
-    for k in 0..3 {
-        a[k].add_to(&b[k]);
+    for (a, b) in a.iter_mut().zip(b) {
+        a.add_to(b);
     }
 }
 
 /// The block traversal, generic over the planned width (see the module docs).
-fn traverse<T: Lane, S: CoverageSink + ?Sized>(e: &Edges<T>, range: &PixelRange, id: u32, sink: &mut S) {
+#[inline]
+pub(crate) fn traverse<T: Lane, S: CoverageSink + ?Sized>(e: &Edges<T>, range: &PixelRange, id: u32, sink: &mut S) {
     let (width, height) = (range.x1 - range.x0, range.y1 - range.y0);
     let last = BLOCK - 1;
-    // Steps to the next block (used only when there is one) and to a block's far corner,
-    // for full blocks and for the last, partial one.
-    let block_x = if width >= BLOCK {
-        times(&e.step_x, BLOCK)
-    } else {
-        times(&e.step_x, 0)
-    };
-    let block_y = if height >= BLOCK {
-        times(&e.step_y, BLOCK)
-    } else {
-        times(&e.step_y, 0)
-    };
-    let full_x = times(&e.step_x, last.min(width));
-    let full_y = times(&e.step_y, last.min(height));
-    let part_x = times(&e.step_x, width % BLOCK);
-    let part_y = times(&e.step_y, height % BLOCK);
+    if width < BLOCK && height < BLOCK {
+        // One block: its corners are the range's, where the triangle's bounding box
+        // leaves rarely anything to reject; go straight to the rows.
+        fill_rows(e, &e.origin, [range.x0, range.y0], [width, height], id, sink);
+        return;
+    }
+    // Steps to the next block (used only when there is one) and to a block's far corners,
+    // for full blocks and for the last, partial one on each axis.
+    let block_x = times(&e.step_x, if width >= BLOCK { BLOCK } else { 0 });
+    let block_y = times(&e.step_y, if height >= BLOCK { BLOCK } else { 0 });
+    let (full_x, part_x) = (times(&e.step_x, last.min(width)), times(&e.step_x, width % BLOCK));
+    let (full_y, part_y) = (times(&e.step_y, last.min(height)), times(&e.step_y, height % BLOCK));
+    let corners = |x: &[T; 3], y: &[T; 3]| CornerSteps::of(&e.step_x, &e.step_y, x, y);
+    // [full or partial row of blocks][full or partial column]
+    let steps = [
+        [corners(&full_x, &full_y), corners(&part_x, &full_y)],
+        [corners(&full_x, &part_y), corners(&part_x, &part_y)],
+    ];
 
     let mut row_origin = e.origin.clone();
     let mut by = 0;
     loop {
         let h = last.min(height - by);
-        let corner_y = if h == last { &full_y } else { &part_y };
+        let rows = &steps[usize::from(h != last)];
         let mut block = row_origin.clone();
         let mut bx = 0;
         loop {
             let w = last.min(width - bx);
-            let corner_x = if w == last { &full_x } else { &part_x };
-            visit_block(
-                e,
-                &block,
-                corner_x,
-                corner_y,
-                [range.x0 + bx, range.y0 + by],
-                [w, h],
-                id,
-                sink,
-            );
+            let c = &rows[usize::from(w != last)];
+            visit_block(e, &block, c, [range.x0 + bx, range.y0 + by], [w, h], id, sink);
             if width - bx < BLOCK {
                 break;
             }
@@ -322,39 +381,24 @@ fn traverse<T: Lane, S: CoverageSink + ?Sized>(e: &Edges<T>, range: &PixelRange,
     }
 }
 
-/// One block: `origin` holds `E - bias` at its first sample `at`, `corner_x` / `corner_y`
-/// the steps to its last column / row; `size` is `[w, h]` (the last column and row,
-/// relative).
-#[allow(clippy::too_many_arguments)]
+/// One block: `origin` holds `E - bias` at its first sample `at`; `size` is `[w, h]` (the
+/// last column and row, relative). Per edge, only two corners are evaluated: the largest
+/// (all outside when it is negative) and the smallest (all inside when it is not).
 #[inline(always)]
 fn visit_block<T: Lane, S: CoverageSink + ?Sized>(
     e: &Edges<T>,
     origin: &[T; 3],
-    corner_x: &[T; 3],
-    corner_y: &[T; 3],
+    c: &CornerSteps<T>,
     at: [u32; 2],
     size: [u32; 2],
     id: u32,
     sink: &mut S,
 ) {
-    let mut all_inside = true;
-    for k in 0..3 {
-        let e00 = &origin[k];
-        let e10 = e00.plus(&corner_x[k]);
-        let e01 = e00.plus(&corner_y[k]);
-        let e11 = e10.plus(&corner_y[k]);
-        let inside = [
-            e00.non_negative(),
-            e10.non_negative(),
-            e01.non_negative(),
-            e11.non_negative(),
-        ];
-        // E is linear, so its extremes over the block's samples are at the corners.
-        if inside == [false; 4] {
-            return;
-        }
-        all_inside &= inside == [true; 4];
+    let high = add3(origin, &c.high);
+    if !T::all_non_negative(&high) {
+        return; // outside one edge at its largest
     }
+    let all_inside = T::all_non_negative(&add3(origin, &c.low));
     let [x0, y0] = at;
     let [w, h] = size;
     if all_inside {
@@ -363,16 +407,43 @@ fn visit_block<T: Lane, S: CoverageSink + ?Sized>(
         }
         return;
     }
+    fill_rows(e, origin, at, size, id, sink);
+}
+
+/// The samples of a `[w, h]` rectangle of pixels from `at`, `origin` holding `E - bias` at
+/// its first: a triangle meets a row in one interval, so each row is one span.
+#[inline(always)]
+fn fill_rows<T: Lane, S: CoverageSink + ?Sized>(
+    e: &Edges<T>,
+    origin: &[T; 3],
+    at: [u32; 2],
+    size: [u32; 2],
+    id: u32,
+    sink: &mut S,
+) {
+    let [x0, y0] = at;
+    let [w, h] = size;
     let mut row = origin.clone();
     for dy in 0..=h {
         let mut v = row.clone();
+        let mut first = None;
         for dx in 0..=w {
-            if T::all_non_negative(&v) {
-                sink.cover(x0 + dx, y0 + dy, id);
+            let inside = T::all_non_negative(&v);
+            match (inside, first) {
+                (true, None) => first = Some(dx),
+                (false, Some(f)) => {
+                    sink.cover_span(y0 + dy, x0 + f, x0 + dx - 1, id);
+                    first = None;
+                    break;
+                }
+                _ => {}
             }
             if dx < w {
                 add3_to(&mut v, &e.step_x);
             }
+        }
+        if let Some(f) = first {
+            sink.cover_span(y0 + dy, x0 + f, x0 + w, id);
         }
         if dy < h {
             add3_to(&mut row, &e.step_y);
@@ -397,7 +468,8 @@ mod tests {
     ///   E - 1 = 47 - 8 (p.x + p.y): 47 at pixel (0,0), -49 at pixel (3,3).
     /// - edge 2, (7,-1) -> (-1,-1): horizontal running left, a top edge, bias 0;
     ///   E = 8 (p.y + 1): at most 56.
-    /// - steps: L dy = 16 (edge 0), 3 columns: 48; edge 1 both ways 16, x3 = 48.
+    /// - steps: the range fits one block, so it is filled row by row with single steps:
+    ///   L dy = 16 (edge 0), edge 1 16 both ways, edge 2 16 down.
     ///
     /// So the bound is 56, first reached by edge 0 at pixel (3, 0).
     #[test]
@@ -427,5 +499,100 @@ mod tests {
         // x + y < s for samples (i + 1/2, j + 1/2): i + j <= s - 2, plus the hypotenuse's
         // samples i + j = s - 1 (x + y = s exactly: a right edge, out): s (s - 1) / 2.
         assert_eq!(c.covered_pixels(), (s * (s - 1) / 2) as usize);
+    }
+
+    /// A lane that records the largest magnitude of every value the traversal computes.
+    #[derive(Debug, Clone)]
+    struct Track(BigInt);
+
+    thread_local! {
+        static LARGEST: std::cell::RefCell<BigInt> = std::cell::RefCell::new(BigInt::zero());
+    }
+
+    fn seen(v: BigInt) -> Track {
+        LARGEST.with(|m| {
+            if v.abs() > *m.borrow() {
+                *m.borrow_mut() = v.abs();
+            }
+        });
+        Track(v)
+    }
+
+    impl Lane for Track {
+        const WIDTH: Width = Width::Big;
+        fn from_big(v: &BigInt) -> Self {
+            seen(v.clone())
+        }
+        fn zero_value() -> Self {
+            Track(BigInt::zero())
+        }
+        fn plus(&self, other: &Self) -> Self {
+            seen(&self.0 + &other.0)
+        }
+        fn add_to(&mut self, other: &Self) {
+            *self = self.plus(other);
+        }
+        fn minus(&self, other: &Self) -> Self {
+            seen(&self.0 - &other.0)
+        }
+        fn times(&self, other: &Self) -> Self {
+            seen(&self.0 * &other.0)
+        }
+        fn scaled_by(&self, k: u32) -> Self {
+            seen(&self.0 * k)
+        }
+        fn less(&self, other: &Self) -> bool {
+            self.0 < other.0
+        }
+        fn non_negative(&self) -> bool {
+            !self.0.is_negative()
+        }
+    }
+
+    /// Every value the traversal computes, recorded through [`Track`], is within the
+    /// plan's bound, and the bound is reached: on triangles whose ranges are one block,
+    /// a few blocks, and partial blocks on either axis (where the steps to a block's
+    /// corners can exceed every edge value at the range's corners).
+    #[test]
+    fn the_bound_holds_every_value_the_traversal_computes() {
+        let target = Target::new(40, 40, Convention::default()).unwrap();
+        let q = |n: i64, d: i64| Point::from_fractions(n, d, 0, 1);
+        let mut checked = 0;
+        for (k, (a, b, c)) in [
+            ((0, 0), (4, 0), (0, 4)),
+            ((-3, 5), (13, 0), (5, 12)),
+            ((1, 1), (39, 2), (20, 38)),
+            ((-50, 4), (90, 5), (4, 60)),
+            ((0, 9), (9, 0), (100, 100)),
+            ((7, -30), (8, 70), (-60, 20)),
+            // 9 and 12 px ranges: a partial block on each axis, where the hypotenuse's
+            // step to a block's far corner (7 of the 8 or 11 columns and rows) exceeds
+            // its value at any corner of the range
+            ((0, 0), (9, 0), (0, 9)),
+            ((2, 3), (14, 3), (2, 15)),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            for d in [1, 3, 7] {
+                let p = |(x, y): (i64, i64)| Point::new(q(x * d + 1, d).x, Point::from_fractions(y * d + 2, d, 0, 1).x);
+                let t = Triangle::new(p(a), p(b), p(c));
+                let Some(setup) = setup(&t, &target) else { continue };
+                let bound = bound_of(&setup.edges, &setup.range);
+                LARGEST.with(|m| *m.borrow_mut() = BigInt::zero());
+                let edges: Edges<Track> = Edges::from_big(&setup.edges);
+                let mut cov = Coverage::new(40, 40);
+                traverse(&edges, &setup.range, 0, &mut cov);
+                let largest = LARGEST.with(|m| m.borrow().clone());
+                assert!(largest <= bound.value, "case {k}, d {d}: {largest} > {}", bound.value);
+                assert_eq!(
+                    largest, bound.value,
+                    "case {k}, d {d}: the bound ({}) is reached",
+                    bound.what
+                );
+                checked += 1;
+            }
+        }
+        assert!(checked >= 15);
     }
 }
