@@ -32,29 +32,8 @@ const EXACT_LINES: usize = 1000;
 
 #[path = "../tests/common/rng.rs"]
 mod rng;
-use rng::Rng;
-
-/// `n` lines: start on the canvas, major length 1..=1000, minor length 0..=major, random
-/// signs and major axis.
-fn lines(n: usize, seed: u64) -> Vec<([i64; 2], [i64; 2])> {
-    let mut rng = Rng(seed);
-    let side = i64::from(SIDE);
-    (0..n)
-        .map(|_| {
-            let a = [rng.range(0, side - 1), rng.range(0, side - 1)];
-            let major = rng.range(1, 1000);
-            let minor = rng.range(0, major);
-            let mut sign = || if rng.next() & 1 == 0 { 1 } else { -1 };
-            let (dmaj, dmin) = (sign() * major, sign() * minor);
-            let (dx, dy) = if rng.next() & 1 == 0 {
-                (dmaj, dmin)
-            } else {
-                (dmin, dmaj)
-            };
-            (a, [a[0] + dx, a[1] + dy])
-        })
-        .collect()
-}
+#[path = "common/workloads.rs"]
+mod workloads;
 
 /// The segment between the centres of pixels `a` and `b`, on the 2^-8 grid.
 fn segment(a: [i64; 2], b: [i64; 2]) -> FixedSegment {
@@ -135,7 +114,7 @@ fn drawn(draw: impl Fn(&mut CountBuffer)) -> u64 {
 }
 
 fn bench_lines(c: &mut Criterion) {
-    let ls = lines(LINES, 1);
+    let ls = workloads::lines(LINES, i64::from(SIDE), false, 1);
     let segs: Vec<FixedSegment> = ls.iter().map(|&(a, b)| segment(a, b)).collect();
     let target = Target::new(SIDE, SIDE, Preset::D3d11.convention()).unwrap();
     let all_pixels = walk_count(&ls);

@@ -19,33 +19,9 @@ use rasterproof::model::{prepare, Model, Primitives};
 
 #[path = "../tests/common/rng.rs"]
 mod rng;
-use rng::Rng;
-
-/// `n` triangles on the 1/256 grid of a `side` canvas, vertices within `spread` px of a
-/// random centre.
-fn triangles(n: usize, side: i64, spread: i64, seed: u64) -> Vec<Triangle> {
-    let mut rng = Rng(seed);
-    let g = 256;
-    (0..n)
-        .map(|_| {
-            let (cx, cy) = (rng.below(side * g), rng.below(side * g));
-            let mut vertex = || {
-                let x = (cx + rng.below(2 * spread * g) - spread * g).clamp(0, side * g);
-                let y = (cy + rng.below(2 * spread * g) - spread * g).clamp(0, side * g);
-                Point::from_fractions(x, g, y, g)
-            };
-            Triangle::new(vertex(), vertex(), vertex())
-        })
-        .collect()
-}
-
-fn half_canvas(side: i64) -> Vec<Triangle> {
-    vec![Triangle::new(
-        Point::from_ints(0, 0),
-        Point::from_ints(side, 0),
-        Point::from_ints(0, side),
-    )]
-}
+#[path = "common/workloads.rs"]
+mod workloads;
+use workloads::{half_canvas, triangles};
 
 fn covered(model: Model, tris: &[Triangle], target: &Target) -> u64 {
     let prepared = prepare(model, &Primitives::from_triangles(tris), target).unwrap();

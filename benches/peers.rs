@@ -70,70 +70,15 @@ use tiny_skia::{BlendMode, Color, FillRule, Paint, Path, PathBuilder, Pixmap, Tr
 
 #[path = "../tests/common/rng.rs"]
 mod rng;
-use rng::Rng;
+#[path = "common/workloads.rs"]
+mod workloads;
+use workloads::{half_canvas, lines, triangles, Segment};
 
 /// Round-robin repetitions per contender.
 const REPS: usize = 9;
 
 // ---------------------------------------------------------------------------------------
 // Workloads.
-
-/// `n` triangles on the 1/256 grid of a `side` canvas, vertices within `spread` px of a
-/// random centre (as `benches/models.rs`).
-fn triangles(n: usize, side: i64, spread: i64, seed: u64) -> Vec<Triangle> {
-    let mut rng = Rng(seed);
-    let g = 256;
-    (0..n)
-        .map(|_| {
-            let (cx, cy) = (rng.below(side * g), rng.below(side * g));
-            let mut vertex = || {
-                let x = (cx + rng.below(2 * spread * g) - spread * g).clamp(0, side * g);
-                let y = (cy + rng.below(2 * spread * g) - spread * g).clamp(0, side * g);
-                Point::from_fractions(x, g, y, g)
-            };
-            Triangle::new(vertex(), vertex(), vertex())
-        })
-        .collect()
-}
-
-/// One triangle covering half of a `side` canvas (as `benches/models.rs`).
-fn half_canvas(side: i64) -> Vec<Triangle> {
-    vec![Triangle::new(
-        Point::from_ints(0, 0),
-        Point::from_ints(side, 0),
-        Point::from_ints(0, side),
-    )]
-}
-
-/// A line between two pixel addresses.
-type Segment = ([i64; 2], [i64; 2]);
-
-/// `n` lines as `benches/lines.rs` draws them: start on the canvas, major length 1..=1000,
-/// minor length 0..=major, random signs and major axis; with `inside`, the far end is drawn
-/// again until it is on the canvas too.
-fn lines(n: usize, side: i64, inside: bool, seed: u64) -> Vec<Segment> {
-    let mut rng = Rng(seed);
-    (0..n)
-        .map(|_| {
-            let a = [rng.range(0, side - 1), rng.range(0, side - 1)];
-            loop {
-                let major = rng.range(1, 1000);
-                let minor = rng.range(0, major);
-                let mut sign = || if rng.next() & 1 == 0 { 1 } else { -1 };
-                let (dmaj, dmin) = (sign() * major, sign() * minor);
-                let (dx, dy) = if rng.next() & 1 == 0 {
-                    (dmaj, dmin)
-                } else {
-                    (dmin, dmaj)
-                };
-                let b = [a[0] + dx, a[1] + dy];
-                if !inside || b.iter().all(|v| (0..side).contains(v)) {
-                    break (a, b);
-                }
-            }
-        })
-        .collect()
-}
 
 // ---------------------------------------------------------------------------------------
 // The target: one cell per pixel, +1 per covered pixel.

@@ -56,44 +56,15 @@
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::{Signed, ToPrimitive, Zero};
+use num_traits::{Signed, Zero};
 
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::geom::Point;
-use crate::num::plan::{scale_of, scaled, Bound, Lane, Plan, Width};
+use crate::num::plan::{ceil_div, floor_div, index, indices_above, scale_of, scaled, Bound, Lane, Plan, Width};
 
 /// The four half-planes `su u + sv v <= r` of the diamond, in [`super::diamond`]'s order.
 const PLANES: [(i8, i8); 4] = [(1, 1), (1, -1), (-1, 1), (-1, -1)];
-
-/// `floor(a / b)` for `b > 0`.
-fn floor_div(a: &BigInt, b: &BigInt) -> BigInt {
-    a.div_floor(b)
-}
-
-/// `ceil(a / b)` for `b > 0`.
-fn ceil_div(a: &BigInt, b: &BigInt) -> BigInt {
-    -(-a).div_floor(b)
-}
-
-/// An index known to lie on (or next to) the canvas.
-fn index(v: &BigInt) -> i64 {
-    v.to_i64().expect("an index clamped to the canvas")
-}
-
-/// The indices of `first..=last` where `N(k) = n_first + (k - first) inc > v`, for
-/// `inc != 0`: a suffix when `inc > 0`, a prefix when `inc < 0`, as an inclusive pair
-/// (empty when the first exceeds the second).
-fn indices_above(n_first: &BigInt, inc: &BigInt, first: i64, last: i64, v: &BigInt) -> (i64, i64) {
-    let span = BigInt::from(last - first);
-    if inc.is_positive() {
-        let k: BigInt = (floor_div(&(v - n_first), inc) + BigInt::from(1)).clamp(BigInt::zero(), &span + 1);
-        (first + index(&k), last)
-    } else {
-        let k: BigInt = (ceil_div(&(n_first - v), &-inc) - BigInt::from(1)).clamp(BigInt::from(-1), span);
-        (first, first + index(&k))
-    }
-}
 
 /// What the test and the walk hold in the planned width (local coordinates, `L` units).
 #[derive(Debug, Clone)]

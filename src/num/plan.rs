@@ -220,6 +220,38 @@ pub fn scaled(v: &BigRational, scale: &BigInt) -> BigInt {
     q
 }
 
+/// `floor(a / b)` for `b > 0` (the planned engines' setup arithmetic).
+pub(crate) fn floor_div(a: &BigInt, b: &BigInt) -> BigInt {
+    a.div_floor(b)
+}
+
+/// `ceil(a / b)` for `b > 0`.
+pub(crate) fn ceil_div(a: &BigInt, b: &BigInt) -> BigInt {
+    -(-a).div_floor(b)
+}
+
+/// A local index known to lie within a primitive's range (or one past it).
+pub(crate) fn index(v: &BigInt) -> i64 {
+    v.to_i64().expect("an index clamped to the range")
+}
+
+/// The indices of `first..=last` where `N(k) = n_first + (k - first) inc > v`, for
+/// `inc != 0`: a suffix when `inc > 0`, a prefix when `inc < 0`, as an inclusive pair
+/// (empty when the first exceeds the second). Shared by the planned polygon rows and the
+/// planned line's candidate walk.
+pub(crate) fn indices_above(n_first: &BigInt, inc: &BigInt, first: i64, last: i64, v: &BigInt) -> (i64, i64) {
+    let span = BigInt::from(last - first);
+    if inc.is_positive() {
+        // (k - first) inc > v - n_first  <=>  k - first >= floor((v - n_first) / inc) + 1
+        let k: BigInt = (floor_div(&(v - n_first), inc) + BigInt::one()).clamp(BigInt::zero(), &span + 1);
+        (first + index(&k), last)
+    } else {
+        // (k - first) (-inc) < n_first - v  <=>  k - first <= ceil((n_first - v) / -inc) - 1
+        let k: BigInt = (ceil_div(&(n_first - v), &-inc) - BigInt::one()).clamp(-BigInt::one(), span);
+        (first, first + index(&k))
+    }
+}
+
 /// The arithmetic of a planned engine, implemented by every [`Width`]'s type: the engines
 /// are generic over it, so one traversal is written once and runs in each width.
 ///

@@ -45,45 +45,14 @@ use std::cmp::Ordering;
 
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{Signed, ToPrimitive, Zero};
+use num_traits::Zero;
 
 use super::{closed_edges, Crossing, Sweep};
 use crate::convention::{Target, TieRule};
 use crate::coverage::CoverageSink;
 use crate::geom::{FillRule, Point, Polygon};
-use crate::num::plan::{scale_of, scaled, Bound, Lane, Plan, Width};
+use crate::num::plan::{ceil_div, floor_div, index, indices_above, scale_of, scaled, Bound, Lane, Plan, Width};
 use crate::raster::{exact_sample_range, PixelRange};
-
-/// `floor(a / b)` for `b > 0`.
-fn floor_div(a: &BigInt, b: &BigInt) -> BigInt {
-    a.div_floor(b)
-}
-
-/// `ceil(a / b)` for `b > 0`.
-fn ceil_div(a: &BigInt, b: &BigInt) -> BigInt {
-    -(-a).div_floor(b)
-}
-
-/// A local row (or pixel) index known to lie within the range (or one past it).
-fn index(v: &BigInt) -> i64 {
-    v.to_i64().expect("an index clamped to the pixel range")
-}
-
-/// The rows of `first..=last` where `N(j) = n_first + (j - first) inc > v`, for `inc != 0`:
-/// a suffix `(s, last)` when `inc > 0`, a prefix `(first, e)` when `inc < 0`, returned as
-/// an inclusive pair (empty when the first exceeds the second).
-fn rows_above(n_first: &BigInt, inc: &BigInt, first: i64, last: i64, v: &BigInt) -> (i64, i64) {
-    let span = BigInt::from(last - first);
-    if inc.is_positive() {
-        // (j - first) inc > v - n_first  <=>  j - first >= floor((v - n_first) / inc) + 1
-        let k: BigInt = (floor_div(&(v - n_first), inc) + BigInt::from(1)).clamp(BigInt::zero(), &span + 1);
-        (first + index(&k), last)
-    } else {
-        // (j - first) (-inc) < n_first - v  <=>  j - first <= ceil((n_first - v) / -inc) - 1
-        let k: BigInt = (ceil_div(&(n_first - v), &-inc) - BigInt::from(1)).clamp(BigInt::from(-1), span);
-        (first, first + index(&k))
-    }
-}
 
 /// One edge of the table, independent of the width: its rows, the constant thresholds
 /// outside its middle rows, and the DDA's start and integer step.
@@ -218,14 +187,14 @@ fn table_edge(
     let (m0, m1, lead, trail) = match inc.sign() {
         num_bigint::Sign::Plus => {
             // N grows: N <= 0 (threshold 0), then the middle, then N > w d (w + 1).
-            let (s0, _) = rows_above(&n_first, &inc, first, last, &zero);
-            let (sw, _) = rows_above(&n_first, &inc, first, last, &wd);
+            let (s0, _) = indices_above(&n_first, &inc, first, last, &zero);
+            let (sw, _) = indices_above(&n_first, &inc, first, last, &wd);
             (s0, sw - 1, 0, w + 1)
         }
         num_bigint::Sign::Minus => {
             // N falls: N > w d (w + 1), then the middle, then N <= 0 (threshold 0).
-            let (_, ew) = rows_above(&n_first, &inc, first, last, &wd);
-            let (_, e0) = rows_above(&n_first, &inc, first, last, &zero);
+            let (_, ew) = indices_above(&n_first, &inc, first, last, &wd);
+            let (_, e0) = indices_above(&n_first, &inc, first, last, &zero);
             (ew + 1, e0, w + 1, 0)
         }
         num_bigint::Sign::NoSign => {
@@ -516,7 +485,7 @@ mod tests {
                 for v in -12..=12i64 {
                     for (first, last) in [(0i64, 0i64), (0, 5), (3, 9)] {
                         let rows: Vec<i64> = (first..=last).filter(|j| n_first + (j - first) * inc > v).collect();
-                        let (lo, hi) = rows_above(&n_first.into(), &inc.into(), first, last, &v.into());
+                        let (lo, hi) = indices_above(&n_first.into(), &inc.into(), first, last, &v.into());
                         let got: Vec<i64> = (lo..=hi).collect();
                         assert_eq!(got, rows, "n_first {n_first} inc {inc} v {v} rows {first}..={last}");
                         assert!((first..=last + 1).contains(&lo) && (first - 1..=last).contains(&hi));
