@@ -423,27 +423,22 @@ fn fill_rows<T: Lane, S: CoverageSink + ?Sized>(
 ) {
     let [x0, y0] = at;
     let [w, h] = size;
+    debug_assert!(w < BLOCK, "rows are at most a block wide");
     let mut row = origin.clone();
     for dy in 0..=h {
+        // The row's inside samples as a bit mask, without a branch per pixel; they form
+        // one interval, so the mask's lowest and highest bits are the span's ends.
         let mut v = row.clone();
-        let mut first = None;
+        let mut mask = 0u32;
         for dx in 0..=w {
-            let inside = T::all_non_negative(&v);
-            match (inside, first) {
-                (true, None) => first = Some(dx),
-                (false, Some(f)) => {
-                    sink.cover_span(y0 + dy, x0 + f, x0 + dx - 1, id);
-                    first = None;
-                    break;
-                }
-                _ => {}
-            }
+            mask |= u32::from(T::all_non_negative(&v)) << dx;
             if dx < w {
                 add3_to(&mut v, &e.step_x);
             }
         }
-        if let Some(f) = first {
-            sink.cover_span(y0 + dy, x0 + f, x0 + w, id);
+        if mask != 0 {
+            let (first, last) = (mask.trailing_zeros(), 31 - mask.leading_zeros());
+            sink.cover_span(y0 + dy, x0 + first, x0 + last, id);
         }
         if dy < h {
             add3_to(&mut row, &e.step_y);
