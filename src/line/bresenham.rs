@@ -3,7 +3,7 @@
 //! dx and dy), one integer add per pixel. The direction of travel is kept (no swapping of
 //! ends), so `a -> b` and `b -> a` may differ, and only at exact ties.
 
-use super::{cover_if_on_canvas, Axes, BresenhamTie};
+use super::{Axes, BresenhamTie};
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 
@@ -49,7 +49,10 @@ pub fn pixels(from: [i64; 2], to: [i64; 2], tie: BresenhamTie) -> Vec<[i64; 2]> 
     out
 }
 
-/// Draws the line into `sink` (pixels off the canvas are skipped).
+/// Draws the line into `sink` (pixels off the canvas are skipped): [`walk`]'s pixels, in
+/// one loop with the tie folded into a threshold (`Stay` steps the minor axis when
+/// `d >= 1`, `Step` when `d >= 0`) and the canvas test on unsigned coordinates.
+#[inline]
 pub fn draw<S: CoverageSink + ?Sized>(
     from: [i64; 2],
     to: [i64; 2],
@@ -58,5 +61,64 @@ pub fn draw<S: CoverageSink + ?Sized>(
     target: &Target,
     sink: &mut S,
 ) {
-    walk(from, to, tie, |p, _| cover_if_on_canvas(p, id, target, sink));
+    let axes = Axes::of(from, to);
+    let (mut major, mut minor) = axes.split(from);
+    let threshold = match tie {
+        BresenhamTie::Stay => 1,
+        BresenhamTie::Step => 0,
+    };
+    let (diagonal, straight) = (2 * (axes.minor_len - axes.major_len), 2 * axes.minor_len);
+    let mut d = 2 * axes.minor_len - axes.major_len;
+    let (width, height) = (u64::from(target.width), u64::from(target.height));
+    for k in 0..=axes.major_len {
+        let [x, y] = axes.join(major, minor);
+        // a negative coordinate wraps to a huge u64: one comparison per axis
+        #[allow(clippy::cast_sign_loss, clippy::cast_possible_truncation)]
+        if (x as u64) < width && (y as u64) < height {
+            sink.cover(x as u32, y as u32, id);
+        }
+        if k == axes.major_len {
+            break;
+        }
+        if d >= threshold {
+            minor += axes.minor_sign;
+            d += diagonal;
+        } else {
+            d += straight;
+        }
+        major += axes.major_sign;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::convention::Convention;
+    use crate::coverage::Coverage;
+
+    /// `draw` covers exactly `walk`'s pixels that lie on the canvas, for lines in every
+    /// octant, partly or wholly off a 12x9 canvas, both ties.
+    #[test]
+    fn draw_is_walk_on_the_canvas() {
+        let target = Target::new(12, 9, Convention::default()).unwrap();
+        let ends: Vec<[i64; 2]> = (-3..15)
+            .step_by(2)
+            .flat_map(|x| (-4..13).step_by(3).map(move |y| [x, y]))
+            .collect();
+        for &a in &ends {
+            for &b in &ends {
+                for tie in [BresenhamTie::Stay, BresenhamTie::Step] {
+                    let mut drawn = Coverage::new(12, 9);
+                    draw(a, b, tie, 0, &target, &mut drawn);
+                    let mut walked = Coverage::new(12, 9);
+                    for [x, y] in pixels(a, b, tie) {
+                        if (0..12).contains(&x) && (0..9).contains(&y) {
+                            walked.cover(u32::try_from(x).unwrap(), u32::try_from(y).unwrap(), 0);
+                        }
+                    }
+                    assert_eq!(drawn, walked, "{a:?} -> {b:?} {tie:?}");
+                }
+            }
+        }
+    }
 }
