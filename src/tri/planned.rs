@@ -123,14 +123,8 @@ fn setup(tri: &Triangle, target: &Target) -> Option<Setup> {
     };
     for (k, (from, to)) in [(&a, &b), (&b, &c3), (&c3, &a)].into_iter().enumerate() {
         let [dx, dy] = edge(from, to);
-        let bias = if rule.is_inclusive(
-            dx.sign().cmp(&num_bigint::Sign::NoSign),
-            dy.sign().cmp(&num_bigint::Sign::NoSign),
-        ) {
-            0
-        } else {
-            1
-        };
+        let zero = BigInt::zero();
+        let bias = i32::from(!rule.is_inclusive(dx.cmp(&zero), dy.cmp(&zero)));
         edges.origin[k] = &from[1] * &dx - &from[0] * &dy - bias;
         // A step the traversal never takes (a range one pixel wide or high) is left at
         // zero, so that it need not fit the width.
