@@ -74,6 +74,92 @@ impl TieRule {
     }
 }
 
+/// Every tie rule a renderer may follow: the two the models render ([`TieRule`]), the two
+/// mirrored ones, and "every edge owns its samples" / "no edge does". What
+/// [`crate::oracle`] names when it explains a pixel another renderer decided differently.
+///
+/// The four directional rules read as moving the sample by `(±ε, ±ε²)`: top-left
+/// `(+ε, +ε²)`, bottom-left `(+ε, -ε²)`, top-right `(-ε, +ε²)`, bottom-right `(-ε, -ε²)`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum AnyTieRule {
+    /// Left and top edges own their samples (D3D11, Vulkan).
+    TopLeft,
+    /// Right and top edges.
+    TopRight,
+    /// Left and bottom edges (GL in a y-down image).
+    BottomLeft,
+    /// Right and bottom edges.
+    BottomRight,
+    /// Every edge owns its samples: a sample on a shared edge is covered twice.
+    AllInclusive,
+    /// No edge does: a sample on a shared edge is covered by neither triangle.
+    AllExclusive,
+}
+
+impl AnyTieRule {
+    /// Every rule, the models' two first.
+    pub const ALL: [AnyTieRule; 6] = [
+        AnyTieRule::TopLeft,
+        AnyTieRule::BottomLeft,
+        AnyTieRule::TopRight,
+        AnyTieRule::BottomRight,
+        AnyTieRule::AllInclusive,
+        AnyTieRule::AllExclusive,
+    ];
+
+    /// Its name (`top-right`, `all-inclusive`, ...).
+    pub fn name(self) -> &'static str {
+        match self {
+            AnyTieRule::TopLeft => "top-left",
+            AnyTieRule::TopRight => "top-right",
+            AnyTieRule::BottomLeft => "bottom-left",
+            AnyTieRule::BottomRight => "bottom-right",
+            AnyTieRule::AllInclusive => "all-inclusive",
+            AnyTieRule::AllExclusive => "all-exclusive",
+        }
+    }
+
+    /// Whether an edge `(dx, dy) = b - a`, oriented so the interior is `E > 0`, owns the
+    /// samples on it. With `E(p) = (p.x - a.x) dy - (p.y - a.y) dx`, moving the sample by
+    /// `(sx ε, sy ε²)` changes `E` by `sx ε dy - sy ε² dx`; the edge owns its samples when
+    /// that is positive.
+    ///
+    /// ```
+    /// use std::cmp::Ordering::*;
+    /// use rasterproof::convention::{AnyTieRule, TieRule};
+    /// // A left edge (going down the screen) belongs to the left rules only.
+    /// assert!(AnyTieRule::TopLeft.is_inclusive(Equal, Greater));
+    /// assert!(!AnyTieRule::TopRight.is_inclusive(Equal, Greater));
+    /// // A bottom edge (horizontal, running left to right) to the bottom rules.
+    /// assert!(AnyTieRule::BottomRight.is_inclusive(Greater, Equal));
+    /// assert!(!AnyTieRule::TopRight.is_inclusive(Greater, Equal));
+    /// ```
+    pub fn is_inclusive(self, dx: Ordering, dy: Ordering) -> bool {
+        let (sx, sy) = match self {
+            AnyTieRule::AllInclusive => return true,
+            AnyTieRule::AllExclusive => return false,
+            AnyTieRule::TopLeft => (Ordering::Greater, Ordering::Greater),
+            AnyTieRule::BottomLeft => (Ordering::Greater, Ordering::Less),
+            AnyTieRule::TopRight => (Ordering::Less, Ordering::Greater),
+            AnyTieRule::BottomRight => (Ordering::Less, Ordering::Less),
+        };
+        // sign(sx * dy), or when dy is 0, sign(-sy * dx).
+        match dy {
+            Ordering::Equal => dx != Ordering::Equal && (dx == Ordering::Less) == (sy == Ordering::Greater),
+            _ => (dy == Ordering::Greater) == (sx == Ordering::Greater),
+        }
+    }
+}
+
+impl From<TieRule> for AnyTieRule {
+    fn from(rule: TieRule) -> AnyTieRule {
+        match rule {
+            TieRule::TopLeft => AnyTieRule::TopLeft,
+            TieRule::BottomLeft => AnyTieRule::BottomLeft,
+        }
+    }
+}
+
 /// Where the sample of pixel (i, j) sits.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum PixelCentre {
@@ -234,5 +320,66 @@ impl Target {
             height,
             convention,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SIGNS: [Ordering; 3] = [Ordering::Less, Ordering::Equal, Ordering::Greater];
+
+    fn int(o: Ordering) -> i64 {
+        match o {
+            Ordering::Less => -1,
+            Ordering::Equal => 0,
+            Ordering::Greater => 1,
+        }
+    }
+
+    #[test]
+    fn the_models_rules_read_the_same_in_both_enums() {
+        for rule in [TieRule::TopLeft, TieRule::BottomLeft] {
+            for dx in SIGNS {
+                for dy in SIGNS {
+                    assert_eq!(
+                        AnyTieRule::from(rule).is_inclusive(dx, dy),
+                        rule.is_inclusive(dx, dy),
+                        "{rule:?} ({dx:?}, {dy:?})"
+                    );
+                    assert_eq!(AnyTieRule::from(rule).name(), rule.name());
+                }
+            }
+        }
+    }
+
+    /// The directional rules equal the moved sample, computed: `E` at the sample moved by
+    /// `(sx ε, sy ε²)` with ε = 1/1000, for an edge through the sample (E = 0 there).
+    #[test]
+    fn directional_rules_are_the_moved_sample() {
+        let moves = [
+            (AnyTieRule::TopLeft, 1, 1),
+            (AnyTieRule::BottomLeft, 1, -1),
+            (AnyTieRule::TopRight, -1, 1),
+            (AnyTieRule::BottomRight, -1, -1),
+        ];
+        for (rule, sx, sy) in moves {
+            for dx in SIGNS {
+                for dy in SIGNS {
+                    if dx == Ordering::Equal && dy == Ordering::Equal {
+                        continue;
+                    }
+                    // E(p + m) - E(p) = mx * dy - my * dx, in units of 10^-6 (ε = 10^-3).
+                    let change = sx * 1000 * int(dy) - sy * int(dx);
+                    assert_eq!(rule.is_inclusive(dx, dy), change > 0, "{rule:?} ({dx:?}, {dy:?})");
+                }
+            }
+        }
+        for dx in SIGNS {
+            for dy in SIGNS {
+                assert!(AnyTieRule::AllInclusive.is_inclusive(dx, dy));
+                assert!(!AnyTieRule::AllExclusive.is_inclusive(dx, dy));
+            }
+        }
     }
 }

@@ -11,7 +11,8 @@
 //!   sampled at `(i + 1/2, j + 1/2)` (or `(i, j)`, D3D9 style).
 //! - Scene numbers are exact rationals (`0.1` is 1/10).
 //! - Hardware-style models snap vertices to a 2^-S pixel grid (S = 8 by default),
-//!   round-to-nearest, ties to even (or half away from zero, as the Khronos CTS does).
+//!   round-to-nearest, ties to even (or half away from zero, as the Khronos CTS does; or
+//!   floor, ceiling, towards zero).
 //! - Edge function `E(p) = (p.x - a.x)(b.y - a.y) - (p.y - a.y)(b.x - a.x)`; triangles of
 //!   either winding are oriented so the interior is `E > 0`; zero-area triangles cover
 //!   nothing.
@@ -46,6 +47,8 @@
 //! | where a pixel's sample sits; which pixels a box covers | [`raster`] |
 //! | check an invariant on any coverage | `check::check_*` |
 //! | clip exactly or in floats | [`clip`] |
+//! | compare another renderer's output with the exact answer, explain each difference | [`oracle::compare()`], [`oracle::Theirs`] |
+//! | explain one pixel of a scene | [`oracle::explain_pixel`] |
 //!
 //! The layers and the pipeline a scene takes from file to coverage are drawn in
 //! ARCHITECTURE.md at the top of the repository.
@@ -53,7 +56,8 @@
 //! ## Features
 //! - `proptest`: the strategies in `strategy` (random triangles, spade meshes, tie-heavy
 //!   inputs) for your own property tests, and `harness`: the counterexample search for
-//!   your own rasterizer and the invariant suite behind `rasterproof check`.
+//!   your own rasterizer and the invariant suite behind `rasterproof check` (run on a
+//!   rayon thread pool, sharded, into a report: `harness::suite::Plan`).
 //! - `cli` (default): the `rasterproof` command; implies `proptest`.
 
 #![forbid(unsafe_code)]
@@ -73,6 +77,7 @@ pub mod interp;
 pub mod line;
 pub mod model;
 pub mod num;
+pub mod oracle;
 pub mod raster;
 pub mod scene;
 #[cfg(feature = "proptest")]

@@ -9,7 +9,6 @@
 
 mod cli;
 
-use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
@@ -31,34 +30,32 @@ enum Command {
     /// which fixed-width models are exact for the scene.
     #[command(after_help = cli::EXIT_CODES)]
     Plan(cli::plan::Options),
+    /// Compare another renderer's output (PNG or render's JSON) with the oracle; classify
+    /// and explain every differing pixel exactly.
+    #[command(after_help = cli::EXIT_CODES)]
+    Compare(cli::compare::Options),
+    /// Explain one pixel: its exact sample, each nearby primitive's edge values and
+    /// flags, and what every model decides.
+    #[command(after_help = cli::EXIT_CODES)]
+    Explain(cli::explain::Options),
+    /// Differential testing of another renderer (a program): random scenes rendered by it
+    /// and compared with the oracle; each distinct failure shrunk to a minimal scene.
+    #[command(after_help = cli::EXIT_CODES)]
+    Hunt(cli::hunt::Options),
     /// Clip a scene's primitives against its clip window; print them exactly.
     #[command(after_help = cli::EXIT_CODES)]
     Clip(cli::clip::Options),
     /// Flood fill: the 4- or 8-connected region of one pixel's colour in a PNG.
     #[command(after_help = cli::EXIT_CODES)]
     Flood(cli::flood::Options),
-    /// Run the invariant suite on random cases; print the table, a legend of its terms,
-    /// and the verdict.
+    /// Run the invariant suite on random cases (on N threads, one shard, within a time
+    /// budget); print the table, its findings, a legend of its terms, and the verdict.
     #[command(after_help = cli::EXIT_CODES)]
-    Check {
-        /// Number of random cases.
-        #[arg(long, default_value_t = 256)]
-        cases: u64,
-        /// Seed of the case generator (same seed, same cases).
-        #[arg(long, default_value_t = 0)]
-        seed: u64,
-        /// Write each case an exact or integer model failed as a scene file (and a .txt
-        /// explanation) into this folder.
-        #[arg(long, value_name = "DIR")]
-        out: Option<PathBuf>,
-        /// With --out: also write the float models' violations (the measured trade; many
-        /// files).
-        #[arg(long, requires = "out")]
-        out_float: bool,
-        /// Hide the progress bar.
-        #[arg(long)]
-        quiet: bool,
-    },
+    Check(cli::check::Options),
+    /// Merge the reports of a run's shards (check --shard K/N --report) into the whole
+    /// run's; print it as check does.
+    #[command(after_help = cli::EXIT_CODES)]
+    CheckMerge(cli::check::MergeOptions),
 }
 
 fn main() -> ExitCode {
@@ -66,23 +63,13 @@ fn main() -> ExitCode {
     let result = match args.command {
         Command::Render(options) => cli::render::run(&options),
         Command::Plan(options) => cli::plan::run(&options),
+        Command::Compare(options) => cli::compare::run(&options),
+        Command::Explain(options) => cli::explain::run(&options),
+        Command::Hunt(options) => cli::hunt::run(&options),
         Command::Clip(options) => cli::clip::run(&options),
         Command::Flood(options) => cli::flood::run(&options),
-        Command::Check {
-            cases,
-            seed,
-            out,
-            out_float,
-            quiet,
-        } => cli::check::run(
-            cases,
-            seed,
-            cli::check::Written {
-                dir: out.as_deref(),
-                float: out_float,
-            },
-            quiet,
-        ),
+        Command::Check(options) => cli::check::run(&options),
+        Command::CheckMerge(options) => cli::check::merge(&options),
     };
     match result {
         Ok(code) => code,

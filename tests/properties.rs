@@ -46,6 +46,26 @@ proptest! {
         agree(&[t], &target(CANVAS, p))?;
     }
 
+    /// Invariant 3 under every snapping rounding (the directed ones too: floor, ceiling,
+    /// towards zero) and every subpixel precision: fixed and scanline == exact-snapped.
+    #[test]
+    fn integer_models_equal_exact_snapped_under_every_rounding(
+        ts in prop::collection::vec(any_triangle(CANVAS), 1..4),
+        rounding in prop::sample::select(rasterproof::convention::Rounding::ALL.to_vec()),
+        bits in 1u32..=16,
+    ) {
+        let mut conv = Preset::D3d11.convention();
+        conv.rounding = rounding;
+        conv.subpixel_bits = bits;
+        let target = Target::new(CANVAS, CANVAS, conv).unwrap();
+        let exact = render_triangles(Model::ExactSnappedPlain, &ts, &target).unwrap();
+        for model in [Model::Fixed, Model::Scanline, Model::ExactSnapped] {
+            if let Ok(c) = render_triangles(model, &ts, &target) {
+                ok(check_agreement("exact-snapped-plain", &exact, model.name(), &c, &ts, &target))?;
+            }
+        }
+    }
+
     /// Invariant 3 far from the origin, on the largest canvas.
     #[test]
     fn fixed_equals_exact_snapped_far_from_origin(t in triangle(Scale::FarFromOrigin, MAX_CANVAS), p in preset()) {

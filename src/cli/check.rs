@@ -1,87 +1,268 @@
-//! `rasterproof check`: the invariant suite ([`rasterproof::harness::suite`]) on seeded
-//! random cases, with a progress bar, the failing cases written to `--out` (the exact and
-//! integer models' failures; the float models' too with `--out-float`), and the table with
-//! its legend.
+//! `rasterproof check` and `rasterproof check-merge`: the invariant suite
+//! ([`rasterproof::harness::suite`]) on seeded random cases — on several threads, one
+//! shard of the run, within a time budget — with a progress bar, the failing cases written
+//! to `--out` (the exact and integer models' failures; the float models' too with
+//! `--out-float`), the table with its findings and legend, and the report as JSON
+//! (`--report`) and JUnit XML (`--junit`); `check-merge` merges shard reports into the
+//! whole run's.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Duration;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use rasterproof::check::Violation;
-use rasterproof::harness::{generate, run_case, Outcome, Tally};
+use rasterproof::harness::suite::{Hooks, Plan, Report, SceneFiles, Shard, MAX_JOBS};
+use rasterproof::harness::CaseRun;
 use rasterproof::scene::Scene;
 
-use super::print_stdout;
+use super::{print_stdout, Outputs};
 
-/// Which failing cases `--out` writes.
-#[derive(Debug, Clone, Copy)]
-pub struct Written<'a> {
-    /// `--out`: the folder; `None` writes nothing.
-    pub dir: Option<&'a Path>,
-    /// `--out-float`: the float models' violations too, not only the fatal ones.
-    pub float: bool,
+/// What `check` was asked to do.
+#[derive(clap::Args)]
+pub struct Options {
+    /// Number of random cases of the whole run (0..N), whatever the shard.
+    #[arg(long, default_value_t = 256)]
+    cases: u64,
+    /// Seed of the case generator (same seed, same cases).
+    #[arg(long, default_value_t = 0)]
+    seed: u64,
+    /// Write each case an exact or integer model failed as a scene file (and a .txt
+    /// explanation) into this folder.
+    #[arg(long, value_name = "DIR")]
+    out: Option<PathBuf>,
+    /// With --out: also write the float models' violations (the measured trade; many
+    /// files).
+    #[arg(long, requires = "out")]
+    out_float: bool,
+    /// Hide the progress bar.
+    #[arg(long)]
+    quiet: bool,
+    /// Run the cases on N threads (1..=1024); the results do not depend on N.
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = parse_jobs)]
+    jobs: usize,
+    /// Run shard K of N only: the cases k with k mod N = K - 1 (1 <= K <= N). The N
+    /// shards' reports merge (check-merge) into the report of the whole run.
+    #[arg(long, value_name = "K/N", value_parser = parse_shard)]
+    shard: Option<Shard>,
+    /// Start no case after this much time (90s, 5m, 1h, 1h30m; units ms, s, m, h) and
+    /// report the cases that ran (the first of the shard's, in order).
+    #[arg(long, value_name = "DURATION", value_parser = parse_duration)]
+    time: Option<Duration>,
+    /// Write the report as JSON: seed, shard, cases, every row, the findings and every
+    /// failing case with its scene and explanation (schema: README, `check` section).
+    /// Ctrl-C stops the run at the next case and still writes the report of those done.
+    #[arg(long, value_name = "FILE.json")]
+    report: Option<PathBuf>,
+    /// Write the result as JUnit XML: one test case per invariant and model, failed when an
+    /// exact or integer model violated it.
+    #[arg(long, value_name = "FILE.xml")]
+    junit: Option<PathBuf>,
 }
 
-impl Written<'_> {
-    /// Whether the failing outcome `o` is written.
-    fn wants(&self, o: &Outcome) -> bool {
-        o.is_fatal() || self.float
+/// What `check-merge` was asked to do.
+#[derive(clap::Args)]
+pub struct MergeOptions {
+    /// The reports of the shards (`check --shard K/N --report FILE.json`) of one run.
+    #[arg(required = true, value_name = "REPORT.json")]
+    reports: Vec<PathBuf>,
+    /// Write the merged report as JSON.
+    #[arg(long, value_name = "FILE.json")]
+    report: Option<PathBuf>,
+    /// Write the merged result as JUnit XML.
+    #[arg(long, value_name = "FILE.xml")]
+    junit: Option<PathBuf>,
+}
+
+/// `--jobs N`: 1..=[`MAX_JOBS`].
+fn parse_jobs(s: &str) -> Result<usize, String> {
+    match s.parse::<usize>() {
+        Ok(n) if (1..=MAX_JOBS).contains(&n) => Ok(n),
+        _ => Err(format!("expected a number of threads in 1..={MAX_JOBS}")),
     }
 }
 
-/// Runs `cases` cases of the suite seeded `seed`, writes the failures `out` asks for and
-/// prints the report; exit 1 when an exact or integer model failed.
-pub fn run(cases: u64, seed: u64, out: Written<'_>, quiet: bool) -> Result<ExitCode, String> {
-    if let Some(dir) = out.dir {
+/// `--shard K/N`.
+fn parse_shard(s: &str) -> Result<Shard, String> {
+    s.parse()
+}
+
+/// `--time DURATION`: one or more `<integer><unit>`, unit `ms`, `s`, `m` or `h`.
+fn parse_duration(s: &str) -> Result<Duration, String> {
+    let bad = || "expected a duration such as 90s, 5m, 1h or 1h30m (units ms, s, m, h)".to_string();
+    let mut total = Duration::ZERO;
+    let mut rest = s.trim();
+    if rest.is_empty() {
+        return Err(bad());
+    }
+    while !rest.is_empty() {
+        let digits = rest.find(|c: char| !c.is_ascii_digit()).ok_or_else(bad)?;
+        let n: u64 = rest[..digits].parse().map_err(|_| bad())?;
+        rest = &rest[digits..];
+        let unit_len = rest.find(|c: char| c.is_ascii_digit()).unwrap_or(rest.len());
+        let part = match &rest[..unit_len] {
+            "ms" => Some(Duration::from_millis(n)),
+            "s" => Some(Duration::from_secs(n)),
+            "m" => n.checked_mul(60).map(Duration::from_secs),
+            "h" => n.checked_mul(3600).map(Duration::from_secs),
+            _ => return Err(bad()),
+        };
+        total = part
+            .and_then(|p| total.checked_add(p))
+            .ok_or_else(|| "too long a duration".to_string())?;
+        rest = &rest[unit_len..];
+    }
+    Ok(total)
+}
+
+/// Fails early, before a long run, when an output cannot be written: `--report` and
+/// `--junit` name one file, or one is a folder or in a folder that does not exist.
+/// [`Outputs`] still checks everything when it writes.
+fn writable_outputs(json: Option<&Path>, junit: Option<&Path>) -> Result<(), String> {
+    if let (Some(a), Some(b)) = (json, junit) {
+        if a == b {
+            return Err(format!("--report and --junit: both name {}", a.display()));
+        }
+    }
+    json.into_iter().chain(junit).try_for_each(writable)
+}
+
+/// See [`writable_outputs`].
+fn writable(path: &Path) -> Result<(), String> {
+    if path.is_dir() {
+        return Err(format!("{}: cannot write: it is a folder", path.display()));
+    }
+    match path.parent() {
+        Some(dir) if !dir.as_os_str().is_empty() && !dir.is_dir() => {
+            Err(format!("{}: cannot write: no folder {}", path.display(), dir.display()))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// Runs the suite as `o` asks, writes the failures `--out` asks for, prints the report
+/// and writes `--report` and `--junit`; exit 1 when an exact or integer model failed.
+pub fn run(o: &Options) -> Result<ExitCode, String> {
+    writable_outputs(o.report.as_deref(), o.junit.as_deref())?;
+    if let Some(dir) = &o.out {
         std::fs::create_dir_all(dir).map_err(|e| format!("--out {}: cannot create: {e}", dir.display()))?;
     }
-    let bar = if quiet {
+    let plan = Plan {
+        seed: o.seed,
+        cases: o.cases,
+        shard: o.shard.unwrap_or(Shard::WHOLE),
+        jobs: o.jobs,
+        budget: o.time,
+        scene_files: o.out.as_ref().map(|dir| SceneFiles {
+            dir: dir.clone(),
+            float: o.out_float,
+        }),
+    };
+    let bar = if o.quiet {
         ProgressBar::hidden()
     } else {
-        ProgressBar::new(cases)
+        ProgressBar::new(plan.case_count())
     };
     bar.set_style(
         ProgressStyle::with_template("{bar:40} {pos}/{len} cases, {elapsed} ({eta} left)").expect("static template"),
     );
-    let mut tally = Tally::new(seed);
-    for k in 0..cases {
-        let case = generate(seed, k)?;
-        let run = run_case(&case);
-        for o in &run.outcomes {
-            let Some((scene, v)) = o.repro() else { continue };
-            if o.is_fatal() {
-                bar.suspend(|| eprintln!("case {k}: {} ({}): {v}", o.invariant, o.label));
+    let tick = || bar.inc(1);
+    let files = plan.scene_files.as_ref();
+    let mut on_case = |k: u64, run: &CaseRun| -> Result<(), String> {
+        for outcome in &run.outcomes {
+            let Some((scene, v)) = outcome.repro() else { continue };
+            if outcome.is_fatal() {
+                bar.suspend(|| eprintln!("case {k}: {} ({}): {v}", outcome.invariant, outcome.label));
             }
-            if let Some(dir) = out.dir.filter(|_| out.wants(o)) {
-                write_case(dir, k, o, scene, v)?;
+            if let Some(path) = files.and_then(|f| f.path_for(k, outcome)) {
+                write_case(&path, scene, v)?;
             }
         }
-        tally.add(&run);
-        bar.inc(1);
-    }
+        Ok(())
+    };
+    let report = plan.run_with(Hooks {
+        stop: Some(interrupt_flag()),
+        tick: Some(&tick),
+        on_case: Some(&mut on_case),
+    })?;
     bar.finish_and_clear();
-    for line in tally.lines() {
+    finish(&report, o.report.as_deref(), o.junit.as_deref())
+}
+
+/// Set by Ctrl-C (SIGINT): the run starts no further case, and `check` writes and prints
+/// the report of the cases done (it says "stopped: interrupted"). A second Ctrl-C, or one
+/// when the handler could not be installed, ends the process as usual.
+static INTERRUPTED: AtomicBool = AtomicBool::new(false);
+
+/// [`INTERRUPTED`], its Ctrl-C handler installed.
+fn interrupt_flag() -> &'static AtomicBool {
+    let _ = ctrlc::set_handler(|| {
+        if INTERRUPTED.swap(true, Ordering::SeqCst) {
+            std::process::exit(130);
+        }
+    });
+    &INTERRUPTED
+}
+
+/// Reads the shard reports, merges them, prints the merged report and writes `--report`
+/// and `--junit`; exit 1 when an exact or integer model failed.
+pub fn merge(o: &MergeOptions) -> Result<ExitCode, String> {
+    writable_outputs(o.report.as_deref(), o.junit.as_deref())?;
+    let mut reports = Vec::new();
+    for path in &o.reports {
+        let name = path.display().to_string();
+        let bytes = std::fs::read(path).map_err(|e| format!("{name}: cannot read: {e}"))?;
+        let text = String::from_utf8(bytes).map_err(|_| format!("{name}: not a check report: not UTF-8 text"))?;
+        reports.push((name.clone(), Report::from_json(&text, &name)?));
+    }
+    let merged = Report::merge(reports)?;
+    finish(&merged, o.report.as_deref(), o.junit.as_deref())
+}
+
+/// Writes the report's files (all or none), prints it, and gives the exit code.
+fn finish(report: &Report, json: Option<&Path>, junit: Option<&Path>) -> Result<ExitCode, String> {
+    let mut outputs = Outputs::new();
+    if let Some(path) = json {
+        outputs.stage_text(path, &report.to_json())?;
+    }
+    if let Some(path) = junit {
+        outputs.stage_text(path, &report.junit())?;
+    }
+    outputs.commit()?;
+    for line in report.lines() {
         print_stdout(&line)?;
     }
-    Ok(if tally.passed() {
+    Ok(if report.passed() {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
     })
 }
 
-/// Writes the failing outcome `o` of case `k` into `dir`: its scene as
-/// `case-K-INVARIANT-MODEL.json` and its violation as the `.txt` next to it.
-fn write_case(dir: &Path, k: u64, o: &Outcome, scene: &Scene, v: &Violation) -> Result<(), String> {
-    let slug: String = o
-        .invariant
-        .chars()
-        .map(|ch| if ch.is_ascii_alphanumeric() { ch } else { '-' })
-        .collect();
-    let label: String = o.label.chars().map(|ch| if ch == '/' { '-' } else { ch }).collect();
-    let stem = dir.join(format!("case-{k}-{slug}-{label}"));
-    let json = stem.with_extension("json");
-    std::fs::write(&json, scene.to_json()).map_err(|e| format!("{}: cannot write: {e}", json.display()))?;
-    let txt = stem.with_extension("txt");
+/// Writes a failing outcome's scene at `path` (a `.json`) and its violation as the `.txt`
+/// beside it.
+fn write_case(path: &Path, scene: &Scene, v: &Violation) -> Result<(), String> {
+    std::fs::write(path, scene.to_json()).map_err(|e| format!("{}: cannot write: {e}", path.display()))?;
+    let txt = path.with_extension("txt");
     std::fs::write(&txt, format!("{v}\n")).map_err(|e| format!("{}: cannot write: {e}", txt.display()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn durations_parse_with_units_and_refuse_the_rest() {
+        assert_eq!(parse_duration("90s"), Ok(Duration::from_secs(90)));
+        assert_eq!(parse_duration("5m"), Ok(Duration::from_secs(300)));
+        assert_eq!(parse_duration("1h30m"), Ok(Duration::from_secs(5400)));
+        assert_eq!(parse_duration("250ms"), Ok(Duration::from_millis(250)));
+        for bad in ["", "90", "s", "1x", "1.5s", "-1s", "1 s"] {
+            assert!(parse_duration(bad).is_err(), "{bad}");
+        }
+        assert!(parse_duration("99999999999999999999h").is_err());
+        assert_eq!(parse_jobs("2"), Ok(2));
+        assert!(parse_jobs("0").is_err() && parse_jobs("x").is_err() && parse_jobs("1025").is_err());
+    }
 }

@@ -3,7 +3,10 @@
 
 pub mod check;
 pub mod clip;
+pub mod compare;
+pub mod explain;
 pub mod flood;
+pub mod hunt;
 pub mod plan;
 pub mod render;
 
@@ -16,8 +19,9 @@ use std::sync::atomic::{AtomicU32, Ordering};
 
 /// The exit codes, at the end of every command's `--help`.
 pub const EXIT_CODES: &str = "Exit codes:
-  0  success
-  1  an invariant of an exact or integer model was violated (check only)
+  0  success (compare: identical)
+  1  an invariant of an exact or integer model was violated (check, check-merge); the
+     images differ (compare); no convention fits (compare --fit); hunt found something
   2  bad input: one line on stderr naming the file, field (or option) and value";
 
 /// The `--model` help: every model with its one-line description, from
@@ -68,6 +72,72 @@ pub fn load_scene(
     if let Some(p) = preset {
         scene.preset = Preset::from_name(p)
             .ok_or_else(|| format!("--preset: unknown preset {p:?} (expected one of d3d11, vulkan, gl, cts)"))?;
+    }
+    let target = scene
+        .target()
+        .ok_or_else(|| format!("{name}: invalid canvas or convention"))?;
+    Ok((name, scene, target))
+}
+
+/// `--preset` and the convention overrides (`compare`, `explain`): the scene's preset and
+/// its own overrides, then these on top.
+#[derive(clap::Args, Debug, Clone, Default)]
+pub struct ConventionArgs {
+    /// Override the scene's preset: d3d11, vulkan, gl, cts (the scene's explicit overrides
+    /// and the options below still apply on top).
+    #[arg(long)]
+    pub preset: Option<String>,
+    /// Override the tie rule: top-left or bottom-left.
+    #[arg(long, value_name = "RULE")]
+    pub tie_rule: Option<String>,
+    /// Override the subpixel bits (1..=16).
+    #[arg(long, value_name = "BITS")]
+    pub subpixel_bits: Option<u32>,
+    /// Override the snapping rounding: nearest-even, half-away, floor, ceiling,
+    /// towards-zero.
+    #[arg(long, value_name = "MODE")]
+    pub rounding: Option<String>,
+    /// Override the sample position: 0.5 (pixel centres) or 0 (pixel corners).
+    #[arg(long, value_name = "OFFSET")]
+    pub pixel_centre: Option<String>,
+}
+
+/// Reads a scene as [`load_scene`] does, then applies `args`' overrides.
+pub fn load_scene_with(
+    path: &Path,
+    args: &ConventionArgs,
+) -> Result<(String, rasterproof::scene::Scene, rasterproof::convention::Target), String> {
+    use rasterproof::convention::{PixelCentre, Rounding, TieRule};
+    let (name, mut scene, _) = load_scene(path, args.preset.as_deref())?;
+    let o = &mut scene.overrides;
+    if let Some(t) = &args.tie_rule {
+        o.tie_rule = Some(
+            TieRule::from_name(t)
+                .ok_or_else(|| format!("--tie-rule: unknown tie rule {t:?} (expected top-left or bottom-left)"))?,
+        );
+    }
+    if let Some(b) = args.subpixel_bits {
+        if !(1..=rasterproof::num::MAX_SUBPIXEL_BITS).contains(&b) {
+            return Err(format!(
+                "--subpixel-bits: {b} is outside 1..={}",
+                rasterproof::num::MAX_SUBPIXEL_BITS
+            ));
+        }
+        o.subpixel_bits = Some(b);
+    }
+    if let Some(r) = &args.rounding {
+        o.rounding = Some(Rounding::from_name(r).ok_or_else(|| {
+            format!(
+                "--rounding: unknown rounding {r:?} (expected nearest-even, half-away, floor, ceiling or towards-zero)"
+            )
+        })?);
+    }
+    if let Some(c) = &args.pixel_centre {
+        o.pixel_centre = Some(match c.as_str() {
+            "0.5" | "1/2" => PixelCentre::Half,
+            "0" => PixelCentre::Corner,
+            _ => return Err(format!("--pixel-centre: {c:?} is not 0.5 or 0")),
+        });
     }
     let target = scene
         .target()

@@ -23,10 +23,8 @@ pub struct Options {
     /// exact-snapped mean.
     #[arg(long, default_value = "exact-snapped", long_help = crate::cli::model_help())]
     model: String,
-    /// Override the scene's preset: d3d11, vulkan, gl, cts (the scene's explicit
-    /// overrides still apply on top).
-    #[arg(long)]
-    preset: Option<String>,
+    #[command(flatten)]
+    convention: super::ConventionArgs,
     /// Write the coverage picture (PNG): black where uncovered, one colour per primitive,
     /// white where several primitives cover a pixel; its legend (id, colour, primitive,
     /// pixels) goes beside it as OUT.legend.txt. A failing run writes no file at all.
@@ -63,7 +61,7 @@ pub enum Format {
 pub fn run(o: &Options) -> Result<ExitCode, String> {
     let model = super::parse_model(&o.model)?;
     let scale_asked = o.scale.as_deref().map(parse_scale).transpose()?;
-    let (name, scene, target) = super::load_scene(&o.scene, o.preset.as_deref())?;
+    let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
     let scale = match scale_asked {
         Some(k) => Scale::new(k, target.width, target.height).map_err(|e| format!("--scale: {e} (scene {name})"))?,
         None => Scale::default_for(target.width, target.height),

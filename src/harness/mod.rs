@@ -6,10 +6,11 @@
 //!   oracle, the first disagreement shrunk to a minimal scene.
 //! - [`suite`]: the invariant suite behind `rasterproof check` — seeded random cases
 //!   ([`generate`]), every checker on each ([`run_case`]) and the table of outcomes
-//!   ([`Tally`]).
+//!   ([`Tally`]); at scale, a [`Plan`] (shard, threads, time budget) run into a
+//!   [`Report`] (JSON, JUnit XML, merged across shards).
 
 pub mod search;
 pub mod suite;
 
 pub use search::{find_counterexample, Counterexample, HarnessConfig};
-pub use suite::{generate, must_hold, run_case, Case, CaseRun, Outcome, Row, Skip, Tally};
+pub use suite::{generate, must_hold, run_case, Case, CaseRun, Outcome, Plan, Report, Row, Shard, Skip, Tally};

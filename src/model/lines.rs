@@ -14,7 +14,7 @@ use crate::num::exact::dyadic;
 use crate::num::fixed::snap;
 use crate::num::SubPixel;
 
-use super::{point_f32, point_f64, Arithmetic, FloatType, Model, ModelError};
+use super::{point_f32, point_f64, Arithmetic, FloatType, Model, ModelError, Shape};
 
 /// A line converted for one model.
 #[derive(Debug, Clone)]
@@ -29,8 +29,9 @@ pub(crate) enum PreparedLine {
     Dda64([i64; 2], [i64; 2]),
     /// Diamond-exit, the plain exact reading (endpoints as written or snapped).
     DiamondExact(Box<(Point, Point)>),
-    /// Diamond-exit, the planned engine (`None`: it draws nothing).
-    DiamondPlanned(Option<Box<PlannedSegment>>),
+    /// Diamond-exit, the planned engine: the exact endpoints (as written or snapped) and
+    /// their plan (`None`: it draws nothing).
+    DiamondPlanned(Box<(Point, Point)>, Option<Box<PlannedSegment>>),
     /// Diamond-exit, integer.
     DiamondFixed(FixedSegment),
     /// Diamond-exit read in f32.
@@ -80,7 +81,8 @@ fn prepare_diamond(model: Model, k: usize, l: &Line, target: &Target) -> Result<
             Ok(if plain {
                 PreparedLine::DiamondExact(Box::new((a, b)))
             } else {
-                PreparedLine::DiamondPlanned(PlannedSegment::new(&a, &b, target).map(Box::new))
+                let planned = PlannedSegment::new(&a, &b, target).map(Box::new);
+                PreparedLine::DiamondPlanned(Box::new((a, b)), planned)
             })
         }
         Arithmetic::Integer(_) => {
@@ -117,7 +119,23 @@ impl PreparedLine {
     /// The planned engine's plan; `None` for every other form.
     pub(crate) fn plan(&self) -> Option<&crate::num::plan::Plan> {
         match self {
-            PreparedLine::DiamondPlanned(Some(seg)) => Some(seg.plan()),
+            PreparedLine::DiamondPlanned(_, Some(seg)) => Some(seg.plan()),
+            _ => None,
+        }
+    }
+
+    /// The exact line an exact model draws; `None` for the other models' forms.
+    pub(crate) fn exact_shape(&self) -> Option<Shape> {
+        match self {
+            PreparedLine::IdealBresenham(from, to, tie) => Some(Shape::Bresenham {
+                from: *from,
+                to: *to,
+                tie: *tie,
+            }),
+            PreparedLine::DiamondExact(ends) | PreparedLine::DiamondPlanned(ends, _) => Some(Shape::Diamond {
+                from: ends.0.clone(),
+                to: ends.1.clone(),
+            }),
             _ => None,
         }
     }
@@ -130,7 +148,7 @@ impl PreparedLine {
             PreparedLine::Dda32(a, b) => line::dda::draw(*a, *b, line::dda::DdaFloat::F32, id, target, sink),
             PreparedLine::Dda64(a, b) => line::dda::draw(*a, *b, line::dda::DdaFloat::F64, id, target, sink),
             PreparedLine::DiamondExact(ends) => line::exact::draw_diamond(&ends.0, &ends.1, id, target, sink),
-            PreparedLine::DiamondPlanned(seg) => {
+            PreparedLine::DiamondPlanned(_, seg) => {
                 if let Some(seg) = seg {
                     seg.draw(id, sink);
                 }

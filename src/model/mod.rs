@@ -39,7 +39,7 @@ use crate::num::exact::{exact_text_short, nearest_f32, nearest_f64};
 use crate::tri::float::FloatRule;
 
 pub use error::ModelError;
-pub use prepared::{prepare, render, render_triangles, PreparedScene, Primitives};
+pub use prepared::{prepare, render, render_triangles, PreparedScene, Primitives, Shape};
 
 /// A model: one arithmetic for every primitive of a scene (the CLI's `--model`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

@@ -67,6 +67,35 @@ impl Primitives {
     }
 }
 
+/// A primitive's exact window-space geometry as an exact model rasterizes it (snapped for
+/// `exact-snapped`, clipped against the scene's window where the model clips): what
+/// [`crate::oracle`] explains a pixel with. [`PreparedScene::shapes`] gives them.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Shape {
+    /// A triangle, drawn by the edge-function oracle.
+    Triangle(Triangle),
+    /// A polygon (a scene polygon, a triangle clipped against the window, or a clip-space
+    /// triangle's window-space polygon), drawn by the winding-number oracle.
+    Polygon(Polygon),
+    /// A Bresenham line between two pixel addresses.
+    Bresenham {
+        /// The first pixel.
+        from: [i64; 2],
+        /// The last pixel.
+        to: [i64; 2],
+        /// Who wins a tie.
+        tie: crate::line::BresenhamTie,
+    },
+    /// A diamond-exit line between two exact window-space points. With a clip window its
+    /// pixels are kept where their sample lies in the closed window.
+    Diamond {
+        /// Start.
+        from: crate::geom::Point,
+        /// End.
+        to: crate::geom::Point,
+    },
+}
+
 /// A scene converted for one model: every conversion done, nothing left that can fail.
 /// Built by [`prepare`]; [`PreparedScene::draw`] rasterizes it into any sink.
 #[derive(Debug, Clone)]
@@ -350,6 +379,29 @@ impl PreparedScene {
             });
         }
         out
+    }
+
+    /// Every primitive's exact geometry, in id order (index = id), read from the very
+    /// form the model draws; `None` unless the model is exact ([`Model::is_exact`]).
+    /// Bresenham lines keep their pixel endpoints; a window clips the areas (the
+    /// triangles become polygons) and keeps the lines' pixels whose samples lie in it.
+    pub fn shapes(&self) -> Option<Vec<Shape>> {
+        let mut out = Vec::with_capacity(self.primitive_count());
+        match &self.clipped_triangles {
+            None => out.extend(self.triangles.exact_triangles()?.iter().cloned().map(Shape::Triangle)),
+            Some(polygons) => {
+                for p in polygons {
+                    out.push(Shape::Polygon(p.exact_polygon()?.clone()));
+                }
+            }
+        }
+        for l in &self.lines {
+            out.push(l.exact_shape()?);
+        }
+        for p in &self.polygons {
+            out.push(Shape::Polygon(p.exact_polygon()?.clone()));
+        }
+        Some(out)
     }
 
     /// A fresh [`Coverage`] of `target` with everything drawn.

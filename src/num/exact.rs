@@ -24,13 +24,21 @@ pub const MAX_BITS: u64 = 4096;
 /// for the same reason as [`MAX_NUMBER_LEN`].
 pub const MAX_EXPONENT: i64 = 400;
 
-/// How a value exactly halfway between two integers is rounded.
+/// How a vertex coordinate is rounded to the subpixel grid: to the nearest point with a
+/// rule for the value exactly halfway (the presets), or in one direction (what some
+/// renderers do by truncating a float-to-fixed conversion; `compare --fit` searches them).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Rounding {
-    /// Round half to even (IEEE 754 default; D3D11, Vulkan and Mesa snap this way).
+    /// Nearest, half to even (IEEE 754 default; D3D11, Vulkan and Mesa snap this way).
     NearestEven,
-    /// Round half away from zero (the Khronos CTS reference rasterizer).
+    /// Nearest, half away from zero (the Khronos CTS reference rasterizer).
     HalfAwayFromZero,
+    /// Down, towards negative infinity.
+    Floor,
+    /// Up, towards positive infinity.
+    Ceiling,
+    /// Towards zero (truncation, as a C cast from float to integer does).
+    TowardsZero,
 }
 
 impl Rounding {
@@ -39,16 +47,24 @@ impl Rounding {
         match self {
             Rounding::NearestEven => "nearest-even",
             Rounding::HalfAwayFromZero => "half-away",
+            Rounding::Floor => "floor",
+            Rounding::Ceiling => "ceiling",
+            Rounding::TowardsZero => "towards-zero",
         }
     }
 
+    /// Every rounding: the two nearest modes first (the presets'), then the directed ones.
+    pub const ALL: [Rounding; 5] = [
+        Rounding::NearestEven,
+        Rounding::HalfAwayFromZero,
+        Rounding::Floor,
+        Rounding::Ceiling,
+        Rounding::TowardsZero,
+    ];
+
     /// Parses a name written by [`Rounding::name`].
     pub fn from_name(name: &str) -> Option<Self> {
-        match name {
-            "nearest-even" => Some(Rounding::NearestEven),
-            "half-away" => Some(Rounding::HalfAwayFromZero),
-            _ => None,
-        }
+        Rounding::ALL.into_iter().find(|r| r.name() == name)
     }
 }
 
@@ -205,7 +221,10 @@ fn parse_decimal(text: &str) -> Result<BigRational, NumberError> {
     })
 }
 
-/// Rounds `x` to the nearest integer; a value exactly halfway is decided by `rounding`.
+/// Rounds `x` to an integer by `rounding`: the nearest integer, a value exactly halfway
+/// decided by the mode ([`Rounding::NearestEven`], [`Rounding::HalfAwayFromZero`]), or in
+/// the mode's direction ([`Rounding::Floor`], [`Rounding::Ceiling`],
+/// [`Rounding::TowardsZero`]).
 ///
 /// ```
 /// use rasterproof::num::{exact::round_to_integer, parse_rational, Rounding};
@@ -214,29 +233,29 @@ fn parse_decimal(text: &str) -> Result<BigRational, NumberError> {
 /// assert_eq!(r("2.5", Rounding::HalfAwayFromZero), "3");
 /// assert_eq!(r("-2.5", Rounding::HalfAwayFromZero), "-3");
 /// assert_eq!(r("-2.5", Rounding::NearestEven), "-2");
+/// assert_eq!(r("-2.25", Rounding::Floor), "-3");
+/// assert_eq!(r("-2.25", Rounding::Ceiling), "-2");
+/// assert_eq!(r("-2.75", Rounding::TowardsZero), "-2");
 /// ```
 pub fn round_to_integer(x: &BigRational, rounding: Rounding) -> BigInt {
     let floor = x.floor().to_integer();
     let frac = x - BigRational::from_integer(floor.clone());
     let half = BigRational::new(BigInt::one(), BigInt::from(2));
+    let ceiling = || if frac.is_zero() { floor.clone() } else { &floor + 1 };
+    match rounding {
+        Rounding::Floor => return floor,
+        Rounding::Ceiling => return ceiling(),
+        Rounding::TowardsZero => return if x.is_negative() { ceiling() } else { floor },
+        Rounding::NearestEven | Rounding::HalfAwayFromZero => {}
+    }
     match frac.cmp(&half) {
         std::cmp::Ordering::Less => floor,
         std::cmp::Ordering::Greater => floor + 1,
         std::cmp::Ordering::Equal => match rounding {
-            Rounding::NearestEven => {
-                if floor.is_even() {
-                    floor
-                } else {
-                    floor + 1
-                }
-            }
-            Rounding::HalfAwayFromZero => {
-                if x.is_negative() {
-                    floor
-                } else {
-                    floor + 1
-                }
-            }
+            Rounding::HalfAwayFromZero if x.is_negative() => floor,
+            Rounding::HalfAwayFromZero => floor + 1,
+            _ if floor.is_even() => floor,
+            _ => floor + 1,
         },
     }
 }
@@ -445,5 +464,29 @@ mod tests {
         assert_eq!(r(7, 3, Rounding::NearestEven), BigInt::from(2));
         assert_eq!(r(-7, 3, Rounding::NearestEven), BigInt::from(-2));
         assert_eq!(r(-8, 3, Rounding::HalfAwayFromZero), BigInt::from(-3));
+    }
+
+    #[test]
+    fn directed_roundings_by_hand() {
+        let r = |n, d, m| round_to_integer(&q(n, d), m);
+        // (value, floor, ceiling, towards zero): integers stay; 7/3 = 2.33; -7/3 = -2.33;
+        // 5/2 and -5/2 are halfway, which the directed modes do not treat specially.
+        for (n, d, f, c, z) in [
+            (6, 3, 2, 2, 2),
+            (-6, 3, -2, -2, -2),
+            (7, 3, 2, 3, 2),
+            (-7, 3, -3, -2, -2),
+            (5, 2, 2, 3, 2),
+            (-5, 2, -3, -2, -2),
+            (1, 1000, 0, 1, 0),
+            (-1, 1000, -1, 0, 0),
+        ] {
+            assert_eq!(r(n, d, Rounding::Floor), BigInt::from(f), "floor {n}/{d}");
+            assert_eq!(r(n, d, Rounding::Ceiling), BigInt::from(c), "ceiling {n}/{d}");
+            assert_eq!(r(n, d, Rounding::TowardsZero), BigInt::from(z), "towards zero {n}/{d}");
+        }
+        for m in Rounding::ALL {
+            assert_eq!(Rounding::from_name(m.name()), Some(m));
+        }
     }
 }

@@ -30,7 +30,7 @@
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 
-use crate::convention::Target;
+use crate::convention::{AnyTieRule, Target};
 use crate::coverage::CoverageSink;
 use crate::geom::Triangle;
 use crate::num::plan::{scale_of, scaled, Bound, Lane, Plan, Width};
@@ -89,7 +89,7 @@ struct Setup {
     bound: Bound,
 }
 
-fn setup(tri: &Triangle, target: &Target) -> Option<Setup> {
+fn setup(tri: &Triangle, target: &Target, rule: AnyTieRule) -> Option<Setup> {
     let range = exact_sample_range(tri.v.iter(), target)?;
     let centre = target.convention.pixel_centre.offset();
     let scale = scale_of(tri.v.iter().flat_map(|p| [&p.x, &p.y]).chain([&centre]));
@@ -115,7 +115,6 @@ fn setup(tri: &Triangle, target: &Target) -> Option<Setup> {
     if area2.is_negative() {
         std::mem::swap(&mut b, &mut c3);
     }
-    let rule = target.convention.tie_rule;
     let mut edges = Edges {
         origin: std::array::from_fn(|_| BigInt::zero()),
         step_x: std::array::from_fn(|_| BigInt::zero()),
@@ -205,7 +204,14 @@ impl PlannedTriangle {
     /// `target`, in the cheapest width its bound allows; `None` when it covers nothing
     /// (zero area, or no sample of the canvas in its bounding box).
     pub fn new(tri: &Triangle, target: &Target) -> Option<PlannedTriangle> {
-        let s = setup(tri, target)?;
+        Self::with_rule(tri, target, target.convention.tie_rule.into())
+    }
+
+    /// As [`PlannedTriangle::new`] with the edges' inclusive flags from `rule` instead of
+    /// the target's tie rule: any of the six rules a renderer may follow (what
+    /// `compare --fit` searches).
+    pub fn with_rule(tri: &Triangle, target: &Target, rule: AnyTieRule) -> Option<PlannedTriangle> {
+        let s = setup(tri, target, rule)?;
         let plan = Plan::new(s.scale, s.bound);
         Some(Self::in_width(s.range, plan, &s.edges))
     }
@@ -214,7 +220,7 @@ impl PlannedTriangle {
     /// `Err(plan)` (the plan it would have) when `width` cannot hold its bound. For tests
     /// and benches that run every width.
     pub fn forced(tri: &Triangle, target: &Target, width: Width) -> Result<Option<PlannedTriangle>, Plan> {
-        let Some(s) = setup(tri, target) else {
+        let Some(s) = setup(tri, target, target.convention.tie_rule.into()) else {
             return Ok(None);
         };
         match Plan::forced(s.scale.clone(), s.bound.clone(), width) {
@@ -566,7 +572,9 @@ mod tests {
             for d in [1, 3, 7] {
                 let p = |(x, y): (i64, i64)| Point::new(q(x * d + 1, d).x, Point::from_fractions(y * d + 2, d, 0, 1).x);
                 let t = Triangle::new(p(a), p(b), p(c));
-                let Some(setup) = setup(&t, &target) else { continue };
+                let Some(setup) = setup(&t, &target, target.convention.tie_rule.into()) else {
+                    continue;
+                };
                 let bound = bound_of(&setup.edges, &setup.range);
                 LARGEST.with(|m| *m.borrow_mut() = BigInt::zero());
                 let edges: Edges<Track> = Edges::from_big(&setup.edges);

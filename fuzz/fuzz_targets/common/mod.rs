@@ -32,10 +32,18 @@ pub fn convention(preset: PresetChoice, bits: Option<u8>, corner: bool) -> Conve
     conv
 }
 
-/// `num / den * 2^bits` rounded to an integer, ties by `rounding`, in plain i128 (`den > 0`).
+/// `num / den * 2^bits` rounded to an integer by `rounding` (nearest with its tie rule, or
+/// directed), in plain i128 (`den > 0`).
 pub fn snap_i128(num: i128, den: i128, bits: u32, rounding: Rounding) -> i128 {
     let scaled = num << bits;
     let (q, r) = (scaled.div_euclid(den), scaled.rem_euclid(den));
+    let up = q + i128::from(r != 0);
+    match rounding {
+        Rounding::Floor => return q,
+        Rounding::Ceiling => return up,
+        Rounding::TowardsZero => return if scaled < 0 { up } else { q },
+        Rounding::NearestEven | Rounding::HalfAwayFromZero => {}
+    }
     match (2 * r).cmp(&den) {
         std::cmp::Ordering::Less => q,
         std::cmp::Ordering::Greater => q + 1,
@@ -49,6 +57,7 @@ pub fn snap_i128(num: i128, den: i128, bits: u32, rounding: Rounding) -> i128 {
                     q
                 }
             }
+            Rounding::Floor | Rounding::Ceiling | Rounding::TowardsZero => unreachable!("returned above"),
         },
     }
 }

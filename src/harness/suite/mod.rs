@@ -25,6 +25,12 @@
 //! accumulates the outcomes and renders the table, its legend ([`legend`]: one line per
 //! invariant, model and column) and the summary `rasterproof check` prints.
 //!
+//! At scale ([`Plan`]): the cases of one [`Shard`] of the run (a partition by case index,
+//! so that N machines run disjoint cases), on several threads, within a time budget, into
+//! a [`Report`] (the table, the findings and every failing case's scene) that is written
+//! as JSON or JUnit XML, and that [merges](Report::merge) with the other shards' into the
+//! report of the whole run.
+//!
 //! ```
 //! use rasterproof::harness::{generate, run_case, Tally};
 //! let mut tally = Tally::new(7);
@@ -39,10 +45,16 @@
 mod cases;
 mod checks;
 pub mod legend;
+pub mod report;
+mod run;
+pub mod shard;
 mod tally;
 
 pub use cases::{generate, Case, CANVAS};
 pub use checks::run_case;
+pub use report::{Failure, Finding, Report};
+pub use run::{Hooks, OnCase, Plan, SceneFiles, MAX_JOBS};
+pub use shard::{Shard, Shards};
 pub use tally::{Row, Tally};
 
 use crate::check::Violation;

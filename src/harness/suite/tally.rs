@@ -1,18 +1,19 @@
 //! The suite's table: outcomes counted per invariant and model, the skipped checks with
 //! their reasons, the summary lines and the legend.
 
+use std::borrow::Cow;
 use std::collections::BTreeMap;
 use std::fmt;
 
-use super::{legend, CaseRun};
+use super::{legend, must_hold, CaseRun};
 
 /// One row of the table: an invariant checked on one model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Row {
+pub struct Row<'a> {
     /// The invariant.
-    pub invariant: &'static str,
+    pub invariant: &'a str,
     /// The model's label.
-    pub label: &'static str,
+    pub label: &'a str,
     /// Cases on which the check ran.
     pub cases: u64,
     /// Cases on which it did not hold.
@@ -21,11 +22,31 @@ pub struct Row {
     pub skipped: u64,
 }
 
+/// A name in the table: the suite's own (`&'static str`) or one read from a report.
+pub(super) type Name = Cow<'static, str>;
+
+/// The counts of one row of the table.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub(super) struct Counts {
+    /// Outcomes: cases on which the check ran.
+    pub cases: u64,
+    /// Of those, the ones that failed.
+    pub violations: u64,
+    /// Cases on which it could not run.
+    pub skipped: u64,
+    /// Whether the row's model [must hold](super::must_hold): its violations are fatal.
+    pub must_hold: bool,
+}
+
 /// The outcomes of a run of the suite, accumulated case by case, and the text
 /// `rasterproof check` prints: a header, one row per (invariant, model) with its cases,
 /// violations and skipped cases, the reasons for the skipped ones, the mesh violations by
 /// family, the float32 barycentric sum error, the legend (one line per column, invariant
 /// and model in the table: [`super::legend`]) and a verdict line.
+///
+/// Two tallies of disjoint sets of cases [merge](Tally::merge) into the tally of their
+/// union, exactly as if its cases had been added one by one (the float32 sum errors are
+/// kept as a multiset, so that the median and the sum in sorted order come out the same).
 ///
 /// ```
 /// use rasterproof::harness::{generate, run_case, Tally};
@@ -38,20 +59,36 @@ pub struct Row {
 /// ```
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Tally {
-    seed: u64,
-    cases: u64,
-    /// (invariant, label) -> (outcomes, violations, skipped).
-    rows: BTreeMap<(&'static str, &'static str), (u64, u64, u64)>,
+    pub(super) seed: u64,
+    pub(super) cases: u64,
+    /// (invariant, label) -> its counts.
+    pub(super) rows: BTreeMap<(Name, Name), Counts>,
     /// (invariant, label, reason) -> skipped cases.
-    reasons: BTreeMap<(&'static str, &'static str, &'static str), u64>,
+    pub(super) reasons: BTreeMap<(Name, Name, Name), u64>,
     /// (mesh family, label) -> mesh violations (watertight and mesh agreement).
-    families: BTreeMap<(&'static str, &'static str), u64>,
-    /// float32 barycentric sum errors, ulps of 1, in the order measured.
-    ulps: Vec<f64>,
+    pub(super) families: BTreeMap<(Name, Name), u64>,
+    /// float32 barycentric sum errors, ulps of 1: [`ulps_key`] of the error -> samples.
+    pub(super) ulps: BTreeMap<u64, u64>,
     /// Samples where the float32 sum error could not be measured.
-    ulps_skipped: u64,
+    pub(super) ulps_skipped: u64,
     /// Violations by a model that must hold.
-    fatal: u64,
+    pub(super) fatal: u64,
+}
+
+/// `x`'s bits, reordered so that comparing them as integers orders the numbers as
+/// [`f64::total_cmp`] does (negatives flipped, the sign bit set on the rest).
+pub(super) fn ulps_key(x: f64) -> u64 {
+    let bits = x.to_bits();
+    if bits >> 63 == 1 {
+        !bits
+    } else {
+        bits | (1 << 63)
+    }
+}
+
+/// The number whose [`ulps_key`] is `key`.
+pub(super) fn ulps_from_key(key: u64) -> f64 {
+    f64::from_bits(if key >> 63 == 1 { key & !(1 << 63) } else { !key })
 }
 
 impl Tally {
@@ -66,25 +103,75 @@ impl Tally {
     /// Counts one case's outcomes and measurements.
     pub fn add(&mut self, run: &CaseRun) {
         self.cases += 1;
-        self.ulps.extend_from_slice(&run.float32_sum_ulps);
+        for &u in &run.float32_sum_ulps {
+            *self.ulps.entry(ulps_key(u)).or_default() += 1;
+        }
         self.ulps_skipped += run.float32_sum_skipped;
         for s in &run.skipped {
-            self.rows.entry((s.invariant, s.label)).or_default().2 += 1;
-            *self.reasons.entry((s.invariant, s.label, s.reason)).or_default() += 1;
+            let row = self.rows.entry((s.invariant.into(), s.label.into())).or_default();
+            row.skipped += 1;
+            row.must_hold |= must_hold(s.model);
+            *self
+                .reasons
+                .entry((s.invariant.into(), s.label.into(), s.reason.into()))
+                .or_default() += 1;
         }
         for o in &run.outcomes {
-            let entry = self.rows.entry((o.invariant, o.label)).or_default();
-            entry.0 += 1;
+            let row = self.rows.entry((o.invariant.into(), o.label.into())).or_default();
+            row.cases += 1;
+            row.must_hold |= must_hold(o.model);
             if o.result.is_err() {
-                entry.1 += 1;
+                row.violations += 1;
                 if o.invariant == "watertight" || o.invariant == "agreement (mesh)" {
-                    *self.families.entry((run.mesh_family, o.label)).or_default() += 1;
+                    *self
+                        .families
+                        .entry((run.mesh_family.into(), o.label.into()))
+                        .or_default() += 1;
                 }
                 if o.is_fatal() {
                     self.fatal += 1;
                 }
             }
         }
+    }
+
+    /// Adds `other`'s counts to this tally's: the tally of both runs' cases (which must
+    /// be disjoint for the result to mean anything; [`super::Report::merge`] checks that).
+    /// The seed stays this tally's.
+    pub fn merge(&mut self, other: &Tally) {
+        self.cases += other.cases;
+        for (key, c) in &other.rows {
+            let row = self.rows.entry(key.clone()).or_default();
+            row.cases += c.cases;
+            row.violations += c.violations;
+            row.skipped += c.skipped;
+            row.must_hold |= c.must_hold;
+        }
+        for (key, n) in &other.reasons {
+            *self.reasons.entry(key.clone()).or_default() += n;
+        }
+        for (key, n) in &other.families {
+            *self.families.entry(key.clone()).or_default() += n;
+        }
+        for (&key, n) in &other.ulps {
+            *self.ulps.entry(key).or_default() += n;
+        }
+        self.ulps_skipped += other.ulps_skipped;
+        self.fatal += other.fatal;
+    }
+
+    /// The seed named in the header.
+    pub fn seed(&self) -> u64 {
+        self.seed
+    }
+
+    /// Whether the row (`invariant`, `label`) is one of a model that [must
+    /// hold](super::must_hold), so that its violations fail the run; `false` for a row
+    /// the table does not have.
+    pub fn row_must_hold(&self, invariant: &str, label: &str) -> bool {
+        self.rows
+            .iter()
+            .any(|((i, l), c)| i == invariant && l == label && c.must_hold)
     }
 
     /// Cases counted.
@@ -104,23 +191,46 @@ impl Tally {
     }
 
     /// The rows of the table in order (by invariant, then label).
-    pub fn rows(&self) -> impl Iterator<Item = Row> + '_ {
-        self.rows
-            .iter()
-            .map(|(&(invariant, label), &(cases, violations, skipped))| Row {
-                invariant,
-                label,
-                cases,
-                violations,
-                skipped,
-            })
+    pub fn rows(&self) -> impl Iterator<Item = Row<'_>> + '_ {
+        self.rows.iter().map(|((invariant, label), c)| Row {
+            invariant,
+            label,
+            cases: c.cases,
+            violations: c.violations,
+            skipped: c.skipped,
+        })
     }
 
     /// The skipped checks: invariant, label, reason and how many cases, in table order.
-    pub fn skip_reasons(&self) -> impl Iterator<Item = (&'static str, &'static str, &'static str, u64)> + '_ {
+    pub fn skip_reasons(&self) -> impl Iterator<Item = (&str, &str, &str, u64)> + '_ {
         self.reasons
             .iter()
-            .map(|(&(invariant, label, reason), &n)| (invariant, label, reason, n))
+            .map(|((invariant, label, reason), &n)| (&**invariant, &**label, &**reason, n))
+    }
+
+    /// The float32 sum errors' sample count, median (the middle one, the upper of two),
+    /// mean (summed in sorted order) and maximum; `None` when none was measured.
+    fn ulps_stats(&self) -> Option<UlpsStats> {
+        let samples: u64 = self.ulps.values().sum();
+        let (&last, _) = self.ulps.last_key_value()?;
+        let middle = samples / 2;
+        let (mut seen, mut median, mut sum) = (0u64, 0.0, 0.0);
+        for (&key, &n) in &self.ulps {
+            let u = ulps_from_key(key);
+            if seen <= middle && middle < seen + n {
+                median = u;
+            }
+            seen += n;
+            for _ in 0..n {
+                sum += u;
+            }
+        }
+        Some(UlpsStats {
+            samples,
+            median,
+            mean: sum / samples as f64,
+            max: ulps_from_key(last),
+        })
     }
 
     /// The legend, one line per column, invariant and model label that this table shows
@@ -133,9 +243,9 @@ impl Tally {
         if !self.ulps.is_empty() {
             names.push("ulps of 1");
         }
-        let mut invariants: Vec<&str> = self.rows.keys().map(|&(i, _)| i).collect();
+        let mut invariants: Vec<&str> = self.rows.keys().map(|(i, _)| &**i).collect();
         invariants.dedup();
-        let mut labels: Vec<&str> = self.rows.keys().map(|&(_, l)| l).collect();
+        let mut labels: Vec<&str> = self.rows.keys().map(|(_, l)| &**l).collect();
         labels.sort_unstable();
         labels.dedup();
         let mut lines = vec!["legend:".to_string()];
@@ -149,18 +259,33 @@ impl Tally {
         lines
     }
 
-    /// The report, one string per line (no newlines): what `rasterproof check` prints.
+    /// The table as text, one string per line (no newlines): the [header](Tally::header),
+    /// the [table](Tally::body), the [legend](Tally::legend) and the
+    /// [verdict](Tally::verdict). `rasterproof check` prints [`super::Report::lines`]: these
+    /// with the shard, how many cases ran and the findings.
     pub fn lines(&self) -> Vec<String> {
-        let mut lines = vec![
-            format!(
-                "rasterproof check: {} cases, seed {}, presets d3d11/gl",
-                self.cases, self.seed
-            ),
-            format!(
-                "{:<24} {:<18} {:>7} {:>10} {:>7}",
-                "invariant", "model", "cases", "violations", "skipped"
-            ),
-        ];
+        let mut lines = vec![self.header()];
+        lines.extend(self.body());
+        lines.extend(self.legend());
+        lines.push(self.verdict());
+        lines
+    }
+
+    /// The first line: cases, seed and presets.
+    pub fn header(&self) -> String {
+        format!(
+            "rasterproof check: {} cases, seed {}, presets d3d11/gl",
+            self.cases, self.seed
+        )
+    }
+
+    /// The table (column heads and rows), the skipped checks' reasons, the mesh
+    /// violations by family and the float32 barycentric sum error line.
+    pub fn body(&self) -> Vec<String> {
+        let mut lines = vec![format!(
+            "{:<24} {:<18} {:>7} {:>10} {:>7}",
+            "invariant", "model", "cases", "violations", "skipped"
+        )];
         for r in self.rows() {
             lines.push(format!(
                 "{:<24} {:<18} {:>7} {:>10} {:>7}",
@@ -179,21 +304,14 @@ impl Tally {
                 lines.push(format!("  {family:<22} {model:<18} {n:>5}"));
             }
         }
-        if !self.ulps.is_empty() {
-            let mut ulps = self.ulps.clone();
-            ulps.sort_by(f64::total_cmp);
-            // Summed in sorted order, as the report always has been.
-            let mean = ulps.iter().sum::<f64>() / ulps.len() as f64;
+        if let Some(stats) = self.ulps_stats() {
             let skipped = match self.ulps_skipped {
                 0 => String::new(),
                 n => format!(", {n} skipped: the triangle has zero area in f32 or does not fit it"),
             };
             lines.push(format!(
                 "float32 barycentric sum error, ulps of 1 ({} samples{skipped}): median {:.1}, mean {:.1}, max {:.1}",
-                ulps.len(),
-                ulps[ulps.len() / 2],
-                mean,
-                ulps[ulps.len() - 1]
+                stats.samples, stats.median, stats.mean, stats.max
             ));
         } else if self.ulps_skipped > 0 {
             lines.push(format!(
@@ -201,17 +319,28 @@ impl Tally {
                 self.ulps_skipped
             ));
         }
-        lines.extend(self.legend());
-        lines.push(if self.fatal > 0 {
+        lines
+    }
+
+    /// The last line: `ok: ...` or `FAILED: N violations ...`.
+    pub fn verdict(&self) -> String {
+        if self.fatal > 0 {
             format!(
                 "FAILED: {} violations by an exact or integer model (exact, exact-snapped, fixed, scanline)",
                 self.fatal
             )
         } else {
             "ok: the exact and integer models (exact, exact-snapped, fixed, scanline) hold every invariant".to_string()
-        });
-        lines
+        }
     }
+}
+
+/// What the table says of the float32 barycentric sum errors.
+struct UlpsStats {
+    samples: u64,
+    median: f64,
+    mean: f64,
+    max: f64,
 }
 
 /// The report's [lines](Tally::lines), each ending in a newline.

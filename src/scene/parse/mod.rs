@@ -195,7 +195,9 @@ impl Reader<'_> {
             o.rounding = Some(Rounding::from_name(name).ok_or_else(|| {
                 self.err(
                     "rounding",
-                    format!("unknown rounding {name:?} (expected nearest-even or half-away)"),
+                    format!(
+                        "unknown rounding {name:?} (expected nearest-even, half-away, floor, ceiling or towards-zero)"
+                    ),
                 )
             })?);
         }

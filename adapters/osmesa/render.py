@@ -1,0 +1,540 @@
+#!/usr/bin/python3
+"""Mesa adapter: renders a rasterproof scene with Mesa's llvmpipe or softpipe through
+OSMesa (off-screen GL, no window system) and writes the ids PNG (`render --ids-out`'s
+layout), so that `rasterproof compare SCENE.json OUT.png --as ids` can judge the driver.
+
+    /usr/bin/python3 adapters/osmesa/render.py SCENE.json OUT.png [--driver llvmpipe|softpipe]
+
+Needs Debian's libosmesa6, python3-opengl, python3-numpy and python3-pil, which are
+installed for /usr/bin/python3 (not for a pyenv or venv `python3` on PATH).
+
+GL state: an OSMesa context (8-bit RGBA colour, 8-bit stencil, no depth buffer, no
+multisampling) the size of the canvas; blending, depth test, dithering, culling, smoothing
+and multisampling disabled; flat shading; the colour of primitive `id` is id + 1 as
+glColor4ub(low byte, middle byte, high byte, 255), drawn in id order (the last writer wins
+a pixel). A second pass draws every primitive again with additive blending of
+glColor4ub(1, 0, 0, 0) to count the primitives that cover each pixel; where two or more do,
+the ids PNG gets alpha 254 (its "several owners" mark).
+
+How y is mapped: the scene is y down with the origin at the top left; GL's window origin is
+the lower left. With S the largest power of two within GL_MAX_VIEWPORT_DIMS (16384 for
+llvmpipe and softpipe) and L = -S/2 when the canvas fits in S/2 (else L = 0), the
+projection is glOrtho(L, L + S, L + S, L, -1, 1) and the viewport glViewport(L, H - L - S,
+S, S): the scene's square [L, L + S)^2 is the viewport, so a scene point (x, y) reaches GL
+window coordinates
+
+    x_gl = x,   y_gl = H - y
+
+through NDC ((x - L) 2/S - 1, 1 - (y - L) 2/S). S is a power of two, so for L = -S/2 this
+is x / (S/2) and -y / (S/2), exact in f32, and the one rounding step is the f32 sum H - y,
+exact for coordinates on a 2^-10 grid within the square (for L = 0 the subtraction of 1
+is exact on that grid too). (glOrtho(0, W, H, 0, -1, 1) with glViewport(0, 0, W, H) gives
+the same map, but through 2 / W, which f32 holds exactly only when W is a power of two;
+the big viewport also keeps geometry within +-S/2 px of the origin away from GL's
+clipping.) GL pixel row r (counted from the
+bottom) samples y_gl = r + 1/2, the scene's row H - 1 - r: glReadPixels returns the bottom
+row first, so the rows are flipped before the PNG is written. GL's own tie rule therefore
+meets the scene mirrored; rasterproof's `gl` preset ("bottom-left in a y-down image") is
+top-left in GL's y-up window.
+
+Coordinates are read exactly (fractions.Fraction: JSON numbers, "1/3", "0.1") and rounded
+once to the nearest f32 (ties to even), GL's vertex type; scenes should use f32-exact
+coordinates (the adapter says on stderr how many were not).
+
+What it draws:
+  triangles             glDrawArrays(GL_TRIANGLES)
+  lines                 GL_LINES, width 1, not smoothed: a diamond-exit line from `from` to
+                        `to` as written; a Bresenham line (pixel addresses) from the centre
+                        of its first pixel to the centre of its last
+  polygons              stencil then cover: each contour (outline, then the holes, a hole
+                        wound like the outline reversed) as a triangle fan into the stencil
+                        (nonzero: +1 front faces, -1 back faces, mod 128; even-odd: bit 0
+                        inverted), then the bounding box where the stencil is not zero. One
+                        winding number for all contours: agrees with the scene's "inside
+                        the outline, in none of the holes" when holes do not overlap
+  clip window           its outline as a fan into stencil bit 7 first (GL's own raster of
+                        the window); every later draw is tested against it
+  clip-space triangles  glVertex4f(x, -y if the viewport's ndc_y is down, 2z - w for depth
+                        zero-to-one, w) with identity matrices and glViewport(vx, H - vy -
+                        vh, vw, vh): GL clips, divides and maps them. Refused (exit 2) unless
+                        the viewport is integer; without one, the whole canvas
+
+The driver: GALLIUM_DRIVER is set before OpenGL is imported; the adapter prints
+GL_RENDERER on stderr and fails (exit 2) when it does not name the requested driver.
+
+Exit status: 0 when the PNG was written; 2 with a message on stderr otherwise (bad
+arguments, an unreadable scene, what the adapter refuses, a missing library, the wrong
+driver). It does not validate the scene as rasterproof does: run `rasterproof render` on a
+hand-written scene first.
+"""
+
+import argparse
+import json
+import os
+import re
+import sys
+from fractions import Fraction
+
+NAME = "osmesa/render.py"
+DRIVERS = ("llvmpipe", "softpipe")
+MAX_CANVAS = 16384
+MAX_ENCODED = (1 << 24) - 1
+# The stencil bit of the clip window, and the bits of a polygon's winding number.
+CLIP_BIT = 0x80
+WINDING_BITS = 0x7F
+
+
+class Refused(Exception):
+    """A scene, option or environment the adapter cannot render: exit 2 with the message."""
+
+
+# ---- the scene: exact numbers ----------------------------------------------------------
+
+FRACTION_RE = re.compile(r"[+-]?[0-9]+/[0-9]+")
+DECIMAL_RE = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE]([+-]?[0-9]+))?")
+MAX_EXPONENT = 1000
+
+
+def exact(value, what):
+    """A scene coordinate (a JSON number, kept as text, or a string) as a Fraction."""
+    if isinstance(value, JsonNumber):
+        value = value.text
+    elif not isinstance(value, str):
+        raise Refused(f"{what}: {json.dumps(value)} is not a number")
+    if FRACTION_RE.fullmatch(value):
+        num, den = value.split("/")
+        if int(den) == 0:
+            raise Refused(f"{what}: {value} has a zero denominator")
+        return Fraction(int(num), int(den))
+    m = DECIMAL_RE.fullmatch(value)
+    if not m:
+        raise Refused(f"{what}: {json.dumps(value)} is not a decimal or a fraction")
+    if m.group(3) is not None and abs(int(m.group(3))) > MAX_EXPONENT:
+        raise Refused(f"{what}: {value} has an exponent beyond +-{MAX_EXPONENT}")
+    return Fraction(value)
+
+
+class JsonNumber:
+    """A JSON number as written (so that 0.1 stays 1/10)."""
+
+    def __init__(self, text):
+        self.text = text
+
+
+def integer(value, what, low, high):
+    """An integer field within [low, high]."""
+    if isinstance(value, JsonNumber):
+        q = exact(value, what)
+        if q.denominator == 1 and low <= q <= high:
+            return int(q)
+    raise Refused(f"{what}: {json.dumps(getattr(value, 'text', value))} is not an integer in {low}..={high}")
+
+
+def fields(obj, what, allowed):
+    """`obj` must be a JSON object with no key outside `allowed`."""
+    if not isinstance(obj, dict):
+        raise Refused(f"{what}: not a JSON object")
+    unknown = sorted(set(obj) - set(allowed))
+    if unknown:
+        raise Refused(f"{what}: unknown field {json.dumps(unknown[0])} (this adapter does not draw it)")
+    return obj
+
+
+def point(value, what, dims=2):
+    if not isinstance(value, list) or len(value) != dims:
+        raise Refused(f"{what}: not a list of {dims} coordinates")
+    return tuple(exact(c, f"{what}[{k}]") for k, c in enumerate(value))
+
+
+def points(value, what, dims=2, at_least=3):
+    if not isinstance(value, list) or len(value) < at_least:
+        raise Refused(f"{what}: not a list of at least {at_least} points")
+    return [point(p, f"{what}[{k}]", dims) for k, p in enumerate(value)]
+
+
+def load_scene(path):
+    """The scene file as plain Python data with Fraction coordinates."""
+    try:
+        with open(path, "rb") as f:
+            text = f.read().decode("utf-8")
+    except (OSError, UnicodeDecodeError) as e:
+        raise Refused(f"{path}: cannot read: {e}") from e
+    try:
+        raw = json.loads(text, parse_float=JsonNumber, parse_int=JsonNumber, parse_constant=bad_constant)
+    except ValueError as e:
+        raise Refused(f"{path}: not JSON: {e}") from e
+    top = fields(raw, path, ("width", "height", "preset", "subpixel_bits", "rounding", "tie_rule",
+                             "pixel_centre", "triangles", "lines", "polygons", "clip_space_triangles",
+                             "viewport", "clip"))
+    scene = {
+        "width": integer(top.get("width"), f"{path}: width", 1, MAX_CANVAS),
+        "height": integer(top.get("height"), f"{path}: height", 1, MAX_CANVAS),
+        "triangles": [],
+        "lines": [],
+        "polygons": [],
+        "clip_space_triangles": [],
+        "viewport": None,
+        "clip": None,
+    }
+    for k, t in enumerate(top.get("triangles", [])):
+        what = f"{path}: triangles[{k}]"
+        fields(t, what, ("v", "colors"))
+        scene["triangles"].append(points(t.get("v"), f"{what}.v", at_least=3))
+        if len(scene["triangles"][-1]) != 3:
+            raise Refused(f"{what}.v: a triangle has 3 vertices")
+    for k, line in enumerate(top.get("lines", [])):
+        what = f"{path}: lines[{k}]"
+        fields(line, what, ("from", "to", "rule", "tie"))
+        rule = line.get("rule", "bresenham")
+        if rule not in ("bresenham", "diamond"):
+            raise Refused(f"{what}.rule: {json.dumps(rule)} is not bresenham or diamond")
+        scene["lines"].append((point(line.get("from"), f"{what}.from"), point(line.get("to"), f"{what}.to"), rule))
+    for k, poly in enumerate(top.get("polygons", [])):
+        what = f"{path}: polygons[{k}]"
+        fields(poly, what, ("v", "holes", "fill_rule"))
+        rule = poly.get("fill_rule", "nonzero")
+        if rule not in ("nonzero", "even-odd"):
+            raise Refused(f"{what}.fill_rule: {json.dumps(rule)} is not nonzero or even-odd")
+        holes = poly.get("holes", [])
+        if not isinstance(holes, list):
+            raise Refused(f"{what}.holes: not a list")
+        scene["polygons"].append((points(poly.get("v"), f"{what}.v"),
+                                  [points(h, f"{what}.holes[{j}]") for j, h in enumerate(holes)], rule))
+    for k, t in enumerate(top.get("clip_space_triangles", [])):
+        what = f"{path}: clip_space_triangles[{k}]"
+        fields(t, what, ("v", "colors"))
+        vs = points(t.get("v"), f"{what}.v", dims=4)
+        if len(vs) != 3:
+            raise Refused(f"{what}.v: a triangle has 3 vertices")
+        scene["clip_space_triangles"].append(vs)
+    if "viewport" in top:
+        vp = fields(top["viewport"], f"{path}: viewport", ("x", "y", "width", "height", "ndc_y", "depth"))
+        scene["viewport"] = {k: exact(vp[k], f"{path}: viewport.{k}") for k in ("x", "y", "width", "height")
+                             if k in vp}
+        scene["viewport"]["ndc_y"] = vp.get("ndc_y")
+        scene["viewport"]["depth"] = vp.get("depth")
+    scene["preset"] = top.get("preset", "d3d11")
+    if "clip" in top:
+        clip = fields(top["clip"], f"{path}: clip", ("rect", "convex"))
+        if "rect" in clip:
+            r = clip["rect"]
+            if not isinstance(r, list) or len(r) != 4:
+                raise Refused(f"{path}: clip.rect: not [xmin, ymin, xmax, ymax]")
+            x0, y0, x1, y1 = (exact(c, f"{path}: clip.rect[{k}]") for k, c in enumerate(r))
+            scene["clip"] = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+        elif "convex" in clip:
+            scene["clip"] = points(clip["convex"], f"{path}: clip.convex")
+        else:
+            raise Refused(f"{path}: clip: neither rect nor convex")
+    return scene
+
+
+def bad_constant(name):
+    raise ValueError(f"{name} is not JSON (write a number or a string)")
+
+
+# ---- exact to f32 -----------------------------------------------------------------------
+
+class F32:
+    """Rounds Fractions to the nearest f32 (ties to even) and counts the inexact ones."""
+
+    def __init__(self, numpy):
+        self.np = numpy
+        self.inexact = 0
+
+    def __call__(self, q, what):
+        np = self.np
+        try:
+            d = float(q)  # correctly rounded to f64
+        except OverflowError:
+            d = float("inf")
+        with np.errstate(over="ignore"):
+            f = np.float32(d)
+        if not np.isfinite(f):
+            raise Refused(f"{what}: {q} does not fit f32 (GL's vertex type)")
+        # f64 then f32 can round twice: pick the nearest of f and its neighbours exactly.
+        best = None
+        for c in (np.nextafter(f, np.float32(-np.inf)), f, np.nextafter(f, np.float32(np.inf))):
+            if not np.isfinite(c):
+                continue
+            err = abs(Fraction(float(c)) - q)
+            even = int(np.array(c, dtype=np.float32).view(np.uint32)) % 2 == 0
+            key = (err, not even)
+            if best is None or key < best[0]:
+                best = (key, c)
+        c = best[1]
+        if Fraction(float(c)) != q:
+            self.inexact += 1
+        return float(c)
+
+
+# ---- GL ---------------------------------------------------------------------------------
+
+def colour(id_):
+    """id + 1 as (R, G, B, 255), R the low byte."""
+    encoded = id_ + 1
+    if encoded > MAX_ENCODED:
+        raise Refused(f"primitive id {id_} does not fit the 24 bits of an ids PNG")
+    return (encoded & 0xFF, (encoded >> 8) & 0xFF, (encoded >> 16) & 0xFF, 255)
+
+
+def twice_area(contour):
+    n = len(contour)
+    return sum(contour[k][0] * contour[(k + 1) % n][1] - contour[(k + 1) % n][0] * contour[k][1]
+               for k in range(n))
+
+
+class Renderer:
+    """Draws a scene into the current OSMesa context."""
+
+    def __init__(self, GL, np, scene, to_f32, span):
+        self.GL, self.np, self.scene, self.f32, self.span = GL, np, scene, to_f32, span
+        # The scene square [low, low + span)^2 is the viewport: centred on the origin when
+        # the canvas fits in half of it, else from the origin.
+        self.low = -(span // 2) if max(scene["width"], scene["height"]) <= span // 2 else 0
+        self.W, self.H = scene["width"], scene["height"]
+        self.prepare()
+
+    def prepare(self):
+        """Every vertex as f32 up front, so that both passes draw the same numbers."""
+        s, f = self.scene, self.f32
+        half = Fraction(1, 2)
+        self.tris = [[(f(x, "triangle"), f(y, "triangle")) for x, y in t] for t in s["triangles"]]
+        self.lines = []
+        for a, b, rule in s["lines"]:
+            o = half if rule == "bresenham" else 0
+            self.lines.append([(f(p[0] + o, "line"), f(p[1] + o, "line")) for p in (a, b)])
+        self.polys = []
+        for outline, holes, rule in s["polygons"]:
+            area = twice_area(outline)
+            contours = [outline]
+            for h in holes:
+                ha = twice_area(h)
+                contours.append(list(reversed(h)) if ha != 0 and area != 0 and (ha > 0) == (area > 0) else h)
+            contours = [[(f(x, "polygon"), f(y, "polygon")) for x, y in c] for c in contours]
+            self.polys.append((contours, rule))
+        self.clip = None
+        if s["clip"] is not None:
+            self.clip = [(f(x, "clip"), f(y, "clip")) for x, y in s["clip"]]
+        self.clip_space = []
+        if s["clip_space_triangles"]:
+            vp = s["viewport"] or {}
+            box = [vp.get("x", Fraction(0)), vp.get("y", Fraction(0)),
+                   vp.get("width", Fraction(self.W)), vp.get("height", Fraction(self.H))]
+            if any(v.denominator != 1 for v in box):
+                raise Refused("viewport: not integer; this adapter maps clip space with glViewport, "
+                              "which takes integers")
+            self.viewport = [int(v) for v in box]
+            ndc_y = vp.get("ndc_y") or ("down" if s["preset"] == "vulkan" else "up")
+            depth = vp.get("depth") or ("minus-one-to-one" if s["preset"] == "gl" else "zero-to-one")
+            if ndc_y not in ("up", "down"):
+                raise Refused(f"viewport.ndc_y: {json.dumps(ndc_y)} is not up or down")
+            for t in s["clip_space_triangles"]:
+                vs = []
+                for x, y, z, w in t:
+                    y = -y if ndc_y == "down" else y
+                    z = 2 * z - w if depth == "zero-to-one" else z
+                    vs.append(tuple(f(c, "clip-space vertex") for c in (x, y, z, w)))
+                self.clip_space.append(vs)
+
+    def setup(self):
+        GL = self.GL
+        for cap in (GL.GL_BLEND, GL.GL_DEPTH_TEST, GL.GL_DITHER, GL.GL_CULL_FACE, GL.GL_POLYGON_SMOOTH,
+                    GL.GL_LINE_SMOOTH, GL.GL_MULTISAMPLE, GL.GL_SCISSOR_TEST, GL.GL_STENCIL_TEST,
+                    GL.GL_ALPHA_TEST, GL.GL_LIGHTING, GL.GL_TEXTURE_2D, GL.GL_DEPTH_CLAMP):
+            GL.glDisable(cap)
+        GL.glShadeModel(GL.GL_FLAT)
+        GL.glPolygonMode(GL.GL_FRONT_AND_BACK, GL.GL_FILL)
+        GL.glLineWidth(1.0)
+        GL.glPixelStorei(GL.GL_PACK_ALIGNMENT, 1)
+        self.window_space()
+
+    def window_space(self):
+        GL, low, span = self.GL, self.low, self.span
+        GL.glViewport(low, self.H - low - span, span, span)
+        GL.glMatrixMode(GL.GL_PROJECTION)
+        GL.glLoadIdentity()
+        GL.glOrtho(low, low + span, low + span, low, -1, 1)
+        GL.glMatrixMode(GL.GL_MODELVIEW)
+        GL.glLoadIdentity()
+
+    def arrays(self, mode, prims, colours, dims=2):
+        """Draws `prims` (lists of vertices) as `mode`, primitive k in colours[k]."""
+        GL, np = self.GL, self.np
+        if not prims:
+            return
+        verts = np.array([v for p in prims for v in p], dtype=np.float32).reshape(-1, dims)
+        cols = np.array([c for p, c in zip(prims, colours) for _ in p], dtype=np.uint8).reshape(-1, 4)
+        GL.glEnableClientState(GL.GL_VERTEX_ARRAY)
+        GL.glEnableClientState(GL.GL_COLOR_ARRAY)
+        GL.glVertexPointer(dims, GL.GL_FLOAT, 0, verts)
+        GL.glColorPointer(4, GL.GL_UNSIGNED_BYTE, 0, cols)
+        GL.glDrawArrays(mode, 0, len(verts))
+        GL.glDisableClientState(GL.GL_COLOR_ARRAY)
+        GL.glDisableClientState(GL.GL_VERTEX_ARRAY)
+
+    def fan(self, contour):
+        return [(contour[0], contour[k], contour[k + 1]) for k in range(1, len(contour) - 1)]
+
+    def stencil_base(self):
+        """The stencil test every colour draw takes: inside the clip window, if any."""
+        GL = self.GL
+        if self.clip is None:
+            GL.glDisable(GL.GL_STENCIL_TEST)
+        else:
+            GL.glEnable(GL.GL_STENCIL_TEST)
+            GL.glStencilMask(0)
+            GL.glStencilFunc(GL.GL_EQUAL, CLIP_BIT, CLIP_BIT)
+            GL.glStencilOp(GL.GL_KEEP, GL.GL_KEEP, GL.GL_KEEP)
+
+    def draw(self, colour_of):
+        """Every primitive in id order; `colour_of(id)` gives its RGBA."""
+        GL = self.GL
+        GL.glStencilMask(0xFF)
+        GL.glClearStencil(0)
+        GL.glClearColor(0, 0, 0, 0)
+        GL.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_STENCIL_BUFFER_BIT)
+        if self.clip is not None:
+            GL.glColorMask(False, False, False, False)
+            GL.glEnable(GL.GL_STENCIL_TEST)
+            GL.glStencilMask(CLIP_BIT)
+            GL.glStencilFunc(GL.GL_ALWAYS, CLIP_BIT, CLIP_BIT)
+            GL.glStencilOp(GL.GL_KEEP, GL.GL_KEEP, GL.GL_REPLACE)
+            self.arrays(GL.GL_TRIANGLES, self.fan(self.clip), [(0, 0, 0, 0)] * (len(self.clip) - 2))
+            GL.glColorMask(True, True, True, True)
+        self.stencil_base()
+        next_id = 0
+        self.arrays(GL.GL_TRIANGLES, self.tris, [colour_of(next_id + k) for k in range(len(self.tris))])
+        next_id += len(self.tris)
+        self.arrays(GL.GL_LINES, self.lines, [colour_of(next_id + k) for k in range(len(self.lines))])
+        next_id += len(self.lines)
+        for contours, rule in self.polys:
+            self.polygon(contours, rule, colour_of(next_id))
+            next_id += 1
+        if self.clip_space:
+            GL.glMatrixMode(GL.GL_PROJECTION)
+            GL.glLoadIdentity()
+            GL.glMatrixMode(GL.GL_MODELVIEW)
+            GL.glLoadIdentity()
+            x, y, w, h = self.viewport
+            GL.glViewport(x, self.H - y - h, w, h)
+            self.arrays(GL.GL_TRIANGLES, self.clip_space,
+                        [colour_of(next_id + k) for k in range(len(self.clip_space))], dims=4)
+            self.window_space()
+        GL.glFinish()
+
+    def polygon(self, contours, rule, rgba):
+        GL = self.GL
+        GL.glColorMask(False, False, False, False)
+        GL.glEnable(GL.GL_STENCIL_TEST)
+        GL.glStencilMask(WINDING_BITS if rule == "nonzero" else 0x01)
+        if self.clip is None:
+            GL.glStencilFunc(GL.GL_ALWAYS, 0, 0)
+        else:
+            GL.glStencilFunc(GL.GL_EQUAL, CLIP_BIT, CLIP_BIT)
+        if rule == "nonzero":
+            GL.glStencilOpSeparate(GL.GL_FRONT, GL.GL_KEEP, GL.GL_KEEP, GL.GL_INCR_WRAP)
+            GL.glStencilOpSeparate(GL.GL_BACK, GL.GL_KEEP, GL.GL_KEEP, GL.GL_DECR_WRAP)
+        else:
+            GL.glStencilOp(GL.GL_KEEP, GL.GL_KEEP, GL.GL_INVERT)
+        fans = [t for c in contours for t in self.fan(c)]
+        self.arrays(GL.GL_TRIANGLES, fans, [(0, 0, 0, 0)] * len(fans))
+        # Cover: the bounding box grown by a pixel, where the winding bits are not zero
+        # (outside the clip window they stayed zero); clear them on the way.
+        GL.glColorMask(True, True, True, True)
+        bits = WINDING_BITS if rule == "nonzero" else 0x01
+        GL.glStencilFunc(GL.GL_NOTEQUAL, 0, bits)
+        GL.glStencilOp(GL.GL_KEEP, GL.GL_KEEP, GL.GL_ZERO)
+        xs = [v[0] for c in contours for v in c]
+        ys = [v[1] for c in contours for v in c]
+        x0, y0, x1, y1 = min(xs) - 1, min(ys) - 1, max(xs) + 1, max(ys) + 1
+        quad = [((x0, y0), (x1, y0), (x1, y1)), ((x0, y0), (x1, y1), (x0, y1))]
+        self.arrays(GL.GL_TRIANGLES, quad, [rgba, rgba])
+        self.stencil_base()
+
+    def read(self):
+        """The colour buffer, top row first, as an H x W x 4 uint8 array."""
+        GL, np = self.GL, self.np
+        data = GL.glReadPixels(0, 0, self.W, self.H, GL.GL_RGBA, GL.GL_UNSIGNED_BYTE)
+        rows = np.frombuffer(bytes(data), dtype=np.uint8).reshape(self.H, self.W, 4)
+        return rows[::-1].copy()
+
+
+def render(args):
+    os.environ["PYOPENGL_PLATFORM"] = "osmesa"
+    os.environ["GALLIUM_DRIVER"] = args.driver
+    scene = load_scene(args.scene)
+    try:
+        import numpy as np
+        from OpenGL import GL, osmesa
+        from PIL import Image
+    except Exception as e:  # ImportError, or PyOpenGL failing to load libOSMesa
+        raise Refused(f"cannot load the OSMesa Python stack ({e}); install libosmesa6 python3-opengl "
+                      f"python3-numpy python3-pil and run /usr/bin/python3") from e
+    W, H = scene["width"], scene["height"]
+    ctx = osmesa.OSMesaCreateContextExt(osmesa.OSMESA_RGBA, 0, 8, 0, None)
+    if not ctx:
+        raise Refused("OSMesaCreateContextExt failed")
+    try:
+        buf = np.zeros((H, W, 4), dtype=np.uint8)
+        if not osmesa.OSMesaMakeCurrent(ctx, buf, GL.GL_UNSIGNED_BYTE, W, H):
+            raise Refused(f"OSMesaMakeCurrent failed for a {W}x{H} buffer")
+        renderer_name = GL.glGetString(GL.GL_RENDERER).decode()
+        version = GL.glGetString(GL.GL_VERSION).decode()
+        print(f"{NAME}: renderer: {renderer_name}; {version}", file=sys.stderr)
+        if not renderer_name.startswith(args.driver):
+            raise Refused(f"asked for {args.driver}, but GL_RENDERER is {renderer_name!r}")
+        if GL.glGetIntegerv(GL.GL_STENCIL_BITS) < 8:
+            raise Refused("the context has fewer than 8 stencil bits")
+        max_dims = min(int(d) for d in GL.glGetIntegerv(GL.GL_MAX_VIEWPORT_DIMS))
+        span = 1
+        while 2 * span <= max_dims:
+            span *= 2
+        if span < max(W, H):
+            raise Refused(f"canvas {W}x{H}: larger than GL_MAX_VIEWPORT_DIMS {max_dims}")
+        to_f32 = F32(np)
+        r = Renderer(GL, np, scene, to_f32, span)
+        r.setup()
+        r.draw(colour)
+        ids = r.read()
+        GL.glEnable(GL.GL_BLEND)
+        GL.glBlendEquation(GL.GL_FUNC_ADD)
+        GL.glBlendFunc(GL.GL_ONE, GL.GL_ONE)
+        r.draw(lambda _id: (1, 0, 0, 0))
+        counts = r.read()[:, :, 0]
+        GL.glDisable(GL.GL_BLEND)
+    finally:
+        osmesa.OSMesaDestroyContext(ctx)
+    ids[:, :, 3][counts >= 2] = 254
+    if to_f32.inexact:
+        print(f"{NAME}: note: {to_f32.inexact} coordinate(s) of {args.scene} are not f32-exact; "
+              f"rounded to the nearest f32", file=sys.stderr)
+    try:
+        Image.fromarray(ids, "RGBA").save(args.out, format="PNG")
+    except (OSError, ValueError) as e:
+        raise Refused(f"{args.out}: cannot write the PNG: {e}") from e
+
+
+class Parser(argparse.ArgumentParser):
+    def error(self, message):
+        self.print_usage(sys.stderr)
+        print(f"{NAME}: {message}", file=sys.stderr)
+        sys.exit(2)
+
+
+def main(argv):
+    p = Parser(prog=NAME, description="Render a rasterproof scene with Mesa (OSMesa) into an ids PNG.")
+    p.add_argument("scene", help="the scene file (JSON)")
+    p.add_argument("out", help="the ids PNG to write")
+    p.add_argument("--driver", choices=DRIVERS, default="llvmpipe", help="the Gallium driver (default llvmpipe)")
+    args = p.parse_args(argv)
+    try:
+        render(args)
+    except Refused as e:
+        print(f"{NAME}: {e}", file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,147 @@
+//! `rasterproof compare`: another renderer's output against the oracle, every differing
+//! pixel explained ([`rasterproof::oracle::compare`]).
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use rasterproof::coverage::picture::{legend_path, Scale};
+use rasterproof::oracle::{compare, Background, Format, Theirs};
+
+use super::{ConventionArgs, Outputs};
+
+/// What `compare` was asked to do.
+#[derive(clap::Args)]
+pub struct Options {
+    /// The scene file (JSON).
+    scene: PathBuf,
+    /// Their output: a PNG (`--as mask` or `ids`) or the JSON of `render --format json`.
+    theirs: PathBuf,
+    /// How to read THEIRS: mask (covered where a pixel differs from the background), ids
+    /// (the ids PNG of `render --ids-out`: id + 1 in R (low byte), G, B; alpha 254 marks
+    /// several owners) or json. Default: json for a .json file, ids otherwise.
+    #[arg(long = "as", value_name = "FORMAT")]
+    theirs_as: Option<String>,
+    /// The oracle model: exact-snapped (default: the answer of a renderer that snaps
+    /// vertices to the subpixel grid) or exact (vertices as written), or their plain forms.
+    #[arg(long, default_value = "exact-snapped")]
+    model: String,
+    #[command(flatten)]
+    convention: ConventionArgs,
+    /// The uncovered colour of a mask PNG, 8-bit channels (default: transparent black
+    /// for images with alpha, black for images without).
+    #[arg(long, value_name = "R,G,B[,A]")]
+    background: Option<String>,
+    /// Write the difference picture (PNG): grey where both cover a pixel alike, red
+    /// missing, green extra, yellow wrong owner, magenta double, black neither; scaled up
+    /// for small canvases, its legend beside it as DIFF.legend.txt.
+    #[arg(long = "diff-out", value_name = "DIFF.png")]
+    diff_out: Option<PathBuf>,
+    /// Output format on stdout.
+    #[arg(long = "format", value_enum, default_value_t = ReportFormat::Text)]
+    format_out: ReportFormat,
+    /// Text output: how many differing pixels to explain one by one (JSON lists all).
+    #[arg(long, default_value_t = 20)]
+    limit: usize,
+    /// Instead of comparing under one convention, search them all: tie rule (top-left,
+    /// bottom-left, top-right, bottom-right, all-inclusive, all-exclusive), snapping (0..=16
+    /// subpixel bits x 5 roundings, or none) and sample position (0.5 or 0); print every
+    /// convention under which the oracle's image equals theirs, or the closest five. Exit 0
+    /// when one does, 1 when none does.
+    #[arg(long, conflicts_with_all = ["diff_out", "model"])]
+    fit: bool,
+}
+
+/// How `compare` reports on stdout.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ReportFormat {
+    /// The summary table (findings by pixel kind and reason class), then the first
+    /// `--limit` pixels, each with its exact explanation.
+    Text,
+    /// Everything, as one JSON object (schema in README.md, "rasterproof compare").
+    Json,
+}
+
+/// `--background R,G,B[,A]`.
+fn parse_background(text: &str) -> Result<Background, String> {
+    let parts: Result<Vec<u8>, _> = text.split(',').map(|p| p.trim().parse::<u8>()).collect();
+    let bad = || format!("--background: {text:?} is not R,G,B or R,G,B,A with channels 0..=255");
+    match parts.map_err(|_| bad())?.as_slice() {
+        [r, g, b] => Ok(Background {
+            rgb: [*r, *g, *b],
+            alpha: None,
+        }),
+        [r, g, b, a] => Ok(Background {
+            rgb: [*r, *g, *b],
+            alpha: Some(*a),
+        }),
+        _ => Err(bad()),
+    }
+}
+
+pub fn run(o: &Options) -> Result<ExitCode, String> {
+    let model = super::parse_model(&o.model)?;
+    let format = match &o.theirs_as {
+        Some(f) => {
+            Format::from_name(f).ok_or_else(|| format!("--as: unknown format {f:?} (expected mask, ids or json)"))?
+        }
+        None if o.theirs.extension().is_some_and(|e| e.eq_ignore_ascii_case("json")) => Format::Json,
+        None => Format::Ids,
+    };
+    let background = o
+        .background
+        .as_deref()
+        .map(parse_background)
+        .transpose()?
+        .unwrap_or_default();
+    if o.background.is_some() && format != Format::Mask {
+        return Err("--background: only a mask (--as mask) has a background".to_string());
+    }
+    let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
+    let theirs_name = o.theirs.display().to_string();
+    let bytes = std::fs::read(&o.theirs).map_err(|e| format!("{theirs_name}: cannot read: {e}"))?;
+    let theirs = Theirs::read(&bytes, &theirs_name, format, background).map_err(|e| e.to_string())?;
+    if o.fit {
+        let found = rasterproof::oracle::fit(&scene.primitives(), &target, &theirs).map_err(|e| match e {
+            rasterproof::oracle::FitError::Size { .. } => format!("{theirs_name}: {e} ({name})"),
+            other => format!("{name}: {other}"),
+        })?;
+        match o.format_out {
+            ReportFormat::Text => super::write_stdout(|out| {
+                writeln!(
+                    out,
+                    "compare --fit: {theirs_name} (as {}) against {name}",
+                    format.name()
+                )?;
+                out.write_all(found.to_text().as_bytes())
+            })?,
+            ReportFormat::Json => super::print_stdout(&found.to_json().to_string())?,
+        }
+        return Ok(if found.exact.is_empty() {
+            ExitCode::from(1)
+        } else {
+            ExitCode::SUCCESS
+        });
+    }
+    let report = compare(&scene.primitives(), &target, model, &theirs).map_err(|e| match e {
+        rasterproof::oracle::CompareError::Size { .. } => format!("{theirs_name}: {e} ({name})"),
+        other => format!("{name}: {other} (model {model})"),
+    })?;
+    if let Some(path) = &o.diff_out {
+        let scale = Scale::default_for(target.width, target.height);
+        let mut outputs = Outputs::new();
+        outputs.stage_png(path, &report.diff_picture(scale))?;
+        outputs.stage_text(&legend_path(path), &report.diff_legend(scale))?;
+        outputs.commit()?;
+    }
+    match o.format_out {
+        ReportFormat::Text => {
+            super::write_stdout(|out| out.write_all(report.to_text(&name, &theirs_name, o.limit).as_bytes()))?
+        }
+        ReportFormat::Json => super::print_stdout(&report.to_json(&name, &theirs_name).to_string())?,
+    }
+    Ok(if report.identical() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}

@@ -1,0 +1,62 @@
+//! `rasterproof explain`: one pixel of a scene, exactly ([`rasterproof::oracle::explain_pixel`]).
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use rasterproof::oracle::explain_pixel;
+
+use super::ConventionArgs;
+
+/// What `explain` was asked to do.
+#[derive(clap::Args)]
+pub struct Options {
+    /// The scene file (JSON).
+    scene: PathBuf,
+    /// The pixel, as X,Y (column, row; 0,0 is the top-left pixel).
+    #[arg(value_name = "X,Y")]
+    pixel: String,
+    #[command(flatten)]
+    convention: ConventionArgs,
+    /// Output format on stdout.
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+}
+
+/// How `explain` reports.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// The sample, each nearby primitive's exact evidence (as written and snapped), and
+    /// what every model decides.
+    Text,
+    /// The same as one JSON object.
+    Json,
+}
+
+/// `X,Y`.
+fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("pixel: {text:?} is not X,Y (two non-negative integers)");
+    let (x, y) = text.split_once(',').ok_or_else(bad)?;
+    Ok((
+        x.trim().parse().map_err(|_| bad())?,
+        y.trim().parse().map_err(|_| bad())?,
+    ))
+}
+
+pub fn run(o: &Options) -> Result<ExitCode, String> {
+    let (x, y) = parse_pixel(&o.pixel)?;
+    let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
+    let why = explain_pixel(&scene.primitives(), &target, x, y).ok_or_else(|| {
+        format!(
+            "pixel: ({x}, {y}) is off the {}x{} canvas of {name}",
+            target.width, target.height
+        )
+    })?;
+    match o.format {
+        Format::Text => super::write_stdout(|out| {
+            writeln!(out, "{name}: {}", target.convention)?;
+            out.write_all(why.to_text().as_bytes())
+        })?,
+        Format::Json => super::print_stdout(&why.to_json().to_string())?,
+    }
+    Ok(ExitCode::SUCCESS)
+}

@@ -1,0 +1,254 @@
+//! `rasterproof hunt`: differential testing of an external renderer
+//! ([`rasterproof::oracle::hunt`]), every distinct failure shrunk to a minimal scene.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Duration;
+
+use indicatif::{ProgressBar, ProgressStyle};
+use rasterproof::convention::Preset;
+use rasterproof::oracle::hunt::{
+    generate_scene, hunt, hunt_convention, preferred, rust_test, Family, HuntConfig, Verdict,
+};
+use rasterproof::oracle::program::Program;
+use rasterproof::oracle::{fit, Background, Format};
+
+use super::Outputs;
+
+/// What `hunt` was asked to do.
+#[derive(clap::Args)]
+pub struct Options {
+    /// The renderer: `PROGRAM ARGS {scene} {out}`, split as a POSIX shell splits words and
+    /// run without a shell; {scene} is replaced by a scene file's path, {out} by the path
+    /// it must write (a PNG, or JSON with --as json).
+    #[arg(long, value_name = "COMMAND")]
+    cmd: String,
+    /// How to read its output: ids (default), mask or json.
+    #[arg(long = "as", value_name = "FORMAT", default_value = "ids")]
+    theirs_as: String,
+    /// How many scenes.
+    #[arg(long, default_value_t = 200)]
+    cases: u64,
+    /// Seed of the scene generator (same seed, same scenes).
+    #[arg(long, default_value_t = 0)]
+    seed: u64,
+    /// The families to draw from (repeat, or comma-separate): mesh, delaunay, triangles,
+    /// slivers, huge, fine, lines, polygons. Default: all.
+    #[arg(long = "family", value_name = "F", value_delimiter = ',')]
+    families: Vec<String>,
+    /// The convention every scene states: d3d11 (default), vulkan, gl, cts.
+    #[arg(long, conflicts_with = "fit_first")]
+    preset: Option<String>,
+    /// Fit the renderer's convention first (compare --fit on a tie-heavy scene) and hunt
+    /// under it.
+    #[arg(long)]
+    fit_first: bool,
+    /// Canvas side of every scene, pixels.
+    #[arg(long, default_value_t = 16)]
+    canvas: u32,
+    /// Write each distinct failure here: the minimal scene (finding-NN.json), its
+    /// explanation (finding-NN.txt) and a Rust test (finding-NN.rs).
+    #[arg(long, value_name = "DIR")]
+    out: Option<PathBuf>,
+    /// Kill the renderer after this many seconds (a timeout is a finding).
+    #[arg(long, default_value_t = 10.0)]
+    timeout: f64,
+    /// Run this many renderers at once.
+    #[arg(long, default_value_t = 1)]
+    jobs: usize,
+    /// Only coordinates that f32 holds exactly (for programs that read floats).
+    #[arg(long)]
+    float32_exact: bool,
+    /// Runs of the renderer allowed per shrink.
+    #[arg(long, default_value_t = 400)]
+    shrink_runs: usize,
+    /// Hide the progress bar.
+    #[arg(long)]
+    quiet: bool,
+}
+
+pub fn run(o: &Options) -> Result<ExitCode, String> {
+    let format = Format::from_name(&o.theirs_as)
+        .ok_or_else(|| format!("--as: unknown format {:?} (expected ids, mask or json)", o.theirs_as))?;
+    if !(o.timeout > 0.0 && o.timeout.is_finite()) {
+        return Err(format!("--timeout: {} is not a positive number of seconds", o.timeout));
+    }
+    if !(1..=rasterproof::convention::MAX_CANVAS).contains(&o.canvas) {
+        return Err(format!(
+            "--canvas: {} is outside 1..={}",
+            o.canvas,
+            rasterproof::convention::MAX_CANVAS
+        ));
+    }
+    if o.jobs == 0 {
+        return Err("--jobs: 0 (at least 1)".to_string());
+    }
+    let families = if o.families.is_empty() {
+        Family::ALL.to_vec()
+    } else {
+        o.families
+            .iter()
+            .map(|f| {
+                Family::from_name(f.trim()).ok_or_else(|| {
+                    let all: Vec<&str> = Family::ALL.iter().map(|f| f.name()).collect();
+                    format!("--family: unknown family {f:?} (expected {})", all.join(", "))
+                })
+            })
+            .collect::<Result<_, _>>()?
+    };
+    let program = Program::new(
+        &o.cmd,
+        format,
+        Background::default(),
+        Duration::from_secs_f64(o.timeout),
+    )?;
+    let mut config = HuntConfig {
+        cases: o.cases,
+        seed: o.seed,
+        families,
+        canvas: o.canvas,
+        float32_exact: o.float32_exact,
+        shrink_runs: o.shrink_runs,
+        ..HuntConfig::default()
+    };
+    if let Some(p) = &o.preset {
+        config.preset = Preset::from_name(p)
+            .ok_or_else(|| format!("--preset: unknown preset {p:?} (expected one of d3d11, vulkan, gl, cts)"))?;
+    }
+    let render_with = |s: &rasterproof::scene::Scene| program.render(s);
+    if o.fit_first {
+        fit_first(&mut config, &render_with)?;
+    }
+    let bar = if o.quiet {
+        ProgressBar::hidden()
+    } else {
+        ProgressBar::new(o.cases)
+    };
+    bar.set_style(
+        ProgressStyle::with_template("{bar:40} {pos}/{len} scenes, {elapsed} ({eta} left)").expect("static template"),
+    );
+    let report = hunt(&config, &render_with, o.jobs, &|| bar.inc(1))?;
+    bar.finish_and_clear();
+
+    let mut outputs = Outputs::new();
+    if let Some(dir) = &o.out {
+        std::fs::create_dir_all(dir).map_err(|e| format!("--out {}: cannot create: {e}", dir.display()))?;
+        for (n, f) in report.findings.iter().enumerate() {
+            let n = n + 1;
+            let path = |ext: &str| dir.join(format!("finding-{n:02}.{ext}"));
+            outputs.stage_text(&path("json"), &f.minimal.to_json())?;
+            outputs.stage_text(&path("txt"), &explanation(f, n))?;
+            outputs.stage_text(&path("rs"), &rust_test(f, n, config.model))?;
+        }
+    }
+    outputs.commit()?;
+    let convention = config.overrides.apply(config.preset);
+    let mut lines = vec![format!(
+        "hunt: {} scenes ({} px canvas, {}, oracle {}): {} identical, {} differ, {} failed, {} refused by the oracle",
+        report.cases,
+        o.canvas,
+        convention,
+        config.model.name(),
+        report.same,
+        report.differing,
+        report.failed,
+        report.refused
+    )];
+    if !report.findings.is_empty() {
+        lines.push(format!(
+            "{:<4} {:<44} {:>6} {:>6} {:>10} {:>7}",
+            "", "finding", "cases", "first", "primitives", "canvas"
+        ));
+    }
+    for (n, f) in report.findings.iter().enumerate() {
+        lines.push(format!(
+            "{:<4} {:<44} {:>6} {:>6} {:>10} {:>7}",
+            format!("{:02}", n + 1),
+            f.signature.describe(),
+            f.cases,
+            f.case,
+            rasterproof::oracle::hunt::primitive_count(&f.minimal),
+            format!("{}x{}", f.minimal.width, f.minimal.height)
+        ));
+    }
+    if let (Some(dir), false) = (&o.out, report.findings.is_empty()) {
+        lines.push(format!(
+            "wrote finding-NN.json / .txt / .rs for each into {}",
+            dir.display()
+        ));
+    }
+    for line in lines {
+        super::print_stdout(&line)?;
+    }
+    Ok(if report.findings.is_empty() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
+
+/// How many tie-heavy probe scenes `--fit-first` renders: the conventions that explain
+/// every one of them are kept (one scene rarely tells every rule and snapping apart).
+const FIT_PROBES: u64 = 6;
+
+/// `--fit-first`: the convention that explains their renders of [`FIT_PROBES`] tie-heavy
+/// scenes, set on `config`.
+fn fit_first(
+    config: &mut HuntConfig,
+    render_with: &dyn Fn(
+        &rasterproof::scene::Scene,
+    ) -> Result<rasterproof::oracle::Theirs, rasterproof::oracle::program::Failure>,
+) -> Result<(), String> {
+    let probe = HuntConfig {
+        families: vec![Family::Mesh],
+        ..config.clone()
+    };
+    let mut exact: Option<Vec<rasterproof::oracle::Candidate>> = None;
+    let mut last = None;
+    for k in 0..FIT_PROBES {
+        let scene = generate_scene(&probe, u64::MAX - k)?;
+        let target = scene.target().ok_or("--fit-first: invalid probe scene")?;
+        let theirs =
+            render_with(&scene).map_err(|f| format!("--fit-first: the renderer failed on a probe scene: {f}"))?;
+        let found = fit(&scene.primitives(), &target, &theirs).map_err(|e| format!("--fit-first: {e}"))?;
+        exact = Some(match exact {
+            None => found.exact.clone(),
+            Some(kept) => kept.into_iter().filter(|c| found.exact.contains(c)).collect(),
+        });
+        last = Some(found);
+    }
+    let exact = exact.unwrap_or_default();
+    let Some(best) = preferred(&exact) else {
+        return Err(format!(
+            "--fit-first: no convention hunt can state explains the renderer's images of the {FIT_PROBES} probe scenes \
+             (the last probe's fit:)\n{}",
+            last.map(|f| f.to_text()).unwrap_or_default()
+        ));
+    };
+    let (overrides, model) = hunt_convention(&best).expect("preferred only returns statable conventions");
+    eprintln!("fit: hunting under {best} (oracle {})", model.name());
+    config.overrides = overrides;
+    config.model = model;
+    Ok(())
+}
+
+/// The `.txt` of a finding: what it is, its minimal scene's comparison (or failure), and
+/// the first scene that showed it.
+fn explanation(f: &rasterproof::oracle::hunt::HuntFinding, n: usize) -> String {
+    let mut s = format!(
+        "finding {n:02}: {} (first in case {}, {} cases; shrunk with {} renderer runs)\n\n",
+        f.signature.describe(),
+        f.case,
+        f.cases,
+        f.runs
+    );
+    match &f.verdict {
+        Verdict::Differs(r) => s.push_str(&r.to_text(&format!("finding-{n:02}.json"), "their output", 50)),
+        Verdict::Failed(failure) => s.push_str(&format!("their renderer: {failure}\n")),
+        Verdict::Same => s.push_str("(the minimal scene no longer fails: the renderer is not deterministic)\n"),
+        Verdict::Refused(e) => s.push_str(&format!("the oracle refused the minimal scene: {e}\n")),
+    }
+    s.push_str("\nthe original scene:\n");
+    s.push_str(&f.original.to_json());
+    s
+}

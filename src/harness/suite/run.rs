@@ -1,0 +1,293 @@
+//! Running the suite at scale: a [`Plan`] (seed, cases, shard, threads, time budget) run
+//! on a rayon thread pool into a [`Report`]. The cases run in blocks; each block's cases
+//! run in parallel, their results are collected by case index and folded into the report
+//! in index order, so the report does not depend on the number of threads.
+
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::{Duration, Instant};
+
+use rayon::prelude::*;
+
+use super::{generate, run_case, CaseRun, Outcome, Report, Shard};
+
+/// Cases per thread in one block: enough that the threads seldom wait for each other at
+/// a block's end (`--cases 64 --jobs 2`: 1.86 times as fast as one thread), few enough
+/// that the progress and `--out` files follow closely.
+const BLOCK_PER_THREAD: u64 = 32;
+
+/// At most this many cases in a block (unless there are more threads): a block's runs,
+/// their scenes included, are held until it is folded into the report.
+const BLOCK_MAX: u64 = 2048;
+
+/// Stack of each worker thread: the main thread's usual 8 MiB, for the deep recursions of
+/// the exact arithmetic and the triangulation on big inputs.
+const STACK: usize = 8 << 20;
+
+/// At most this many threads.
+pub const MAX_JOBS: usize = 1024;
+
+/// Where `check --out` writes failing cases' scenes: which outcomes and under which name.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SceneFiles {
+    /// The folder.
+    pub dir: PathBuf,
+    /// Also the float models' violations, not only the fatal ones (`--out-float`).
+    pub float: bool,
+}
+
+impl SceneFiles {
+    /// The scene file of the failing outcome `o` of case `k`, when it is one to write:
+    /// `DIR/case-K-INVARIANT-MODEL.json` (the invariant's non-alphanumeric characters and
+    /// the label's `/` written `-`); its explanation goes beside it as the `.txt`.
+    ///
+    /// ```
+    /// use rasterproof::harness::suite::SceneFiles;
+    /// use rasterproof::harness::{generate, run_case};
+    /// let files = SceneFiles { dir: "out".into(), float: true };
+    /// let run = run_case(&generate(0, 0).unwrap());
+    /// let o = run.outcomes.iter().find(|o| o.result.is_err()).unwrap();
+    /// let path = files.path_for(0, o).unwrap();
+    /// assert!(path.starts_with("out") && path.to_str().unwrap().ends_with(".json"));
+    /// assert!(files.path_for(0, &run.outcomes[0]).is_none() || run.outcomes[0].result.is_err());
+    /// ```
+    pub fn path_for(&self, k: u64, o: &Outcome) -> Option<PathBuf> {
+        if o.result.is_ok() || !(o.is_fatal() || self.float) {
+            return None;
+        }
+        Some(scene_path(&self.dir, k, o))
+    }
+}
+
+/// `dir/case-K-INVARIANT-MODEL.json` for outcome `o` of case `k`.
+fn scene_path(dir: &Path, k: u64, o: &Outcome) -> PathBuf {
+    let slug: String = o
+        .invariant
+        .chars()
+        .map(|ch| if ch.is_ascii_alphanumeric() { ch } else { '-' })
+        .collect();
+    let label: String = o.label.chars().map(|ch| if ch == '/' { '-' } else { ch }).collect();
+    dir.join(format!("case-{k}-{slug}-{label}.json"))
+}
+
+/// What to run: the suite's cases `0..cases` of the run seeded `seed`, those of `shard`,
+/// on `jobs` threads, stopping when `budget` has passed.
+///
+/// ```
+/// use rasterproof::harness::suite::{Plan, Shard};
+/// let report = Plan { shard: Shard::new(2, 3).unwrap(), jobs: 2, ..Plan::new(7, 6) }.run().unwrap();
+/// assert_eq!(report.cases_run(), 2); // cases 1 and 4
+/// assert!(report.is_complete() && report.passed());
+/// ```
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Plan {
+    /// The seed of the case generator.
+    pub seed: u64,
+    /// The whole run's cases, `0..cases`, whatever the shard.
+    pub cases: u64,
+    /// The shard to run.
+    pub shard: Shard,
+    /// Threads, `1..=MAX_JOBS`.
+    pub jobs: usize,
+    /// No case starts once this much time has passed since the start; `None`: no limit.
+    pub budget: Option<Duration>,
+    /// Where the report says failing scenes were written (the caller writes them: see
+    /// [`Hooks::on_case`]); `None`: nowhere.
+    pub scene_files: Option<SceneFiles>,
+}
+
+/// What [`Hooks::on_case`] is called with: a case's index and outcomes.
+pub type OnCase<'a> = &'a mut dyn FnMut(u64, &CaseRun) -> Result<(), String>;
+
+/// What the caller sees while a [`Plan`] runs.
+#[derive(Default)]
+pub struct Hooks<'a> {
+    /// When set, no further case starts; the report says the run was interrupted.
+    pub stop: Option<&'a AtomicBool>,
+    /// Called on a worker thread each time a case has run (for a progress bar).
+    pub tick: Option<&'a (dyn Fn() + Sync)>,
+    /// Called with each case that ran and its outcomes, in index order, before it is
+    /// added to the report (to print and write its failures); an error ends the run.
+    pub on_case: Option<OnCase<'a>>,
+}
+
+impl Plan {
+    /// Every case of `0..cases` seeded `seed`, one thread, no budget, no files.
+    pub fn new(seed: u64, cases: u64) -> Plan {
+        Plan {
+            seed,
+            cases,
+            shard: Shard::WHOLE,
+            jobs: 1,
+            budget: None,
+            scene_files: None,
+        }
+    }
+
+    /// How many cases the plan's shard holds.
+    pub fn case_count(&self) -> u64 {
+        self.shard.case_count(self.cases)
+    }
+
+    /// Runs the plan with no hooks (see [`Plan::run_with`]).
+    ///
+    /// # Errors
+    /// As [`Plan::run_with`].
+    pub fn run(&self) -> Result<Report, String> {
+        self.run_with(Hooks::default())
+    }
+
+    /// Runs the shard's cases in index order, `jobs` at a time, until they are done, the
+    /// budget has passed or `hooks.stop` is set; the cases that ran are the first of the
+    /// shard's, and the report says why the others did not.
+    ///
+    /// # Errors
+    /// `jobs` outside `1..=MAX_JOBS`, the thread pool cannot start, a case cannot be
+    /// generated, or `hooks.on_case` fails: its message.
+    pub fn run_with(&self, mut hooks: Hooks<'_>) -> Result<Report, String> {
+        if !(1..=MAX_JOBS).contains(&self.jobs) {
+            return Err(format!("jobs {}: expected 1..={MAX_JOBS} threads", self.jobs));
+        }
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(self.jobs)
+            .stack_size(STACK)
+            .thread_name(|i| format!("rasterproof-check-{i}"))
+            .build()
+            .map_err(|e| format!("cannot start {} threads: {e}", self.jobs))?;
+        let start = Instant::now();
+        let deadline = self.budget.and_then(|b| start.checked_add(b));
+        let never = AtomicBool::new(false);
+        let stop = hooks.stop.unwrap_or(&never);
+        let halted = || stop.load(Ordering::Relaxed) || deadline.is_some_and(|d| Instant::now() >= d);
+        let tick = hooks.tick;
+        let total = self.case_count();
+        let threads = u64::try_from(self.jobs).unwrap_or(1);
+        let block = (BLOCK_PER_THREAD * threads).min(BLOCK_MAX).max(threads);
+        let files = self.scene_files.as_ref();
+        let path_of = |k: u64| move |o: &Outcome| files.and_then(|f| f.path_for(k, o)).map(|p| p.display().to_string());
+        let mut report = Report::new(self.seed, self.cases, self.shard);
+        let mut j = 0;
+        while j < total {
+            let ks: Vec<u64> = (j..total.min(j.saturating_add(block)))
+                .filter_map(|i| self.shard.case_at(i))
+                .collect();
+            let runs: Vec<Option<Result<CaseRun, String>>> = pool.install(|| {
+                ks.par_iter()
+                    .map(|&k| {
+                        if halted() {
+                            return None;
+                        }
+                        let run = generate(self.seed, k).map(|case| run_case(&case));
+                        if let Some(tick) = tick {
+                            tick();
+                        }
+                        Some(run)
+                    })
+                    .collect()
+            });
+            for (&k, run) in ks.iter().zip(runs) {
+                let Some(run) = run else {
+                    report.stop(self.stopped_why(&report, stop.load(Ordering::Relaxed)));
+                    return Ok(report);
+                };
+                let run = run?;
+                if let Some(on_case) = hooks.on_case.as_mut() {
+                    on_case(k, &run)?;
+                }
+                report.add(k, &run, &path_of(k));
+            }
+            j = j.saturating_add(block);
+        }
+        Ok(report)
+    }
+
+    /// Why the run ended after `report`'s cases: interrupted, or the budget.
+    fn stopped_why(&self, report: &Report, interrupted: bool) -> String {
+        let shard = if self.shard == Shard::WHOLE {
+            String::new()
+        } else {
+            format!("shard {}: ", self.shard)
+        };
+        let why = match self.budget {
+            Some(b) if !interrupted => format!("the time budget ({b:?}) ran out"),
+            _ => "interrupted".to_string(),
+        };
+        format!(
+            "{shard}{why} after {} of {} cases",
+            report.cases_run(),
+            self.case_count()
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two threads give the report of one; a stop set before the start runs nothing and
+    /// says so; a zero budget stops at once too; jobs 0 is refused.
+    #[test]
+    fn threads_budget_and_stop() {
+        let one = Plan::new(3, 3).run().unwrap();
+        let two = Plan {
+            jobs: 2,
+            ..Plan::new(3, 3)
+        }
+        .run()
+        .unwrap();
+        assert_eq!(one, two);
+        assert_eq!(one.to_json(), two.to_json());
+
+        let stop = AtomicBool::new(true);
+        let stopped = Plan::new(3, 6)
+            .run_with(Hooks {
+                stop: Some(&stop),
+                ..Hooks::default()
+            })
+            .unwrap();
+        assert_eq!(stopped.cases_run(), 0);
+        assert!(!stopped.is_complete());
+        assert_eq!(stopped.stopped(), ["interrupted after 0 of 6 cases"]);
+
+        let none = Plan {
+            budget: Some(Duration::ZERO),
+            shard: Shard::new(1, 2).unwrap(),
+            ..Plan::new(3, 6)
+        }
+        .run()
+        .unwrap();
+        assert_eq!(
+            none.stopped(),
+            ["shard 1/2: the time budget (0ns) ran out after 0 of 3 cases"]
+        );
+
+        let e = Plan {
+            jobs: 0,
+            ..Plan::new(3, 6)
+        }
+        .run()
+        .unwrap_err();
+        assert!(e.contains("jobs 0"), "{e}");
+    }
+
+    /// on_case sees every case in index order, even with several threads.
+    #[test]
+    fn on_case_sees_cases_in_order() {
+        let mut seen = Vec::new();
+        let mut on_case = |k: u64, _: &CaseRun| {
+            seen.push(k);
+            Ok(())
+        };
+        Plan {
+            jobs: 2,
+            shard: Shard::new(2, 2).unwrap(),
+            ..Plan::new(1, 7)
+        }
+        .run_with(Hooks {
+            on_case: Some(&mut on_case),
+            ..Hooks::default()
+        })
+        .unwrap();
+        assert_eq!(seen, [1, 3, 5]);
+    }
+}

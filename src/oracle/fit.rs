@@ -1,0 +1,468 @@
+//! Fitting the convention: which tie rule, snapping and sample position make the oracle
+//! produce another renderer's image exactly ([`fit`]). The experiment a driver engineer
+//! runs by hand, as one search.
+//!
+//! The search space: the six tie rules of [`AnyTieRule`]; snapping to 0..=16 subpixel bits
+//! with each [`Rounding`], or no snapping; the sample at the pixel centre or its corner —
+//! 6 x (17 x 5 + 1) x 2 = 1032 conventions. Each is rendered exactly: the scene's vertices
+//! snapped by the candidate (exactly, [`crate::num::fixed::snap`]), then the planned exact
+//! engine; triangles take any of the six rules ([`PlannedTriangle::with_rule`]); polygons
+//! and clip windows follow the two directional rules the polygon engines implement
+//! (top-left, bottom-left), so a scene with either is searched over those two only.
+//! Scenes with clip-space triangles are refused (their window-space vertices exist only
+//! after clipping; compare them under a stated convention).
+
+use std::collections::BTreeMap;
+use std::fmt::{self, Write as _};
+
+use num_rational::BigRational;
+use serde_json::{json, Value};
+
+use super::compare::{count_differences, PixelKind};
+use super::reason::Snapping;
+use super::theirs::Theirs;
+use crate::convention::{AnyTieRule, Convention, PixelCentre, Target, TieRule};
+use crate::coverage::{Coverage, CoverageSink};
+use crate::geom::{Point, Polygon, Triangle};
+use crate::line::{Line, LineRule};
+use crate::model::{prepare, Model, ModelError, Primitives};
+use crate::num::exact::dyadic;
+use crate::num::fixed::snap;
+use crate::num::Rounding;
+use crate::tri::planned::PlannedTriangle;
+
+/// The largest subpixel precision searched.
+pub const MAX_FIT_BITS: u32 = 16;
+
+/// How many of the closest conventions a fit keeps when none is exact.
+pub const CLOSEST: usize = 5;
+
+/// One convention a renderer may follow.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Candidate {
+    /// The tie rule.
+    pub tie_rule: AnyTieRule,
+    /// The snapping (`bits: None`: unsnapped; `Some(0)`: whole pixels).
+    pub snapping: Snapping,
+    /// Where the sample sits.
+    pub pixel_centre: PixelCentre,
+}
+
+impl fmt::Display for Candidate {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "tie rule {}, {}, pixel centre {}",
+            self.tie_rule.name(),
+            self.snapping.describe(),
+            centre_name(self.pixel_centre)
+        )
+    }
+}
+
+fn centre_name(c: PixelCentre) -> &'static str {
+    match c {
+        PixelCentre::Half => "0.5",
+        PixelCentre::Corner => "0",
+    }
+}
+
+/// A convention and how far its image is from theirs.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Fit {
+    /// The convention.
+    pub candidate: Candidate,
+    /// Differing pixels by kind (empty: it explains their image exactly).
+    pub differing: BTreeMap<PixelKind, usize>,
+}
+
+impl Fit {
+    /// How many pixels differ.
+    pub fn total(&self) -> usize {
+        self.differing.values().sum()
+    }
+}
+
+/// What a fit found.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FitReport {
+    /// Every convention whose image equals theirs, in search order.
+    pub exact: Vec<Candidate>,
+    /// When none does: the closest few, fewest differing pixels first.
+    pub closest: Vec<Fit>,
+    /// How many conventions were rendered.
+    pub searched: usize,
+    /// Why some were not (a scene with polygons or a window: the four non-directional or
+    /// right-hand rules), with how many.
+    pub not_searched: Option<(usize, String)>,
+}
+
+/// Why a fit cannot run.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum FitError {
+    /// Their canvas is not the scene's.
+    Size {
+        /// Their width and height.
+        theirs: (u32, u32),
+        /// The scene's.
+        scene: (u32, u32),
+    },
+    /// The scene has clip-space triangles.
+    ClipSpace,
+    /// A candidate's render failed (a coordinate beyond what the exact engine accepts).
+    Model(ModelError),
+}
+
+impl fmt::Display for FitError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            FitError::Size { theirs, scene } => write!(
+                f,
+                "their image is {}x{} but the scene's canvas is {}x{}",
+                theirs.0, theirs.1, scene.0, scene.1
+            ),
+            FitError::ClipSpace => f.write_str(
+                "--fit does not search scenes with clip_space_triangles (their window-space vertices exist only \
+                 after clipping); compare them under a stated convention",
+            ),
+            FitError::Model(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for FitError {}
+
+/// Every snapping searched, in order: bits 0..=16 with each rounding, then unsnapped.
+fn snappings() -> Vec<Snapping> {
+    let mut out: Vec<Snapping> = (0..=MAX_FIT_BITS)
+        .flat_map(|bits| {
+            Rounding::ALL.into_iter().map(move |rounding| Snapping {
+                bits: Some(bits),
+                rounding,
+            })
+        })
+        .collect();
+    out.push(Snapping {
+        bits: None,
+        rounding: Rounding::NearestEven,
+    });
+    out
+}
+
+fn snap_point(p: &Point, s: Snapping) -> Point {
+    match s.bits {
+        None => p.clone(),
+        Some(bits) => {
+            let f = |v: &BigRational| dyadic(&snap(v, bits, s.rounding), bits);
+            Point::new(f(&p.x), f(&p.y))
+        }
+    }
+}
+
+/// `primitives` with every window-space vertex snapped by `s` (Bresenham lines keep their
+/// pixel addresses; the clip window is exact and stays).
+fn snapped(primitives: &Primitives, s: Snapping) -> Primitives {
+    let polygon = |p: &Polygon| Polygon {
+        outline: p.outline.iter().map(|v| snap_point(v, s)).collect(),
+        holes: p
+            .holes
+            .iter()
+            .map(|h| h.iter().map(|v| snap_point(v, s)).collect())
+            .collect(),
+        fill_rule: p.fill_rule,
+    };
+    Primitives {
+        triangles: primitives
+            .triangles
+            .iter()
+            .map(|t| Triangle {
+                v: t.v.clone().map(|v| snap_point(&v, s)),
+            })
+            .collect(),
+        lines: primitives
+            .lines
+            .iter()
+            .map(|l| match l.rule {
+                LineRule::Diamond => Line {
+                    from: snap_point(&l.from, s),
+                    to: snap_point(&l.to, s),
+                    rule: l.rule,
+                },
+                LineRule::Bresenham(_) => l.clone(),
+            })
+            .collect(),
+        polygons: primitives.polygons.iter().map(polygon).collect(),
+        ..primitives.clone()
+    }
+}
+
+/// Adds `offset` to every id (the lines drawn after the triangles).
+struct Offset<'a>(&'a mut Coverage, u32);
+
+impl CoverageSink for Offset<'_> {
+    fn cover(&mut self, x: u32, y: u32, id: u32) {
+        self.0.cover(x, y, id + self.1);
+    }
+
+    fn cover_span(&mut self, y: u32, x0: u32, x1: u32, id: u32) {
+        self.0.cover_span(y, x0, x1, id + self.1);
+    }
+}
+
+/// The exact image of `primitives` (already snapped) under `candidate`; `Ok(None)` when
+/// the candidate's rule does not apply to the scene's polygons or window.
+fn image(primitives: &Primitives, target: &Target, candidate: &Candidate) -> Result<Option<Coverage>, ModelError> {
+    let directional = match candidate.tie_rule {
+        AnyTieRule::TopLeft => Some(TieRule::TopLeft),
+        AnyTieRule::BottomLeft => Some(TieRule::BottomLeft),
+        _ => None,
+    };
+    let conv = Convention {
+        tie_rule: directional.unwrap_or(TieRule::TopLeft),
+        pixel_centre: candidate.pixel_centre,
+        ..target.convention
+    };
+    let t = Target {
+        convention: conv,
+        ..*target
+    };
+    if directional.is_some() {
+        return Ok(Some(prepare(Model::Exact, primitives, &t)?.coverage(&t)));
+    }
+    if !primitives.polygons.is_empty() || primitives.clip.is_some() {
+        return Ok(None);
+    }
+    let mut coverage = Coverage::new(t.width, t.height);
+    for (k, tri) in primitives.triangles.iter().enumerate() {
+        if let Some(p) = PlannedTriangle::with_rule(tri, &t, candidate.tie_rule) {
+            p.rasterize(u32::try_from(k).expect("ids fit u32"), &mut coverage);
+        }
+    }
+    if !primitives.lines.is_empty() {
+        let lines = Primitives {
+            lines: primitives.lines.clone(),
+            ..Primitives::default()
+        };
+        let offset = u32::try_from(primitives.triangles.len()).expect("ids fit u32");
+        prepare(Model::Exact, &lines, &t)?.draw(&t, &mut Offset(&mut coverage, offset));
+    }
+    Ok(Some(coverage))
+}
+
+/// Searches the conventions (see the module docs) for those under which the exact image of
+/// `primitives` on `target`'s canvas equals `theirs`.
+///
+/// ```
+/// use rasterproof::model::{render, Model};
+/// use rasterproof::oracle::{fit, Format, Theirs};
+/// use rasterproof::scene::parse_scene;
+/// // A renderer with the GL rule: the bottom edge at y = 1/2 owns its samples.
+/// let scene = parse_scene(r#"{"width": 4, "height": 2, "triangles": [{"v": [[0, "0.5"], [4, "0.5"], [0, "-3.5"]]}]}"#, "s.json").unwrap();
+/// let mut gl = scene.clone();
+/// gl.preset = rasterproof::convention::Preset::Gl;
+/// let theirs = render(Model::ExactSnapped, &gl.primitives(), &gl.target().unwrap()).unwrap();
+/// let found = fit(&scene.primitives(), &scene.target().unwrap(), &Theirs::from_coverage(&theirs, Format::Ids)).unwrap();
+/// use rasterproof::convention::{AnyTieRule, PixelCentre};
+/// // At 8 bits with centred samples the tie rule alone decides row 0: a bottom rule.
+/// let at_8_bits: Vec<AnyTieRule> = found
+///     .exact
+///     .iter()
+///     .filter(|c| c.snapping.bits == Some(8) && c.pixel_centre == PixelCentre::Half)
+///     .map(|c| c.tie_rule)
+///     .collect();
+/// assert!(at_8_bits.contains(&AnyTieRule::BottomLeft));
+/// assert!(!at_8_bits.contains(&AnyTieRule::TopLeft));
+/// ```
+///
+/// # Errors
+/// Their canvas differs, the scene has clip-space triangles, or a snapped coordinate is
+/// beyond what the exact engine accepts.
+pub fn fit(primitives: &Primitives, target: &Target, theirs: &Theirs) -> Result<FitReport, FitError> {
+    if (theirs.width(), theirs.height()) != (target.width, target.height) {
+        return Err(FitError::Size {
+            theirs: (theirs.width(), theirs.height()),
+            scene: (target.width, target.height),
+        });
+    }
+    if !primitives.clip_space_triangles.is_empty() {
+        return Err(FitError::ClipSpace);
+    }
+    let mut exact = Vec::new();
+    let mut closest: Vec<Fit> = Vec::new();
+    let (mut searched, mut skipped) = (0, 0);
+    for s in snappings() {
+        let scene = snapped(primitives, s);
+        for pixel_centre in [PixelCentre::Half, PixelCentre::Corner] {
+            for tie_rule in AnyTieRule::ALL {
+                let candidate = Candidate {
+                    tie_rule,
+                    snapping: s,
+                    pixel_centre,
+                };
+                let Some(ours) = image(&scene, target, &candidate).map_err(FitError::Model)? else {
+                    skipped += 1;
+                    continue;
+                };
+                searched += 1;
+                // Stop counting once the count cannot matter: at 1 when exact fits exist, just
+                // past the worst of a full list of the closest otherwise.
+                let stop = if !exact.is_empty() {
+                    Some(1)
+                } else if closest.len() == CLOSEST {
+                    closest.last().map(|f| f.total() + 1)
+                } else {
+                    None
+                };
+                let differing = count_differences(&ours, theirs, stop);
+                let fit = Fit { candidate, differing };
+                if fit.total() == 0 {
+                    exact.push(candidate);
+                } else if exact.is_empty() {
+                    closest.push(fit);
+                    closest.sort_by_key(Fit::total);
+                    closest.truncate(CLOSEST);
+                }
+            }
+        }
+    }
+    if !exact.is_empty() {
+        closest.clear();
+    }
+    Ok(FitReport {
+        exact,
+        closest,
+        searched,
+        not_searched: (skipped > 0).then(|| {
+            (
+                skipped,
+                "top-right, bottom-right, all-inclusive and all-exclusive apply to triangles and lines only; \
+                 the scene has polygons or a clip window"
+                    .to_string(),
+            )
+        }),
+    })
+}
+
+impl FitReport {
+    /// The exact fits grouped by tie rule and pixel centre, each with its snappings in
+    /// words (`any snapping`, `unsnapped`, `8..=16 bits: nearest-even, half-away`, ...).
+    pub fn grouped(&self) -> Vec<(AnyTieRule, PixelCentre, String)> {
+        let mut groups: Vec<(AnyTieRule, PixelCentre, Vec<Snapping>)> = Vec::new();
+        for c in &self.exact {
+            match groups
+                .iter_mut()
+                .find(|(t, p, _)| *t == c.tie_rule && *p == c.pixel_centre)
+            {
+                Some(g) => g.2.push(c.snapping),
+                None => groups.push((c.tie_rule, c.pixel_centre, vec![c.snapping])),
+            }
+        }
+        let all = snappings();
+        groups
+            .into_iter()
+            .map(|(t, p, s)| (t, p, snappings_text(&s, &all)))
+            .collect()
+    }
+
+    /// For people: the exact fits (grouped), or the closest conventions with their
+    /// differing pixels by kind.
+    pub fn to_text(&self) -> String {
+        let mut s = format!("fit: {} conventions searched", self.searched);
+        if let Some((n, why)) = &self.not_searched {
+            let _ = write!(s, " ({n} not: {why})");
+        }
+        s.push('\n');
+        if self.exact.is_empty() {
+            s.push_str("no convention explains their image exactly; the closest:\n");
+            for f in &self.closest {
+                let kinds: Vec<String> = f.differing.iter().map(|(k, n)| format!("{n} {}", k.name())).collect();
+                let _ = writeln!(
+                    s,
+                    "  {}: {} differing pixels ({})",
+                    f.candidate,
+                    f.total(),
+                    kinds.join(", ")
+                );
+            }
+            return s;
+        }
+        let _ = writeln!(s, "{} conventions explain their image exactly:", self.exact.len());
+        for (t, p, snaps) in self.grouped() {
+            let _ = writeln!(s, "  tie rule {}, pixel centre {}: {snaps}", t.name(), centre_name(p));
+        }
+        s
+    }
+
+    /// For programs: `{"searched", "not_searched": {count, why} or null, "exact":
+    /// [{tie_rule, subpixel_bits (null: unsnapped), rounding, pixel_centre}], "closest":
+    /// [{convention, differing, by_kind}]}`.
+    pub fn to_json(&self) -> Value {
+        let conv = |c: &Candidate| {
+            json!({
+                "tie_rule": c.tie_rule.name(),
+                "subpixel_bits": c.snapping.bits,
+                "rounding": c.snapping.bits.map(|_| c.snapping.rounding.name()),
+                "pixel_centre": centre_name(c.pixel_centre),
+            })
+        };
+        let closest: Vec<Value> = self
+            .closest
+            .iter()
+            .map(|f| {
+                let by_kind: serde_json::Map<String, Value> = f
+                    .differing
+                    .iter()
+                    .map(|(k, n)| (k.name().to_string(), json!(n)))
+                    .collect();
+                json!({"convention": conv(&f.candidate), "differing": f.total(), "by_kind": by_kind})
+            })
+            .collect();
+        json!({
+            "searched": self.searched,
+            "not_searched": self.not_searched.as_ref().map(|(n, why)| json!({"count": n, "why": why})),
+            "exact": self.exact.iter().map(conv).collect::<Vec<_>>(),
+            "closest": closest,
+        })
+    }
+}
+
+/// A set of snappings in words: `any snapping`, or per rounding set the bits it holds.
+fn snappings_text(found: &[Snapping], all: &[Snapping]) -> String {
+    if found.len() == all.len() {
+        return "any snapping".to_string();
+    }
+    let mut parts = Vec::new();
+    let mut by_bits: BTreeMap<u32, Vec<Rounding>> = BTreeMap::new();
+    for s in found {
+        match s.bits {
+            Some(b) => by_bits.entry(b).or_default().push(s.rounding),
+            None => parts.push("unsnapped".to_string()),
+        }
+    }
+    // Runs of consecutive bits with the same roundings.
+    let mut runs: Vec<(u32, u32, Vec<Rounding>)> = Vec::new();
+    for (b, r) in by_bits {
+        match runs.last_mut() {
+            Some((_, hi, rs)) if *hi + 1 == b && *rs == r => *hi = b,
+            _ => runs.push((b, b, r)),
+        }
+    }
+    let mut text: Vec<String> = runs
+        .into_iter()
+        .map(|(lo, hi, r)| {
+            let bits = if lo == hi {
+                format!("{lo} bits")
+            } else {
+                format!("{lo}..={hi} bits")
+            };
+            let r: Vec<&str> = if r.len() == Rounding::ALL.len() {
+                vec!["any rounding"]
+            } else {
+                r.iter().map(|r| r.name()).collect()
+            };
+            format!("{bits} ({})", r.join(", "))
+        })
+        .collect();
+    text.extend(parts);
+    text.join("; ")
+}

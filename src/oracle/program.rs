@@ -1,0 +1,230 @@
+//! Another renderer as an external program (the `hunt` protocol): the scene written to a
+//! file, the program run with a timeout, its output file read as [`Theirs`]. A non-zero
+//! exit, a crash, a timeout, no output or unreadable output is a [`Failure`], a finding in
+//! its own right.
+
+use std::fmt;
+use std::io::Read as _;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::time::{Duration, Instant};
+
+use super::theirs::{Background, Format, Theirs};
+use crate::scene::Scene;
+
+/// How an external renderer failed on a scene.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum FailureKind {
+    /// It exited with a non-zero status.
+    Exit,
+    /// It was killed by a signal (a crash).
+    Crash,
+    /// It ran past the timeout and was killed.
+    Timeout,
+    /// It exited 0 but wrote no output file.
+    NoOutput,
+    /// Its output file is not what `--as` says, or not the scene's size.
+    BadOutput,
+}
+
+impl FailureKind {
+    /// Its name in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            FailureKind::Exit => "non-zero exit",
+            FailureKind::Crash => "crash",
+            FailureKind::Timeout => "timeout",
+            FailureKind::NoOutput => "no output",
+            FailureKind::BadOutput => "unreadable output",
+        }
+    }
+}
+
+/// A failure, with what the program said.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Failure {
+    /// What happened.
+    pub kind: FailureKind,
+    /// The details: exit status, the end of its stderr, the reader's error.
+    pub message: String,
+}
+
+impl fmt::Display for Failure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.kind.name(), self.message)
+    }
+}
+
+/// A folder of temporaries, removed with everything in it when dropped.
+#[derive(Debug)]
+struct TempDir(PathBuf);
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// An external renderer: `PROGRAM ARGS...` with `{scene}` and `{out}` replaced by paths.
+#[derive(Debug)]
+pub struct Program {
+    argv: Vec<String>,
+    format: Format,
+    background: Background,
+    timeout: Duration,
+    dir: TempDir,
+    count: AtomicU64,
+}
+
+/// How much of a failing program's stderr a failure keeps (its end).
+const STDERR_KEPT: usize = 600;
+
+impl Program {
+    /// The renderer `cmd` (split as a POSIX shell splits words, run without a shell),
+    /// whose output is read as `format`, killed after `timeout`.
+    ///
+    /// # Errors
+    /// `cmd` is empty, does not parse, lacks `{scene}` or `{out}`, its program cannot be
+    /// found, or the temporary folder cannot be made: one line naming the problem.
+    pub fn new(cmd: &str, format: Format, background: Background, timeout: Duration) -> Result<Program, String> {
+        let argv = shell_words::split(cmd).map_err(|e| format!("--cmd: cannot split {cmd:?}: {e}"))?;
+        let Some(program) = argv.first() else {
+            return Err("--cmd: empty".to_string());
+        };
+        for placeholder in ["{scene}", "{out}"] {
+            if !argv.iter().any(|a| a.contains(placeholder)) {
+                return Err(format!("--cmd: {cmd:?} has no {placeholder} placeholder"));
+            }
+        }
+        if !program_exists(program) {
+            return Err(format!("--cmd: program {program:?} not found"));
+        }
+        static DIRS: AtomicU64 = AtomicU64::new(0);
+        let dir = std::env::temp_dir().join(format!(
+            "rasterproof-hunt-{}-{}",
+            std::process::id(),
+            DIRS.fetch_add(1, Ordering::Relaxed)
+        ));
+        std::fs::create_dir_all(&dir).map_err(|e| format!("{}: cannot create: {e}", dir.display()))?;
+        Ok(Program {
+            argv,
+            format,
+            background,
+            timeout,
+            dir: TempDir(dir),
+            count: AtomicU64::new(0),
+        })
+    }
+
+    /// The format its output is read as.
+    pub fn format(&self) -> Format {
+        self.format
+    }
+
+    /// Runs the program on `scene` and reads its output. Its files are removed afterwards.
+    ///
+    /// # Errors
+    /// A [`Failure`]: the program failed, or its output is unreadable.
+    pub fn render(&self, scene: &Scene) -> Result<Theirs, Failure> {
+        let n = self.count.fetch_add(1, Ordering::Relaxed);
+        let scene_path = self.dir.0.join(format!("scene-{n}.json"));
+        let ext = if self.format == Format::Json { "json" } else { "png" };
+        let out_path = self.dir.0.join(format!("out-{n}.{ext}"));
+        let err_path = self.dir.0.join(format!("stderr-{n}.txt"));
+        let result = self.run(scene, &scene_path, &out_path, &err_path);
+        for p in [&scene_path, &out_path, &err_path] {
+            let _ = std::fs::remove_file(p);
+        }
+        result
+    }
+
+    fn run(&self, scene: &Scene, scene_path: &Path, out_path: &Path, err_path: &Path) -> Result<Theirs, Failure> {
+        let fail = |kind, message: String| Failure { kind, message };
+        std::fs::write(scene_path, scene.to_json())
+            .map_err(|e| fail(FailureKind::BadOutput, format!("cannot write the scene: {e}")))?;
+        let fill = |a: &String| {
+            a.replace("{scene}", &scene_path.to_string_lossy())
+                .replace("{out}", &out_path.to_string_lossy())
+        };
+        let args: Vec<String> = self.argv[1..].iter().map(fill).collect();
+        let stderr = std::fs::File::create(err_path)
+            .map_err(|e| fail(FailureKind::BadOutput, format!("cannot capture stderr: {e}")))?;
+        let mut child = Command::new(&self.argv[0])
+            .args(&args)
+            .stdin(Stdio::null())
+            .stdout(Stdio::null())
+            .stderr(stderr)
+            .spawn()
+            .map_err(|e| fail(FailureKind::Exit, format!("cannot start {:?}: {e}", self.argv[0])))?;
+        let deadline = Instant::now() + self.timeout;
+        let status = loop {
+            match child.try_wait() {
+                Ok(Some(status)) => break status,
+                Ok(None) if Instant::now() >= deadline => {
+                    let _ = child.kill();
+                    let _ = child.wait();
+                    return Err(fail(
+                        FailureKind::Timeout,
+                        format!("killed after {} s", self.timeout.as_secs_f64()),
+                    ));
+                }
+                Ok(None) => std::thread::sleep(Duration::from_millis(2)),
+                Err(e) => return Err(fail(FailureKind::Exit, format!("cannot wait for it: {e}"))),
+            }
+        };
+        let said = stderr_tail(err_path);
+        if !status.success() {
+            #[cfg(unix)]
+            {
+                use std::os::unix::process::ExitStatusExt as _;
+                if let Some(signal) = status.signal() {
+                    return Err(fail(FailureKind::Crash, format!("killed by signal {signal}{said}")));
+                }
+            }
+            return Err(fail(FailureKind::Exit, format!("{status}{said}")));
+        }
+        let bytes = match std::fs::read(out_path) {
+            Ok(b) => b,
+            Err(_) => return Err(fail(FailureKind::NoOutput, format!("it wrote no {}{said}", "{out}"))),
+        };
+        let theirs = Theirs::read(&bytes, "{out}", self.format, self.background)
+            .map_err(|e| fail(FailureKind::BadOutput, e.message))?;
+        if (theirs.width(), theirs.height()) != (scene.width, scene.height) {
+            return Err(fail(
+                FailureKind::BadOutput,
+                format!(
+                    "its image is {}x{}, the scene's canvas {}x{}",
+                    theirs.width(),
+                    theirs.height(),
+                    scene.width,
+                    scene.height
+                ),
+            ));
+        }
+        Ok(theirs)
+    }
+}
+
+/// `; stderr: ...` with the end of the captured stderr, or nothing when it is empty.
+fn stderr_tail(path: &Path) -> String {
+    let mut text = String::new();
+    if let Ok(mut f) = std::fs::File::open(path) {
+        let _ = f.read_to_string(&mut text);
+    }
+    let text = text.trim();
+    if text.is_empty() {
+        return String::new();
+    }
+    let start = text.char_indices().rev().nth(STDERR_KEPT).map_or(0, |(k, _)| k);
+    format!("; stderr: {}", &text[start..])
+}
+
+/// Whether `program` names a file, or a file on `PATH`.
+fn program_exists(program: &str) -> bool {
+    let p = Path::new(program);
+    if p.components().count() > 1 {
+        return p.is_file();
+    }
+    std::env::var_os("PATH").is_some_and(|path| std::env::split_paths(&path).any(|d| d.join(program).is_file()))
+}

@@ -1,0 +1,602 @@
+//! Why another renderer decided a pixel differently for one primitive: the reason classes
+//! and the exact search behind each.
+//!
+//! For a (pixel, primitive) pair where their answer differs from the oracle's, the
+//! classes are tried in this order and the first that explains their answer is the
+//! reason:
+//! 1. `tie`: the sample lies exactly on an edge (`E == 0`) and another tie rule
+//!    ([`AnyTieRule`]; for polygons the two the polygon engines implement) gives their
+//!    answer. Names the edges, their sides and every rule that agrees with them.
+//! 2. `clip`: the scene has a clip window and the unclipped primitive gives their answer
+//!    (they did not clip, or clipped differently).
+//! 3. `line-rule` (lines): another line convention gives their answer: the other
+//!    Bresenham tie, the f32 / f64 DDA, diamond-exit (for Bresenham lines, between the
+//!    endpoint pixels' samples) or Bresenham between the endpoints' pixels (for diamond
+//!    lines).
+//!    `fill-rule` (polygons): the other fill rule gives their answer; names the winding
+//!    number of the moved sample.
+//! 4. `snapping`: the primitive snapped with another rounding ([`Rounding::ALL`]) at the
+//!    oracle's subpixel bits, or else with the fewest other bits (1..=16) and any rounding,
+//!    or else not snapped at all, gives their answer. Names the bits and every rounding
+//!    that does at those bits.
+//! 5. `near-edge`: none of the above, and the sample lies within 1 px of an edge of the
+//!    primitive (the exact distance): the error band of float or low-precision arithmetic.
+//! 6. `gross`: farther than 1 px from every edge: a real bug (a wrong id, a wrong
+//!    transform, a missing primitive).
+
+use std::collections::{HashMap, HashSet};
+
+use num_rational::BigRational;
+use num_traits::{One, Zero};
+
+use super::evidence::{polygon_at, shape_distance2, triangle_at, EdgeAt};
+use crate::clip::Window;
+use crate::convention::{AnyTieRule, Convention, Target, TieRule};
+use crate::coverage::CoverageSink;
+use crate::geom::{FillRule, Point};
+use crate::line::{self, BresenhamTie, Line, LineRule, MAX_BRESENHAM_COORD};
+use crate::model::{prepare, Model, Primitives, Shape};
+use crate::num::Rounding;
+use crate::raster::sample_exact;
+
+/// The class of a reason, in the order they are tried.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum ReasonClass {
+    /// The sample lies on an edge; another tie rule gives their answer.
+    Tie,
+    /// The unclipped primitive gives their answer.
+    Clip,
+    /// Another line convention gives their answer.
+    LineRule,
+    /// The other fill rule gives their answer.
+    FillRule,
+    /// Another snapping gives their answer.
+    Snapping,
+    /// Within 1 px of an edge.
+    NearEdge,
+    /// Farther than 1 px from every edge.
+    Gross,
+}
+
+impl ReasonClass {
+    /// Every class, in order.
+    pub const ALL: [ReasonClass; 7] = [
+        ReasonClass::Tie,
+        ReasonClass::Clip,
+        ReasonClass::LineRule,
+        ReasonClass::FillRule,
+        ReasonClass::Snapping,
+        ReasonClass::NearEdge,
+        ReasonClass::Gross,
+    ];
+
+    /// Its name in reports (`tie`, `near-edge`, ...).
+    pub fn name(self) -> &'static str {
+        match self {
+            ReasonClass::Tie => "tie",
+            ReasonClass::Clip => "clip",
+            ReasonClass::LineRule => "line-rule",
+            ReasonClass::FillRule => "fill-rule",
+            ReasonClass::Snapping => "snapping",
+            ReasonClass::NearEdge => "near-edge",
+            ReasonClass::Gross => "gross",
+        }
+    }
+}
+
+/// A snapping another renderer may use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Snapping {
+    /// Subpixel bits; `None`: not snapped at all.
+    pub bits: Option<u32>,
+    /// The rounding (meaningless when not snapped).
+    pub rounding: Rounding,
+}
+
+impl Snapping {
+    /// `4 subpixel bits, floor` or `unsnapped`.
+    pub fn describe(&self) -> String {
+        match self.bits {
+            Some(b) => format!("{b} subpixel bits, {}", self.rounding.name()),
+            None => "unsnapped".to_string(),
+        }
+    }
+}
+
+/// Why their answer for one primitive at one pixel differs from the oracle's.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Reason {
+    /// The sample lies exactly on `edges` (triangles: the edges with `E == 0`; polygons:
+    /// none named, the sample is on the outline); each of `rules` gives their answer.
+    Tie {
+        /// The edges through the sample (triangles).
+        edges: Vec<EdgeAt>,
+        /// The tie rules that agree with them.
+        rules: Vec<AnyTieRule>,
+    },
+    /// The primitive without the clip window gives their answer.
+    Clip {
+        /// Whether the unclipped primitive covers the pixel.
+        unclipped_covers: bool,
+    },
+    /// Each of `rules` (line conventions, by name) gives their answer.
+    LineRule {
+        /// `bresenham (step)`, `dda (f32)`, `diamond-exit`, ...
+        rules: Vec<&'static str>,
+    },
+    /// The polygon under `fill_rule` gives their answer.
+    FillRule {
+        /// The winding number of the moved sample around the outline.
+        winding: i64,
+        /// The rule that agrees with them.
+        fill_rule: FillRule,
+    },
+    /// Snapped with `bits` subpixel bits and any of `roundings` (or unsnapped) the
+    /// primitive gives their answer; `bits` is the fewest that do.
+    Snapping {
+        /// The fewest subpixel bits that explain it; `None`: only the unsnapped primitive.
+        bits: Option<u32>,
+        /// The roundings that do at those bits.
+        roundings: Vec<Rounding>,
+    },
+    /// Within 1 px of an edge: the squared distance.
+    NearEdge {
+        /// The squared distance to the nearest edge, exactly.
+        distance2: BigRational,
+    },
+    /// Farther than 1 px from every edge: the squared distance to the nearest (`None`
+    /// when no primitive is near the pixel, or the id names no primitive of the scene).
+    Gross {
+        /// The squared distance to the nearest edge, exactly.
+        distance2: Option<BigRational>,
+    },
+}
+
+impl Reason {
+    /// The class.
+    pub fn class(&self) -> ReasonClass {
+        match self {
+            Reason::Tie { .. } => ReasonClass::Tie,
+            Reason::Clip { .. } => ReasonClass::Clip,
+            Reason::LineRule { .. } => ReasonClass::LineRule,
+            Reason::FillRule { .. } => ReasonClass::FillRule,
+            Reason::Snapping { .. } => ReasonClass::Snapping,
+            Reason::NearEdge { .. } => ReasonClass::NearEdge,
+            Reason::Gross { .. } => ReasonClass::Gross,
+        }
+    }
+
+    /// The distance it carries (near-edge, gross), for ranking.
+    fn distance2(&self) -> Option<&BigRational> {
+        match self {
+            Reason::NearEdge { distance2 }
+            | Reason::Gross {
+                distance2: Some(distance2),
+            } => Some(distance2),
+            _ => None,
+        }
+    }
+}
+
+/// The alternatives the snapping search tries, in groups: the oracle's own subpixel bits
+/// with every other rounding (a renderer that differs in rounding alone), then for each of
+/// 1..=16 bits every rounding, then unsnapped. The first group with an alternative that
+/// gives their answer is the reason. The oracle's own snapping is left out.
+fn snapping_groups(own: Option<(u32, Rounding)>) -> Vec<Vec<Snapping>> {
+    let at = |bits: u32| -> Vec<Snapping> {
+        Rounding::ALL
+            .into_iter()
+            .map(|rounding| Snapping {
+                bits: Some(bits),
+                rounding,
+            })
+            .filter(|s| own != s.bits.map(|b| (b, s.rounding)))
+            .collect()
+    };
+    let mut groups = Vec::new();
+    if let Some((bits, _)) = own {
+        groups.push(at(bits));
+    }
+    groups.extend(
+        (1..=crate::num::MAX_SUBPIXEL_BITS)
+            .filter(|&b| Some(b) != own.map(|o| o.0))
+            .map(at),
+    );
+    if own.is_some() {
+        groups.push(vec![Snapping {
+            bits: None,
+            rounding: Rounding::NearestEven,
+        }]);
+    }
+    groups
+}
+
+/// Collects pixels (a line's, for the line-rule search).
+#[derive(Default)]
+struct PixelSet(HashSet<[i64; 2]>);
+
+impl CoverageSink for PixelSet {
+    fn cover(&mut self, x: u32, y: u32, _id: u32) {
+        self.0.insert([i64::from(x), i64::from(y)]);
+    }
+}
+
+/// One primitive's kind (a scene field) and index in it, from its id.
+pub fn primitive_name(primitives: &Primitives, id: u32) -> Option<String> {
+    let mut k = usize::try_from(id).ok()?;
+    for (name, n) in [
+        ("triangles", primitives.triangles.len()),
+        ("lines", primitives.lines.len()),
+        ("polygons", primitives.polygons.len()),
+        ("clip_space_triangles", primitives.clip_space_triangles.len()),
+    ] {
+        if k < n {
+            return Some(format!("{name}[{k}]"));
+        }
+        k -= n;
+    }
+    None
+}
+
+/// The scene with only primitive `id` (keeping the viewport and, unless `unclipped`, the
+/// window), so that preparing it gives that primitive's shape alone.
+fn single(primitives: &Primitives, id: usize, unclipped: bool) -> Primitives {
+    let mut out = Primitives {
+        viewport: primitives.viewport.clone(),
+        clip: if unclipped { None } else { primitives.clip.clone() },
+        ..Primitives::default()
+    };
+    let (t, l, p) = (
+        primitives.triangles.len(),
+        primitives.lines.len(),
+        primitives.polygons.len(),
+    );
+    if id < t {
+        out.triangles.push(primitives.triangles[id].clone());
+    } else if id < t + l {
+        out.lines.push(primitives.lines[id - t].clone());
+    } else if id < t + l + p {
+        out.polygons.push(primitives.polygons[id - t - l].clone());
+    } else {
+        out.clip_space_triangles
+            .push(primitives.clip_space_triangles[id - t - l - p].clone());
+    }
+    out
+}
+
+/// Whether `p` lies in the closed window.
+fn in_closed_window(window: &Window, p: &Point) -> bool {
+    window
+        .half_planes()
+        .iter()
+        .all(|h| &h.a * &p.x + &h.b * &p.y + &h.c >= BigRational::zero())
+}
+
+/// The classifier of one comparison: the oracle's shapes and, computed when first
+/// needed, each primitive's shape under other snappings and its line alternatives.
+pub struct Classifier<'a> {
+    primitives: &'a Primitives,
+    target: &'a Target,
+    model: Model,
+    shapes: &'a [Shape],
+    snappings: Vec<Vec<Snapping>>,
+    snapped_shapes: HashMap<(usize, Snapping), Option<Shape>>,
+    unclipped_shapes: HashMap<usize, Option<Shape>>,
+    line_pixels: HashMap<(usize, &'static str), HashSet<[i64; 2]>>,
+}
+
+impl<'a> Classifier<'a> {
+    /// A classifier for the oracle `model` (an exact model) whose shapes are `shapes`
+    /// (from [`crate::model::PreparedScene::shapes`]).
+    pub fn new(primitives: &'a Primitives, target: &'a Target, model: Model, shapes: &'a [Shape]) -> Classifier<'a> {
+        let conv = target.convention;
+        let own = model.snaps().then_some((conv.subpixel_bits, conv.rounding));
+        Classifier {
+            primitives,
+            target,
+            model,
+            shapes,
+            snappings: snapping_groups(own),
+            snapped_shapes: HashMap::new(),
+            unclipped_shapes: HashMap::new(),
+            line_pixels: HashMap::new(),
+        }
+    }
+
+    /// The oracle's shapes.
+    pub fn shapes(&self) -> &[Shape] {
+        self.shapes
+    }
+
+    /// Why their answer (`theirs_covers`) for primitive `id` at pixel `(x, y)` differs from
+    /// the oracle's. (`id` must be a primitive of the scene.)
+    pub fn reason(&mut self, id: usize, x: u32, y: u32, theirs_covers: bool) -> Reason {
+        let p = sample_exact(x, y, self.target);
+        let address = [i64::from(x), i64::from(y)];
+        let shapes = self.shapes;
+        let shape = &shapes[id];
+        if let Some(r) = tie(shape, &p, self.target.convention.tie_rule, theirs_covers) {
+            return r;
+        }
+        if self.primitives.clip.is_some() {
+            if let Some(unclipped) = self.unclipped(id) {
+                let covers = self.covers(id, &unclipped, x, y, self.target, false);
+                if covers == theirs_covers {
+                    return Reason::Clip {
+                        unclipped_covers: covers,
+                    };
+                }
+            }
+        }
+        if let Some(r) = self.rule(id, x, y, theirs_covers) {
+            return r;
+        }
+        if let Some(r) = self.snapping(id, x, y, theirs_covers) {
+            return r;
+        }
+        let d2 = shape_distance2(shape, &p, address);
+        if d2 <= BigRational::one() {
+            Reason::NearEdge { distance2: d2 }
+        } else {
+            Reason::Gross { distance2: Some(d2) }
+        }
+    }
+
+    /// The best reason among `candidates` for an extra pixel whose owner their output does
+    /// not name (a mask, or the second owner of an ids PNG's double cover): the first class
+    /// in order, the nearest within a class; `None` when there is no candidate.
+    pub fn best_extra(&mut self, candidates: &[usize], x: u32, y: u32) -> Option<(usize, Reason)> {
+        let mut best: Option<(usize, Reason)> = None;
+        for &id in candidates {
+            let r = self.reason(id, x, y, true);
+            let better = match &best {
+                None => true,
+                Some((_, b)) => match r.class().cmp(&b.class()) {
+                    std::cmp::Ordering::Less => true,
+                    std::cmp::Ordering::Greater => false,
+                    std::cmp::Ordering::Equal => match (r.distance2(), b.distance2()) {
+                        (Some(d), Some(e)) => d < e,
+                        (Some(_), None) => true,
+                        _ => false,
+                    },
+                },
+            };
+            if better {
+                best = Some((id, r));
+            }
+        }
+        best
+    }
+
+    /// Whether `shape` (primitive `id`'s, or an alternative of it) covers pixel `(x, y)`
+    /// under `target`'s convention; lines keep pixels in the closed window when `clipped`.
+    fn covers(&mut self, id: usize, shape: &Shape, x: u32, y: u32, target: &Target, clipped: bool) -> bool {
+        let p = sample_exact(x, y, target);
+        let rule = target.convention.tie_rule;
+        let kept = !clipped || self.primitives.clip.as_ref().map_or(true, |w| in_closed_window(w, &p));
+        match shape {
+            Shape::Triangle(t) => triangle_at(t, &p, rule.into()).is_some_and(|at| at.inside),
+            Shape::Polygon(poly) => polygon_at(poly, &p, rule).inside,
+            Shape::Diamond { from, to } => {
+                kept && line::exact::diamond_exits(from, to, i64::from(x), i64::from(y), target)
+            }
+            Shape::Bresenham { tie, .. } => {
+                let name = if *tie == BresenhamTie::Stay {
+                    "bresenham (stay)"
+                } else {
+                    "bresenham (step)"
+                };
+                kept && self.line_alternative(id, name).contains(&[i64::from(x), i64::from(y)])
+            }
+        }
+    }
+
+    fn unclipped(&mut self, id: usize) -> Option<Shape> {
+        if let Some(s) = self.unclipped_shapes.get(&id) {
+            return s.clone();
+        }
+        let prepared = prepare(self.model, &single(self.primitives, id, true), self.target).ok();
+        let shape = prepared.and_then(|p| p.shapes()).and_then(|s| s.into_iter().next());
+        self.unclipped_shapes.insert(id, shape.clone());
+        shape
+    }
+
+    /// Line conventions and fill rules.
+    fn rule(&mut self, id: usize, x: u32, y: u32, theirs_covers: bool) -> Option<Reason> {
+        let p = sample_exact(x, y, self.target);
+        let kept = self.primitives.clip.as_ref().map_or(true, |w| in_closed_window(w, &p));
+        let shapes = self.shapes;
+        match &shapes[id] {
+            Shape::Polygon(poly) => {
+                let other = match poly.fill_rule {
+                    FillRule::NonZero => FillRule::EvenOdd,
+                    FillRule::EvenOdd => FillRule::NonZero,
+                };
+                let mut flipped = poly.clone();
+                flipped.fill_rule = other;
+                let rule = self.target.convention.tie_rule;
+                (polygon_at(&flipped, &p, rule).inside == theirs_covers).then(|| Reason::FillRule {
+                    winding: polygon_at(poly, &p, rule).windings[0],
+                    fill_rule: other,
+                })
+            }
+            Shape::Bresenham { tie, .. } => {
+                let names: &[&'static str] = match tie {
+                    BresenhamTie::Stay => &["bresenham (step)", "dda (f32)", "dda (f64)", "diamond-exit"],
+                    BresenhamTie::Step => &["bresenham (stay)", "dda (f32)", "dda (f64)", "diamond-exit"],
+                };
+                self.line_rules(id, names, [x, y], kept, theirs_covers)
+            }
+            Shape::Diamond { .. } => self.line_rules(
+                id,
+                &["bresenham (stay)", "bresenham (step)", "dda (f32)", "dda (f64)"],
+                [x, y],
+                kept,
+                theirs_covers,
+            ),
+            Shape::Triangle(_) => None,
+        }
+    }
+
+    fn line_rules(
+        &mut self,
+        id: usize,
+        names: &[&'static str],
+        [x, y]: [u32; 2],
+        kept: bool,
+        theirs_covers: bool,
+    ) -> Option<Reason> {
+        let pixel = [i64::from(x), i64::from(y)];
+        let rules: Vec<&'static str> = names
+            .iter()
+            .copied()
+            .filter(|name| (kept && self.line_alternative(id, name).contains(&pixel)) == theirs_covers)
+            .collect();
+        (!rules.is_empty()).then_some(Reason::LineRule { rules })
+    }
+
+    /// The pixels of line `id` drawn by the convention `name` (on the canvas).
+    fn line_alternative(&mut self, id: usize, name: &'static str) -> &HashSet<[i64; 2]> {
+        if !self.line_pixels.contains_key(&(id, name)) {
+            let pixels = self.draw_alternative(id, name);
+            self.line_pixels.insert((id, name), pixels);
+        }
+        &self.line_pixels[&(id, name)]
+    }
+
+    fn draw_alternative(&self, id: usize, name: &str) -> HashSet<[i64; 2]> {
+        let mut set = PixelSet::default();
+        let target = self.target;
+        let (from, to): ([i64; 2], [i64; 2]) = match &self.shapes[id] {
+            Shape::Bresenham { from, to, .. } => (*from, *to),
+            Shape::Diamond { from, to } => {
+                let pixel = |p: &Point| {
+                    let f = |v: &BigRational| {
+                        i64::try_from(v.floor().to_integer())
+                            .ok()
+                            .filter(|v| v.abs() <= MAX_BRESENHAM_COORD)
+                    };
+                    Some([f(&p.x)?, f(&p.y)?])
+                };
+                match (pixel(from), pixel(to)) {
+                    (Some(a), Some(b)) => (a, b),
+                    _ => return set.0,
+                }
+            }
+            _ => return set.0,
+        };
+        match name {
+            "bresenham (stay)" => line::exact::draw_bresenham(from, to, BresenhamTie::Stay, 0, target, &mut set),
+            "bresenham (step)" => line::exact::draw_bresenham(from, to, BresenhamTie::Step, 0, target, &mut set),
+            "dda (f32)" => line::dda::draw(from, to, line::dda::DdaFloat::F32, 0, target, &mut set),
+            "dda (f64)" => line::dda::draw(from, to, line::dda::DdaFloat::F64, 0, target, &mut set),
+            _ => {
+                // diamond-exit between the endpoint pixels' samples
+                let c = target.convention.pixel_centre.offset();
+                let at = |a: [i64; 2]| {
+                    Point::new(
+                        BigRational::from_integer(a[0].into()) + &c,
+                        BigRational::from_integer(a[1].into()) + &c,
+                    )
+                };
+                line::exact::draw_diamond(&at(from), &at(to), 0, target, &mut set);
+            }
+        }
+        set.0
+    }
+
+    /// The snapping search.
+    fn snapping(&mut self, id: usize, x: u32, y: u32, theirs_covers: bool) -> Option<Reason> {
+        if matches!(self.shapes[id], Shape::Bresenham { .. }) {
+            return None; // pixel addresses do not snap
+        }
+        for g in 0..self.snappings.len() {
+            let mut roundings = Vec::new();
+            for k in 0..self.snappings[g].len() {
+                let s = self.snappings[g][k];
+                let Some((shape, target)) = self.snapped(id, s) else {
+                    continue;
+                };
+                if self.covers(id, &shape, x, y, &target, true) == theirs_covers {
+                    roundings.push(s.rounding);
+                }
+            }
+            if !roundings.is_empty() {
+                let bits = self.snappings[g][0].bits;
+                return Some(Reason::Snapping {
+                    bits,
+                    roundings: if bits.is_some() { roundings } else { Vec::new() },
+                });
+            }
+        }
+        None
+    }
+
+    /// Primitive `id` under snapping `s`, and the target it renders with.
+    fn snapped(&mut self, id: usize, s: Snapping) -> Option<(Shape, Target)> {
+        let target = Target {
+            convention: Convention {
+                subpixel_bits: s.bits.unwrap_or(self.target.convention.subpixel_bits),
+                rounding: s.rounding,
+                ..self.target.convention
+            },
+            ..*self.target
+        };
+        if !self.snapped_shapes.contains_key(&(id, s)) {
+            let model = if s.bits.is_some() {
+                Model::ExactSnappedPlain
+            } else {
+                Model::ExactPlain
+            };
+            let prepared = prepare(model, &single(self.primitives, id, false), &target).ok();
+            let shape = prepared.and_then(|p| p.shapes()).and_then(|v| v.into_iter().next());
+            self.snapped_shapes.insert((id, s), shape);
+        }
+        self.snapped_shapes[&(id, s)].clone().map(|shape| (shape, target))
+    }
+}
+
+/// The tie search: the sample lies on an edge and another rule gives their answer.
+fn tie(shape: &Shape, p: &Point, rule: TieRule, theirs_covers: bool) -> Option<Reason> {
+    match shape {
+        Shape::Triangle(t) => {
+            let at = triangle_at(t, p, rule.into())?;
+            if at.edges.iter().any(|e| e.value < BigRational::zero()) {
+                return None;
+            }
+            let zero: Vec<EdgeAt> = at.zero_edges().cloned().collect();
+            if zero.is_empty() {
+                return None;
+            }
+            let rules: Vec<AnyTieRule> = AnyTieRule::ALL
+                .into_iter()
+                .filter(|r| triangle_at(t, p, *r).is_some_and(|a| a.inside) == theirs_covers)
+                .collect();
+            (!rules.is_empty()).then_some(Reason::Tie { edges: zero, rules })
+        }
+        Shape::Polygon(poly) => {
+            if !polygon_at(poly, p, rule).on_boundary {
+                return None;
+            }
+            let rules: Vec<AnyTieRule> = [TieRule::TopLeft, TieRule::BottomLeft]
+                .into_iter()
+                .filter(|r| polygon_at(poly, p, *r).inside == theirs_covers)
+                .map(AnyTieRule::from)
+                .collect();
+            (!rules.is_empty()).then_some(Reason::Tie {
+                edges: Vec::new(),
+                rules,
+            })
+        }
+        Shape::Bresenham { .. } | Shape::Diamond { .. } => None,
+    }
+}
+
+/// A line of the scene, for the line-rule search's names (Bresenham or diamond-exit).
+pub fn line_rule_name(line: &Line) -> &'static str {
+    match line.rule {
+        LineRule::Bresenham(BresenhamTie::Stay) => "bresenham (stay)",
+        LineRule::Bresenham(BresenhamTie::Step) => "bresenham (step)",
+        LineRule::Diamond => "diamond-exit",
+    }
+}

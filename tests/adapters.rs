@@ -1,0 +1,381 @@
+//! The adapters for real renderers (adapters/README.md): tiny-skia (the example
+//! `tiny-skia-adapter`) and Mesa's llvmpipe and softpipe through OSMesa
+//! (`adapters/osmesa/render.py`), each run on small fixed scenes and judged by `compare`.
+//!
+//! What is asserted, and why it should hold independently of these runs:
+//! - a scene with no sample on any edge (checked exactly below) and every vertex on the
+//!   1/64 grid reads the same under every tie rule and every snapping of 6 or more bits,
+//!   so llvmpipe (8 subpixel bits, `FIXED_ORDER` in lp_setup_tri.c) and softpipe (float
+//!   setup, no snapping) must equal the oracle exactly, several owners included (the
+//!   adapters' alpha-254 mark); tiny-skia may differ there only in its 16.16 edge walk's
+//!   error (`snapping` or `near-edge`), never by a tie or a gross difference;
+//! - on a grid whose vertices lie on pixel centres (every edge through samples),
+//!   llvmpipe equals the `gl` preset (bottom-left in the y-down image: GL's top-left in
+//!   its y-up window, which the adapter flips) and differs from `d3d11` by ties alone,
+//!   each explained by bottom-left; softpipe's ties are all top-right; tiny-skia's all
+//!   bottom-right (edge.rs and scan/path.rs: rows `[round(y0), round(y1))`, spans
+//!   `[round(xl), round(xr))`, so bottom and right edges own their samples);
+//! - on a mesh with vertices on a 1/4096 grid, llvmpipe equals the oracle with 8 bits
+//!   nearest-even and softpipe the unsnapped oracle (`--model exact`);
+//! - llvmpipe's diamond-exit lines and a convex clip window (drawn through the stencil)
+//!   equal the `gl` preset's.
+//!
+//! The OSMesa tests need /usr/bin/python3 (or `RASTERPROOF_ADAPTER_PYTHON`) with Debian's
+//! python3-opengl, python3-numpy, python3-pil and libosmesa6: without them they print a
+//! skip message, unless the environment variable `CI` is set (.ci/run installs them),
+//! where they fail.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use rasterproof::convention::Target;
+use rasterproof::edge::exact::edge_function;
+use rasterproof::raster::sample_exact;
+use rasterproof::scene::parse_scene;
+use serde_json::Value;
+
+#[path = "common/tempdir.rs"]
+mod tempdir;
+
+/// The interpreter Debian's python3-* packages are installed for (another one:
+/// `RASTERPROOF_ADAPTER_PYTHON`).
+fn python() -> String {
+    std::env::var("RASTERPROOF_ADAPTER_PYTHON").unwrap_or_else(|_| "/usr/bin/python3".to_string())
+}
+
+/// Six overlapping triangles on a 16x16 canvas, vertices on the 1/64 grid, no sample on
+/// any edge (12 pixels have several owners).
+const NO_TIES: &str = include_str!("../adapters/scenes/no-ties.json");
+
+/// A 3x3 grid of squares of side 3 on a 10x10 canvas, vertices on pixel centres, each
+/// square split along a diagonal (alternating): every edge runs through samples.
+const TIE_GRID: &str = include_str!("../adapters/scenes/tie-grid.json");
+
+/// An 8x8 mesh of 8 px cells on a 64x64 canvas, interior vertices moved off the grid by
+/// multiples of 1/4096 px (up to 1.5 px), no overlaps.
+const FINE_MESH: &str = include_str!("../adapters/scenes/fine-mesh.json");
+
+/// Twelve diamond-exit lines on a 32x32 canvas, endpoints on the 1/256 grid.
+const DIAMOND_LINES: &str = include_str!("../adapters/scenes/diamond-lines.json");
+
+/// Six triangles on the 1/256 grid under a convex clip window.
+const CLIP_CONVEX: &str = include_str!("../adapters/scenes/clip-convex.json");
+
+/// True when no pixel sample of the scene's canvas lies on an edge of any triangle.
+fn tie_free(text: &str) -> bool {
+    let scene = parse_scene(text, "scene").expect("a valid scene");
+    let target = Target::new(scene.width, scene.height, scene.convention()).expect("a valid canvas");
+    scene.triangles().iter().all(|t| {
+        (0..3).all(|k| {
+            let (a, b) = (&t.v[k], &t.v[(k + 1) % 3]);
+            (0..scene.height).all(|y| {
+                (0..scene.width).all(|x| !num_traits::Zero::is_zero(&edge_function(a, b, &sample_exact(x, y, &target))))
+            })
+        })
+    })
+}
+
+fn write(dir: &tempdir::Dir, name: &str, text: &str) -> PathBuf {
+    let path = dir.path().join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+fn text(output: &Output) -> String {
+    format!(
+        "status {:?}\nstdout:\n{}\nstderr:\n{}",
+        output.status.code(),
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr)
+    )
+}
+
+/// The tiny-skia adapter's executable, built (if stale) with the profile `cargo test`
+/// builds examples with, so that a plain `cargo test` finds it up to date.
+fn tiny_skia_adapter() -> PathBuf {
+    let output = Command::new(env!("CARGO"))
+        .args([
+            "build",
+            "--profile",
+            "test",
+            "--example",
+            "tiny-skia-adapter",
+            "--message-format=json-render-diagnostics",
+        ])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("cargo runs");
+    // Diagnostics are rendered on stderr; stdout holds the JSON artifact messages.
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(output.status.success(), "building the example failed:\n{stderr}");
+    String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .filter_map(|line| serde_json::from_str::<Value>(line).ok())
+        .filter(|m| m["reason"] == "compiler-artifact" && m["target"]["name"] == "tiny-skia-adapter")
+        .find_map(|m| m["executable"].as_str().map(PathBuf::from))
+        .expect("cargo names the example's executable")
+}
+
+/// Whether /usr/bin/python3 has the OSMesa stack; without it: skip, or fail under CI.
+fn osmesa_available() -> bool {
+    let probe = Command::new(python())
+        .args(["-c", "import numpy, PIL; from OpenGL import osmesa, GL"])
+        .env("PYOPENGL_PLATFORM", "osmesa")
+        .output();
+    let missing = match probe {
+        Ok(o) if o.status.success() => return true,
+        Ok(o) => String::from_utf8_lossy(&o.stderr)
+            .lines()
+            .last()
+            .unwrap_or("")
+            .trim()
+            .to_string(),
+        Err(e) => format!("{}: {e}", python()),
+    };
+    let message = format!(
+        "the OSMesa Python stack is missing ({missing}); install libosmesa6 python3-opengl python3-numpy python3-pil"
+    );
+    assert!(
+        std::env::var_os("CI").is_none(),
+        "CI is set, so this is an error: {message}"
+    );
+    eprintln!("skipping the OSMesa adapter tests: {message}");
+    false
+}
+
+/// Runs the OSMesa adapter with `driver`; asserts it succeeded and ran that driver.
+fn osmesa(driver: &str, scene: &Path, out: &Path) {
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/osmesa/render.py");
+    let output = Command::new(python())
+        .arg(script)
+        .args([scene.as_os_str(), out.as_os_str()])
+        .args(["--driver", driver])
+        .output()
+        .unwrap();
+    assert!(
+        output.status.success(),
+        "render.py --driver {driver}:\n{}",
+        text(&output)
+    );
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains(&format!("renderer: {driver}")), "{stderr}");
+}
+
+fn tiny_skia(adapter: &Path, scene: &Path, out: &Path) {
+    let output = Command::new(adapter).arg(scene).arg(out).output().unwrap();
+    assert!(output.status.success(), "tiny-skia-adapter:\n{}", text(&output));
+}
+
+/// `rasterproof compare SCENE THEIRS --as ids --format json ARGS`: (exit code, report).
+fn compare(scene: &Path, theirs: &Path, args: &[&str]) -> (i32, Value) {
+    let output = assert_cmd::Command::cargo_bin("rasterproof")
+        .unwrap()
+        .arg("compare")
+        .arg(scene)
+        .arg(theirs)
+        .args(["--as", "ids", "--format", "json"])
+        .args(args)
+        .output()
+        .unwrap();
+    let code = output.status.code().expect("compare exits");
+    assert!(code == 0 || code == 1, "compare {args:?}:\n{}", text(&output));
+    (code, serde_json::from_slice(&output.stdout).expect("compare's JSON"))
+}
+
+/// Every finding of a report: (class, the tie rules its reason names).
+fn findings(report: &Value) -> Vec<(String, Vec<String>)> {
+    let pixels = report["pixels"].as_array().expect("pixels");
+    pixels
+        .iter()
+        .flat_map(|p| p["findings"].as_array().expect("findings").iter())
+        .map(|f| {
+            let rules = f["reason"]["rules"]
+                .as_array()
+                .map(|r| r.iter().filter_map(|s| s.as_str().map(str::to_string)).collect())
+                .unwrap_or_default();
+            (f["class"].as_str().expect("class").to_string(), rules)
+        })
+        .collect()
+}
+
+/// Asserts that the report differs, by ties alone, each explained by `rule`.
+fn only_ties_explained_by(report: &Value, rule: &str, who: &str) {
+    let all = findings(report);
+    assert!(!all.is_empty(), "{who}: expected tie differences, found none");
+    for (class, rules) in &all {
+        assert_eq!(class, "tie", "{who}: a difference of class {class}: {report}");
+        assert!(
+            rules.iter().any(|r| r == rule),
+            "{who}: a tie not explained by {rule} ({rules:?})"
+        );
+    }
+}
+
+#[test]
+fn the_fixed_scenes_are_what_the_assertions_say() {
+    assert!(tie_free(NO_TIES));
+    assert!(!tie_free(TIE_GRID));
+    assert!(parse_scene(FINE_MESH, "mesh").is_ok());
+}
+
+#[test]
+fn tiny_skia_follows_bottom_right_and_its_edge_walk() {
+    let adapter = tiny_skia_adapter();
+    let dir = tempdir::Dir::new("adapters-tiny-skia");
+
+    let scene = write(&dir, "no-ties.json", NO_TIES);
+    let out = dir.path().join("no-ties.png");
+    tiny_skia(&adapter, &scene, &out);
+    let (_, report) = compare(&scene, &out, &["--subpixel-bits", "6", "--rounding", "towards-zero"]);
+    for (class, _) in findings(&report) {
+        assert!(
+            class == "snapping" || class == "near-edge",
+            "tiny-skia, no ties: class {class}: {report}"
+        );
+    }
+    assert!(report["differing"].as_u64().unwrap() <= 4, "{report}");
+
+    let scene = write(&dir, "grid.json", TIE_GRID);
+    let out = dir.path().join("grid.png");
+    tiny_skia(&adapter, &scene, &out);
+    for preset in ["d3d11", "gl"] {
+        let (code, report) = compare(&scene, &out, &["--preset", preset]);
+        assert_eq!(code, 1);
+        only_ties_explained_by(&report, "bottom-right", &format!("tiny-skia against {preset}"));
+    }
+}
+
+#[test]
+fn tiny_skia_adapter_refuses_clearly() {
+    let adapter = tiny_skia_adapter();
+    let dir = tempdir::Dir::new("adapters-tiny-skia-bad");
+    let clip_space = write(
+        &dir,
+        "clip-space.json",
+        r#"{"width": 4, "height": 4, "clip_space_triangles": [{"v": [[0, 0, 0, 1], [1, 0, 0, 1], [0, 1, 0, 1]]}]}"#,
+    );
+    let out = dir.path().join("out.png");
+    let missing = dir.path().join("missing.json");
+    let cases: [(Vec<&Path>, &str); 3] = [
+        (vec![], "usage"),
+        (vec![&missing, &out], "missing.json"),
+        (vec![&clip_space, &out], "clip_space_triangles"),
+    ];
+    for (args, needle) in cases {
+        let output = Command::new(&adapter).args(&args).output().unwrap();
+        assert_eq!(output.status.code(), Some(2), "{args:?}:\n{}", text(&output));
+        assert!(
+            String::from_utf8_lossy(&output.stderr).contains(needle),
+            "{}",
+            text(&output)
+        );
+        assert!(!out.exists());
+    }
+}
+
+#[test]
+fn llvmpipe_is_the_gl_preset_exactly() {
+    if !osmesa_available() {
+        return;
+    }
+    let dir = tempdir::Dir::new("adapters-llvmpipe");
+    let no_ties = write(&dir, "no-ties.json", NO_TIES);
+    let grid = write(&dir, "grid.json", TIE_GRID);
+    let mesh = write(&dir, "mesh.json", FINE_MESH);
+    let out = |name: &str| dir.path().join(name);
+
+    osmesa("llvmpipe", &no_ties, &out("no-ties.png"));
+    for preset in ["d3d11", "gl"] {
+        let (code, report) = compare(&no_ties, &out("no-ties.png"), &["--preset", preset]);
+        assert_eq!(code, 0, "llvmpipe, no ties, {preset}: {report}");
+    }
+
+    osmesa("llvmpipe", &grid, &out("grid.png"));
+    let (code, report) = compare(&grid, &out("grid.png"), &["--preset", "gl"]);
+    assert_eq!(code, 0, "llvmpipe, tie grid, gl: {report}");
+    let (_, report) = compare(&grid, &out("grid.png"), &["--preset", "d3d11"]);
+    only_ties_explained_by(&report, "bottom-left", "llvmpipe against d3d11");
+
+    osmesa("llvmpipe", &mesh, &out("mesh.png"));
+    let (code, report) = compare(&mesh, &out("mesh.png"), &["--preset", "gl"]);
+    assert_eq!(code, 0, "llvmpipe, 1/4096 mesh, gl (8 bits, nearest-even): {report}");
+    let (code, _) = compare(&mesh, &out("mesh.png"), &["--preset", "gl", "--subpixel-bits", "4"]);
+    assert_eq!(code, 1, "4 subpixel bits must not explain llvmpipe's mesh");
+
+    // GL draws lines by the diamond-exit rule (GL 4.6 section 14.5.1), as the oracle does.
+    let lines = write(&dir, "lines.json", DIAMOND_LINES);
+    osmesa("llvmpipe", &lines, &out("lines.png"));
+    let (code, report) = compare(&lines, &out("lines.png"), &["--preset", "gl"]);
+    assert_eq!(code, 0, "llvmpipe, diamond-exit lines, gl: {report}");
+
+    // The window through the stencil is GL's own raster of it, and the oracle's
+    // raster(clip(P, W)) is raster(P) and raster(W) (property-tested in the crate).
+    let clip = write(&dir, "clip.json", CLIP_CONVEX);
+    osmesa("llvmpipe", &clip, &out("clip.png"));
+    let (code, report) = compare(&clip, &out("clip.png"), &["--preset", "gl"]);
+    assert_eq!(code, 0, "llvmpipe, convex clip window, gl: {report}");
+}
+
+#[test]
+fn softpipe_is_unsnapped_with_top_right_ties() {
+    if !osmesa_available() {
+        return;
+    }
+    let dir = tempdir::Dir::new("adapters-softpipe");
+    let no_ties = write(&dir, "no-ties.json", NO_TIES);
+    let grid = write(&dir, "grid.json", TIE_GRID);
+    let mesh = write(&dir, "mesh.json", FINE_MESH);
+    let out = |name: &str| dir.path().join(name);
+
+    osmesa("softpipe", &no_ties, &out("no-ties.png"));
+    let (code, report) = compare(&no_ties, &out("no-ties.png"), &[]);
+    assert_eq!(code, 0, "softpipe, no ties: {report}");
+
+    osmesa("softpipe", &grid, &out("grid.png"));
+    for preset in ["d3d11", "gl"] {
+        let (_, report) = compare(&grid, &out("grid.png"), &["--preset", preset]);
+        only_ties_explained_by(&report, "top-right", &format!("softpipe against {preset}"));
+    }
+
+    osmesa("softpipe", &mesh, &out("mesh.png"));
+    let (code, report) = compare(&mesh, &out("mesh.png"), &["--model", "exact"]);
+    assert_eq!(code, 0, "softpipe, 1/4096 mesh, unsnapped: {report}");
+}
+
+#[test]
+fn osmesa_adapter_refuses_clearly() {
+    if !osmesa_available() {
+        return;
+    }
+    let dir = tempdir::Dir::new("adapters-osmesa-bad");
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/osmesa/render.py");
+    let out = dir.path().join("out.png");
+    let cases = [
+        (
+            r#"{"width": 4, "height": 4, "viewport": {"x": "1/2", "y": 0, "width": 4, "height": 4},
+                "clip_space_triangles": [{"v": [[0, 0, 0, 1], [1, 0, 0, 1], [0, 1, 0, 1]]}]}"#,
+            "viewport",
+        ),
+        (
+            r#"{"width": 4, "height": 4, "triangles": [{"v": [[0, 0], ["x", 0], [0, 1]]}]}"#,
+            "triangles[0].v[1][0]",
+        ),
+        (r#"{"width": 4, "height": 4, "ellipses": []}"#, "ellipses"),
+    ];
+    for (k, (scene, needle)) in cases.into_iter().enumerate() {
+        let path = write(&dir, &format!("bad{k}.json"), scene);
+        let output = Command::new(python())
+            .arg(&script)
+            .arg(&path)
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert_eq!(output.status.code(), Some(2), "{}", text(&output));
+        assert!(
+            String::from_utf8_lossy(&output.stderr).contains(needle),
+            "{}",
+            text(&output)
+        );
+        assert!(!out.exists());
+    }
+}

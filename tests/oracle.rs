@@ -1,0 +1,847 @@
+//! The oracle for other implementations (`rasterproof::oracle`, `compare`, `explain`):
+//! identical outputs compare equal in every format and for every model that equals the
+//! oracle; each reason class is found on a renderer made to differ in exactly that way
+//! (the expected class derived from how it was made to differ); float models' differences
+//! are all classified and none is gross; bad input exits 2 and names the file.
+
+mod common;
+
+use assert_cmd::Command;
+use proptest::prelude::*;
+use rasterproof::convention::{AnyTieRule, Preset, Rounding, TieRule};
+use rasterproof::coverage::{Coverage, CoverageSink};
+use rasterproof::model::{prepare, render, Model, Primitives, Shape};
+use rasterproof::oracle::{compare, Format, PixelKind, Reason, ReasonClass, Relation, Report, Theirs};
+use rasterproof::scene::{parse_scene, Scene};
+use rasterproof::strategy::polygon::any_polygon;
+use rasterproof::strategy::{any_triangle, diamond_line, pixel_line, tie_heavy_mesh};
+
+#[path = "common/tempdir.rs"]
+mod tempdir;
+
+fn bin() -> Command {
+    Command::cargo_bin("rasterproof").unwrap()
+}
+
+fn scene(text: &str) -> Scene {
+    parse_scene(text, "test.json").unwrap()
+}
+
+/// `theirs` (a coverage of the scene's canvas) compared in `format` against `model`.
+fn report(s: &Scene, theirs: &Coverage, format: Format, model: Model) -> Report {
+    let target = s.target().unwrap();
+    compare(&s.primitives(), &target, model, &Theirs::from_coverage(theirs, format)).unwrap()
+}
+
+/// The scene rendered by `model` under the scene's convention changed by `change`.
+fn rendered_with(s: &Scene, model: Model, change: impl FnOnce(&mut Scene)) -> Coverage {
+    let mut other = s.clone();
+    change(&mut other);
+    render(model, &other.primitives(), &other.target().unwrap()).unwrap()
+}
+
+fn classes(r: &Report) -> Vec<ReasonClass> {
+    let mut v: Vec<ReasonClass> = r
+        .pixels
+        .iter()
+        .flat_map(|p| p.findings.iter().map(|f| f.reason.class()))
+        .collect();
+    v.sort();
+    v.dedup();
+    v
+}
+
+const HALF_PIXEL_SQUARES: &str = r#"{"width": 8, "height": 6, "triangles": [
+    {"v": [[0, 0.5], [8, 0.5], [8, 4.5]]}, {"v": [[0, 0.5], [8, 4.5], [0, 4.5]]}]}"#;
+
+#[test]
+fn identical_outputs_compare_equal_in_every_format() {
+    for text in [
+        HALF_PIXEL_SQUARES,
+        include_str!("../examples/scenes/polygons.json"),
+        include_str!("../examples/scenes/lines.json"),
+        include_str!("../examples/scenes/seed003.json"),
+    ] {
+        let s = scene(text);
+        for model in [
+            Model::Exact,
+            Model::ExactSnapped,
+            Model::ExactPlain,
+            Model::ExactSnappedPlain,
+        ] {
+            let ours = render(model, &s.primitives(), &s.target().unwrap()).unwrap();
+            for format in [Format::Mask, Format::Ids, Format::Json] {
+                let r = report(&s, &ours, format, model);
+                assert!(r.identical(), "{model} {format:?}: {}", r.to_text("s", "t", 3));
+                assert_eq!(r.ours_covered, ours.covered_pixels());
+            }
+        }
+        // The integer models equal the snapped oracle, so they compare equal too.
+        let target = s.target().unwrap();
+        for model in [Model::Fixed, Model::Scanline] {
+            if let Ok(theirs) = render(model, &s.primitives(), &target) {
+                assert!(
+                    report(&s, &theirs, Format::Json, Model::ExactSnapped).identical(),
+                    "{model}"
+                );
+            }
+        }
+    }
+}
+
+/// Their renderer follows bottom-left where the scene says top-left: every difference is
+/// a tie on a horizontal edge, and every finding names bottom-left among the rules.
+#[test]
+fn another_tie_rule_is_a_tie_naming_the_rule() {
+    let s = scene(HALF_PIXEL_SQUARES);
+    let theirs = rendered_with(&s, Model::ExactSnapped, |s| s.preset = Preset::Gl);
+    for format in [Format::Mask, Format::Ids, Format::Json] {
+        let r = report(&s, &theirs, format, Model::ExactSnapped);
+        // Rows 0 (y = 1/2, the top edge) and 4 (y = 9/2, the bottom edge): 8 pixels each.
+        assert_eq!(r.pixels.len(), 16, "{format:?}");
+        assert_eq!(classes(&r), [ReasonClass::Tie], "{format:?}");
+        for p in &r.pixels {
+            assert!(p.y == 0 || p.y == 4);
+            let kind = if p.y == 0 { PixelKind::Missing } else { PixelKind::Extra };
+            assert_eq!(p.kind, kind, "{format:?} {p:?}");
+            for f in &p.findings {
+                let Reason::Tie { edges, rules } = &f.reason else {
+                    unreachable!()
+                };
+                assert!(rules.contains(&AnyTieRule::BottomLeft), "{rules:?}");
+                assert!(!rules.contains(&AnyTieRule::TopLeft), "{rules:?}");
+                assert_eq!(edges.len(), 1);
+                let side = if p.y == 0 { "top" } else { "bottom" };
+                assert_eq!(edges[0].side.name(), side);
+            }
+        }
+    }
+}
+
+/// Their renderer snaps to 2 subpixel bits: every difference is explained by snapping
+/// with at most 2 bits (the search reports the fewest, after the oracle's own 8 bits with
+/// other roundings, which never move a vertex by a quarter pixel).
+#[test]
+fn coarser_snapping_is_snapping_with_at_most_its_bits() {
+    let s = scene(
+        r#"{"width": 16, "height": 16, "triangles": [
+        {"v": [["1/3", "0.1"], ["15.9", "2/7"], ["4.77", "15.03"]]},
+        {"v": [["15.9", "2/7"], ["15.97", "15.5"], ["4.77", "15.03"]]}]}"#,
+    );
+    let theirs = rendered_with(&s, Model::ExactSnapped, |s| s.overrides.subpixel_bits = Some(2));
+    let r = report(&s, &theirs, Format::Json, Model::ExactSnapped);
+    assert!(!r.identical(), "the scene must move under 2-bit snapping");
+    for p in &r.pixels {
+        for f in &p.findings {
+            match &f.reason {
+                Reason::Snapping {
+                    bits: Some(b),
+                    roundings,
+                } => {
+                    assert!(*b <= 2, "{p:?}");
+                    if *b == 2 {
+                        assert!(roundings.contains(&Rounding::NearestEven), "{roundings:?}");
+                    }
+                }
+                other => panic!("({}, {}): {other:?}", p.x, p.y),
+            }
+        }
+    }
+    // The unsnapped renderer is explained by "unsnapped" or by finer bits.
+    let unsnapped = rendered_with(&s, Model::Exact, |_| {});
+    let r = report(&s, &unsnapped, Format::Json, Model::ExactSnapped);
+    assert!(
+        r.pixels.iter().all(|p| p.findings.iter().all(|f| matches!(
+            f.reason,
+            Reason::Snapping { bits: None, .. } | Reason::Snapping { bits: Some(9..), .. }
+        ))),
+        "{}",
+        r.to_text("s", "t", 5)
+    );
+}
+
+/// A floor-rounding renderer is explained by snapping that names floor (or, where the
+/// sample lies on one of the oracle's edges, by a tie).
+#[test]
+fn directed_rounding_is_named() {
+    let s = scene(
+        r#"{"width": 16, "height": 16, "triangles": [{"v": [["1/3", "0.3"], ["15.7", "4/3"], ["2.9", "47/3"]]}],
+            "subpixel_bits": 2}"#,
+    );
+    let theirs = rendered_with(&s, Model::ExactSnapped, |s| {
+        s.overrides.rounding = Some(Rounding::Floor)
+    });
+    let r = report(&s, &theirs, Format::Json, Model::ExactSnapped);
+    let mut floor = 0;
+    for f in r.pixels.iter().flat_map(|p| &p.findings) {
+        match &f.reason {
+            // The oracle's own 2 bits with another rounding come first.
+            Reason::Snapping {
+                bits: Some(2),
+                roundings,
+            } => {
+                assert!(!roundings.contains(&Rounding::NearestEven), "{f:?}");
+                floor += usize::from(roundings.contains(&Rounding::Floor));
+            }
+            Reason::Tie { .. } => {}
+            other => panic!("{other:?}"),
+        }
+    }
+    assert!(floor > 0, "{}", r.to_text("s", "t", 5));
+}
+
+/// Pixels far from every edge are gross; an id that names another primitive is a wrong
+/// owner, the extra id gross when it is far from that primitive.
+#[test]
+fn far_pixels_are_gross_and_wrong_ids_are_wrong_owners() {
+    let s = scene(
+        r#"{"width": 32, "height": 8, "triangles": [{"v": [[0, 0], [6, 0], [0, 6]]}, {"v": [[26, 0], [32, 0], [32, 6]]}]}"#,
+    );
+    let target = s.target().unwrap();
+    let mut theirs = render(Model::ExactSnapped, &s.primitives(), &target).unwrap();
+    theirs.cover(15, 4, 0); // 9 px and more from both triangles
+    let r = report(&s, &theirs, Format::Json, Model::ExactSnapped);
+    assert_eq!(r.pixels.len(), 1);
+    assert_eq!(r.pixels[0].kind, PixelKind::Extra);
+    let f = &r.pixels[0].findings[0];
+    assert_eq!((f.id, f.relation), (Some(0), Relation::Extra));
+    assert_eq!(f.reason.class(), ReasonClass::Gross);
+    // As a mask the owner is unknown: no primitive explains it.
+    let r = report(&s, &theirs, Format::Mask, Model::ExactSnapped);
+    let f = &r.pixels[0].findings[0];
+    assert_eq!((f.id, f.guessed, f.reason.class()), (None, true, ReasonClass::Gross));
+
+    // Pixel (1, 1) of triangle 0 drawn with id 1: wrong owner; 0 missing there (deep
+    // inside it: gross), 1 extra (far from triangle 1: gross).
+    let mut swapped = Coverage::new(32, 8);
+    for (x, y, ids) in render(Model::ExactSnapped, &s.primitives(), &target).unwrap().iter() {
+        let id = if (x, y) == (1, 1) { 1 } else { ids[0] };
+        swapped.cover(x, y, id);
+    }
+    for format in [Format::Ids, Format::Json] {
+        let r = report(&s, &swapped, format, Model::ExactSnapped);
+        assert_eq!(r.pixels.len(), 1, "{format:?}");
+        let p = &r.pixels[0];
+        assert_eq!((p.x, p.y, p.kind), (1, 1, PixelKind::WrongOwner));
+        let found: Vec<(Option<u32>, Relation, ReasonClass)> = p
+            .findings
+            .iter()
+            .map(|f| (f.id, f.relation, f.reason.class()))
+            .collect();
+        assert_eq!(
+            found,
+            [
+                (Some(0), Relation::Missing, ReasonClass::Gross),
+                (Some(1), Relation::Extra, ReasonClass::Gross)
+            ],
+            "{format:?}"
+        );
+    }
+    // An id the scene does not have.
+    let mut stranger = render(Model::ExactSnapped, &s.primitives(), &target).unwrap();
+    stranger.cover(20, 7, 9);
+    let r = report(&s, &stranger, Format::Ids, Model::ExactSnapped);
+    let f = &r.pixels[0].findings[0];
+    assert_eq!(
+        (f.id, f.primitive.as_deref(), f.reason.class()),
+        (Some(9), None, ReasonClass::Gross)
+    );
+    assert!(f.evidence.contains("not a primitive of the scene"), "{}", f.evidence);
+}
+
+/// Shared edges drawn by both neighbours: a double cover in JSON (ids listed), in an ids
+/// PNG (alpha 254 where the oracle has one owner), explained as a tie on the shared edge.
+#[test]
+fn all_inclusive_edges_are_double_covers_and_ties() {
+    // Two triangles sharing the diagonal x + y = 8 on which the samples (i + 1/2, j + 1/2)
+    // with i + j = 7 lie.
+    let s = scene(
+        r#"{"width": 8, "height": 8, "triangles": [{"v": [[0, 0], [8, 0], [0, 8]]}, {"v": [[8, 0], [8, 8], [0, 8]]}]}"#,
+    );
+    let target = s.target().unwrap();
+    let ours = render(Model::ExactSnapped, &s.primitives(), &target).unwrap();
+    let mut theirs = ours.clone();
+    for i in 0..8 {
+        let owner = ours.owners(i, 7 - i)[0];
+        theirs.cover(i, 7 - i, 1 - owner);
+    }
+    for format in [Format::Ids, Format::Json] {
+        let r = report(&s, &theirs, format, Model::ExactSnapped);
+        assert_eq!(r.pixels.len(), 8, "{format:?}");
+        for p in &r.pixels {
+            assert_eq!(p.kind, PixelKind::Double, "{format:?}");
+            assert_eq!(p.findings.len(), 1);
+            let f = &p.findings[0];
+            let Reason::Tie { rules, .. } = &f.reason else {
+                panic!("{f:?}")
+            };
+            assert!(rules.contains(&AnyTieRule::AllInclusive), "{rules:?}");
+            // JSON names the second owner; an ids PNG does not, and the best explanation
+            // is the neighbour.
+            assert_eq!(f.guessed, format == Format::Ids);
+            assert_eq!(f.id, Some(1 - ours.owners(p.x, p.y)[0]));
+        }
+    }
+}
+
+#[test]
+fn lines_polygons_and_windows_have_their_classes() {
+    // Bresenham with the other tie: the line (0,0) -> (4,1) has a tie at x = 2.
+    let s = scene(
+        r#"{"width": 6, "height": 3, "lines": [{"from": [0, 0], "to": [4, 1], "rule": "bresenham", "tie": "stay"}]}"#,
+    );
+    let theirs = rendered_with(&s, Model::ExactSnapped, |s| {
+        s.lines[0].rule = rasterproof::line::LineRule::Bresenham(rasterproof::line::BresenhamTie::Step);
+    });
+    let r = report(&s, &theirs, Format::Json, Model::ExactSnapped);
+    assert!(!r.identical());
+    for f in r.pixels.iter().flat_map(|p| &p.findings) {
+        let Reason::LineRule { rules } = &f.reason else {
+            panic!("{f:?}")
+        };
+        assert!(rules.contains(&"bresenham (step)"), "{rules:?}");
+    }
+
+    // A pentagram filled even-odd where the scene says nonzero: the centre differs, by the
+    // fill rule, with winding number ±2.
+    let star = include_str!("../examples/scenes/polygons.json");
+    let s = scene(star);
+    let theirs = rendered_with(&s, Model::ExactSnapped, |s| {
+        s.polygons[0].fill_rule = rasterproof::geom::FillRule::EvenOdd
+    });
+    let r = report(&s, &theirs, Format::Json, Model::ExactSnapped);
+    assert!(!r.identical());
+    for f in r.pixels.iter().flat_map(|p| &p.findings) {
+        let Reason::FillRule { winding, fill_rule } = &f.reason else {
+            panic!("{f:?}")
+        };
+        assert_eq!((winding.abs(), *fill_rule), (2, rasterproof::geom::FillRule::EvenOdd));
+    }
+
+    // A window they ignored: every extra pixel is the clip class.
+    let s = scene(
+        r#"{"width": 8, "height": 8, "triangles": [{"v": [[0, 0], [8, 0], [0, 8]]}], "clip": {"rect": [0, 0, 3, 8]}}"#,
+    );
+    let theirs = rendered_with(&s, Model::ExactSnapped, |s| s.clip = None);
+    let r = report(&s, &theirs, Format::Mask, Model::ExactSnapped);
+    assert!(!r.identical());
+    for f in r.pixels.iter().flat_map(|p| &p.findings) {
+        assert_eq!(f.reason, Reason::Clip { unclipped_covers: true }, "{f:?}");
+    }
+}
+
+/// Float models: on tie-heavy meshes float32-naive's differences (double covers and
+/// extra pixels on shared edges) are all ties; far from the origin on a fine grid
+/// float32's are all within a pixel of an edge. None is gross, and there are some.
+#[test]
+fn float_differences_are_classified_and_never_gross() {
+    use proptest::strategy::ValueTree;
+    use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+    use rasterproof::strategy::delaunay_mesh;
+    let far = i64::from(rasterproof::convention::MAX_CANVAS) - 48;
+    // The float teeth tests' families and seeds (tests/float_teeth.rs).
+    let cases = [
+        (
+            Model::Float32Naive,
+            24,
+            tie_heavy_mesh(24, 16).boxed(),
+            Model::ExactPlain,
+            1,
+            12,
+        ),
+        (
+            Model::Float32,
+            16384,
+            delaunay_mesh([far, far], 48, 16, 32).boxed(),
+            Model::Exact,
+            2,
+            48,
+        ),
+    ];
+    for (model, side, strategy, oracle, seed, n) in cases {
+        let mut runner =
+            TestRunner::new_with_rng(Config::default(), TestRng::from_seed(RngAlgorithm::ChaCha, &[seed; 32]));
+        let mut found = std::collections::BTreeMap::new();
+        for _ in 0..n {
+            let mesh = strategy.new_tree(&mut runner).unwrap().current();
+            let s = Scene::new(side, side, mesh.triangles);
+            let theirs = render(model, &s.primitives(), &s.target().unwrap()).unwrap();
+            let r = report(&s, &theirs, Format::Json, oracle);
+            for f in r.pixels.iter().flat_map(|p| &p.findings) {
+                assert_ne!(f.reason.class(), ReasonClass::Gross, "{model}: {f:?}");
+                *found.entry(f.reason.class()).or_insert(0) += 1;
+            }
+        }
+        println!("{model} against {oracle}: findings by class {found:?}");
+        assert!(!found.is_empty(), "{model}: the workload has no teeth");
+        if model == Model::Float32Naive {
+            assert_eq!(found.keys().copied().collect::<Vec<_>>(), [ReasonClass::Tie]);
+        }
+    }
+}
+
+/// What `PreparedScene::shapes` returns is what the model draws: each shape rendered by
+/// the plain oracles equals the model's coverage.
+#[test]
+fn shapes_are_what_the_exact_models_draw() {
+    for text in [
+        include_str!("../examples/scenes/polygons.json"),
+        include_str!("../examples/scenes/lines.json"),
+        include_str!("../examples/scenes/seed003.json"),
+        r#"{"width": 8, "height": 8, "triangles": [{"v": [[0, 0], [8, 0], ["0.3", 8]]}], "clip": {"rect": [0, 0, 3, 8]},
+            "lines": [{"from": [0, 7], "to": [7, 7]}, {"from": ["0.5", "1.25"], "to": ["7.5", "3.5"], "rule": "diamond"}]}"#,
+    ] {
+        let s = scene(text);
+        let target = s.target().unwrap();
+        for model in [Model::Exact, Model::ExactSnapped] {
+            let prepared = prepare(model, &s.primitives(), &target).unwrap();
+            let mut drawn = Coverage::new(target.width, target.height);
+            for (k, shape) in prepared.shapes().unwrap().iter().enumerate() {
+                let id = u32::try_from(k).unwrap();
+                let mut one = Primitives::default();
+                match shape {
+                    Shape::Triangle(t) => one.triangles.push(t.clone()),
+                    Shape::Polygon(p) => one.polygons.push(p.clone()),
+                    Shape::Bresenham { from, to, tie } => one.lines.push(rasterproof::line::Line {
+                        from: rasterproof::geom::Point::from_ints(from[0], from[1]),
+                        to: rasterproof::geom::Point::from_ints(to[0], to[1]),
+                        rule: rasterproof::line::LineRule::Bresenham(*tie),
+                    }),
+                    Shape::Diamond { from, to } => one.lines.push(rasterproof::line::Line {
+                        from: from.clone(),
+                        to: to.clone(),
+                        rule: rasterproof::line::LineRule::Diamond,
+                    }),
+                }
+                // Lines keep their window (the pixels whose samples are in it).
+                if matches!(shape, Shape::Bresenham { .. } | Shape::Diamond { .. }) {
+                    one.clip = s.clip.clone();
+                }
+                for (x, y, ids) in render(Model::ExactPlain, &one, &target).unwrap().iter() {
+                    for _ in ids {
+                        drawn.cover(x, y, id);
+                    }
+                }
+            }
+            assert_eq!(drawn, prepared.coverage(&target), "{model}: {text}");
+        }
+    }
+    assert!(prepare(
+        Model::Fixed,
+        &scene(HALF_PIXEL_SQUARES).primitives(),
+        &scene(HALF_PIXEL_SQUARES).target().unwrap()
+    )
+    .unwrap()
+    .shapes()
+    .is_none());
+}
+
+fn config() -> ProptestConfig {
+    ProptestConfig {
+        cases: 48,
+        failure_persistence: Some(Box::new(proptest::test_runner::FileFailurePersistence::Direct(
+            "proptest-regressions/oracle.txt",
+        ))),
+        ..ProptestConfig::default()
+    }
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// Any scene compared with the exact models' own output, in every format, is
+    /// identical; and with the other tie rule's output, every difference is a tie.
+    #[test]
+    fn own_output_is_identical_and_the_other_rule_is_ties(
+        ts in prop::collection::vec(any_triangle(12), 1..4),
+        mesh in tie_heavy_mesh(12, 12),
+        lines in prop::collection::vec(pixel_line(12, 2), 0..3),
+        diamonds in prop::collection::vec(diamond_line(12), 0..2),
+        polys in prop::collection::vec(any_polygon(12, 6), 0..2),
+        preset in prop::sample::select(vec![Preset::D3d11, Preset::Gl, Preset::Cts]),
+    ) {
+        let mut s = Scene::new(12, 12, ts.into_iter().chain(mesh.triangles).collect());
+        s.preset = preset;
+        s.lines = lines.into_iter().map(|(a, b)| rasterproof::line::Line {
+            from: rasterproof::geom::Point::from_ints(a[0], a[1]),
+            to: rasterproof::geom::Point::from_ints(b[0], b[1]),
+            rule: rasterproof::line::LineRule::Bresenham(rasterproof::line::BresenhamTie::Stay),
+        }).chain(diamonds).collect();
+        s.polygons = polys;
+        let target = s.target().unwrap();
+        for model in [Model::Exact, Model::ExactSnapped] {
+            let ours = render(model, &s.primitives(), &target).unwrap();
+            for format in [Format::Mask, Format::Ids, Format::Json] {
+                prop_assert!(report(&s, &ours, format, model).identical());
+            }
+        }
+        let other = if preset == Preset::Gl { TieRule::TopLeft } else { TieRule::BottomLeft };
+        let theirs = rendered_with(&s, Model::ExactSnapped, |s| s.overrides.tie_rule = Some(other));
+        let r = report(&s, &theirs, Format::Json, Model::ExactSnapped);
+        for f in r.pixels.iter().flat_map(|p| &p.findings) {
+            let Reason::Tie { rules, .. } = &f.reason else {
+                return Err(TestCaseError::fail(format!("{f:?}")));
+            };
+            prop_assert!(rules.contains(&AnyTieRule::from(other)), "{:?}", rules);
+        }
+    }
+}
+
+// ---- the command line ----
+
+fn write(dir: &tempdir::Dir, name: &str, bytes: &[u8]) -> std::path::PathBuf {
+    let p = dir.path().join(name);
+    std::fs::write(&p, bytes).unwrap();
+    p
+}
+
+fn run(args: &[&std::ffi::OsStr]) -> (i32, String, String) {
+    let out = bin().args(args).output().unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+macro_rules! os {
+    ($($a:expr),* $(,)?) => { [$(std::ffi::OsStr::new($a)),*] };
+}
+
+#[test]
+fn compare_command_exit_codes_outputs_and_bad_input() {
+    let dir = tempdir::Dir::new("oracle-cli");
+    let scene = write(&dir, "s.json", HALF_PIXEL_SQUARES.as_bytes());
+    let ids = dir.path().join("ours.png");
+    let gl = dir.path().join("gl.png");
+    let json = dir.path().join("ours.json");
+    let sp = scene.to_str().unwrap();
+    assert!(bin()
+        .args(["render", sp, "--ids-out", ids.to_str().unwrap()])
+        .output()
+        .unwrap()
+        .status
+        .success());
+    assert!(bin()
+        .args(["render", sp, "--preset", "gl", "--ids-out", gl.to_str().unwrap()])
+        .output()
+        .unwrap()
+        .status
+        .success());
+    let out = bin().args(["render", sp, "--format", "json"]).output().unwrap();
+    std::fs::write(&json, out.stdout).unwrap();
+
+    let (code, stdout, _) = run(&os!("compare", sp, ids.to_str().unwrap()));
+    assert_eq!(code, 0, "{stdout}");
+    assert!(stdout.contains("identical"), "{stdout}");
+    let (code, stdout, _) = run(&os!("compare", sp, json.to_str().unwrap()));
+    assert_eq!(code, 0, "{stdout}");
+
+    let diff = dir.path().join("diff.png");
+    let (code, stdout, stderr) = run(&os!(
+        "compare",
+        sp,
+        gl.to_str().unwrap(),
+        "--diff-out",
+        diff.to_str().unwrap(),
+        "--limit",
+        "1"
+    ));
+    assert_eq!(code, 1, "{stderr}");
+    assert!(
+        stdout.contains("16 differ") && stdout.contains("tie rule bottom-left"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("the first 1 of 16"), "{stdout}");
+    let picture = image::open(&diff).unwrap().to_rgb8();
+    assert_eq!(picture.width() % 8, 0);
+    let k = picture.width() / 8;
+    assert!(k > 1, "a small canvas is scaled up");
+    // Pixel (0, 0) is missing (red), (0, 1) matched (grey), (0, 5) empty (black).
+    assert_eq!(picture.get_pixel(0, 0).0, PixelKind::Missing.colour());
+    assert_eq!(picture.get_pixel(0, k).0, [128, 128, 128]);
+    assert_eq!(picture.get_pixel(0, 5 * k).0, [0, 0, 0]);
+    let legend = std::fs::read_to_string(dir.path().join("diff.legend.txt")).unwrap();
+    assert!(
+        legend.contains("#e62828  missing") && legend.contains("16x16 picture pixels") == (k == 16),
+        "{legend}"
+    );
+
+    let (code, stdout, _) = run(&os!("compare", sp, gl.to_str().unwrap(), "--format", "json"));
+    assert_eq!(code, 1);
+    let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    assert_eq!(v["version"], 1);
+    assert_eq!(v["differing"], 16);
+    assert_eq!(v["pixels"].as_array().unwrap().len(), 16);
+    assert_eq!(v["pixels"][0]["findings"][0]["class"], "tie");
+    assert_eq!(v["pixels"][0]["findings"][0]["reason"]["edges"][0]["side"], "top");
+
+    // Bad input: exit 2, one line naming the file, no diff picture written.
+    let wrong = write(&dir, "wrong.json", br#"{"width": 4, "height": 6, "pixels": []}"#);
+    let unsorted = write(
+        &dir,
+        "unsorted.json",
+        br#"{"width": 8, "height": 6, "pixels": [[1,1,[0]],[0,1,[0]]]}"#,
+    );
+    let off = write(&dir, "off.json", br#"{"width": 8, "height": 6, "pixels": [[8,1,[0]]]}"#);
+    let garbage = write(&dir, "garbage.png", b"not a png at all");
+    let grey16 = dir.path().join("grey16.png");
+    image::DynamicImage::ImageLuma16(image::ImageBuffer::new(8, 6))
+        .save(&grey16)
+        .unwrap();
+    let missing = dir.path().join("nothing-here.png");
+    let fresh = dir.path().join("fresh.png");
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec![wrong.to_str().unwrap()], "4x6 but the scene's canvas is 8x6"),
+        (vec![unsorted.to_str().unwrap()], "out of order"),
+        (vec![off.to_str().unwrap()], "x is not a pixel"),
+        (vec![garbage.to_str().unwrap()], "not a PNG file"),
+        (vec![grey16.to_str().unwrap()], "an ids PNG must be 8-bit"),
+        (vec![missing.to_str().unwrap()], "cannot read"),
+        (vec![ids.to_str().unwrap(), "--as", "bmp"], "--as: unknown format"),
+        (
+            vec![ids.to_str().unwrap(), "--model", "fixed"],
+            "the oracle must be an exact model",
+        ),
+        (vec![ids.to_str().unwrap(), "--background", "1,2"], "--background"),
+        (
+            vec![ids.to_str().unwrap(), "--rounding", "up"],
+            "--rounding: unknown rounding",
+        ),
+    ];
+    for (extra, message) in cases {
+        let mut args = vec!["compare", sp];
+        args.extend(extra.iter().copied());
+        args.extend(["--diff-out", fresh.to_str().unwrap()]);
+        let out = bin().args(&args).output().unwrap();
+        let stderr = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(
+            stderr.starts_with("error: ") && stderr.contains(message),
+            "{args:?}: {stderr}"
+        );
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        assert!(!fresh.exists(), "{args:?} wrote a picture");
+    }
+    // A mask PNG: grey 16-bit is read (all black: nothing covered, every pixel missing).
+    let (code, stdout, stderr) = run(&os!("compare", sp, grey16.to_str().unwrap(), "--as", "mask"));
+    assert_eq!(code, 1, "{stderr}");
+    assert!(stdout.contains("theirs 0;"), "{stdout}");
+}
+
+#[test]
+fn explain_command() {
+    let dir = tempdir::Dir::new("oracle-explain");
+    let scene = write(&dir, "s.json", HALF_PIXEL_SQUARES.as_bytes());
+    let sp = scene.to_str().unwrap();
+    let (code, stdout, _) = run(&os!("explain", sp, "3,4"));
+    assert_eq!(code, 0);
+    assert!(stdout.contains("sample (7/2, 9/2)"), "{stdout}");
+    assert!(stdout.contains("E=0 (exclusive)"), "{stdout}");
+    assert!(stdout.contains("float32-naive   covered by 1"), "{stdout}");
+    let (code, stdout, _) = run(&os!("explain", sp, "3,4", "--preset", "gl", "--format", "json"));
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let fixed = v["models"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|m| m["model"] == "fixed")
+        .unwrap()
+        .clone();
+    assert_eq!(
+        fixed["owners"],
+        serde_json::json!([1]),
+        "under gl the bottom edge owns its samples"
+    );
+    for (pixel, message) in [
+        ("9,0", "off the 8x6 canvas"),
+        ("a,b", "is not X,Y"),
+        ("1", "is not X,Y"),
+    ] {
+        let (code, _, stderr) = run(&os!("explain", sp, pixel));
+        assert_eq!(code, 2);
+        assert!(stderr.contains(message), "{stderr}");
+    }
+}
+
+// ---- the convention fit ----
+
+/// The scene mirrored left to right about x = W/2 (pixel i's sample i + 1/2 goes to
+/// pixel W - 1 - i's), every vertex snapped first by `conv` so that the mirror moves no
+/// vertex off the grid.
+fn mirrored_snapped(s: &Scene, conv: &rasterproof::convention::Convention) -> Scene {
+    let mut m = s.clone();
+    let w = num_rational::BigRational::from_integer(s.width.into());
+    for t in &mut m.triangles {
+        let snapped = t.triangle.snapped(conv).to_exact();
+        t.triangle = rasterproof::geom::Triangle {
+            v: snapped.v.map(|p| rasterproof::geom::Point::new(&w - &p.x, p.y)),
+        };
+    }
+    m
+}
+
+/// Top-right and bottom-right, derived independently of the planned engine: the mirror
+/// image of the scene under top-left / bottom-left, mirrored back (moving the sample left
+/// by ε is moving the mirrored sample right by ε).
+fn mirror_rule_image(s: &Scene, rule: TieRule) -> Coverage {
+    let mut conv = s.convention();
+    conv.tie_rule = rule;
+    let m = mirrored_snapped(s, &conv);
+    let target = rasterproof::convention::Target::new(s.width, s.height, conv).unwrap();
+    let image = render(Model::Exact, &m.primitives(), &target).unwrap();
+    let mut back = Coverage::new(s.width, s.height);
+    for (x, y, ids) in image.iter() {
+        for &id in ids {
+            back.cover(s.width - 1 - x, y, id);
+        }
+    }
+    back
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// The planned engine under every tie rule equals the plain exact reading of that rule
+    /// (`evidence::triangle_at`, sample by sample); the right-hand rules equal the mirror
+    /// images of the left-hand ones.
+    #[test]
+    fn planned_triangles_follow_every_tie_rule(
+        ts in prop::collection::vec(rasterproof::strategy::tie_heavy_triangle(10), 1..4),
+        corner in any::<bool>(),
+    ) {
+        use rasterproof::oracle::evidence::triangle_at;
+        use rasterproof::tri::planned::PlannedTriangle;
+        let mut s = Scene::new(10, 10, ts);
+        if corner {
+            s.overrides.pixel_centre = Some(rasterproof::convention::PixelCentre::Corner);
+        }
+        let target = s.target().unwrap();
+        for rule in AnyTieRule::ALL {
+            let mut planned = Coverage::new(10, 10);
+            let mut plain = Coverage::new(10, 10);
+            for (k, t) in s.triangles().iter().enumerate() {
+                let id = u32::try_from(k).unwrap();
+                if let Some(p) = PlannedTriangle::with_rule(t, &target, rule) {
+                    p.rasterize(id, &mut planned);
+                }
+                for y in 0..10 {
+                    for x in 0..10 {
+                        let sample = rasterproof::raster::sample_exact(x, y, &target);
+                        if triangle_at(t, &sample, rule).is_some_and(|a| a.inside) {
+                            plain.cover(x, y, id);
+                        }
+                    }
+                }
+            }
+            prop_assert_eq!(&planned, &plain, "{}", rule.name());
+            if !corner {
+                let mirror = match rule {
+                    AnyTieRule::TopRight => Some(TieRule::TopLeft),
+                    AnyTieRule::BottomRight => Some(TieRule::BottomLeft),
+                    _ => None,
+                };
+                if let Some(left) = mirror {
+                    // The tie-heavy vertices are on the 1/2 grid, which snapping keeps.
+                    prop_assert_eq!(&planned, &mirror_rule_image(&s, left), "{}", rule.name());
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn fit_names_the_convention_of_a_renderer_made_to_follow_it() {
+    // A tie-heavy mesh on half-pixel vertices, so that the tie rule shows.
+    let s = scene(
+        r#"{"width": 12, "height": 10, "triangles": [
+        {"v": [[0.5, 0.5], [6.5, 0.5], [0.5, 6.5]]}, {"v": [[6.5, 0.5], [6.5, 6.5], [0.5, 6.5]]},
+        {"v": [[6.5, 0.5], [11.5, 3.5], [6.5, 6.5]]}, {"v": [[0.5, 6.5], [11.5, 9.5], [6.5, 6.5]]}]}"#,
+    );
+    let target = s.target().unwrap();
+    let fit = |theirs: &Coverage| {
+        rasterproof::oracle::fit(&s.primitives(), &target, &Theirs::from_coverage(theirs, Format::Ids)).unwrap()
+    };
+    // Under GL: every exact fit is a bottom rule, bottom-left at 8 bits nearest-even among them.
+    let gl = rendered_with(&s, Model::ExactSnapped, |s| s.preset = Preset::Gl);
+    let found = fit(&gl);
+    assert!(
+        found
+            .exact
+            .iter()
+            .all(|c| matches!(c.tie_rule, AnyTieRule::BottomLeft | AnyTieRule::BottomRight)),
+        "{}",
+        found.to_text()
+    );
+    assert!(found.exact.iter().any(|c| c.tie_rule == AnyTieRule::BottomLeft
+        && c.snapping.bits == Some(8)
+        && c.snapping.rounding == Rounding::NearestEven
+        && c.pixel_centre == rasterproof::convention::PixelCentre::Half));
+    // Top-right, from the mirror construction: top-right is found, top-left is not.
+    let tr = mirror_rule_image(&s, TieRule::TopLeft);
+    let found = fit(&tr);
+    assert!(
+        found.exact.iter().any(|c| c.tie_rule == AnyTieRule::TopRight),
+        "{}",
+        found.to_text()
+    );
+    assert!(
+        found.exact.iter().all(|c| c.tie_rule != AnyTieRule::TopLeft),
+        "{}",
+        found.to_text()
+    );
+    // Their image with one stray pixel: nothing fits; the closest is one pixel away.
+    let mut stray = render(Model::ExactSnapped, &s.primitives(), &target).unwrap();
+    stray.cover(11, 0, 0);
+    let found = fit(&stray);
+    assert!(found.exact.is_empty());
+    assert_eq!(found.closest[0].total(), 1, "{}", found.to_text());
+    assert_eq!(found.closest[0].candidate.tie_rule, AnyTieRule::TopLeft);
+    assert!(found.to_text().contains("no convention explains their image exactly"));
+}
+
+#[test]
+fn fit_command() {
+    let dir = tempdir::Dir::new("oracle-fit");
+    let scene = write(&dir, "s.json", HALF_PIXEL_SQUARES.as_bytes());
+    let sp = scene.to_str().unwrap();
+    let gl = dir.path().join("gl.png");
+    assert!(bin()
+        .args(["render", sp, "--preset", "gl", "--ids-out", gl.to_str().unwrap()])
+        .output()
+        .unwrap()
+        .status
+        .success());
+    let (code, stdout, stderr) = run(&os!("compare", sp, gl.to_str().unwrap(), "--fit"));
+    assert_eq!(code, 0, "{stderr}");
+    assert!(
+        stdout.contains("tie rule bottom-left, pixel centre 0.5: 1..=16 bits (any rounding); unsnapped"),
+        "{stdout}"
+    );
+    let (code, stdout, _) = run(&os!("compare", sp, gl.to_str().unwrap(), "--fit", "--format", "json"));
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    assert_eq!(v["searched"], 1032);
+    assert!(v["exact"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|c| c["tie_rule"].as_str().unwrap().starts_with("bottom")));
+    let clip_space = write(
+        &dir,
+        "cs.json",
+        br#"{"width": 8, "height": 6, "clip_space_triangles": [{"v": [[0, 0, 0, 1], [1, 0, 0, 1], [0, 1, 0, 1]]}]}"#,
+    );
+    let (code, _, stderr) = run(&os!(
+        "compare",
+        clip_space.to_str().unwrap(),
+        gl.to_str().unwrap(),
+        "--fit"
+    ));
+    assert_eq!(code, 2);
+    assert!(
+        stderr.contains("--fit does not search scenes with clip_space_triangles"),
+        "{stderr}"
+    );
+}
