@@ -170,6 +170,14 @@ pub enum PixelCentre {
 }
 
 impl PixelCentre {
+    /// Its value as scene files and reports write it: `0.5` or `0`.
+    pub fn name(self) -> &'static str {
+        match self {
+            PixelCentre::Half => "0.5",
+            PixelCentre::Corner => "0",
+        }
+    }
+
     /// The offset as an exact rational (1/2 or 0).
     pub fn offset(self) -> BigRational {
         match self {
@@ -285,10 +293,7 @@ impl fmt::Display for Convention {
             "preset {} (tie rule {}, pixel centre {}, {} subpixel bits, rounding {})",
             self.preset.name(),
             self.tie_rule.name(),
-            match self.pixel_centre {
-                PixelCentre::Half => "0.5",
-                PixelCentre::Corner => "0",
-            },
+            self.pixel_centre.name(),
             self.subpixel_bits,
             self.rounding.name()
         )

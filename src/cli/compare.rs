@@ -102,7 +102,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let theirs = Theirs::read(&bytes, &theirs_name, format, background).map_err(|e| e.to_string())?;
     if o.fit {
         let found = rasterproof::oracle::fit(&scene.primitives(), &target, &theirs).map_err(|e| match e {
-            rasterproof::oracle::FitError::Size { .. } => format!("{theirs_name}: {e} ({name})"),
+            rasterproof::oracle::FitError::Size(_) => format!("{theirs_name}: {e} ({name})"),
             other => format!("{name}: {other}"),
         })?;
         match o.format_out {
@@ -123,7 +123,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         });
     }
     let report = compare(&scene.primitives(), &target, model, &theirs).map_err(|e| match e {
-        rasterproof::oracle::CompareError::Size { .. } => format!("{theirs_name}: {e} ({name})"),
+        rasterproof::oracle::CompareError::Size(_) => format!("{theirs_name}: {e} ({name})"),
         other => format!("{name}: {other} (model {model})"),
     })?;
     if let Some(path) = &o.diff_out {

@@ -147,16 +147,45 @@ pub struct Report {
     ours: Coverage,
 }
 
+/// Their canvas is not the scene's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SizeMismatch {
+    /// Their width and height.
+    pub theirs: (u32, u32),
+    /// The scene's.
+    pub scene: (u32, u32),
+}
+
+impl SizeMismatch {
+    /// `Err` when `theirs` is not `target`'s size.
+    pub fn check(theirs: &Theirs, target: &Target) -> Result<(), SizeMismatch> {
+        let m = SizeMismatch {
+            theirs: (theirs.width(), theirs.height()),
+            scene: (target.width, target.height),
+        };
+        if m.theirs == m.scene {
+            Ok(())
+        } else {
+            Err(m)
+        }
+    }
+}
+
+impl fmt::Display for SizeMismatch {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "their image is {}x{} but the scene's canvas is {}x{}",
+            self.theirs.0, self.theirs.1, self.scene.0, self.scene.1
+        )
+    }
+}
+
 /// Why a comparison could not be made.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum CompareError {
     /// Their canvas is not the scene's.
-    Size {
-        /// Their width and height.
-        theirs: (u32, u32),
-        /// The scene's.
-        scene: (u32, u32),
-    },
+    Size(SizeMismatch),
     /// The oracle must be an exact model.
     NotExact(Model),
     /// The oracle model refused the scene.
@@ -166,11 +195,7 @@ pub enum CompareError {
 impl fmt::Display for CompareError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            CompareError::Size { theirs, scene } => write!(
-                f,
-                "their image is {}x{} but the scene's canvas is {}x{}",
-                theirs.0, theirs.1, scene.0, scene.1
-            ),
+            CompareError::Size(m) => write!(f, "{m}"),
             CompareError::NotExact(m) => write!(
                 f,
                 "--model {}: the oracle must be an exact model (exact, exact-snapped, exact-plain, exact-snapped-plain)",
@@ -211,12 +236,7 @@ pub fn compare(
     model: Model,
     theirs: &Theirs,
 ) -> Result<Report, CompareError> {
-    if (theirs.width(), theirs.height()) != (target.width, target.height) {
-        return Err(CompareError::Size {
-            theirs: (theirs.width(), theirs.height()),
-            scene: (target.width, target.height),
-        });
-    }
+    SizeMismatch::check(theirs, target).map_err(CompareError::Size)?;
     if !model.is_exact() {
         return Err(CompareError::NotExact(model));
     }
@@ -731,7 +751,7 @@ impl Report {
             "convention": {
                 "preset": c.preset.name(),
                 "tie_rule": c.tie_rule.name(),
-                "pixel_centre": if c.pixel_centre == PixelCentre::Half { "0.5" } else { "0" },
+                "pixel_centre": c.pixel_centre.name(),
                 "subpixel_bits": c.subpixel_bits,
                 "rounding": c.rounding.name(),
             },

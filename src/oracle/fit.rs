@@ -18,7 +18,7 @@ use std::fmt::{self, Write as _};
 use num_rational::BigRational;
 use serde_json::{json, Value};
 
-use super::compare::{count_differences, PixelKind};
+use super::compare::{count_differences, PixelKind, SizeMismatch};
 use super::reason::Snapping;
 use super::theirs::Theirs;
 use crate::convention::{AnyTieRule, Convention, PixelCentre, Target, TieRule};
@@ -55,15 +55,8 @@ impl fmt::Display for Candidate {
             "tie rule {}, {}, pixel centre {}",
             self.tie_rule.name(),
             self.snapping.describe(),
-            centre_name(self.pixel_centre)
+            self.pixel_centre.name()
         )
-    }
-}
-
-fn centre_name(c: PixelCentre) -> &'static str {
-    match c {
-        PixelCentre::Half => "0.5",
-        PixelCentre::Corner => "0",
     }
 }
 
@@ -101,12 +94,7 @@ pub struct FitReport {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum FitError {
     /// Their canvas is not the scene's.
-    Size {
-        /// Their width and height.
-        theirs: (u32, u32),
-        /// The scene's.
-        scene: (u32, u32),
-    },
+    Size(SizeMismatch),
     /// The scene has clip-space triangles.
     ClipSpace,
     /// A candidate's render failed (a coordinate beyond what the exact engine accepts).
@@ -116,11 +104,7 @@ pub enum FitError {
 impl fmt::Display for FitError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            FitError::Size { theirs, scene } => write!(
-                f,
-                "their image is {}x{} but the scene's canvas is {}x{}",
-                theirs.0, theirs.1, scene.0, scene.1
-            ),
+            FitError::Size(m) => write!(f, "{m}"),
             FitError::ClipSpace => f.write_str(
                 "--fit does not search scenes with clip_space_triangles (their window-space vertices exist only \
                  after clipping); compare them under a stated convention",
@@ -278,12 +262,7 @@ fn image(primitives: &Primitives, target: &Target, candidate: &Candidate) -> Res
 /// Their canvas differs, the scene has clip-space triangles, or a snapped coordinate is
 /// beyond what the exact engine accepts.
 pub fn fit(primitives: &Primitives, target: &Target, theirs: &Theirs) -> Result<FitReport, FitError> {
-    if (theirs.width(), theirs.height()) != (target.width, target.height) {
-        return Err(FitError::Size {
-            theirs: (theirs.width(), theirs.height()),
-            scene: (target.width, target.height),
-        });
-    }
+    SizeMismatch::check(theirs, target).map_err(FitError::Size)?;
     if !primitives.clip_space_triangles.is_empty() {
         return Err(FitError::ClipSpace);
     }
@@ -388,7 +367,7 @@ impl FitReport {
         }
         let _ = writeln!(s, "{} conventions explain their image exactly:", self.exact.len());
         for (t, p, snaps) in self.grouped() {
-            let _ = writeln!(s, "  tie rule {}, pixel centre {}: {snaps}", t.name(), centre_name(p));
+            let _ = writeln!(s, "  tie rule {}, pixel centre {}: {snaps}", t.name(), p.name());
         }
         s
     }
@@ -402,7 +381,7 @@ impl FitReport {
                 "tie_rule": c.tie_rule.name(),
                 "subpixel_bits": c.snapping.bits,
                 "rounding": c.snapping.bits.map(|_| c.snapping.rounding.name()),
-                "pixel_centre": centre_name(c.pixel_centre),
+                "pixel_centre": c.pixel_centre.name(),
             })
         };
         let closest: Vec<Value> = self

@@ -176,11 +176,7 @@ impl Scene {
             let _ = writeln!(s, "  \"tie_rule\": \"{}\",", t.name());
         }
         if let Some(c) = o.pixel_centre {
-            let _ = writeln!(
-                s,
-                "  \"pixel_centre\": {},",
-                if c == PixelCentre::Half { "0.5" } else { "0" }
-            );
+            let _ = writeln!(s, "  \"pixel_centre\": {},", c.name());
         }
         s.push_str("  \"triangles\": [");
         for (k, t) in self.triangles.iter().enumerate() {
