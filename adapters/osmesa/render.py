@@ -4,6 +4,7 @@ OSMesa (off-screen GL, no window system) and writes the ids PNG (`render --ids-o
 layout), so that `rasterproof compare SCENE.json OUT.png --as ids` can judge the driver.
 
     /usr/bin/python3 adapters/osmesa/render.py SCENE.json OUT.png [--driver llvmpipe|softpipe]
+        [--viewport canvas|wide]
 
 Needs Debian's libosmesa6, python3-opengl, python3-numpy and python3-pil, which are
 installed for /usr/bin/python3 (not for a pyenv or venv `python3` on PATH).
@@ -17,23 +18,29 @@ glColor4ub(1, 0, 0, 0) to count the primitives that cover each pixel; where two 
 the ids PNG gets alpha 254 (its "several owners" mark).
 
 How y is mapped: the scene is y down with the origin at the top left; GL's window origin is
-the lower left. With S the largest power of two within GL_MAX_VIEWPORT_DIMS (16384 for
-llvmpipe and softpipe) and L = -S/2 when the canvas fits in S/2 (else L = 0), the
-projection is glOrtho(L, L + S, L + S, L, -1, 1) and the viewport glViewport(L, H - L - S,
-S, S): the scene's square [L, L + S)^2 is the viewport, so a scene point (x, y) reaches GL
-window coordinates
+the lower left. With S the smallest power of two at least the canvas's width and height,
+the projection is glOrtho(0, S, S, 0, -1, 1) and the viewport glViewport(0, H - S, S, S):
+the scene's square [0, S)^2 is the viewport, so a scene point (x, y) reaches GL window
+coordinates
 
     x_gl = x,   y_gl = H - y
 
-through NDC ((x - L) 2/S - 1, 1 - (y - L) 2/S). S is a power of two, so for L = -S/2 this
-is x / (S/2) and -y / (S/2), exact in f32, and the one rounding step is the f32 sum H - y,
-exact for coordinates on a 2^-10 grid within the square (for L = 0 the subtraction of 1
-is exact on that grid too). (glOrtho(0, W, H, 0, -1, 1) with glViewport(0, 0, W, H) gives
-the same map, but through 2 / W, which f32 holds exactly only when W is a power of two;
-the big viewport also keeps geometry within +-S/2 px of the origin away from GL's
-clipping.) GL pixel row r (counted from the
-bottom) samples y_gl = r + 1/2, the scene's row H - 1 - r: glReadPixels returns the bottom
-row first, so the rows are flipped before the PNG is written. GL's own tie rule therefore
+through NDC (2x/S - 1, 1 - 2y/S) and the viewport transform (scale S/2, offsets S/2 and
+H - S/2). S is a power of two, so every step is exact in f32 for coordinates on a 2^-10
+grid inside the viewport; the one that can round is the sum H - y. This is
+glOrtho(0, W, H, 0, -1, 1) with glViewport(0, 0, W, H), the usual 2D setup, except that
+2 / W is exact in f32 only when W is a power of two, so the viewport is widened to one
+(the extra rows and columns lie off the framebuffer). GL clips what leaves the viewport, in
+f32, so a triangle crossing the canvas's border gets new, rounded vertices there.
+
+`--viewport wide` uses the largest viewport GL allows instead (S = 16384, the square
+[-S/2, S/2)^2 when the canvas fits in S/2, else [0, S)^2: glOrtho(L, L + S, L + S, L, -1,
+1), glViewport(L, H - L - S, S, S)), so nothing within S/2 px is clipped; llvmpipe then
+draws vertices far outside the canvas differently (adapters/README.md).
+
+GL pixel row r (counted from the bottom) samples y_gl = r + 1/2, the scene's row
+H - 1 - r: glReadPixels returns the bottom row first, so the rows are flipped before the
+PNG is written. GL's own tie rule therefore
 meets the scene mirrored; rasterproof's `gl` preset ("bottom-left in a y-down image") is
 top-left in GL's y-up window.
 
@@ -287,11 +294,10 @@ def twice_area(contour):
 class Renderer:
     """Draws a scene into the current OSMesa context."""
 
-    def __init__(self, GL, np, scene, to_f32, span):
-        self.GL, self.np, self.scene, self.f32, self.span = GL, np, scene, to_f32, span
-        # The scene square [low, low + span)^2 is the viewport: centred on the origin when
-        # the canvas fits in half of it, else from the origin.
-        self.low = -(span // 2) if max(scene["width"], scene["height"]) <= span // 2 else 0
+    def __init__(self, GL, np, scene, to_f32, low, span):
+        # The scene square [low, low + span)^2 is the viewport.
+        self.GL, self.np, self.scene, self.f32 = GL, np, scene, to_f32
+        self.low, self.span = low, span
         self.W, self.H = scene["width"], scene["height"]
         self.prepare()
 
@@ -460,6 +466,24 @@ class Renderer:
         return rows[::-1].copy()
 
 
+def viewport_square(kind, side, max_dims):
+    """(L, S): the scene square [L, L + S)^2 that becomes GL's viewport."""
+    if kind == "canvas":
+        span = 1
+        while span < side:
+            span *= 2
+        if span > max_dims:
+            raise Refused(f"canvas side {side}: its power-of-two viewport {span} exceeds "
+                          f"GL_MAX_VIEWPORT_DIMS {max_dims}")
+        return 0, span
+    span = 1
+    while 2 * span <= max_dims:
+        span *= 2
+    if span < side:
+        raise Refused(f"canvas side {side}: larger than GL_MAX_VIEWPORT_DIMS {max_dims}")
+    return (-(span // 2) if side <= span // 2 else 0), span
+
+
 def render(args):
     os.environ["PYOPENGL_PLATFORM"] = "osmesa"
     os.environ["GALLIUM_DRIVER"] = args.driver
@@ -487,13 +511,9 @@ def render(args):
         if GL.glGetIntegerv(GL.GL_STENCIL_BITS) < 8:
             raise Refused("the context has fewer than 8 stencil bits")
         max_dims = min(int(d) for d in GL.glGetIntegerv(GL.GL_MAX_VIEWPORT_DIMS))
-        span = 1
-        while 2 * span <= max_dims:
-            span *= 2
-        if span < max(W, H):
-            raise Refused(f"canvas {W}x{H}: larger than GL_MAX_VIEWPORT_DIMS {max_dims}")
+        low, span = viewport_square(args.viewport, max(W, H), max_dims)
         to_f32 = F32(np)
-        r = Renderer(GL, np, scene, to_f32, span)
+        r = Renderer(GL, np, scene, to_f32, low, span)
         r.setup()
         r.draw(colour)
         ids = r.read()
@@ -527,6 +547,9 @@ def main(argv):
     p.add_argument("scene", help="the scene file (JSON)")
     p.add_argument("out", help="the ids PNG to write")
     p.add_argument("--driver", choices=DRIVERS, default="llvmpipe", help="the Gallium driver (default llvmpipe)")
+    p.add_argument("--viewport", choices=("canvas", "wide"), default="canvas",
+                   help="GL's viewport: the canvas widened to a power of two (default), or the "
+                        "largest GL allows, centred on the origin")
     args = p.parse_args(argv)
     try:
         render(args)

@@ -1,6 +1,6 @@
 //! tiny-skia adapter: renders a rasterproof scene with tiny-skia's non-anti-aliased path
 //! fill and writes the ids PNG (`render --ids-out`'s layout), so that `rasterproof compare
-//! SCENE.json OUT.png --as ids` (and, once it lands, `hunt --cmd`) can judge tiny-skia.
+//! SCENE.json OUT.png --as ids` and `hunt --cmd` can judge tiny-skia.
 //!
 //! ```sh
 //! cargo run --release --example tiny-skia-adapter -- SCENE.json OUT.png
@@ -38,7 +38,7 @@
 //!
 //! Coordinates: tiny-skia takes `f32`, so every exact coordinate is rounded once to the
 //! nearest `f32` (`Point::to_f32`). Scenes should use f32-exact coordinates (`hunt
-//! --float32-exact` will generate them); the adapter says on stderr how many were not, and
+//! --float32-exact` generates them); the adapter says on stderr how many were not, and
 //! a coordinate outside the f32 range is refused (exit 2).
 //!
 //! Exit status: 0 when the PNG was written, 2 with one line on stderr otherwise (bad
