@@ -49,6 +49,7 @@
 //! | clip exactly or in floats | [`clip`] |
 //! | compare another renderer's output with the exact answer, explain each difference | [`oracle::compare()`], [`oracle::Theirs`] |
 //! | explain one pixel of a scene | [`oracle::explain_pixel`] |
+//! | every model's speed and error side by side, by coordinate magnitude (feature `trade`) | `trade::run`, `trade::Report` |
 //!
 //! The layers and the pipeline a scene takes from file to coverage are drawn in
 //! ARCHITECTURE.md at the top of the repository.
@@ -82,4 +83,6 @@ pub mod raster;
 pub mod scene;
 #[cfg(feature = "proptest")]
 pub mod strategy;
+#[cfg(feature = "trade")]
+pub mod trade;
 pub mod tri;

@@ -9,6 +9,7 @@ pub mod flood;
 pub mod hunt;
 pub mod plan;
 pub mod render;
+pub mod trade;
 
 use std::ffi::OsString;
 use std::fmt::Display;

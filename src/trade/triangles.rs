@@ -1,0 +1,487 @@
+//! The triangle workloads (pixel-sized, medium, huge, sliver; a tie-heavy and a random
+//! spade mesh) and every triangle model on them: speed at the origin, the plan, and per
+//! magnitude the wrong pixels, the meshes' gaps and double covers, barycentric sums and
+//! Gouraud channels.
+
+use glam::{DVec2, Vec2};
+
+use crate::check::{check_barycentric_exact, check_barycentric_fixed, float_sum_error_ulps};
+use crate::convention::{Preset, Target};
+use crate::geom::{Rgb, Triangle};
+use crate::interp::{barycentric_f32, barycentric_f64, gouraud_exact, gouraud_f32, gouraud_f64, to_channel};
+use crate::model::plan::plan_scene;
+use crate::model::{prepare, Model, Primitives};
+use crate::raster::sample_exact;
+use crate::strategy::{triangle, Scale};
+use crate::tri::float::FloatRule;
+
+use super::far::{self, FarWindow};
+use super::measure::{
+    area_metrics, corner_subset, departures, median_max, shared_edge_pixels, Pairs, BARYCENTRIC_EXACT,
+    BARYCENTRIC_ULPS, GOURAUD,
+};
+use super::report::{Cell, Metric, Outcome, Placement, PlanSummary, WorkloadReport};
+use super::speed::{entries, model_jobs, refusal, Contender};
+use super::workloads::{colours, draw_n, mesh, place_triangles, runner};
+use super::{arith, Config, Family, Sizes};
+
+/// The contenders, in report order.
+const MODELS: [Model; 10] = [
+    Model::ExactPlain,
+    Model::Exact,
+    Model::ExactSnappedPlain,
+    Model::ExactSnapped,
+    Model::Fixed,
+    Model::Scanline,
+    Model::Float32,
+    Model::Float64,
+    Model::Float32Naive,
+    Model::Float64Naive,
+];
+
+/// The side of the plain oracles' corner.
+pub(crate) const SUBSET_SIDE: u32 = 32;
+
+/// One triangle workload.
+struct Workload {
+    name: &'static str,
+    description: String,
+    triangles: Vec<Triangle>,
+    colours: Vec<[Rgb; 3]>,
+    /// A mesh: count gaps and double covers.
+    mesh: bool,
+}
+
+fn workloads(config: &Config, sizes: &Sizes) -> Vec<Workload> {
+    let (s, n) = (sizes.canvas, sizes.count);
+    let family = |name: &'static str, scale: Scale, count: usize, what: &str| {
+        let mut r = runner(config.seed, name);
+        let triangles = draw_n(&mut r, &triangle(scale, s), count);
+        let colours = colours(&mut r, count);
+        Workload {
+            name,
+            description: format!("{count} random triangles: {what} (strategy::Scale::{scale:?})."),
+            triangles,
+            colours,
+            mesh: false,
+        }
+    };
+    let meshed = |name: &'static str, bits: u32, points: usize, what: &str| {
+        let mut r = runner(config.seed, name);
+        let m = mesh(&mut r, s, bits, points);
+        let colours = colours(&mut r, m.triangles.len());
+        Workload {
+            name,
+            description: format!(
+                "A spade Delaunay triangulation of {points} random points on the {what} grid ({} triangles).",
+                m.triangles.len()
+            ),
+            triangles: m.triangles,
+            colours,
+            mesh: true,
+        }
+    };
+    vec![
+        family(
+            "pixel triangles",
+            Scale::Pixel,
+            2000 * n,
+            "vertices within 2 px of each other, 1/256 px grid",
+        ),
+        family(
+            "medium triangles",
+            Scale::Medium,
+            10 * n,
+            "vertices anywhere on the canvas, 1/256 px grid",
+        ),
+        family(
+            "huge triangles",
+            Scale::Huge,
+            2 * n,
+            "two vertices up to 2^21 px away, one on the canvas",
+        ),
+        family(
+            "sliver triangles",
+            Scale::Sliver,
+            100 * n,
+            "long and thin, the third vertex within 4/256 px of the line (1/65536 px grid)",
+        ),
+        meshed(
+            "tie-heavy mesh",
+            1,
+            100 * n,
+            "half-pixel (vertices on pixel centres and corners)",
+        ),
+        meshed("random mesh", 8, 100 * n, "1/256 px"),
+    ]
+}
+
+/// Measures every triangle workload.
+pub(crate) fn run(config: &Config, sizes: &Sizes, progress: &mut dyn FnMut(&str)) -> Vec<WorkloadReport> {
+    workloads(config, sizes)
+        .iter()
+        .map(|w| {
+            progress(&format!("triangles: {}", w.name));
+            measure(w, config, sizes)
+        })
+        .collect()
+}
+
+/// The planned exact engine a model's errors are counted against.
+fn reference(model: Model) -> Model {
+    if model.snaps() {
+        Model::ExactSnapped
+    } else {
+        Model::Exact
+    }
+}
+
+/// A model's covered pairs on `target`.
+fn pairs(model: Model, triangles: &[Triangle], target: &Target) -> Result<Pairs, String> {
+    let prepared = prepare(model, &Primitives::from_triangles(triangles), target).map_err(|e| e.to_string())?;
+    let mut p = Pairs::default();
+    prepared.draw(target, &mut p);
+    Ok(p.sorted())
+}
+
+/// The reference of one size: its pairs and the mesh mask.
+struct Reference {
+    pairs: Pairs,
+    mask: Option<(Vec<bool>, u32)>,
+}
+
+impl Reference {
+    fn new(model: Model, triangles: &[Triangle], target: &Target, mesh: bool) -> Reference {
+        let pairs = pairs(model, triangles, target).expect("the planned engine takes every finite triangle");
+        let mask = mesh.then(|| (shared_edge_pixels(&pairs, target.width).0, target.width));
+        Reference { pairs, mask }
+    }
+
+    fn mask(&self) -> Option<(&[bool], u32)> {
+        self.mask.as_ref().map(|(m, s)| (m.as_slice(), *s))
+    }
+}
+
+/// The plain oracles' subset: the triangles that cover the corner, until `pixels`, with
+/// their colours.
+fn subset(w: &Workload, corner: &Target, pixels: u64) -> (Vec<Triangle>, Vec<[Rgb; 3]>) {
+    let exact = pairs(Model::Exact, &w.triangles, corner).expect("the planned engine takes every finite triangle");
+    let ids = corner_subset(&exact, w.triangles.len(), pixels);
+    (
+        ids.iter().map(|&k| w.triangles[k].clone()).collect(),
+        ids.iter().map(|&k| w.colours[k]).collect(),
+    )
+}
+
+fn measure(w: &Workload, config: &Config, sizes: &Sizes) -> WorkloadReport {
+    let conv = Preset::D3d11.convention();
+    let target = Target::new(sizes.canvas, sizes.canvas, conv).expect("a valid canvas");
+    let corner = Target::new(SUBSET_SIDE, SUBSET_SIDE, conv).expect("a valid canvas");
+    let (sub, sub_colours) = subset(w, &corner, sizes.plain_pixels);
+    let full_refs = [
+        Reference::new(Model::Exact, &w.triangles, &target, w.mesh),
+        Reference::new(Model::ExactSnapped, &w.triangles, &target, w.mesh),
+    ];
+    let sub_refs = [
+        Reference::new(Model::Exact, &sub, &corner, w.mesh),
+        Reference::new(Model::ExactSnapped, &sub, &corner, w.mesh),
+    ];
+    let plain = arith::is_plain;
+    let pick = |m: Model| {
+        let k = usize::from(reference(m) == Model::ExactSnapped);
+        if plain(m) {
+            (&sub[..], &corner, &sub_refs[k], &sub_colours[..])
+        } else {
+            (&w.triangles[..], &target, &full_refs[k], &w.colours[..])
+        }
+    };
+
+    // Speed at the origin, round-robin: the draw of the prepared workload, and prepare
+    // and draw.
+    let prims: Vec<Primitives> = MODELS.iter().map(|&m| Primitives::from_triangles(pick(m).0)).collect();
+    let contenders = MODELS
+        .iter()
+        .zip(&prims)
+        .map(|(&m, p)| {
+            let (_, t, r, _) = pick(m);
+            Contender {
+                name: m.name().into(),
+                exact: m.is_exact(),
+                reference: reference(m).name(),
+                elements: r.pairs.0.len() as u64,
+                subset: plain(m),
+                jobs: model_jobs(m, p, t),
+            }
+        })
+        .collect();
+    let speed = entries(contenders, sizes.repetitions, sizes.min_pass_seconds);
+
+    // The plan.
+    let prims = Primitives::from_triangles(&w.triangles);
+    let plans = [Model::Exact, Model::ExactSnapped]
+        .into_iter()
+        .filter_map(|m| {
+            let p = plan_scene(m, &prims, &target).ok()?;
+            Some(PlanSummary {
+                model: m.name(),
+                by_width: p.by_width().into_iter().map(|(w, n)| (w.name(), n)).collect(),
+                summary: p.summary(),
+            })
+        })
+        .collect();
+
+    // Errors at the origin, for every model (the exact and integer ones keep them).
+    let origin: Vec<(Model, Outcome)> = MODELS
+        .iter()
+        .map(|&m| {
+            let (tris, t, r, colours) = pick(m);
+            let outcome = match origin_metrics(m, tris, colours, t, r, sizes.samples) {
+                Ok(metrics) => Outcome::Measured {
+                    placement: Placement::OnCanvas,
+                    metrics,
+                },
+                Err(e) => Outcome::Refused(e),
+            };
+            (m, outcome)
+        })
+        .collect();
+
+    // The exact colours at the float models' samples, once.
+    let exact_colours: Vec<Option<Rgb>> = samples(&full_refs[0], sizes.samples)
+        .iter()
+        .map(|&(x, y, k)| {
+            gouraud_exact(
+                &w.triangles[index(k)],
+                &w.colours[index(k)],
+                &sample_exact(x, y, &target),
+            )
+            .map(|v| v.each_ref().map(to_channel))
+        })
+        .collect();
+    let mut cells = Vec::new();
+    for &mag in &config.magnitudes {
+        let placed = place_triangles(&w.triangles, mag.px_i64());
+        let placed_prims = Primitives::from_triangles(&placed);
+        for (m, at_origin) in &origin {
+            let outcome = if mag.px() == 0 {
+                at_origin.clone()
+            } else if let Err(e) = refusal(*m, &placed_prims, &target) {
+                Outcome::Refused(e)
+            } else if m.is_exact() {
+                match at_origin {
+                    Outcome::Measured { metrics, .. } => Outcome::Measured {
+                        placement: Placement::Translated,
+                        metrics: metrics.clone(),
+                    },
+                    refused => refused.clone(),
+                }
+            } else {
+                let (_, _, r, _) = pick(*m);
+                let window = FarWindow {
+                    origin: mag.px_i64(),
+                    side: sizes.canvas,
+                };
+                Outcome::Measured {
+                    placement: Placement::AtMagnitude,
+                    metrics: far_metrics(*m, w, &placed, &window, &target, r, (sizes.samples, &exact_colours)),
+                }
+            };
+            cells.push(Cell {
+                magnitude: mag,
+                contender: m.name().into(),
+                outcome,
+            });
+        }
+    }
+    let on_grid = w.triangles.iter().all(|t| t.snapped(&conv).to_exact() == *t);
+    WorkloadReport {
+        name: w.name.into(),
+        family: Family::Triangles,
+        description: w.description.clone(),
+        primitives: w.triangles.len(),
+        unit: "Mpix/s",
+        baseline: Model::Fixed.name(),
+        on_grid,
+        plans,
+        speed,
+        cells,
+    }
+}
+
+/// The barycentric and Gouraud samples: spread over the reference's covered pairs.
+fn samples(r: &Reference, n: usize) -> Vec<(u32, u32, u32)> {
+    r.pairs.spread(n)
+}
+
+fn index(id: u32) -> usize {
+    usize::try_from(id).expect("an id")
+}
+
+/// A model's metrics on the workload at the origin, by the model's own code.
+fn origin_metrics(
+    model: Model,
+    triangles: &[Triangle],
+    colours: &[[Rgb; 3]],
+    target: &Target,
+    r: &Reference,
+    n: usize,
+) -> Result<Vec<Metric>, String> {
+    let prims = Primitives::from_triangles(triangles);
+    let prepared = prepare(model, &prims, target).map_err(|e| e.to_string())?;
+    let mut p = Pairs::default();
+    prepared.draw(target, &mut p);
+    let d = departures(&r.pairs, &p.sorted(), r.mask());
+    let mut metrics = area_metrics(&d, r.mask.is_some());
+    let picks = samples(r, n);
+    let conv = &target.convention;
+    // Barycentric sums.
+    if model.is_exact() {
+        let failures = picks
+            .iter()
+            .filter(|&&(x, y, k)| {
+                let t = &triangles[index(k)];
+                if model.snaps() {
+                    let s = t.snapped(conv);
+                    match s.to_fixed() {
+                        Ok(f) if arith::is_integer(model) => check_barycentric_fixed(&f, x, y, target).is_err(),
+                        _ => check_barycentric_exact(&s.to_exact(), &sample_exact(x, y, target)).is_err(),
+                    }
+                } else {
+                    check_barycentric_exact(t, &sample_exact(x, y, target)).is_err()
+                }
+            })
+            .count();
+        metrics.push(Metric::Rate {
+            name: BARYCENTRIC_EXACT,
+            count: failures as u64,
+            of: picks.len() as u64,
+        });
+    } else {
+        let mut ulps: Vec<f64> = picks
+            .iter()
+            .filter_map(|&(x, y, k)| {
+                let t = &triangles[index(k)];
+                let p = sample_exact(x, y, target);
+                if is_f32(model) {
+                    float_sum_error_ulps(t, &p)
+                } else {
+                    let l = barycentric_f64(&t.to_f64()?, p.to_f64()?)?;
+                    Some(((l[0] + l[1] + l[2]) - 1.0).abs() / f64::EPSILON)
+                }
+            })
+            .collect();
+        let (median, max) = median_max(&mut ulps);
+        metrics.push(Metric::Ulps {
+            name: BARYCENTRIC_ULPS,
+            median,
+            max,
+            samples: ulps.len() as u64,
+        });
+    }
+    // Gouraud: the model's own shading against the exact colour of the triangle it
+    // draws (snapped for the models that snap).
+    let mut off = 0u64;
+    for &(x, y, k) in &picks {
+        let t = &triangles[index(k)];
+        let exact_t = if model.snaps() {
+            t.snapped(conv).to_exact()
+        } else {
+            t.clone()
+        };
+        let c = &colours[index(k)];
+        let exact = gouraud_exact(&exact_t, c, &sample_exact(x, y, target)).map(|v| v.each_ref().map(to_channel));
+        let ours = prepared.shade(index(k), c, x, y, target);
+        off += channels_off(exact, Some(ours));
+    }
+    metrics.push(Metric::Rate {
+        name: GOURAUD,
+        count: off,
+        of: 3 * picks.len() as u64,
+    });
+    Ok(metrics)
+}
+
+fn is_f32(model: Model) -> bool {
+    arith::float_of(model).is_some_and(|(f32, _)| f32)
+}
+
+/// Channels where `ours` is one or more off `exact` (a missing colour on either side
+/// counts all three when the other has one).
+fn channels_off(exact: Option<Rgb>, ours: Option<Rgb>) -> u64 {
+    match (exact, ours) {
+        (Some(e), Some(o)) => e.iter().zip(&o).filter(|(a, b)| a != b).count() as u64,
+        (None, None) => 0,
+        _ => 3,
+    }
+}
+
+/// A float model over the window at a magnitude: coverage, barycentric sums and Gouraud
+/// colours computed with the placed coordinates.
+fn far_metrics(
+    model: Model,
+    w: &Workload,
+    placed: &[Triangle],
+    window: &FarWindow,
+    target: &Target,
+    r: &Reference,
+    (n, exact_colours): (usize, &[Option<Rgb>]),
+) -> Vec<Metric> {
+    let conv = &target.convention;
+    let rule = arith::float_of(model).map_or(FloatRule::WithTieRule, |(_, rule)| rule);
+    let mut p = Pairs::default();
+    // The placed coordinates fit both types (|M| <= 2^40): prepare accepted them.
+    let t32: Vec<Option<[Vec2; 3]>> = placed.iter().map(Triangle::to_f32).collect();
+    let t64: Vec<Option<[DVec2; 3]>> = placed.iter().map(Triangle::to_f64).collect();
+    for k in 0..placed.len() {
+        let id = u32::try_from(k).expect("ids fit u32");
+        if is_f32(model) {
+            if let Some(t) = &t32[k] {
+                far::rasterize_f32(t, id, window, conv, rule, &mut p);
+            }
+        } else if let Some(t) = &t64[k] {
+            far::rasterize_f64(t, id, window, conv, rule, &mut p);
+        }
+    }
+    let d = departures(&r.pairs, &p.sorted(), r.mask());
+    let mut metrics = area_metrics(&d, r.mask.is_some());
+    let picks = samples(r, n);
+    #[allow(clippy::cast_possible_truncation)] // rounding the sample to f32 is the model's
+    let at = |x: u32, y: u32| {
+        let s = DVec2::new(window.sample(x, conv), window.sample(y, conv));
+        (s, Vec2::new(s.x as f32, s.y as f32))
+    };
+    let mut ulps = Vec::new();
+    let mut off = 0u64;
+    for (&(x, y, k), &exact) in picks.iter().zip(exact_colours) {
+        let k = index(k);
+        let (s64, s32) = at(x, y);
+        let c = &w.colours[k];
+        let (sum, colour) = if is_f32(model) {
+            let Some(t) = &t32[k] else { continue };
+            let sum = barycentric_f32(t, s32).map(|l| f64::from(l[0]) + f64::from(l[1]) + f64::from(l[2]));
+            (
+                sum.map(|s| (s - 1.0).abs() / f64::from(f32::EPSILON)),
+                gouraud_f32(t, c, s32),
+            )
+        } else {
+            let Some(t) = &t64[k] else { continue };
+            let sum = barycentric_f64(t, s64).map(|l| l[0] + l[1] + l[2]);
+            (sum.map(|s| (s - 1.0).abs() / f64::EPSILON), gouraud_f64(t, c, s64))
+        };
+        ulps.extend(sum);
+        off += channels_off(exact, colour);
+    }
+    let (median, max) = median_max(&mut ulps);
+    metrics.push(Metric::Ulps {
+        name: BARYCENTRIC_ULPS,
+        median,
+        max,
+        samples: ulps.len() as u64,
+    });
+    metrics.push(Metric::Rate {
+        name: GOURAUD,
+        count: off,
+        of: 3 * picks.len() as u64,
+    });
+    metrics
+}
