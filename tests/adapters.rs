@@ -379,3 +379,216 @@ fn osmesa_adapter_refuses_clearly() {
         assert!(!out.exists());
     }
 }
+
+// ---- the committed minimal repros (adapters/fixtures/) ----
+
+/// One fixture of adapters/fixtures/fixtures.json: a hunt's minimal scene, the ids PNG the
+/// renderer drew for it, and the finding it shows.
+struct Fixture {
+    renderer: String,
+    scene: PathBuf,
+    /// None for a renderer failure (the signature names its kind: `non-zero exit`, ...).
+    theirs: Option<PathBuf>,
+    model: rasterproof::model::Model,
+    signature: String,
+}
+
+fn fixtures() -> Vec<Fixture> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/fixtures");
+    let manifest: Value =
+        serde_json::from_str(&std::fs::read_to_string(root.join("fixtures.json")).unwrap()).expect("fixtures.json");
+    manifest["fixtures"]
+        .as_array()
+        .expect("fixtures")
+        .iter()
+        .map(|f| {
+            let field = |name: &str| f[name].as_str().unwrap_or_else(|| panic!("{name} in {f}")).to_string();
+            Fixture {
+                renderer: field("renderer"),
+                scene: root.join(field("scene")),
+                theirs: f["theirs"].as_str().map(|t| root.join(t)),
+                model: rasterproof::model::Model::from_name(&field("model")).expect("a model"),
+                signature: field("signature"),
+            }
+        })
+        .collect()
+}
+
+/// The signatures (`missing pixel, tie, triangles`, ...) `theirs` shows against the oracle.
+fn signatures_of(scene: &Path, theirs: &Path, model: rasterproof::model::Model) -> Vec<String> {
+    use rasterproof::oracle::hunt::{judge, signatures};
+    use rasterproof::oracle::{Background, Format, Theirs};
+    let s = parse_scene(&std::fs::read_to_string(scene).unwrap(), "fixture").expect("a valid scene");
+    let bytes = std::fs::read(theirs).unwrap();
+    let t = Theirs::read(
+        &bytes,
+        &theirs.display().to_string(),
+        Format::Ids,
+        Background::default(),
+    )
+    .expect("an ids PNG");
+    signatures(&judge(&s, Ok(t), model))
+        .iter()
+        .map(|s| s.describe())
+        .collect()
+}
+
+/// The decoded RGBA pixels of a PNG.
+fn rgba(path: &Path) -> Vec<u8> {
+    image::open(path)
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+        .to_rgba8()
+        .into_raw()
+}
+
+#[test]
+fn every_fixture_shows_its_finding() {
+    let all = fixtures();
+    assert!(all.len() >= 3, "fixtures.json lists {} fixtures", all.len());
+    for f in &all {
+        let Some(theirs) = &f.theirs else {
+            continue; // a failure: the_renderers_still_draw_the_fixtures_so runs it
+        };
+        let found = signatures_of(&f.scene, theirs, f.model);
+        assert!(
+            found.contains(&f.signature),
+            "{}: {} shows {found:?}, not {:?}",
+            f.renderer,
+            f.scene.display(),
+            f.signature
+        );
+    }
+}
+
+#[test]
+fn the_renderers_still_draw_the_fixtures_so() {
+    let tiny = tiny_skia_adapter();
+    let osmesa_here = osmesa_available();
+    let dir = tempdir::Dir::new("adapters-fixtures");
+    for (k, f) in fixtures().iter().enumerate() {
+        let out = dir.path().join(format!("{k}.png"));
+        if f.theirs.is_none() {
+            // A failure fixture: the renderer must still fail on the scene (tiny-skia
+            // panics: exit status 101).
+            assert_eq!(f.renderer, "tiny-skia", "only tiny-skia has failure fixtures");
+            assert_eq!(f.signature, "non-zero exit");
+            let output = Command::new(&tiny).arg(&f.scene).arg(&out).output().unwrap();
+            assert_eq!(output.status.code(), Some(101), "{}", text(&output));
+            assert!(
+                String::from_utf8_lossy(&output.stderr).contains("panicked"),
+                "{}",
+                text(&output)
+            );
+            assert!(!out.exists());
+            continue;
+        }
+        match f.renderer.as_str() {
+            "tiny-skia" => tiny_skia(&tiny, &f.scene, &out),
+            driver @ ("llvmpipe" | "softpipe") if osmesa_here => osmesa(driver, &f.scene, &out),
+            "llvmpipe" | "softpipe" => continue,
+            other => panic!("fixtures.json: unknown renderer {other:?}"),
+        }
+        let theirs = f.theirs.as_ref().expect("not a failure");
+        assert!(
+            rgba(&out) == rgba(theirs),
+            "{} draws {} differently from {}",
+            f.renderer,
+            f.scene.display(),
+            theirs.display()
+        );
+    }
+}
+
+/// `rasterproof hunt` against `cmd` with a fixed seed: the signatures it found (from its
+/// summary table) and its first line.
+fn short_hunt(cmd: &str, args: &[&str]) -> (Vec<String>, String) {
+    let output = assert_cmd::Command::cargo_bin("rasterproof")
+        .unwrap()
+        .args([
+            "hunt",
+            "--cmd",
+            cmd,
+            "--float32-exact",
+            "--seed",
+            "2026",
+            "--jobs",
+            "2",
+            "--quiet",
+        ])
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let code = output.status.code();
+    assert!(code == Some(0) || code == Some(1), "hunt {args:?}:\n{}", text(&output));
+    let stdout = String::from_utf8_lossy(&output.stdout).to_string();
+    let found = stdout
+        .lines()
+        .filter(|l| l.len() > 4 && l.as_bytes()[..2].iter().all(u8::is_ascii_digit) && l.as_bytes()[2] == b' ')
+        .map(|l| l[4..].split("  ").next().unwrap().trim().to_string())
+        .collect();
+    (found, stdout.lines().next().unwrap_or("").to_string())
+}
+
+/// The reason class of a signature (`missing pixel, tie, triangles` -> `tie`).
+fn class_of(signature: &str) -> &str {
+    signature.split(", ").nth(1).unwrap_or(signature)
+}
+
+#[test]
+fn short_hunts_find_only_the_classes_of_the_fixtures() {
+    let all = fixtures();
+    let mut hunts = vec![(
+        "tiny-skia",
+        format!("{} {{scene}} {{out}}", tiny_skia_adapter().display()),
+        vec![
+            "--preset",
+            "gl",
+            "--subpixel-bits",
+            "6",
+            "--rounding",
+            "towards-zero",
+            "--cases",
+            "48",
+            "--shrink-runs",
+            "20",
+        ],
+    )];
+    if osmesa_available() {
+        let script = format!("{} adapters/osmesa/render.py {{scene}} {{out}} --driver", python());
+        hunts.push((
+            "llvmpipe",
+            format!("{script} llvmpipe"),
+            vec!["--preset", "gl", "--cases", "16", "--shrink-runs", "10"],
+        ));
+        hunts.push((
+            "softpipe",
+            format!("{script} softpipe"),
+            vec![
+                "--preset",
+                "gl",
+                "--model",
+                "exact",
+                "--cases",
+                "16",
+                "--shrink-runs",
+                "10",
+            ],
+        ));
+    }
+    for (renderer, cmd, args) in hunts {
+        let known: Vec<&str> = all
+            .iter()
+            .filter(|f| f.renderer == renderer)
+            .map(|f| class_of(&f.signature))
+            .collect();
+        let (found, summary) = short_hunt(&cmd, &args);
+        eprintln!("{renderer}: {summary}; {found:?}");
+        for s in &found {
+            assert!(
+                known.contains(&class_of(s)),
+                "{renderer}: hunt found {s:?}, a class no fixture of it shows ({known:?})"
+            );
+        }
+    }
+}

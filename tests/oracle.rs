@@ -330,6 +330,40 @@ fn lines_polygons_and_windows_have_their_classes() {
     }
 }
 
+/// D3D11's diamond test area holds its bottom corner, not its top one (§3.4.3); a y-up
+/// window (GL's, as llvmpipe draws) mirrors that. Derived by hand on a 1x1 canvas, pixel
+/// (0, 0), diamond |x - 1/2| + |y - 1/2| < 1/2 with corners (1/2, 0) top, (1/2, 1) bottom:
+/// - (-13/2, -5) -> (4, 5/2) has slope 7.5 / 10.5 = 5/7 and y = -5 + (5/7)(7) = 0 at
+///   x = 1/2: it touches the top corner only (|slope| < 1), so the oracle leaves the pixel
+///   out and the mirrored rule takes it;
+/// - (-13/2, -4) -> (4, 7/2): y = 1 at x = 1/2, the bottom corner: the oracle takes the
+///   pixel, the mirrored rule leaves it out.
+#[test]
+fn diamond_corners_mirrored_in_y_are_a_line_rule() {
+    use rasterproof::oracle::reason::DIAMOND_MIRRORED;
+    for (line, oracle_covers) in [
+        ("[-6.5, -5], \"to\": [4, 2.5]", false),
+        ("[-6.5, -4], \"to\": [4, 3.5]", true),
+    ] {
+        let s = scene(&format!(
+            r#"{{"width": 1, "height": 1, "preset": "gl", "lines": [{{"from": {line}, "rule": "diamond"}}]}}"#
+        ));
+        let ours = render(Model::ExactSnapped, &s.primitives(), &s.target().unwrap()).unwrap();
+        assert_eq!(ours.covered_pixels() == 1, oracle_covers, "{line}");
+        let mut theirs = Coverage::new(1, 1);
+        if !oracle_covers {
+            theirs.cover(0, 0, 0);
+        }
+        let r = report(&s, &theirs, Format::Ids, Model::ExactSnapped);
+        let findings: Vec<_> = r.pixels.iter().flat_map(|p| &p.findings).collect();
+        assert_eq!(findings.len(), 1, "{line}");
+        let Reason::LineRule { rules } = &findings[0].reason else {
+            panic!("{line}: {:?}", findings[0])
+        };
+        assert!(rules.contains(&DIAMOND_MIRRORED), "{line}: {rules:?}");
+    }
+}
+
 /// Float models: on tie-heavy meshes float32-naive's differences (double covers and
 /// extra pixels on shared edges) are all ties; far from the origin on a fine grid
 /// float32's are all within a pixel of an edge. None is gross, and there are some.

@@ -53,12 +53,13 @@ What it draws:
   lines                 GL_LINES, width 1, not smoothed: a diamond-exit line from `from` to
                         `to` as written; a Bresenham line (pixel addresses) from the centre
                         of its first pixel to the centre of its last
-  polygons              stencil then cover: each contour (outline, then the holes, a hole
-                        wound like the outline reversed) as a triangle fan into the stencil
-                        (nonzero: +1 front faces, -1 back faces, mod 128; even-odd: bit 0
-                        inverted), then the bounding box where the stencil is not zero. One
-                        winding number for all contours: agrees with the scene's "inside
-                        the outline, in none of the holes" when holes do not overlap
+  polygons              stencil then cover, contour by contour, as the scene judges a
+                        polygon ("inside the outline and in none of the holes", each under
+                        the fill rule): each contour as a triangle fan into the stencil's
+                        winding bits (nonzero: +1 front faces, -1 back faces, mod 64;
+                        even-odd: bit 0 inverted), then a cover pass of the bounding box
+                        sets (outline) or clears (hole) an "inside" bit where they are not
+                        zero; finally the colour where the inside bit is set
   clip window           its outline as a fan into stencil bit 7 first (GL's own raster of
                         the window); every later draw is tested against it
   clip-space triangles  glVertex4f(x, -y if the viewport's ndc_y is down, 2z - w for depth
@@ -86,9 +87,11 @@ NAME = "osmesa/render.py"
 DRIVERS = ("llvmpipe", "softpipe")
 MAX_CANVAS = 16384
 MAX_ENCODED = (1 << 24) - 1
-# The stencil bit of the clip window, and the bits of a polygon's winding number.
+# The stencil bit of the clip window, the bit of "inside the polygon being drawn" and the
+# bits of one contour's winding number (mod 64).
 CLIP_BIT = 0x80
-WINDING_BITS = 0x7F
+INSIDE_BIT = 0x40
+WINDING_BITS = 0x3F
 
 
 class Refused(Exception):
@@ -285,12 +288,6 @@ def colour(id_):
     return (encoded & 0xFF, (encoded >> 8) & 0xFF, (encoded >> 16) & 0xFF, 255)
 
 
-def twice_area(contour):
-    n = len(contour)
-    return sum(contour[k][0] * contour[(k + 1) % n][1] - contour[(k + 1) % n][0] * contour[k][1]
-               for k in range(n))
-
-
 class Renderer:
     """Draws a scene into the current OSMesa context."""
 
@@ -312,12 +309,7 @@ class Renderer:
             self.lines.append([(f(p[0] + o, "line"), f(p[1] + o, "line")) for p in (a, b)])
         self.polys = []
         for outline, holes, rule in s["polygons"]:
-            area = twice_area(outline)
-            contours = [outline]
-            for h in holes:
-                ha = twice_area(h)
-                contours.append(list(reversed(h)) if ha != 0 and area != 0 and (ha > 0) == (area > 0) else h)
-            contours = [[(f(x, "polygon"), f(y, "polygon")) for x, y in c] for c in contours]
+            contours = [[(f(x, "polygon"), f(y, "polygon")) for x, y in c] for c in [outline] + holes]
             self.polys.append((contours, rule))
         self.clip = None
         if s["clip"] is not None:
@@ -430,31 +422,43 @@ class Renderer:
         GL.glFinish()
 
     def polygon(self, contours, rule, rgba):
+        """Stencil, then cover, contour by contour, as the scene judges a polygon: a pixel
+        is inside when the outline holds its sample under the rule and no hole does.
+        Each contour's fan goes into the winding bits (nonzero: +1 front, -1 back faces,
+        mod 64; even-odd: bit 0 inverted), then a cover pass turns "winding bits not zero"
+        into INSIDE_BIT set (the outline) or cleared (a hole), zeroing the winding bits;
+        the colour is drawn where INSIDE_BIT is set, clearing it."""
         GL = self.GL
-        GL.glColorMask(False, False, False, False)
-        GL.glEnable(GL.GL_STENCIL_TEST)
-        GL.glStencilMask(WINDING_BITS if rule == "nonzero" else 0x01)
-        if self.clip is None:
-            GL.glStencilFunc(GL.GL_ALWAYS, 0, 0)
-        else:
-            GL.glStencilFunc(GL.GL_EQUAL, CLIP_BIT, CLIP_BIT)
-        if rule == "nonzero":
-            GL.glStencilOpSeparate(GL.GL_FRONT, GL.GL_KEEP, GL.GL_KEEP, GL.GL_INCR_WRAP)
-            GL.glStencilOpSeparate(GL.GL_BACK, GL.GL_KEEP, GL.GL_KEEP, GL.GL_DECR_WRAP)
-        else:
-            GL.glStencilOp(GL.GL_KEEP, GL.GL_KEEP, GL.GL_INVERT)
-        fans = [t for c in contours for t in self.fan(c)]
-        self.arrays(GL.GL_TRIANGLES, fans, [(0, 0, 0, 0)] * len(fans))
-        # Cover: the bounding box grown by a pixel, where the winding bits are not zero
-        # (outside the clip window they stayed zero); clear them on the way.
-        GL.glColorMask(True, True, True, True)
-        bits = WINDING_BITS if rule == "nonzero" else 0x01
-        GL.glStencilFunc(GL.GL_NOTEQUAL, 0, bits)
-        GL.glStencilOp(GL.GL_KEEP, GL.GL_KEEP, GL.GL_ZERO)
         xs = [v[0] for c in contours for v in c]
         ys = [v[1] for c in contours for v in c]
         x0, y0, x1, y1 = min(xs) - 1, min(ys) - 1, max(xs) + 1, max(ys) + 1
         quad = [((x0, y0), (x1, y0), (x1, y1)), ((x0, y0), (x1, y1), (x0, y1))]
+        GL.glEnable(GL.GL_STENCIL_TEST)
+        for k, contour in enumerate(contours):
+            GL.glColorMask(False, False, False, False)
+            GL.glStencilMask(WINDING_BITS if rule == "nonzero" else 0x01)
+            if self.clip is None:
+                GL.glStencilFunc(GL.GL_ALWAYS, 0, 0)
+            else:
+                GL.glStencilFunc(GL.GL_EQUAL, CLIP_BIT, CLIP_BIT)
+            if rule == "nonzero":
+                GL.glStencilOpSeparate(GL.GL_FRONT, GL.GL_KEEP, GL.GL_KEEP, GL.GL_INCR_WRAP)
+                GL.glStencilOpSeparate(GL.GL_BACK, GL.GL_KEEP, GL.GL_KEEP, GL.GL_DECR_WRAP)
+            else:
+                GL.glStencilOp(GL.GL_KEEP, GL.GL_KEEP, GL.GL_INVERT)
+            fans = self.fan(contour)
+            self.arrays(GL.GL_TRIANGLES, fans, [(0, 0, 0, 0)] * len(fans))
+            # Where the winding bits are not zero (outside the clip window they stayed
+            # zero): the stencil's INSIDE and winding bits become INSIDE_BIT (the outline)
+            # or 0 (a hole).
+            GL.glStencilMask(INSIDE_BIT | WINDING_BITS)
+            GL.glStencilFunc(GL.GL_NOTEQUAL, INSIDE_BIT if k == 0 else 0, WINDING_BITS)
+            GL.glStencilOp(GL.GL_KEEP, GL.GL_KEEP, GL.GL_REPLACE)
+            self.arrays(GL.GL_TRIANGLES, quad, [(0, 0, 0, 0)] * 2)
+        GL.glColorMask(True, True, True, True)
+        GL.glStencilMask(INSIDE_BIT)
+        GL.glStencilFunc(GL.GL_EQUAL, INSIDE_BIT, INSIDE_BIT)
+        GL.glStencilOp(GL.GL_KEEP, GL.GL_KEEP, GL.GL_ZERO)
         self.arrays(GL.GL_TRIANGLES, quad, [rgba, rgba])
         self.stencil_base()
 

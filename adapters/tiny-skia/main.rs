@@ -13,13 +13,14 @@
 //! second time into a count pixmap with `BlendMode::Plus` and alpha 1/255 to know):
 //!
 //! - **triangles**: a closed three-point path, `FillRule::Winding`;
-//! - **polygons**: one path, the outline then each hole as a closed subpath, with the
-//!   scene's fill rule (`nonzero` = `Winding`, `even-odd` = `EvenOdd`). A hole wound the
-//!   same way as the outline is reversed first, so that under `nonzero` it is a hole as the
-//!   scene means it. The scene judges every contour on its own ("inside the outline and in
-//!   none of the holes"); one path adds the contours' winding numbers instead, which agrees
-//!   for holes that do not overlap one another and a simple outline, not otherwise (two
-//!   overlapping holes cancel under `even-odd` here);
+//! - **polygons**: the scene judges every contour on its own, under the polygon's fill rule
+//!   (`nonzero` = `Winding`, `even-odd` = `EvenOdd`): a sample is inside when the outline
+//!   holds it and none of the holes does. So the adapter fills the outline and each hole
+//!   into its own tiny-skia `Mask` (tiny-skia's raster of each contour), keeps the pixels
+//!   the outline's mask covers and no hole's mask does (and the clip window's mask, if
+//!   any), and fills the canvas through that mask. (One path of all the contours would add
+//!   their winding numbers instead: a hole reaching outside the outline would be filled
+//!   there, two overlapping holes would cancel under `even-odd`.)
 //! - **lines**: a hairline (`Stroke { width: 0, .. }`, butt caps): a diamond-exit line from
 //!   `from` to `to` as written, a Bresenham line (pixel addresses) from the centre of its
 //!   first pixel to the centre of its last. tiny-skia's hairline is its own DDA (one pixel
@@ -51,7 +52,7 @@ use std::path::Path as FsPath;
 use std::process::ExitCode;
 
 use num_rational::BigRational;
-use num_traits::{Signed, Zero};
+use num_traits::Zero;
 use rasterproof::geom::{FillRule, Point};
 use rasterproof::line::LineRule;
 use rasterproof::scene::{parse_scene_bytes, Scene};
@@ -155,23 +156,22 @@ fn id_paint(id: u32) -> Result<Paint<'static>, String> {
     Ok(paint)
 }
 
-/// Twice the signed area of a contour (shoelace), exact.
-fn twice_signed_area(contour: &[Point]) -> BigRational {
-    let n = contour.len();
-    (0..n)
-        .map(|k| {
-            let (a, b) = (&contour[k], &contour[(k + 1) % n]);
-            &a.x * &b.y - &b.x * &a.y
-        })
-        .fold(BigRational::zero(), |sum, term| sum + term)
-}
-
 /// What one primitive is to tiny-skia.
 enum Shape {
     /// A filled path.
     Fill(Path, tiny_skia::FillRule),
     /// A hairline stroke.
     Hairline(Path),
+    /// A polygon with holes: inside the outline and in none of the holes, each contour
+    /// filled on its own with the rule.
+    Region {
+        /// The outline.
+        outline: Path,
+        /// The holes.
+        holes: Vec<Path>,
+        /// The polygon's fill rule, for every contour.
+        rule: tiny_skia::FillRule,
+    },
 }
 
 /// The two pixmaps a scene is drawn into: the ids (last writer wins) and the number of
@@ -198,13 +198,66 @@ impl Canvas<'_> {
             width: 0.0,
             ..Stroke::default()
         };
+        let region = match shape {
+            Shape::Region { outline, holes, rule } => Some(self.region(outline, holes, *rule)?),
+            _ => None,
+        };
+        let (width, height) = (self.ids.width(), self.ids.height());
         for (pixmap, paint) in [(&mut self.ids, &paint), (&mut self.counts, &count)] {
             match shape {
                 Shape::Fill(path, rule) => pixmap.fill_path(path, paint, *rule, identity, self.mask),
                 Shape::Hairline(path) => pixmap.stroke_path(path, paint, &hairline, identity, self.mask),
+                Shape::Region { .. } => {
+                    let all = tiny_skia::IntRect::from_xywh(0, 0, width, height)
+                        .ok_or("internal: an empty canvas")?
+                        .to_rect();
+                    // tiny-skia 0.11's fill_rect with `BlendMode::Source` and a mask
+                    // clears the pixels the mask leaves out (seen on a 2x1 canvas);
+                    // the id paint is opaque, so `SourceOver` through a 0/255 mask
+                    // writes exactly the masked pixels. The count paint adds already.
+                    let mut paint = paint.clone();
+                    if paint.blend_mode == BlendMode::Source {
+                        paint.blend_mode = BlendMode::SourceOver;
+                    }
+                    pixmap.fill_rect(all, &paint, identity, region.as_ref());
+                }
             }
         }
         Ok(())
+    }
+
+    /// The mask of a polygon with holes: 255 where tiny-skia's fill of the outline covers
+    /// the pixel, its fill of no hole does, and the clip window's mask (if any) does; else 0.
+    fn region(&self, outline: &Path, holes: &[Path], rule: tiny_skia::FillRule) -> Result<Mask, String> {
+        let (width, height) = (self.ids.width(), self.ids.height());
+        let filled = |path: &Path| -> Result<Mask, String> {
+            let mut mask =
+                Mask::new(width, height).ok_or_else(|| format!("tiny-skia cannot allocate a {width}x{height} mask"))?;
+            mask.fill_path(path, rule, false, Transform::identity());
+            Ok(mask)
+        };
+        let mut region = filled(outline)?;
+        for hole in holes {
+            let hole = filled(hole)?;
+            for (r, h) in region.data_mut().iter_mut().zip(hole.data()) {
+                if *h != 0 {
+                    *r = 0;
+                }
+            }
+        }
+        if let Some(clip) = self.mask {
+            for (r, c) in region.data_mut().iter_mut().zip(clip.data()) {
+                if *c == 0 {
+                    *r = 0;
+                }
+            }
+        }
+        for r in region.data_mut() {
+            if *r != 0 {
+                *r = 255;
+            }
+        }
+        Ok(region)
     }
 
     /// The ids PNG's bytes: alpha 254 where two or more primitives covered the pixel.
@@ -253,22 +306,26 @@ fn shapes(scene: &Scene, converter: &mut Converter) -> Result<Vec<Option<Shape>>
     }
 
     for (k, polygon) in scene.polygons.iter().enumerate() {
-        let outline_area = twice_signed_area(&polygon.outline);
-        let mut contours = vec![(polygon.outline.iter().collect::<Vec<_>>(), format!("polygons[{k}].v"))];
-        for (h, hole) in polygon.holes.iter().enumerate() {
-            let mut points: Vec<&Point> = hole.iter().collect();
-            // Wound like the outline: reverse it, so that the winding numbers cancel.
-            let area = twice_signed_area(hole);
-            if !area.is_zero() && !outline_area.is_zero() && area.is_positive() == outline_area.is_positive() {
-                points.reverse();
-            }
-            contours.push((points, format!("polygons[{k}].holes[{h}]")));
-        }
         let rule = match polygon.fill_rule {
             FillRule::NonZero => tiny_skia::FillRule::Winding,
             FillRule::EvenOdd => tiny_skia::FillRule::EvenOdd,
         };
-        shapes.push(converter.closed_path(contours)?.map(|p| Shape::Fill(p, rule)));
+        let outline = converter.closed_path([(polygon.outline.iter().collect(), format!("polygons[{k}].v"))])?;
+        let Some(outline) = outline else {
+            shapes.push(None);
+            continue;
+        };
+        let mut holes = Vec::new();
+        for (h, hole) in polygon.holes.iter().enumerate() {
+            if let Some(path) = converter.closed_path([(hole.iter().collect(), format!("polygons[{k}].holes[{h}]"))])? {
+                holes.push(path);
+            }
+        }
+        shapes.push(Some(if holes.is_empty() {
+            Shape::Fill(outline, rule)
+        } else {
+            Shape::Region { outline, holes, rule }
+        }));
     }
     Ok(shapes)
 }

@@ -13,7 +13,9 @@ use rasterproof::oracle::hunt::{
 use rasterproof::oracle::program::Program;
 use rasterproof::oracle::{fit, Background, Format};
 
-use super::Outputs;
+use rasterproof::model::Model;
+
+use super::{ConventionArgs, Outputs};
 
 /// What `hunt` was asked to do.
 #[derive(clap::Args)]
@@ -36,12 +38,16 @@ pub struct Options {
     /// slivers, huge, fine, lines, polygons. Default: all.
     #[arg(long = "family", value_name = "F", value_delimiter = ',')]
     families: Vec<String>,
-    /// The convention every scene states: d3d11 (default), vulkan, gl, cts.
-    #[arg(long, conflicts_with = "fit_first")]
-    preset: Option<String>,
-    /// Fit the renderer's convention first (compare --fit on a tie-heavy scene) and hunt
-    /// under it.
-    #[arg(long)]
+    /// The convention every scene states: `--preset` (default d3d11) and the overrides.
+    #[command(flatten)]
+    convention: ConventionArgs,
+    /// The oracle model: exact-snapped (default: for a renderer that snaps vertices to the
+    /// subpixel grid) or exact (vertices as written: for one that does not snap).
+    #[arg(long, default_value = "exact-snapped")]
+    model: String,
+    /// Fit the renderer's convention first (compare --fit on tie-heavy probe scenes) and
+    /// hunt under it (its oracle model too).
+    #[arg(long, conflicts_with_all = ["preset", "tie_rule", "subpixel_bits", "rounding", "pixel_centre", "model"])]
     fit_first: bool,
     /// Canvas side of every scene, pixels.
     #[arg(long, default_value_t = 16)]
@@ -102,6 +108,14 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         Background::default(),
         Duration::from_secs_f64(o.timeout),
     )?;
+    // Interrupted (Ctrl-C, SIGTERM): no stray temporary files. The renderer's process
+    // gets the terminal's Ctrl-C too; its files go with the folder.
+    let temp = program.temp_dir().to_path_buf();
+    let _ = ctrlc::set_handler(move || {
+        let _ = std::fs::remove_dir_all(&temp);
+        eprintln!("hunt: interrupted; nothing written");
+        std::process::exit(130);
+    });
     let mut config = HuntConfig {
         cases: o.cases,
         seed: o.seed,
@@ -111,10 +125,19 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         shrink_runs: o.shrink_runs,
         ..HuntConfig::default()
     };
-    if let Some(p) = &o.preset {
+    if let Some(p) = &o.convention.preset {
         config.preset = Preset::from_name(p)
             .ok_or_else(|| format!("--preset: unknown preset {p:?} (expected one of d3d11, vulkan, gl, cts)"))?;
     }
+    o.convention.apply(&mut config.overrides)?;
+    config.model = match super::parse_model(&o.model)? {
+        m @ (Model::Exact | Model::ExactSnapped) => m,
+        m => {
+            return Err(format!(
+                "--model: {m} is not an oracle (expected exact-snapped or exact)"
+            ))
+        }
+    };
     let render_with = |s: &rasterproof::scene::Scene| program.render(s);
     if o.fit_first {
         fit_first(&mut config, &render_with)?;

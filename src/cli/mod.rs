@@ -80,8 +80,8 @@ pub fn load_scene(
     Ok((name, scene, target))
 }
 
-/// `--preset` and the convention overrides (`compare`, `explain`): the scene's preset and
-/// its own overrides, then these on top.
+/// `--preset` and the convention overrides (`compare`, `explain`, `render`, `hunt`): the
+/// scene's preset and its own overrides, then these on top.
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct ConventionArgs {
     /// Override the scene's preset: d3d11, vulkan, gl, cts (the scene's explicit overrides
@@ -103,43 +103,50 @@ pub struct ConventionArgs {
     pub pixel_centre: Option<String>,
 }
 
+impl ConventionArgs {
+    /// Sets the overrides given on the command line (all but `--preset`) on `o`.
+    pub fn apply(&self, o: &mut rasterproof::scene::Overrides) -> Result<(), String> {
+        use rasterproof::convention::{PixelCentre, Rounding, TieRule};
+        if let Some(t) = &self.tie_rule {
+            o.tie_rule = Some(
+                TieRule::from_name(t)
+                    .ok_or_else(|| format!("--tie-rule: unknown tie rule {t:?} (expected top-left or bottom-left)"))?,
+            );
+        }
+        if let Some(b) = self.subpixel_bits {
+            if !(1..=rasterproof::num::MAX_SUBPIXEL_BITS).contains(&b) {
+                return Err(format!(
+                    "--subpixel-bits: {b} is outside 1..={}",
+                    rasterproof::num::MAX_SUBPIXEL_BITS
+                ));
+            }
+            o.subpixel_bits = Some(b);
+        }
+        if let Some(r) = &self.rounding {
+            o.rounding = Some(Rounding::from_name(r).ok_or_else(|| {
+                format!(
+                    "--rounding: unknown rounding {r:?} (expected nearest-even, half-away, floor, ceiling or towards-zero)"
+                )
+            })?);
+        }
+        if let Some(c) = &self.pixel_centre {
+            o.pixel_centre = Some(match c.as_str() {
+                "0.5" | "1/2" => PixelCentre::Half,
+                "0" => PixelCentre::Corner,
+                _ => return Err(format!("--pixel-centre: {c:?} is not 0.5 or 0")),
+            });
+        }
+        Ok(())
+    }
+}
+
 /// Reads a scene as [`load_scene`] does, then applies `args`' overrides.
 pub fn load_scene_with(
     path: &Path,
     args: &ConventionArgs,
 ) -> Result<(String, rasterproof::scene::Scene, rasterproof::convention::Target), String> {
-    use rasterproof::convention::{PixelCentre, Rounding, TieRule};
     let (name, mut scene, _) = load_scene(path, args.preset.as_deref())?;
-    let o = &mut scene.overrides;
-    if let Some(t) = &args.tie_rule {
-        o.tie_rule = Some(
-            TieRule::from_name(t)
-                .ok_or_else(|| format!("--tie-rule: unknown tie rule {t:?} (expected top-left or bottom-left)"))?,
-        );
-    }
-    if let Some(b) = args.subpixel_bits {
-        if !(1..=rasterproof::num::MAX_SUBPIXEL_BITS).contains(&b) {
-            return Err(format!(
-                "--subpixel-bits: {b} is outside 1..={}",
-                rasterproof::num::MAX_SUBPIXEL_BITS
-            ));
-        }
-        o.subpixel_bits = Some(b);
-    }
-    if let Some(r) = &args.rounding {
-        o.rounding = Some(Rounding::from_name(r).ok_or_else(|| {
-            format!(
-                "--rounding: unknown rounding {r:?} (expected nearest-even, half-away, floor, ceiling or towards-zero)"
-            )
-        })?);
-    }
-    if let Some(c) = &args.pixel_centre {
-        o.pixel_centre = Some(match c.as_str() {
-            "0.5" | "1/2" => PixelCentre::Half,
-            "0" => PixelCentre::Corner,
-            _ => return Err(format!("--pixel-centre: {c:?} is not 0.5 or 0")),
-        });
-    }
+    args.apply(&mut scene.overrides)?;
     let target = scene
         .target()
         .ok_or_else(|| format!("{name}: invalid canvas or convention"))?;

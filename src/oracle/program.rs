@@ -117,6 +117,12 @@ impl Program {
         })
     }
 
+    /// The folder its scene and output files are written in (removed when the program is
+    /// dropped; a caller that ends the process on a signal removes it itself).
+    pub fn temp_dir(&self) -> &std::path::Path {
+        &self.dir.0
+    }
+
     /// The format its output is read as.
     pub fn format(&self) -> Format {
         self.format

@@ -12,7 +12,9 @@
 //! 3. `line-rule` (lines): another line convention gives their answer: the other
 //!    Bresenham tie, the f32 / f64 DDA, diamond-exit (for Bresenham lines, between the
 //!    endpoint pixels' samples) or Bresenham between the endpoints' pixels (for diamond
-//!    lines).
+//!    lines), or for diamond lines the diamond mirrored in y: D3D11's test area (bottom
+//!    corner in, top corner out) read in a y-up window such as GL's, which in the y-down
+//!    image puts the top corner in and the bottom corner out.
 //!    `fill-rule` (polygons): the other fill rule gives their answer; names the winding
 //!    number of the moved sample.
 //! 4. `snapping`: the primitive snapped with another rounding ([`Rounding::ALL`]) at the
@@ -429,7 +431,13 @@ impl<'a> Classifier<'a> {
             }
             Shape::Diamond { .. } => self.line_rules(
                 id,
-                &["bresenham (stay)", "bresenham (step)", "dda (f32)", "dda (f64)"],
+                &[
+                    "bresenham (stay)",
+                    "bresenham (step)",
+                    "dda (f32)",
+                    "dda (f64)",
+                    DIAMOND_MIRRORED,
+                ],
                 [x, y],
                 kept,
                 theirs_covers,
@@ -467,6 +475,16 @@ impl<'a> Classifier<'a> {
     fn draw_alternative(&self, id: usize, name: &str) -> HashSet<[i64; 2]> {
         let mut set = PixelSet::default();
         let target = self.target;
+        if let (DIAMOND_MIRRORED, Shape::Diamond { from, to }) = (name, &self.shapes[id]) {
+            // Mirrored about y = m / 2 with m = H - 1 + 2c (c the sample offset): row j's
+            // sample j + c goes to row H - 1 - j's.
+            let m = BigRational::from_integer((i64::from(target.height) - 1).into())
+                + target.convention.pixel_centre.offset() * BigRational::from_integer(2.into());
+            let mirror = |p: &Point| Point::new(p.x.clone(), &m - &p.y);
+            line::exact::draw_diamond(&mirror(from), &mirror(to), 0, target, &mut set);
+            let height = i64::from(target.height);
+            return set.0.into_iter().map(|[i, j]| [i, height - 1 - j]).collect();
+        }
         let (from, to): ([i64; 2], [i64; 2]) = match &self.shapes[id] {
             Shape::Bresenham { from, to, .. } => (*from, *to),
             Shape::Diamond { from, to } => {
@@ -591,6 +609,10 @@ fn tie(shape: &Shape, p: &Point, rule: TieRule, theirs_covers: bool) -> Option<R
         Shape::Bresenham { .. } | Shape::Diamond { .. } => None,
     }
 }
+
+/// The line-rule search's name for D3D11's diamond test area read in a y-up window (GL's):
+/// in the y-down image its top corner is in and its bottom corner out.
+pub const DIAMOND_MIRRORED: &str = "diamond-exit (mirrored in y: a y-up window's corners)";
 
 /// A line of the scene, for the line-rule search's names (Bresenham or diamond-exit).
 pub fn line_rule_name(line: &Line) -> &'static str {
