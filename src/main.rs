@@ -1,7 +1,9 @@
 //! The `rasterproof` command: render a scene exactly, run the invariant suite.
 //!
 //! Exit codes ([`cli::EXIT_CODES`], at the end of every command's `--help`): 0 success;
-//! 1 an invariant of an exact or integer model was violated (`check`); 2 bad input (with a
+//! 1 an invariant of an exact or integer model was violated (`check`, `check-merge`), an
+//! exact or integer model shows an error (`trade`), the images differ (`compare`), no
+//! convention fits (`compare --fit`), `hunt` found something; 2 bad input (with a
 //! one-line error naming the file, field and value; `render` and `flood` then write no
 //! output file).
 

@@ -252,13 +252,26 @@ where
 /// models compute it), on the canvas; `None` when empty. Indices saturate, so an infinite
 /// or huge box is clamped, never wrapped; a NaN bound gives an empty range.
 pub fn float_sample_range(min: [f64; 2], max: [f64; 2], target: &Target) -> Option<PixelRange> {
+    float_sample_range_at(min, max, [0, 0], target)
+}
+
+/// [`float_sample_range`] over a canvas-sized window of the plane whose first pixel is
+/// pixel `origin`: the plane's pixel indices are found in f64 as on the canvas, then
+/// shifted by `origin` in integers (so no rounding is added) and clamped to the window.
+pub fn float_sample_range_at(min: [f64; 2], max: [f64; 2], origin: [i64; 2], target: &Target) -> Option<PixelRange> {
     let c = target.convention.pixel_centre.offset_f64();
     if min.iter().chain(&max).any(|v| v.is_nan()) {
         return None;
     }
     PixelRange::clamped(
-        [index_ceil(min[0] - c), index_ceil(min[1] - c)],
-        [index_floor(max[0] - c), index_floor(max[1] - c)],
+        [
+            index_ceil(min[0] - c).saturating_sub(origin[0]),
+            index_ceil(min[1] - c).saturating_sub(origin[1]),
+        ],
+        [
+            index_floor(max[0] - c).saturating_sub(origin[0]),
+            index_floor(max[1] - c).saturating_sub(origin[1]),
+        ],
         target.width,
         target.height,
     )

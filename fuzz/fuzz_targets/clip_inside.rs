@@ -41,7 +41,12 @@ fuzz_target!(|input: Input| {
         Window::convex(corners)
     } else if corners.len() >= 2 {
         let (a, b) = (&corners[0], &corners[1]);
-        Window::rect(a.x.clone().min(b.x.clone()), a.y.clone().min(b.y.clone()), a.x.clone().max(b.x.clone()), a.y.clone().max(b.y.clone()))
+        Window::rect(
+            a.x.clone().min(b.x.clone()),
+            a.y.clone().min(b.y.clone()),
+            a.x.clone().max(b.x.clone()),
+            a.y.clone().max(b.y.clone()),
+        )
     } else {
         return;
     };
@@ -51,7 +56,11 @@ fuzz_target!(|input: Input| {
     if subject.len() < 3 {
         return;
     }
-    let rule = if input.even_odd { FillRule::EvenOdd } else { FillRule::NonZero };
+    let rule = if input.even_odd {
+        FillRule::EvenOdd
+    } else {
+        FillRule::NonZero
+    };
     let poly = Polygon::new(subject.clone(), rule);
     let cut = clip_polygon(&poly, &window);
     if let Err(v) = check_inside(&cut.outline, &window) {
@@ -73,6 +82,10 @@ fuzz_target!(|input: Input| {
             panic!("{v}");
         }
         let _ = cohen_sutherland::clip_f64(f(a), f(b), &r.to_f64().unwrap());
-        let _ = cohen_sutherland::clip_f32(a.to_f32().expect("fits f32"), b.to_f32().expect("fits f32"), &r.to_f32().unwrap());
+        let _ = cohen_sutherland::clip_f32(
+            a.to_f32().expect("fits f32"),
+            b.to_f32().expect("fits f32"),
+            &r.to_f32().unwrap(),
+        );
     }
 });

@@ -37,7 +37,10 @@ struct Input {
 
 impl Input {
     fn image(&self) -> RgbaImage {
-        let (w, h) = (1 + u32::from(self.width) % MAX_SIDE, 1 + u32::from(self.height) % MAX_SIDE);
+        let (w, h) = (
+            1 + u32::from(self.width) % MAX_SIDE,
+            1 + u32::from(self.height) % MAX_SIDE,
+        );
         let mut palette = vec![Rgba(self.base)];
         for &(channel, tweak) in &self.tweaks {
             let mut c = self.base;
@@ -48,7 +51,11 @@ impl Input {
         let n = 1 + usize::from(self.colours % 3);
         RgbaImage::from_fn(w, h, |x, y| {
             let i = (y * w + x) as usize;
-            let k = if self.pixels.is_empty() { 0 } else { self.pixels[i % self.pixels.len()] };
+            let k = if self.pixels.is_empty() {
+                0
+            } else {
+                self.pixels[i % self.pixels.len()]
+            };
             palette[usize::from(k) % n]
         })
     }
@@ -63,13 +70,20 @@ fn check(img: &RgbaImage, seed: (u32, u32)) {
         assert_eq!(span, bfs, "span fill differs from the oracle at seed {seed:?}, {c}");
         regions.push(span);
     }
-    assert!(regions[0].is_subset_of(&regions[1]), "four not inside eight at seed {seed:?}");
+    assert!(
+        regions[0].is_subset_of(&regions[1]),
+        "four not inside eight at seed {seed:?}"
+    );
     let mark = Rgba([img.get_pixel(seed.0, seed.1).0[0].wrapping_add(1), 7, 7, 7]);
     let mut painted = img.clone();
     let n = flood_fill(&mut painted, seed, Connectivity::Eight, mark).expect("seed inside");
     assert_eq!(n, regions[1].len());
     for (x, y, p) in painted.enumerate_pixels() {
-        let want = if regions[1].contains(x, y) { mark } else { *img.get_pixel(x, y) };
+        let want = if regions[1].contains(x, y) {
+            mark
+        } else {
+            *img.get_pixel(x, y)
+        };
         assert_eq!(*p, want, "flood_fill at ({x}, {y})");
     }
 }

@@ -11,6 +11,9 @@
 //!    canvases up to 24x24, presets d3d11/gl/cts, optional subpixel-bits and pixel-corner
 //!    overrides): `Model::Fixed` equals `Model::ExactSnapped` pixel for pixel, or fails with
 //!    `ModelError::LineEnvelope` exactly when a snapped coordinate exceeds 2^29 subpixels.
+//! 3. The naive float DDA (`line::dda`, f32 and f64) on the Bresenham endpoints: one pixel
+//!    per major step from `from`, 8-connected, `max(|dx|, |dy|) + 1` of them, ending at
+//!    `to` in f64; the float models draw both kinds of line without panicking.
 
 #![no_main]
 
@@ -25,7 +28,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use rasterproof::convention::Target;
 use rasterproof::geom::Point;
-use rasterproof::line::{bresenham, BresenhamTie, Line, LineRule};
+use rasterproof::line::{bresenham, dda, BresenhamTie, Line, LineRule};
 use rasterproof::model::{render, Model, ModelError, Primitives};
 use rasterproof::num::fixed::MAX_SUBPIXEL_MAGNITUDE;
 
@@ -147,7 +150,7 @@ impl Coord {
     }
 }
 
-fn check_diamond(input: &Input) {
+fn check_diamond(input: &Input) -> (Line, Target) {
     let conv = convention(input.preset, input.bits, input.corner);
     let bits = conv.subpixel_bits;
     let (w, h) = (1 + u32::from(input.width % 24), 1 + u32::from(input.height % 24));
@@ -166,9 +169,23 @@ fn check_diamond(input: &Input) {
     let first_outside = (0..4).find(|&k| snapped[k].abs() > limit);
 
     let lines = std::slice::from_ref(&line);
-    let exact =
-        render(Model::ExactSnapped, &Primitives { lines: lines.to_vec(), ..Primitives::default() }, &target).expect("exact-snapped takes every diamond line");
-    match render(Model::Fixed, &Primitives { lines: lines.to_vec(), ..Primitives::default() }, &target) {
+    let exact = render(
+        Model::ExactSnapped,
+        &Primitives {
+            lines: lines.to_vec(),
+            ..Primitives::default()
+        },
+        &target,
+    )
+    .expect("exact-snapped takes every diamond line");
+    match render(
+        Model::Fixed,
+        &Primitives {
+            lines: lines.to_vec(),
+            ..Primitives::default()
+        },
+        &target,
+    ) {
         Ok(fixed) => {
             assert_eq!(first_outside, None, "fixed accepted a coordinate beyond 2^29 subpixels");
             assert_eq!(
@@ -193,6 +210,48 @@ fn check_diamond(input: &Input) {
         }
         Err(e) => panic!("fixed model failed with a non-envelope error: {e}"),
     }
+    (line, target)
+}
+
+/// The naive float DDA (`line::dda`) on the same endpoints: not within 1/2 pixel (that is
+/// its measured error), but one pixel per major step from `from`, each a king's move from
+/// the last (|slope| <= 1), `max(|dx|, |dy|) + 1` of them, ending at `to` in f64 (its
+/// accumulated error over at most 4000 steps stays far below 1/2 pixel).
+fn check_dda(from: [i64; 2], to: [i64; 2]) {
+    let len = (to[0] - from[0]).abs().max((to[1] - from[1]).abs());
+    for (name, pixels) in [("f32", dda::pixels_f32(from, to)), ("f64", dda::pixels_f64(from, to))] {
+        let ctx = format!("{name} DDA {from:?} -> {to:?}");
+        assert_eq!(pixels.len() as i64, len + 1, "{ctx}: pixel count");
+        assert_eq!(pixels[0], from, "{ctx}: first pixel");
+        for w in pixels.windows(2) {
+            let cheb = (w[1][0] - w[0][0]).abs().max((w[1][1] - w[0][1]).abs());
+            assert_eq!(cheb, 1, "{ctx}: {:?} -> {:?} not a king's move", w[0], w[1]);
+        }
+        if name == "f64" {
+            assert_eq!(*pixels.last().unwrap(), to, "{ctx}: last pixel");
+        }
+    }
+}
+
+/// The float models draw both kinds of line without panicking (a DDA for Bresenham
+/// lines, the diamond test in floats for diamond-exit ones).
+fn float_lines(from: [i64; 2], to: [i64; 2], diamond: &Line, target: &Target) {
+    let bresenham = Line {
+        from: Point::from_ints(from[0], from[1]),
+        to: Point::from_ints(to[0], to[1]),
+        rule: LineRule::Bresenham(BresenhamTie::Stay),
+    };
+    let lines = vec![bresenham, diamond.clone()];
+    for m in [Model::Float32, Model::Float64, Model::Float32Naive, Model::Float64Naive] {
+        let _ = render(
+            m,
+            &Primitives {
+                lines: lines.clone(),
+                ..Primitives::default()
+            },
+            target,
+        );
+    }
 }
 
 fuzz_target!(|input: Input| {
@@ -201,5 +260,7 @@ fuzz_target!(|input: Input| {
         Tie::Step => BresenhamTie::Step,
     };
     check_bresenham(input.from.map(fold), input.to.map(fold), tie);
-    check_diamond(&input);
+    check_dda(input.from.map(fold), input.to.map(fold));
+    let (diamond, target) = check_diamond(&input);
+    float_lines(input.from.map(fold), input.to.map(fold), &diamond, &target);
 });

@@ -48,12 +48,36 @@ fuzz_target!(|input: Input| {
     if outline.len() < 3 || holes.iter().any(|h| h.len() < 3) {
         return; // the parser refuses these
     }
-    let rule = if input.even_odd { FillRule::EvenOdd } else { FillRule::NonZero };
-    let poly = Polygon { outline, holes, fill_rule: rule };
+    let rule = if input.even_odd {
+        FillRule::EvenOdd
+    } else {
+        FillRule::NonZero
+    };
+    let poly = Polygon {
+        outline,
+        holes,
+        fill_rule: rule,
+    };
     let one = std::slice::from_ref(&poly);
 
-    let reference = render(Model::ExactSnapped, &Primitives { polygons: one.to_vec(), ..Primitives::default() }, &target).expect("the oracle takes any polygon");
-    let scan = render(Model::Scanline, &Primitives { polygons: one.to_vec(), ..Primitives::default() }, &target).expect("small coordinates are in the envelope");
+    let reference = render(
+        Model::ExactSnapped,
+        &Primitives {
+            polygons: one.to_vec(),
+            ..Primitives::default()
+        },
+        &target,
+    )
+    .expect("the oracle takes any polygon");
+    let scan = render(
+        Model::Scanline,
+        &Primitives {
+            polygons: one.to_vec(),
+            ..Primitives::default()
+        },
+        &target,
+    )
+    .expect("small coordinates are in the envelope");
     if let Err(v) = check_agreement("exact-snapped", &reference, "scanline", &scan, &[], &target) {
         panic!("{v}\n{poly:?}");
     }

@@ -17,7 +17,7 @@ use rasterproof::harness::suite::{Hooks, Plan, Report, SceneFiles, Shard, MAX_JO
 use rasterproof::harness::CaseRun;
 use rasterproof::scene::Scene;
 
-use super::{print_stdout, Outputs};
+use super::{parse_duration, parse_shard, print_stdout, writable_outputs, Outputs};
 
 /// What `check` was asked to do.
 #[derive(clap::Args)]
@@ -80,64 +80,6 @@ fn parse_jobs(s: &str) -> Result<usize, String> {
     match s.parse::<usize>() {
         Ok(n) if (1..=MAX_JOBS).contains(&n) => Ok(n),
         _ => Err(format!("expected a number of threads in 1..={MAX_JOBS}")),
-    }
-}
-
-/// `--shard K/N`.
-fn parse_shard(s: &str) -> Result<Shard, String> {
-    s.parse()
-}
-
-/// `--time DURATION`: one or more `<integer><unit>`, unit `ms`, `s`, `m` or `h`.
-fn parse_duration(s: &str) -> Result<Duration, String> {
-    let bad = || "expected a duration such as 90s, 5m, 1h or 1h30m (units ms, s, m, h)".to_string();
-    let mut total = Duration::ZERO;
-    let mut rest = s.trim();
-    if rest.is_empty() {
-        return Err(bad());
-    }
-    while !rest.is_empty() {
-        let digits = rest.find(|c: char| !c.is_ascii_digit()).ok_or_else(bad)?;
-        let n: u64 = rest[..digits].parse().map_err(|_| bad())?;
-        rest = &rest[digits..];
-        let unit_len = rest.find(|c: char| c.is_ascii_digit()).unwrap_or(rest.len());
-        let part = match &rest[..unit_len] {
-            "ms" => Some(Duration::from_millis(n)),
-            "s" => Some(Duration::from_secs(n)),
-            "m" => n.checked_mul(60).map(Duration::from_secs),
-            "h" => n.checked_mul(3600).map(Duration::from_secs),
-            _ => return Err(bad()),
-        };
-        total = part
-            .and_then(|p| total.checked_add(p))
-            .ok_or_else(|| "too long a duration".to_string())?;
-        rest = &rest[unit_len..];
-    }
-    Ok(total)
-}
-
-/// Fails early, before a long run, when an output cannot be written: `--report` and
-/// `--junit` name one file, or one is a folder or in a folder that does not exist.
-/// [`Outputs`] still checks everything when it writes.
-fn writable_outputs(json: Option<&Path>, junit: Option<&Path>) -> Result<(), String> {
-    if let (Some(a), Some(b)) = (json, junit) {
-        if a == b {
-            return Err(format!("--report and --junit: both name {}", a.display()));
-        }
-    }
-    json.into_iter().chain(junit).try_for_each(writable)
-}
-
-/// See [`writable_outputs`].
-fn writable(path: &Path) -> Result<(), String> {
-    if path.is_dir() {
-        return Err(format!("{}: cannot write: it is a folder", path.display()));
-    }
-    match path.parent() {
-        Some(dir) if !dir.as_os_str().is_empty() && !dir.is_dir() => {
-            Err(format!("{}: cannot write: no folder {}", path.display(), dir.display()))
-        }
-        _ => Ok(()),
     }
 }
 

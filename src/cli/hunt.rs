@@ -1,5 +1,7 @@
 //! `rasterproof hunt`: differential testing of an external renderer
-//! ([`rasterproof::oracle::hunt`]), every distinct failure shrunk to a minimal scene.
+//! ([`rasterproof::oracle::hunt`]), every distinct failure shrunk to a minimal scene; one
+//! shard of the cases, within a time budget, with the report as JSON (`--report`) and
+//! JUnit XML (`--junit`).
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -7,6 +9,7 @@ use std::time::Duration;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use rasterproof::convention::Preset;
+use rasterproof::harness::suite::Shard;
 use rasterproof::oracle::hunt::{
     generate_scene, hunt, hunt_convention, preferred, rust_test, Family, HuntConfig, Verdict,
 };
@@ -15,7 +18,7 @@ use rasterproof::oracle::{fit, Background, Format};
 
 use rasterproof::model::Model;
 
-use super::{ConventionArgs, Outputs};
+use super::{parse_duration, parse_shard, writable_outputs, ConventionArgs, Outputs};
 
 /// What `hunt` was asked to do.
 #[derive(clap::Args)]
@@ -71,9 +74,29 @@ pub struct Options {
     /// Hide the progress bar.
     #[arg(long)]
     quiet: bool,
+    /// Run shard K of N only: the cases k of 0..cases with k mod N = K - 1 (1 <= K <= N);
+    /// the N shards together run exactly the unsharded hunt's cases.
+    #[arg(long, value_name = "K/N", value_parser = parse_shard)]
+    shard: Option<Shard>,
+    /// Start no case after this much time (90s, 5m, 1h, 1h30m; units ms, s, m, h): the
+    /// running ones finish, what was found is shrunk, and the cases that ran are the first
+    /// of the shard's, in order.
+    #[arg(long, value_name = "DURATION", value_parser = parse_duration)]
+    time: Option<Duration>,
+    /// Write the report as JSON: seed, shard, cases requested and run, the convention, the
+    /// counts and every finding with its minimal scene (schema: README, `hunt`).
+    #[arg(long, value_name = "FILE.json")]
+    report: Option<PathBuf>,
+    /// Write the result as JUnit XML: one failed test case per finding, one passing
+    /// "identical to the oracle" with the counts.
+    #[arg(long, value_name = "FILE.xml")]
+    junit: Option<PathBuf>,
 }
 
+/// Runs the hunt as `o` asks, writes `--out`, `--report` and `--junit` (all or none) and
+/// prints the summary; exit 1 when something was found.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
+    writable_outputs(o.report.as_deref(), o.junit.as_deref())?;
     let format = Format::from_name(&o.theirs_as)
         .ok_or_else(|| format!("--as: unknown format {:?} (expected ids, mask or json)", o.theirs_as))?;
     if !(o.timeout > 0.0 && o.timeout.is_finite()) {
@@ -123,6 +146,8 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         canvas: o.canvas,
         float32_exact: o.float32_exact,
         shrink_runs: o.shrink_runs,
+        shard: o.shard.unwrap_or(Shard::WHOLE),
+        budget: o.time,
         ..HuntConfig::default()
     };
     if let Some(p) = &o.convention.preset {
@@ -145,7 +170,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let bar = if o.quiet {
         ProgressBar::hidden()
     } else {
-        ProgressBar::new(o.cases)
+        ProgressBar::new(config.shard.case_count(config.cases))
     };
     bar.set_style(
         ProgressStyle::with_template("{bar:40} {pos}/{len} scenes, {elapsed} ({eta} left)").expect("static template"),
@@ -164,10 +189,21 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             outputs.stage_text(&path("rs"), &rust_test(f, n, config.model))?;
         }
     }
+    if let Some(path) = &o.report {
+        outputs.stage_text(path, &report.to_json(&o.cmd))?;
+    }
+    if let Some(path) = &o.junit {
+        outputs.stage_text(path, &report.junit(&o.cmd))?;
+    }
     outputs.commit()?;
     let convention = config.overrides.apply(config.preset);
+    let shard = if config.shard == Shard::WHOLE {
+        String::new()
+    } else {
+        format!("shard {} of {} cases, ", config.shard, config.cases)
+    };
     let mut lines = vec![format!(
-        "hunt: {} scenes ({} px canvas, {}, oracle {}): {} identical, {} differ, {} failed, {} refused by the oracle",
+        "hunt: {} scenes ({shard}{} px canvas, {}, oracle {}): {} identical, {} differ, {} failed, {} refused by the oracle",
         report.cases,
         o.canvas,
         convention,
@@ -177,6 +213,14 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         report.failed,
         report.refused
     )];
+    if report.stopped_by_time {
+        lines.push(format!(
+            "stopped: the time budget ({:?}) ran out after {} of {} cases",
+            config.budget.unwrap_or_default(),
+            report.cases,
+            report.requested
+        ));
+    }
     if !report.findings.is_empty() {
         lines.push(format!(
             "{:<4} {:<44} {:>6} {:>6} {:>10} {:>7}",

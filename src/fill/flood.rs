@@ -30,7 +30,7 @@ use image::{Rgba, RgbaImage};
 mod png;
 mod region;
 
-pub use png::{decode_png, decode_png_within, load_png, PngError, MAX_IMAGE_SIDE};
+pub use png::{decode_png, decode_png_as_decoded, decode_png_within, load_png, PngError, MAX_IMAGE_SIDE};
 pub use region::{Pixels, Region};
 
 /// Which neighbours of a pixel are adjacent to it.

@@ -132,10 +132,14 @@ pub fn plan_scene(model: Model, primitives: &Primitives, target: &Target) -> Res
 }
 
 fn verdict(model: Model, primitives: &Primitives, target: &Target) -> Verdict {
+    // A model that refuses the scene is not exact for it, whether or not the refused
+    // primitive reaches a sample (the float models refuse a coordinate beyond their type
+    // even on a primitive that covers nothing, which the float analysis skips).
+    let refused = prepare(model, primitives, target).err().map(|e| e.to_string());
     let broken_by = match model {
-        Model::Fixed | Model::Scanline => prepare(model, primitives, target).err().map(|e| e.to_string()),
-        Model::Float32 => float_breaker(primitives, target, 24),
-        _ => float_breaker(primitives, target, 53),
+        Model::Fixed | Model::Scanline => refused,
+        Model::Float32 => refused.or_else(|| float_breaker(primitives, target, 24)),
+        _ => refused.or_else(|| float_breaker(primitives, target, 53)),
     };
     Verdict {
         model,

@@ -159,8 +159,8 @@ pub struct PolygonAt {
 
 /// Polygon `poly` at sample `p` under `rule`.
 pub fn polygon_at(poly: &Polygon, p: &Point, rule: TieRule) -> PolygonAt {
-    let windings: Vec<i64> = poly.contours().map(|c| contour_winding_exact(p, c, rule)).collect();
-    let inside = poly.fill_rule.inside(windings[0]) && !windings[1..].iter().any(|&w| poly.fill_rule.inside(w));
+    let windings = windings(poly, p, rule);
+    let inside = inside_of(poly, &windings);
     let on_boundary = poly.contours().any(|c| locate_exact(p, c) == Location::Boundary);
     let distance2 = poly
         .contours()
@@ -174,6 +174,23 @@ pub fn polygon_at(poly: &Polygon, p: &Point, rule: TieRule) -> PolygonAt {
         inside,
         distance2,
     }
+}
+
+/// Whether `poly` covers the sample `p` under `rule`: [`polygon_at`]'s `inside`, without
+/// the boundary and distance evidence (what the reason classifier asks of every
+/// alternative convention, many times a pixel).
+pub fn polygon_inside(poly: &Polygon, p: &Point, rule: TieRule) -> bool {
+    inside_of(poly, &windings(poly, p, rule))
+}
+
+/// The winding number of `p` around each contour (the outline first, then the holes).
+fn windings(poly: &Polygon, p: &Point, rule: TieRule) -> Vec<i64> {
+    poly.contours().map(|c| contour_winding_exact(p, c, rule)).collect()
+}
+
+/// Inside the outline by the fill rule and inside none of the holes.
+fn inside_of(poly: &Polygon, windings: &[i64]) -> bool {
+    poly.fill_rule.inside(windings[0]) && !windings[1..].iter().any(|&w| poly.fill_rule.inside(w))
 }
 
 impl fmt::Display for PolygonAt {

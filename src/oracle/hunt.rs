@@ -5,10 +5,16 @@
 //!
 //! Their renderer is any `Fn(&Scene) -> Result<Theirs, Failure>`: an external program
 //! ([`super::program::Program`]) or a Rust closure.
+//!
+//! At scale, as `check` runs: one [`Shard`] of the cases (N machines run disjoint cases
+//! and together exactly the unsharded hunt's), within a time budget (the cases that ran
+//! are the first of the shard's, in order), into a [`HuntReport`] written as JSON
+//! ([`HuntReport::to_json`]) or JUnit XML ([`HuntReport::junit`]).
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -23,6 +29,8 @@ use super::reason::ReasonClass;
 use super::theirs::Theirs;
 use crate::convention::{AnyTieRule, PixelCentre, Preset, TieRule};
 use crate::geom::{Point, Polygon, Triangle};
+use crate::harness::suite::report::xml_escape;
+use crate::harness::suite::Shard;
 use crate::line::{BresenhamTie, Line, LineRule};
 use crate::model::Model;
 use crate::scene::{Overrides, Scene};
@@ -140,6 +148,12 @@ pub struct HuntConfig {
     pub float32_exact: bool,
     /// Runs of their renderer allowed per shrink.
     pub shrink_runs: usize,
+    /// The shard to run: the cases `k` of `0..cases` with `k mod N == K - 1` (case `k`'s
+    /// scene is the same in every shard; [`Shard::WHOLE`] runs them all).
+    pub shard: Shard,
+    /// No case starts once this much time has passed since the hunt started (the running
+    /// ones finish, and what was found is still shrunk); `None`: no limit.
+    pub budget: Option<Duration>,
 }
 
 impl Default for HuntConfig {
@@ -154,6 +168,8 @@ impl Default for HuntConfig {
             model: Model::ExactSnapped,
             float32_exact: false,
             shrink_runs: 400,
+            shard: Shard::WHOLE,
+            budget: None,
         }
     }
 }
@@ -269,7 +285,7 @@ impl Signature {
         }
     }
 
-    /// For file and test names: `missing-tie-triangles`.
+    /// For file and test names: `missing_pixel_tie_triangles`.
     pub fn slug(&self) -> String {
         self.describe()
             .chars()
@@ -335,8 +351,15 @@ pub struct HuntFinding {
 /// What a hunt found.
 #[derive(Debug, Clone)]
 pub struct HuntReport {
-    /// Cases run.
+    /// The configuration it ran with (its shard, budget, convention and oracle model).
+    pub config: HuntConfig,
+    /// The cases asked for: the shard's cases among `0..config.cases`.
+    pub requested: u64,
+    /// Cases run: the first `cases` of the shard's, in order (all of them unless the
+    /// time budget stopped the hunt).
     pub cases: u64,
+    /// Whether the time budget stopped the hunt before every requested case ran.
+    pub stopped_by_time: bool,
     /// Identical to the oracle.
     pub same: u64,
     /// Differing.
@@ -352,11 +375,18 @@ pub struct HuntReport {
 /// One case's scene, signatures and outcome (0 same, 1 differs, 2 failed, 3 refused).
 type CaseResult = (u64, Scene, Vec<Signature>, u8);
 
-/// Runs the hunt: `config.cases` scenes rendered by `render` on `jobs` threads, each
-/// compared with the oracle; every distinct signature's first case shrunk. `tick` is called
-/// once per case (a progress bar).
+/// Runs the hunt: the scenes of `config.shard`'s cases among `0..config.cases` rendered by
+/// `render` on `jobs` threads, each compared with the oracle; every distinct signature's
+/// first case shrunk. `tick` is called once per case (a progress bar).
+///
+/// With `config.budget`, no case starts once the budget has passed: the running ones
+/// finish, and the cases that ran are the first of the shard's, in order (a case is
+/// claimed, in order, only while the budget lasts, and every claimed case runs), so a
+/// time-limited hunt's counts and findings are those of a shorter hunt. What was found is
+/// shrunk whatever the budget.
 ///
 /// ```
+/// use rasterproof::harness::suite::Shard;
 /// use rasterproof::model::{render, Model};
 /// use rasterproof::oracle::hunt::{hunt, HuntConfig};
 /// use rasterproof::oracle::{Format, Theirs};
@@ -369,6 +399,12 @@ type CaseResult = (u64, Scene, Vec<Signature>, u8);
 /// let report = hunt(&config, &honest, 1, &|| {}).unwrap();
 /// assert!(report.findings.is_empty());
 /// assert_eq!(report.same + report.refused, 16);
+/// // Shard 2 of 3: cases 1, 4, 7, 10, 13; a zero budget runs none of them.
+/// let shard = HuntConfig { shard: Shard::new(2, 3).unwrap(), ..config.clone() };
+/// assert_eq!(hunt(&shard, &honest, 2, &|| {}).unwrap().cases, 5);
+/// let none = HuntConfig { budget: Some(std::time::Duration::ZERO), ..shard };
+/// let report = hunt(&none, &honest, 1, &|| {}).unwrap();
+/// assert_eq!((report.requested, report.cases, report.stopped_by_time), (5, 0, true));
 /// ```
 ///
 /// # Errors
@@ -377,36 +413,53 @@ pub fn hunt<R>(config: &HuntConfig, render: &R, jobs: usize, tick: &(dyn Fn() + 
 where
     R: Fn(&Scene) -> Result<Theirs, Failure> + Sync,
 {
-    let next = AtomicU64::new(0);
-    let results: std::sync::Mutex<Vec<CaseResult>> = std::sync::Mutex::new(Vec::new());
-    let error: std::sync::Mutex<Option<String>> = std::sync::Mutex::new(None);
+    let requested = config.shard.case_count(config.cases);
+    let deadline = config.budget.and_then(|b| Instant::now().checked_add(b));
+    // The next of the shard's cases to claim (its index among them), and whether claiming
+    // has ended (the budget passed, or a scene could not be generated). Claims are made
+    // under the lock, in order, so the claimed cases are always the first `next`.
+    let claims: Mutex<(u64, bool)> = Mutex::new((0, false));
+    let claim = || -> Option<u64> {
+        let mut c = claims.lock().expect("no panics hold it");
+        if c.1 || c.0 >= requested {
+            return None;
+        }
+        if deadline.is_some_and(|d| Instant::now() >= d) {
+            c.1 = true;
+            return None;
+        }
+        let k = config.shard.case_at(c.0)?;
+        c.0 += 1;
+        Some(k)
+    };
+    let results: Mutex<Vec<CaseResult>> = Mutex::new(Vec::new());
+    let error: Mutex<Option<String>> = Mutex::new(None);
     std::thread::scope(|s| {
         for _ in 0..jobs.max(1) {
-            s.spawn(|| loop {
-                let k = next.fetch_add(1, Ordering::Relaxed);
-                if k >= config.cases {
-                    break;
+            s.spawn(|| {
+                while let Some(k) = claim() {
+                    let scene = match generate_scene(config, k) {
+                        Ok(s) => s,
+                        Err(e) => {
+                            *error.lock().expect("no panics hold it") = Some(e);
+                            claims.lock().expect("no panics hold it").1 = true;
+                            break;
+                        }
+                    };
+                    let verdict = judge(&scene, render(&scene), config.model);
+                    let outcome = match &verdict {
+                        Verdict::Same => 0,
+                        Verdict::Differs(_) => 1,
+                        Verdict::Failed(_) => 2,
+                        Verdict::Refused(_) => 3,
+                    };
+                    let sigs = signatures(&verdict);
+                    results
+                        .lock()
+                        .expect("no panics hold it")
+                        .push((k, scene, sigs, outcome));
+                    tick();
                 }
-                let scene = match generate_scene(config, k) {
-                    Ok(s) => s,
-                    Err(e) => {
-                        *error.lock().expect("no panics hold it") = Some(e);
-                        break;
-                    }
-                };
-                let verdict = judge(&scene, render(&scene), config.model);
-                let outcome = match &verdict {
-                    Verdict::Same => 0,
-                    Verdict::Differs(_) => 1,
-                    Verdict::Failed(_) => 2,
-                    Verdict::Refused(_) => 3,
-                };
-                let sigs = signatures(&verdict);
-                results
-                    .lock()
-                    .expect("no panics hold it")
-                    .push((k, scene, sigs, outcome));
-                tick();
             });
         }
     });
@@ -415,6 +468,7 @@ where
     }
     let mut results = results.into_inner().expect("no panics hold it");
     results.sort_by_key(|r| r.0);
+    let cases = results.len() as u64;
     let mut counts = [0u64; 4];
     let mut first: BTreeMap<Signature, (u64, Scene, u64)> = BTreeMap::new();
     for (k, scene, sigs, outcome) in results {
@@ -440,7 +494,10 @@ where
     }
     findings.sort_by_key(|f| (f.case, f.signature.clone()));
     Ok(HuntReport {
-        cases: config.cases,
+        config: config.clone(),
+        requested,
+        cases,
+        stopped_by_time: cases < requested,
         same: counts[0],
         differing: counts[1],
         failed: counts[2],
@@ -682,4 +739,317 @@ pub fn preferred(exact: &[Candidate]) -> Option<Candidate> {
                 c.tie_rule != AnyTieRule::TopLeft,
             )
         })
+}
+
+/// The `format` of a hunt report ([`HuntReport::to_json`]).
+pub const REPORT_FORMAT: &str = "rasterproof hunt report";
+
+/// The schema version of a hunt report ([`HuntReport::to_json`]).
+pub const REPORT_VERSION: u64 = 1;
+
+/// `v` as compact JSON (the values written here, strings, numbers, booleans and arrays of
+/// them, always serialise).
+fn j<T: serde::Serialize + ?Sized>(v: &T) -> String {
+    serde_json::to_string(v).unwrap_or_else(|_| "null".to_string())
+}
+
+/// A JSON object of `fields` (each value already written as JSON) in their order, on one
+/// line.
+fn object(fields: &[(&str, String)]) -> String {
+    let parts: Vec<String> = fields
+        .iter()
+        .map(|(key, value)| format!("{}: {value}", j(key)))
+        .collect();
+    format!("{{{}}}", parts.join(", "))
+}
+
+/// What their renderer did with a finding's minimal scene, in one word.
+fn verdict_name(v: &Verdict) -> &'static str {
+    match v {
+        Verdict::Same => "same",
+        Verdict::Differs(_) => "differs",
+        Verdict::Failed(_) => "failed",
+        Verdict::Refused(_) => "refused",
+    }
+}
+
+impl HuntReport {
+    /// The convention every scene stated, as a JSON object: `{"preset", "tie_rule",
+    /// "pixel_centre", "subpixel_bits", "rounding"}`.
+    fn convention_json(&self) -> String {
+        let c = self.config.overrides.apply(self.config.preset);
+        object(&[
+            ("preset", j(c.preset.name())),
+            ("tie_rule", j(c.tie_rule.name())),
+            ("pixel_centre", j(c.pixel_centre.name())),
+            ("subpixel_bits", j(&c.subpixel_bits)),
+            ("rounding", j(c.rounding.name())),
+        ])
+    }
+
+    /// The report as a JSON document (schema version [`REPORT_VERSION`]; also in README's
+    /// `hunt` section), `renderer` naming what was hunted (`hunt --cmd`'s command): one
+    /// object, one field a line in this order, each finding on a line of its own, ending in
+    /// a newline.
+    ///
+    /// - `format` (`"rasterproof hunt report"`), `version` (1), `rasterproof` (the version
+    ///   that ran it), `cmd` (`renderer`), `seed`;
+    /// - `shard`: `{"k": K, "n": N}` (`{"k": 1, "n": 1}`: the whole run);
+    /// - `cases` (the whole run's, `0..cases`), `cases_requested` (the shard's among them),
+    ///   `cases_run` (the first of the shard's, in order), `stopped_by_time` (the budget
+    ///   stopped the hunt before every requested case ran);
+    /// - `families` (names), `canvas`, `float32_exact`, `shrink_runs` (the runs allowed
+    ///   per shrink), `time_budget_ms` (`null`: none), `convention` (`{"preset",
+    ///   "tie_rule", "pixel_centre", "subpixel_bits", "rounding"}`), `model` (the oracle:
+    ///   `exact-snapped` or `exact`);
+    /// - `counts`: `{"same", "differ", "failed", "refused"}` over the cases run;
+    /// - `findings`, by first case: `{"signature"` ([`Signature::describe`]), `"slug"`
+    ///   ([`Signature::slug`]), `"first_case"`, `"cases"` (how many showed it),
+    ///   `"primitives"` (of the minimal scene), `"scene"` (the minimal scene: the JSON
+    ///   object [`Scene::to_json`] writes), `"shrink_runs"` (renderer runs the shrink
+    ///   took), `"minimal_verdict"` (`differs`, `failed`, or `same` / `refused` when the
+    ///   minimal scene no longer fails)`}`.
+    ///
+    /// ```
+    /// use rasterproof::oracle::hunt::{hunt, HuntConfig};
+    /// use rasterproof::oracle::program::{Failure, FailureKind};
+    /// // A renderer that always fails: one finding.
+    /// let broken = |_: &rasterproof::scene::Scene| {
+    ///     Err(Failure { kind: FailureKind::Exit, message: "exit status 3".to_string() })
+    /// };
+    /// let config = HuntConfig { cases: 3, shrink_runs: 4, ..HuntConfig::default() };
+    /// let report = hunt(&config, &broken, 1, &|| {}).unwrap();
+    /// let v: serde_json::Value = serde_json::from_str(&report.to_json("broken")).unwrap();
+    /// assert_eq!(v["format"], "rasterproof hunt report");
+    /// assert_eq!(v["counts"]["failed"], 3);
+    /// assert_eq!(v["findings"][0]["signature"], "non-zero exit");
+    /// assert!(v["findings"][0]["scene"]["triangles"].is_array());
+    /// ```
+    pub fn to_json(&self, renderer: &str) -> String {
+        let c = &self.config;
+        let findings: Vec<String> = self
+            .findings
+            .iter()
+            .map(|f| {
+                let scene = serde_json::from_str::<serde_json::Value>(&f.minimal.to_json())
+                    .map_or_else(|_| j(&f.minimal.to_json()), |v| j(&v));
+                object(&[
+                    ("signature", j(&f.signature.describe())),
+                    ("slug", j(&f.signature.slug())),
+                    ("first_case", j(&f.case)),
+                    ("cases", j(&f.cases)),
+                    ("primitives", j(&primitive_count(&f.minimal))),
+                    ("scene", scene),
+                    ("shrink_runs", j(&f.runs)),
+                    ("minimal_verdict", j(verdict_name(&f.verdict))),
+                ])
+            })
+            .collect();
+        let findings = if findings.is_empty() {
+            "[]".to_string()
+        } else {
+            format!("[\n    {}\n  ]", findings.join(",\n    "))
+        };
+        let families: Vec<&str> = c.families.iter().map(|f| f.name()).collect();
+        let fields: [(&str, String); 19] = [
+            ("format", j(REPORT_FORMAT)),
+            ("version", j(&REPORT_VERSION)),
+            ("rasterproof", j(env!("CARGO_PKG_VERSION"))),
+            ("cmd", j(renderer)),
+            ("seed", j(&c.seed)),
+            (
+                "shard",
+                object(&[("k", j(&c.shard.index())), ("n", j(&c.shard.count()))]),
+            ),
+            ("cases", j(&c.cases)),
+            ("cases_requested", j(&self.requested)),
+            ("cases_run", j(&self.cases)),
+            ("stopped_by_time", j(&self.stopped_by_time)),
+            ("families", j(&families)),
+            ("canvas", j(&c.canvas)),
+            ("float32_exact", j(&c.float32_exact)),
+            ("shrink_runs", j(&c.shrink_runs)),
+            (
+                "time_budget_ms",
+                c.budget.map_or_else(|| "null".to_string(), |b| j(&b.as_millis())),
+            ),
+            ("convention", self.convention_json()),
+            ("model", j(c.model.name())),
+            (
+                "counts",
+                object(&[
+                    ("same", j(&self.same)),
+                    ("differ", j(&self.differing)),
+                    ("failed", j(&self.failed)),
+                    ("refused", j(&self.refused)),
+                ]),
+            ),
+            ("findings", findings),
+        ];
+        let body: Vec<String> = fields
+            .iter()
+            .map(|(key, value)| format!("  {}: {value}", j(key)))
+            .collect();
+        format!("{{\n{}\n}}\n", body.join(",\n"))
+    }
+
+    /// The report as JUnit XML, `renderer` naming what was hunted: one `<testsuite
+    /// name="rasterproof hunt">` in a `<testsuites>`, with the seed, shard, cases, budget
+    /// stop, convention, model and `renderer` as properties; one `<testcase
+    /// classname="rasterproof.hunt" name="SIGNATURE">` per finding (by first case), holding
+    /// a `<failure>` whose message is the signature and whose text gives the first case,
+    /// how many cases showed it, and the minimal scene; then one passing `<testcase
+    /// name="identical to the oracle">` whose `<system-out>` carries the counts. Every
+    /// text is escaped for XML.
+    ///
+    /// ```
+    /// use rasterproof::oracle::hunt::{hunt, HuntConfig};
+    /// use rasterproof::oracle::program::{Failure, FailureKind};
+    /// let broken = |_: &rasterproof::scene::Scene| {
+    ///     Err(Failure { kind: FailureKind::Exit, message: "exit <3> & more".to_string() })
+    /// };
+    /// let config = HuntConfig { cases: 2, shrink_runs: 4, ..HuntConfig::default() };
+    /// let xml = hunt(&config, &broken, 1, &|| {}).unwrap().junit("a < b");
+    /// assert!(xml.contains("<testsuite name=\"rasterproof hunt\" tests=\"2\" failures=\"1\""));
+    /// assert!(xml.contains("value=\"a &lt; b\""));
+    /// assert!(xml.contains("exit &lt;3&gt; &amp; more"));
+    /// assert_eq!(xml.matches("<testcase ").count(), 2);
+    /// ```
+    pub fn junit(&self, renderer: &str) -> String {
+        let c = &self.config;
+        let failures = self.findings.len();
+        let counts = format!(
+            "tests=\"{}\" failures=\"{failures}\" errors=\"0\" skipped=\"0\"",
+            failures + 1
+        );
+        let mut x = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+        let _ = writeln!(x, "<testsuites name=\"rasterproof hunt\" {counts}>");
+        let _ = writeln!(x, "  <testsuite name=\"rasterproof hunt\" {counts}>");
+        x.push_str("    <properties>\n");
+        for (name, value) in [
+            ("rasterproof", env!("CARGO_PKG_VERSION").to_string()),
+            ("cmd", renderer.to_string()),
+            ("seed", c.seed.to_string()),
+            ("shard", c.shard.to_string()),
+            ("cases", c.cases.to_string()),
+            ("cases_requested", self.requested.to_string()),
+            ("cases_run", self.cases.to_string()),
+            ("stopped_by_time", self.stopped_by_time.to_string()),
+            ("convention", c.overrides.apply(c.preset).to_string()),
+            ("model", c.model.name().to_string()),
+        ] {
+            let _ = writeln!(
+                x,
+                "      <property name=\"{name}\" value=\"{}\"/>",
+                xml_escape(&value, true)
+            );
+        }
+        x.push_str("    </properties>\n");
+        for f in &self.findings {
+            let description = f.signature.describe();
+            let _ = writeln!(
+                x,
+                "    <testcase classname=\"rasterproof.hunt\" name=\"{}\">",
+                xml_escape(&description, true)
+            );
+            let message = format!("{description}: {} cases, first case {}", f.cases, f.case);
+            let mut text = format!(
+                "{description}\nfirst case: {} ({} cases showed it)\nminimal scene ({} primitives, {}x{}, {} shrink runs):\n{}",
+                f.case,
+                f.cases,
+                primitive_count(&f.minimal),
+                f.minimal.width,
+                f.minimal.height,
+                f.runs,
+                f.minimal.to_json()
+            );
+            if let Verdict::Failed(failure) = &f.verdict {
+                let _ = write!(text, "\ntheir renderer on the minimal scene: {failure}");
+            }
+            let _ = writeln!(
+                x,
+                "      <failure type=\"finding\" message=\"{}\">{}</failure>",
+                xml_escape(&message, true),
+                xml_escape(&text, false)
+            );
+            x.push_str("    </testcase>\n");
+        }
+        let mut out = format!(
+            "{} identical, {} differ, {} failed, {} refused by the oracle, of {} cases run ({} requested)",
+            self.same, self.differing, self.failed, self.refused, self.cases, self.requested
+        );
+        if self.stopped_by_time {
+            out.push_str("; stopped by the time budget");
+        }
+        x.push_str("    <testcase classname=\"rasterproof.hunt\" name=\"identical to the oracle\">\n");
+        let _ = writeln!(x, "      <system-out>{}</system-out>", xml_escape(&out, false));
+        x.push_str("    </testcase>\n");
+        x.push_str("  </testsuite>\n</testsuites>\n");
+        x
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A report of no case is still a whole document: every field, empty findings.
+    #[test]
+    fn an_empty_report_has_every_field() {
+        let config = HuntConfig {
+            cases: 4,
+            shard: Shard::new(3, 3).unwrap(),
+            budget: Some(Duration::from_millis(1500)),
+            ..HuntConfig::default()
+        };
+        let never = |_: &Scene| -> Result<Theirs, Failure> { unreachable!("no case runs") };
+        let report = hunt(
+            &HuntConfig {
+                budget: Some(Duration::ZERO),
+                ..config.clone()
+            },
+            &never,
+            1,
+            &|| {},
+        )
+        .unwrap();
+        let report = HuntReport { config, ..report };
+        let v: serde_json::Value = serde_json::from_str(&report.to_json("r \"q\"")).unwrap();
+        let keys: Vec<&str> = v.as_object().unwrap().keys().map(String::as_str).collect();
+        for key in [
+            "format",
+            "version",
+            "rasterproof",
+            "cmd",
+            "seed",
+            "shard",
+            "cases",
+            "cases_requested",
+            "cases_run",
+            "stopped_by_time",
+            "families",
+            "canvas",
+            "float32_exact",
+            "shrink_runs",
+            "time_budget_ms",
+            "convention",
+            "model",
+            "counts",
+            "findings",
+        ] {
+            assert!(keys.contains(&key), "{key}: {keys:?}");
+        }
+        assert_eq!(keys.len(), 19);
+        assert_eq!(v["cmd"], "r \"q\"");
+        assert_eq!(v["shard"], serde_json::json!({"k": 3, "n": 3}));
+        assert_eq!((&v["cases_requested"], &v["cases_run"]), (&1.into(), &0.into()));
+        assert_eq!(v["time_budget_ms"], 1500);
+        assert_eq!(v["stopped_by_time"], true);
+        let x = report.junit("r \"q\"");
+        assert!(
+            x.contains("value=\"r &quot;q&quot;\"") && x.contains("stopped by the time budget"),
+            "{x}"
+        );
+        assert_eq!(x.matches("<testcase ").count(), 1);
+    }
 }

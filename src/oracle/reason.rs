@@ -31,7 +31,7 @@ use std::collections::{HashMap, HashSet};
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
-use super::evidence::{polygon_at, shape_distance2, triangle_at, EdgeAt};
+use super::evidence::{polygon_at, polygon_inside, shape_distance2, triangle_at, EdgeAt};
 use crate::clip::Window;
 use crate::convention::{AnyTieRule, Convention, Target, TieRule};
 use crate::coverage::CoverageSink;
@@ -378,7 +378,7 @@ impl<'a> Classifier<'a> {
         let kept = !clipped || self.primitives.clip.as_ref().map_or(true, |w| in_closed_window(w, &p));
         match shape {
             Shape::Triangle(t) => triangle_at(t, &p, rule.into()).is_some_and(|at| at.inside),
-            Shape::Polygon(poly) => polygon_at(poly, &p, rule).inside,
+            Shape::Polygon(poly) => polygon_inside(poly, &p, rule),
             Shape::Diamond { from, to } => {
                 kept && line::exact::diamond_exits(from, to, i64::from(x), i64::from(y), target)
             }
@@ -417,7 +417,7 @@ impl<'a> Classifier<'a> {
                 let mut flipped = poly.clone();
                 flipped.fill_rule = other;
                 let rule = self.target.convention.tie_rule;
-                (polygon_at(&flipped, &p, rule).inside == theirs_covers).then(|| Reason::FillRule {
+                (polygon_inside(&flipped, &p, rule) == theirs_covers).then(|| Reason::FillRule {
                     winding: polygon_at(poly, &p, rule).windings[0],
                     fill_rule: other,
                 })
@@ -598,7 +598,7 @@ fn tie(shape: &Shape, p: &Point, rule: TieRule, theirs_covers: bool) -> Option<R
             }
             let rules: Vec<AnyTieRule> = [TieRule::TopLeft, TieRule::BottomLeft]
                 .into_iter()
-                .filter(|r| polygon_at(poly, p, *r).inside == theirs_covers)
+                .filter(|r| polygon_inside(poly, p, *r) == theirs_covers)
                 .map(AnyTieRule::from)
                 .collect();
             (!rules.is_empty()).then_some(Reason::Tie {

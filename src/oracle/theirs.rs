@@ -155,8 +155,8 @@ impl Theirs {
                         format.name()
                     )));
                 }
-                let image = image::load_from_memory_with_format(bytes, image::ImageFormat::Png)
-                    .map_err(|e| err(format!("cannot decode the PNG: {e}")))?;
+                let image = crate::fill::flood::decode_png_as_decoded(bytes, file, crate::convention::MAX_CANVAS)
+                    .map_err(|e| err(format!("cannot decode the PNG: {}", e.detail())))?;
                 if format == Format::Mask {
                     read_mask(&image, background).map_err(err)
                 } else {

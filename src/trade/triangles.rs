@@ -13,9 +13,9 @@ use crate::model::plan::plan_scene;
 use crate::model::{prepare, Model, Primitives};
 use crate::raster::sample_exact;
 use crate::strategy::{triangle, Scale};
-use crate::tri::float::FloatRule;
+use crate::tri::float::{self, FloatRule};
 
-use super::far::{self, FarWindow};
+use super::far::FarWindow;
 use super::measure::{
     area_metrics, corner_subset, departures, median_max, shared_edge_pixels, Pairs, BARYCENTRIC_EXACT,
     BARYCENTRIC_ULPS, GOURAUD,
@@ -436,10 +436,10 @@ fn far_metrics(
         let id = u32::try_from(k).expect("ids fit u32");
         if is_f32(model) {
             if let Some(t) = &t32[k] {
-                far::rasterize_f32(t, id, window, conv, rule, &mut p);
+                float::rasterize_f32_at(t, id, window.origin(), target, rule, &mut p);
             }
         } else if let Some(t) = &t64[k] {
-            far::rasterize_f64(t, id, window, conv, rule, &mut p);
+            float::rasterize_f64_at(t, id, window.origin(), target, rule, &mut p);
         }
     }
     let d = departures(&r.pairs, &p.sorted(), r.mask());

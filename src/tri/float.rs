@@ -6,10 +6,10 @@
 
 use glam::{DVec2, Vec2};
 
-use crate::convention::Target;
+use crate::convention::{Convention, Target};
 use crate::coverage::CoverageSink;
 use crate::edge::float::{edge_f32, edge_f64, is_inclusive};
-use crate::raster::{float_sample_range, sample_f64};
+use crate::raster::float_sample_range_at;
 
 /// How a float model decides a sample with `w == 0`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -20,8 +20,12 @@ pub enum FloatRule {
     WithTieRule,
 }
 
+/// The largest |origin| of [`rasterize_f32_at`] / [`rasterize_f64_at`] on each axis:
+/// `origin + i + c` (i < 2^14, c = 0 or 1/2) then needs at most 42 bits, exact in f64.
+pub(crate) const MAX_SAMPLE_ORIGIN: i64 = 1 << 40;
+
 macro_rules! float_rasterizer {
-    ($name:ident, $vec:ty, $float:ty, $edge:ident, $doc:literal) => {
+    ($name:ident, $at:ident, $vec:ty, $float:ty, $edge:ident, $doc:literal) => {
         #[doc = $doc]
         pub fn $name<S: CoverageSink + ?Sized>(
             tri: &[$vec; 3],
@@ -30,6 +34,23 @@ macro_rules! float_rasterizer {
             rule: FloatRule,
             sink: &mut S,
         ) {
+            $at(tri, id, [0, 0], target, rule, sink);
+        }
+
+        /// The same rasterizer over a canvas-sized window of the plane whose first pixel
+        /// is pixel `origin` (each |origin| at most [`MAX_SAMPLE_ORIGIN`]): output pixel
+        /// `(i, j)` is sampled at `origin + (i, j) + c`, computed exactly in f64 and rounded
+        /// once to the model's type, as the canvas sample is. `origin = [0, 0]` is the
+        /// model itself; `trade` uses the rest for windows no canvas reaches.
+        pub(crate) fn $at<S: CoverageSink + ?Sized>(
+            tri: &[$vec; 3],
+            id: u32,
+            origin: [i64; 2],
+            target: &Target,
+            rule: FloatRule,
+            sink: &mut S,
+        ) {
+            debug_assert!(origin.iter().all(|o| o.abs() <= MAX_SAMPLE_ORIGIN), "{origin:?}");
             let [v0, mut v1, mut v2] = *tri;
             let area = $edge(v0, v1, v2);
             if area == 0.0 || !area.is_finite() {
@@ -51,15 +72,15 @@ macro_rules! float_rasterizer {
             let min = v0.min(v1).min(v2);
             let max = v0.max(v1).max(v2);
             let wide = |v: $vec| [f64::from(v.x), f64::from(v.y)];
-            let Some(range) = float_sample_range(wide(min), wide(max), target) else {
+            let Some(range) = float_sample_range_at(wide(min), wide(max), origin, target) else {
                 return;
             };
             let passes = |w: $float, inclusive: bool| w > 0.0 || (w == 0.0 && inclusive);
-            #[allow(clippy::cast_possible_truncation)] // canvas indices < 2^14 and 0.5: exact in f32
+            #[allow(clippy::cast_possible_truncation)] // rounding the exact f64 sample to the type is the model's
             for j in range.y0..=range.y1 {
+                let sy = sample_at(origin[1], j, conv) as $float;
                 for i in range.x0..=range.x1 {
-                    let s = sample_f64(i, j, target);
-                    let p = <$vec>::new(s.x as $float, s.y as $float);
+                    let p = <$vec>::new(sample_at(origin[0], i, conv) as $float, sy);
                     let w0 = $edge(v1, v2, p);
                     let w1 = $edge(v2, v0, p);
                     let w2 = $edge(v0, v1, p);
@@ -72,8 +93,16 @@ macro_rules! float_rasterizer {
     };
 }
 
+/// The f64 sample of window pixel `i` on one axis: `origin + i + c`, exact (|origin| <=
+/// 2^40); at origin 0, [`crate::raster::sample_f64`]'s.
+#[allow(clippy::cast_precision_loss)] // |origin + i| < 2^41: exact in f64
+pub(crate) fn sample_at(origin: i64, i: u32, conv: &Convention) -> f64 {
+    (origin + i64::from(i)) as f64 + conv.pixel_centre.offset_f64()
+}
+
 float_rasterizer!(
     rasterize_f32,
+    rasterize_f32_at,
     Vec2,
     f32,
     edge_f32,
@@ -81,6 +110,7 @@ float_rasterizer!(
 );
 float_rasterizer!(
     rasterize_f64,
+    rasterize_f64_at,
     DVec2,
     f64,
     edge_f64,

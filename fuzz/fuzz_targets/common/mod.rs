@@ -1,7 +1,9 @@
-//! What the fuzz targets share: the convention an input picks, and an independent i128
-//! snapping to check the crate's against.
+//! What the fuzz targets share: the convention an input picks, an independent i128
+//! snapping to check the crate's against, and whole scenes as fuzz inputs ([`scene`]).
 
 #![allow(dead_code)] // each target uses a part
+
+pub mod scene;
 
 use arbitrary::Arbitrary;
 use rasterproof::convention::{Convention, PixelCentre, Preset, Rounding};

@@ -65,24 +65,37 @@ pub enum PngError {
     },
 }
 
+impl PngError {
+    /// The file it names.
+    pub fn file(&self) -> &str {
+        match self {
+            PngError::Unreadable { file, .. }
+            | PngError::Empty { file }
+            | PngError::NotPng { file }
+            | PngError::Truncated { file, .. }
+            | PngError::Corrupt { file, .. }
+            | PngError::TooLarge { file, .. } => file,
+        }
+    }
+
+    /// What is wrong, without the file's name (`Display` is `FILE: DETAIL`).
+    pub fn detail(&self) -> String {
+        match self {
+            PngError::Unreadable { error, .. } => format!("cannot read: {error}"),
+            PngError::Empty { .. } => "not a PNG file (the file is empty)".to_string(),
+            PngError::NotPng { .. } => "not a PNG file (it does not start with the PNG signature)".to_string(),
+            PngError::Truncated { detail, .. } => format!("truncated PNG: the data ends early ({detail})"),
+            PngError::Corrupt { detail, .. } => format!("corrupt PNG: {detail}"),
+            PngError::TooLarge {
+                width, height, limit, ..
+            } => format!("the image is {width}x{height}, larger than the limit of {limit} pixels per side"),
+        }
+    }
+}
+
 impl fmt::Display for PngError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            PngError::Unreadable { file, error } => write!(f, "{file}: cannot read: {error}"),
-            PngError::Empty { file } => write!(f, "{file}: not a PNG file (the file is empty)"),
-            PngError::NotPng { file } => write!(f, "{file}: not a PNG file (it does not start with the PNG signature)"),
-            PngError::Truncated { file, detail } => write!(f, "{file}: truncated PNG: the data ends early ({detail})"),
-            PngError::Corrupt { file, detail } => write!(f, "{file}: corrupt PNG: {detail}"),
-            PngError::TooLarge {
-                file,
-                width,
-                height,
-                limit,
-            } => write!(
-                f,
-                "{file}: the image is {width}x{height}, larger than the limit of {limit} pixels per side"
-            ),
-        }
+        write!(f, "{}: {}", self.file(), self.detail())
     }
 }
 
@@ -103,7 +116,7 @@ pub fn load_png(path: &Path) -> Result<RgbaImage, PngError> {
         file: file.clone(),
         error,
     })?;
-    decode(BufReader::new(opened), &file, MAX_IMAGE_SIDE)
+    decode(BufReader::new(opened), &file, MAX_IMAGE_SIDE).map(into_rgba8)
 }
 
 /// Decodes PNG bytes as 8-bit RGBA, at most [`MAX_IMAGE_SIDE`] pixels per side; `file`
@@ -125,7 +138,20 @@ pub fn decode_png(bytes: &[u8], file: &str) -> Result<RgbaImage, PngError> {
 /// As [`decode_png`], with at most `max_side` pixels per side (for callers with less
 /// memory to spend, such as the fuzz target).
 pub fn decode_png_within(bytes: &[u8], file: &str, max_side: u32) -> Result<RgbaImage, PngError> {
+    decode(Cursor::new(bytes), file, max_side).map(into_rgba8)
+}
+
+/// As [`decode_png_within`], the image as decoded (its colour type kept: the readers of
+/// another renderer's mask and ids PNGs tell an 8-bit RGBA ids image from a converted one).
+pub fn decode_png_as_decoded(bytes: &[u8], file: &str, max_side: u32) -> Result<DynamicImage, PngError> {
     decode(Cursor::new(bytes), file, max_side)
+}
+
+fn into_rgba8(image: DynamicImage) -> RgbaImage {
+    match image {
+        DynamicImage::ImageRgba8(rgba) => rgba,
+        other => other.to_rgba8(),
+    }
 }
 
 /// The PNG decoder's own allocations besides the image (text, ICC profile and other
@@ -133,7 +159,7 @@ pub fn decode_png_within(bytes: &[u8], file: &str, max_side: u32) -> Result<Rgba
 /// a hostile file from asking for gigabytes of chunk data.
 const METADATA_BUDGET: u64 = 64 << 20;
 
-fn decode<R: BufRead + Seek>(mut reader: R, file: &str, max_side: u32) -> Result<RgbaImage, PngError> {
+fn decode<R: BufRead + Seek>(mut reader: R, file: &str, max_side: u32) -> Result<DynamicImage, PngError> {
     let mut signature = [0u8; 8];
     let mut got = 0;
     while got < signature.len() {
@@ -165,6 +191,11 @@ fn decode<R: BufRead + Seek>(mut reader: R, file: &str, max_side: u32) -> Result
         file: file.to_string(),
         error,
     })?;
+    check_palette(&mut reader, file)?;
+    reader.rewind().map_err(|error| PngError::Unreadable {
+        file: file.to_string(),
+        error,
+    })?;
     let fail = |e: ImageError| classify(e, file);
     let mut limits = image::Limits::no_limits();
     limits.max_alloc = Some(METADATA_BUDGET);
@@ -178,11 +209,55 @@ fn decode<R: BufRead + Seek>(mut reader: R, file: &str, max_side: u32) -> Result
             limit: max_side,
         });
     }
-    let image = DynamicImage::from_decoder(decoder).map_err(fail)?;
-    Ok(match image {
-        DynamicImage::ImageRgba8(rgba) => rgba,
-        other => other.to_rgba8(),
-    })
+    // A last guard: the png crate has panicked on malformed files (a short palette, see
+    // `check_palette`); whatever else it may panic on is a corrupt file, not a crash.
+    let decoded = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| DynamicImage::from_decoder(decoder)));
+    match decoded {
+        Ok(image) => image.map_err(fail),
+        Err(panic) => Err(PngError::Corrupt {
+            file: file.to_string(),
+            detail: format!(
+                "the PNG decoder failed on it ({})",
+                panic
+                    .downcast_ref::<String>()
+                    .map(String::as_str)
+                    .or_else(|| panic.downcast_ref::<&str>().copied())
+                    .unwrap_or("a panic")
+            ),
+        }),
+    }
+}
+
+/// Refuses a PLTE chunk whose length is not 1 to 256 entries of 3 bytes (PNG 1.2,
+/// section 4.1.2: "a chunk length not divisible by 3 is an error"). The png crate 0.18
+/// accepts such a chunk and then panics while expanding the palette (an index past the
+/// palette's end); this reads only the chunk headers, before the decoder runs. Reading
+/// stops at the first header that is cut short or at IEND (the decoder reports those).
+fn check_palette<R: BufRead + Seek>(reader: &mut R, file: &str) -> Result<(), PngError> {
+    let mut header = [0u8; 8];
+    if reader.read_exact(&mut header).is_err() {
+        return Ok(());
+    }
+    loop {
+        if reader.read_exact(&mut header).is_err() {
+            return Ok(());
+        }
+        let length = u32::from_be_bytes([header[0], header[1], header[2], header[3]]);
+        let kind = &header[4..8];
+        if kind == b"PLTE" && (length == 0 || length % 3 != 0 || length > 3 * 256) {
+            return Err(PngError::Corrupt {
+                file: file.to_string(),
+                detail: format!("its PLTE chunk is {length} bytes, not 1 to 256 entries of 3 bytes"),
+            });
+        }
+        if kind == b"IEND" {
+            return Ok(());
+        }
+        // The chunk's data and its CRC.
+        if reader.seek_relative(i64::from(length) + 4).is_err() {
+            return Ok(());
+        }
+    }
 }
 
 /// Sorts a decoder error: the png crate reports data that stops early (anywhere, from the

@@ -124,7 +124,10 @@ fn attribute(s: &str) -> String {
     escape(s, true)
 }
 
-fn escape(s: &str, attribute: bool) -> String {
+/// `s` as XML: character data, or (`attribute`) an attribute value between double quotes
+/// (line breaks and tabs as character references); characters XML 1.0 cannot hold become
+/// U+FFFD. Shared with `hunt`'s JUnit file.
+pub(crate) fn escape(s: &str, attribute: bool) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
         match c {

@@ -43,6 +43,8 @@
 mod json;
 mod junit;
 
+pub(crate) use junit::escape as xml_escape;
+
 use std::collections::BTreeMap;
 
 use super::tally::Tally;

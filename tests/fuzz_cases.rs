@@ -1,0 +1,91 @@
+//! Minimised crashes of the fuzz targets (fuzz/README.md), each a named regression test
+//! with the scene `cargo fuzz fmt` printed for it. Numbered on from the two earlier ones,
+//! which live beside the code they cover: `scene::parse::tests::fuzz_case_01_huge_exponent_round_trip`
+//! (scene_parse) and `tests/polygons.rs`'s `fuzz_case_01_hole_of_a_degenerate_outline`
+//! (polygon_fill).
+
+use rasterproof::model::plan::plan_scene;
+use rasterproof::model::{render, Model};
+use rasterproof::scene::parse_scene;
+
+/// Found by planned_exact (its plan-verdict check): a zero-area triangle with a vertex
+/// beyond f32's range. The float analysis skips a primitive that reaches no sample, so
+/// the plan called float32 exact while the float32 model refuses the coordinate. A model
+/// that refuses the scene is not exact for it: the verdict now names the refusal.
+#[test]
+fn fuzz_case_02_float_verdict_on_a_coordinate_beyond_f32() {
+    let scene = parse_scene(
+        r#"{
+  "width": 4,
+  "height": 1,
+  "preset": "d3d11",
+  "triangles": [
+    {"v": [["-2084229497390748088713169470519580295168","-4"], ["-4","-4"], ["-4","-4"]]}
+  ]
+}"#,
+        "fuzz_case_02.json",
+    )
+    .unwrap();
+    let (primitives, target) = (scene.primitives(), scene.target().unwrap());
+    let plan = plan_scene(Model::Exact, &primitives, &target).unwrap();
+    for v in &plan.fixed_width {
+        let refused = render(v.model, &primitives, &target).err();
+        assert_eq!(v.exact, refused.is_none(), "{}: {:?}", v.model, v.broken_by);
+        if let Some(e) = refused {
+            assert_eq!(v.broken_by.as_deref(), Some(e.to_string().as_str()), "{}", v.model);
+        }
+    }
+    let float32 = plan.fixed_width.iter().find(|v| v.model == Model::Float32).unwrap();
+    assert!(!float32.exact);
+    assert!(float32
+        .broken_by
+        .as_deref()
+        .unwrap()
+        .contains("does not fit the float32 model's float type"));
+    // float64 holds the coordinate, and the triangle covers nothing: exact, as exact says.
+    let float64 = plan.fixed_width.iter().find(|v| v.model == Model::Float64).unwrap();
+    assert!(float64.exact, "{:?}", float64.broken_by);
+    assert_eq!(
+        render(Model::Float64, &primitives, &target).unwrap(),
+        render(Model::Exact, &primitives, &target).unwrap()
+    );
+}
+
+/// Found by theirs_read: a 2x4 palette PNG whose PLTE chunk is 13 bytes (four entries and
+/// a stray byte), followed by an APNG fcTL chunk and a cut IDAT. The png crate (0.18.1)
+/// accepts the palette and then panics while expanding it ("range end index 3 out of
+/// range for slice of length 1" in `create_rgba_palette`). PNG 1.2 section 4.1.2 makes a
+/// PLTE length not divisible by 3 an error: both PNG readers now refuse it, naming the
+/// file and the chunk, before the decoder runs.
+#[test]
+fn fuzz_case_03_palette_of_thirteen_bytes() {
+    use rasterproof::fill::flood::{decode_png, PngError};
+    use rasterproof::oracle::theirs::{Background, Format};
+    use rasterproof::oracle::Theirs;
+    let bytes: &[u8] = &[
+        0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00,
+        0x00, 0x02, 0x00, 0x00, 0x00, 0x04, 0x02, 0x03, 0x00, 0x00, 0x00, 0xd4, 0x9f, 0x76, 0xed, 0x00, 0x00, 0x00,
+        0x0d, 0x50, 0x4c, 0x54, 0x45, 0x00, 0x00, 0x00, 0xff, 0x00, 0x00, 0x00, 0xff, 0x00, 0xf4, 0x66, 0x63, 0x54,
+        0x4c, 0x7e, 0x83, 0x00, 0xbf, 0x00, 0x00, 0x0c, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9c, 0x63, 0x00, 0x83, 0x82,
+    ];
+    match decode_png(bytes, "crash.png") {
+        Err(e @ PngError::Corrupt { .. }) => assert_eq!(
+            e.to_string(),
+            "crash.png: corrupt PNG: its PLTE chunk is 13 bytes, not 1 to 256 entries of 3 bytes"
+        ),
+        other => panic!("{other:?}"),
+    }
+    for format in [Format::Mask, Format::Ids] {
+        let e = Theirs::read(bytes, "theirs.png", format, Background::default()).unwrap_err();
+        let text = e.to_string();
+        assert!(text.starts_with("theirs.png: "), "{text}");
+        assert!(text.contains("PLTE chunk is 13 bytes"), "{text}");
+    }
+    // The same file with a 12-byte palette (its four whole entries) is a palette PNG the
+    // readers take up to the cut IDAT: an error again, but the decoder's own, no panic.
+    let mut twelve = bytes.to_vec();
+    twelve[36] = 12;
+    twelve.remove(45 + 4);
+    let e = decode_png(&twelve, "twelve.png").unwrap_err().to_string();
+    assert!(e.starts_with("twelve.png: ") && !e.contains("PLTE chunk is"), "{e}");
+}
