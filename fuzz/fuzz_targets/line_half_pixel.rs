@@ -26,6 +26,9 @@ mod common;
 use common::{convention, snap_i128, PresetChoice};
 use num_bigint::BigInt;
 use num_rational::BigRational;
+use rasterproof::check::{
+    check_diamond_agreement, check_line_pixels, check_line_reference, check_line_symmetry, line_departures,
+};
 use rasterproof::convention::Target;
 use rasterproof::geom::Point;
 use rasterproof::line::{bresenham, dda, BresenhamTie, Line, LineRule};
@@ -95,6 +98,10 @@ fn check_bresenham(from: [i64; 2], to: [i64; 2], tie: BresenhamTie) {
     back.reverse();
     assert_eq!(back, pixels, "{ctx}: not the reverse of {to:?} -> {from:?} {other:?}");
 
+    if len <= 64 {
+        crate_checkers(from, to, tie, &pixels, &ctx);
+    }
+
     // (major, minor) by |dx| >= |dy|; the ideal line is minor(k) = minor0 + k * dmin / len.
     let x_major = dx.abs() >= dy.abs();
     let split = |p: [i64; 2]| if x_major { (p[0], p[1]) } else { (p[1], p[0]) };
@@ -131,6 +138,36 @@ fn check_bresenham(from: [i64; 2], to: [i64; 2], tie: BresenhamTie) {
                 ideal()
             );
         }
+    }
+}
+
+/// The crate's own line checkers (`check::line`, what `check` runs) accept these pixels
+/// and refuse them with one pixel moved two off the line on the minor axis. Called on
+/// lines of at most 64 steps: they read the ideal line in BigRational (40 ms a 4000-step
+/// line, which would take the target from thousands of inputs a second to tens).
+fn crate_checkers(from: [i64; 2], to: [i64; 2], tie: BresenhamTie, pixels: &[[i64; 2]], ctx: &str) {
+    let (dx, dy) = (to[0] - from[0], to[1] - from[1]);
+    check_line_pixels(from, to, pixels).unwrap_or_else(|v| panic!("{ctx}: {v}"));
+    check_line_reference(from, to, tie, pixels).unwrap_or_else(|v| panic!("{ctx}: {v}"));
+    check_line_symmetry(from, to, tie).unwrap_or_else(|v| panic!("{ctx}: {v}"));
+    assert_eq!(line_departures(from, to, pixels), 0, "{ctx}");
+    if pixels.len() > 2 {
+        let mut moved = pixels.to_vec();
+        let k = pixels.len() / 2;
+        let minor = usize::from(dx.abs() >= dy.abs());
+        moved[k][minor] += 2;
+        assert!(
+            check_line_pixels(from, to, &moved).is_err(),
+            "{ctx}: moved pixel {k} accepted"
+        );
+        assert!(
+            check_line_reference(from, to, tie, &moved).is_err(),
+            "{ctx}: moved pixel {k} accepted"
+        );
+        assert!(
+            line_departures(from, to, &moved) > 0,
+            "{ctx}: moved pixel {k} not counted"
+        );
     }
 }
 
@@ -192,6 +229,8 @@ fn check_diamond(input: &Input) -> (Line, Target) {
                 fixed, exact,
                 "fixed and exact-snapped disagree on {line:?} ({target:?})"
             );
+            // And so says the crate's checker (`check::line`).
+            check_diamond_agreement(&line, Model::Fixed, &target).unwrap_or_else(|v| panic!("{v}"));
         }
         Err(ModelError::LineEnvelope {
             line: l,
