@@ -282,6 +282,58 @@ mod tests {
     use super::*;
     use image::Rgba;
 
+    /// A PNG's chunk headers: the signature, then each `(type, length)` with `length`
+    /// bytes of data and a 4-byte CRC (never checked here: `check_palette` reads headers).
+    fn chunks(list: &[(&[u8; 4], u32)]) -> Vec<u8> {
+        let mut out = PNG_SIGNATURE.to_vec();
+        for (kind, len) in list {
+            out.extend_from_slice(&len.to_be_bytes());
+            out.extend_from_slice(*kind);
+            out.extend(std::iter::repeat(7u8).take(usize::try_from(*len).unwrap()));
+            out.extend_from_slice(&[0, 0, 0, 0]);
+        }
+        out
+    }
+
+    fn palette_verdict(bytes: &[u8]) -> Result<(), PngError> {
+        check_palette(&mut Cursor::new(bytes), "t.png")
+    }
+
+    /// PNG 1.2 section 4.1.2: a PLTE chunk holds 1 to 256 entries of 3 bytes; any other
+    /// length is an error, found wherever the chunk lies and not after IEND.
+    #[test]
+    fn a_palette_is_one_to_256_entries_of_three_bytes() {
+        for (len, ok) in [
+            (0, false),
+            (1, false),
+            (2, false),
+            (3, true),
+            (12, true),
+            (13, false),
+            (765, true),
+            (768, true),
+            (769, false),
+            (771, false),
+        ] {
+            let bytes = chunks(&[(b"IHDR", 13), (b"PLTE", len), (b"IDAT", 20), (b"IEND", 0)]);
+            assert_eq!(palette_verdict(&bytes).is_ok(), ok, "PLTE of {len} bytes");
+        }
+        // Past a long chunk: the walk skips data and CRC exactly.
+        let long = chunks(&[(b"IHDR", 13), (b"tEXt", 1000), (b"PLTE", 13), (b"IEND", 0)]);
+        match palette_verdict(&long) {
+            Err(e) => assert_eq!(
+                e.to_string(),
+                "t.png: corrupt PNG: its PLTE chunk is 13 bytes, not 1 to 256 entries of 3 bytes"
+            ),
+            Ok(()) => panic!("the PLTE after tEXt was not found"),
+        }
+        // After IEND nothing is read; a cut header ends the walk (the decoder reports it).
+        assert!(palette_verdict(&chunks(&[(b"IHDR", 13), (b"IEND", 0), (b"PLTE", 13)])).is_ok());
+        let mut cut = chunks(&[(b"IHDR", 13)]);
+        cut.extend_from_slice(&[0, 0, 0]);
+        assert!(palette_verdict(&cut).is_ok());
+    }
+
     /// Every cut of a valid PNG before its final chunk (IEND, 12 bytes) is reported as
     /// truncated, never as corrupt or as a panic.
     #[test]
