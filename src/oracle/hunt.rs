@@ -29,7 +29,7 @@ use super::reason::ReasonClass;
 use super::theirs::Theirs;
 use crate::convention::{AnyTieRule, PixelCentre, Preset, TieRule};
 use crate::geom::{Point, Polygon, Triangle};
-use crate::harness::suite::report::xml_escape;
+use crate::harness::suite::report::{json_object as object, json_value as j, xml_escape};
 use crate::harness::suite::Shard;
 use crate::line::{BresenhamTie, Line, LineRule};
 use crate::model::Model;
@@ -746,22 +746,6 @@ pub const REPORT_FORMAT: &str = "rasterproof hunt report";
 
 /// The schema version of a hunt report ([`HuntReport::to_json`]).
 pub const REPORT_VERSION: u64 = 1;
-
-/// `v` as compact JSON (the values written here, strings, numbers, booleans and arrays of
-/// them, always serialise).
-fn j<T: serde::Serialize + ?Sized>(v: &T) -> String {
-    serde_json::to_string(v).unwrap_or_else(|_| "null".to_string())
-}
-
-/// A JSON object of `fields` (each value already written as JSON) in their order, on one
-/// line.
-fn object(fields: &[(&str, String)]) -> String {
-    let parts: Vec<String> = fields
-        .iter()
-        .map(|(key, value)| format!("{}: {value}", j(key)))
-        .collect();
-    format!("{{{}}}", parts.join(", "))
-}
 
 /// What their renderer did with a finding's minimal scene, in one word.
 fn verdict_name(v: &Verdict) -> &'static str {

@@ -99,7 +99,7 @@ impl Report {
 
 /// `v` as compact JSON (what serde_json writes; the values written here, strings,
 /// numbers, booleans and maps of them, always serialise).
-fn j<T: serde::Serialize + ?Sized>(v: &T) -> String {
+pub(crate) fn j<T: serde::Serialize + ?Sized>(v: &T) -> String {
     serde_json::to_string(v).unwrap_or_else(|_| "null".to_string())
 }
 
@@ -128,7 +128,7 @@ fn failure_json(f: &Failure) -> String {
 
 /// A JSON object of `fields` (each value already written as JSON) in their order, on
 /// one line.
-fn object(fields: &[(&str, String)]) -> String {
+pub(crate) fn object(fields: &[(&str, String)]) -> String {
     let parts: Vec<String> = fields
         .iter()
         .map(|(key, value)| format!("{}: {value}", j(key)))

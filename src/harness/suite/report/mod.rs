@@ -43,6 +43,7 @@
 mod json;
 mod junit;
 
+pub(crate) use json::{j as json_value, object as json_object};
 pub(crate) use junit::escape as xml_escape;
 
 use std::collections::BTreeMap;
