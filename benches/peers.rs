@@ -4,7 +4,10 @@
 //! pixel into a `width x height` buffer of `u8` (the "u8 target"), cleared before each
 //! repetition outside the timer; Mpix/s is covered pixels (the +1 writes) per second.
 //!
-//! `cargo bench --bench peers` (about a minute). The bench profile inherits the crate's
+//! `cargo bench --bench peers` (about a minute). To profile one contender alone:
+//! `PEERS_WORKLOADS=b PEERS_ONLY="crate fixed" PEERS_REPS=50 cargo bench --bench peers`
+//! (workload letters; the contenders whose name contains the text are timed, the
+//! reference is still drawn once, untimed, to check them). The bench profile inherits the crate's
 //! `[profile.release] overflow-checks = true`, and the header says whether checks are on;
 //! `CARGO_PROFILE_BENCH_OVERFLOW_CHECKS=false cargo bench --bench peers` measures without.
 //!
@@ -74,8 +77,23 @@ mod rng;
 mod workloads;
 use workloads::{half_canvas, lines, triangles, Segment};
 
-/// Round-robin repetitions per contender.
-const REPS: usize = 9;
+/// Round-robin repetitions per contender (`PEERS_REPS` overrides, for profiling).
+fn reps() -> usize {
+    std::env::var("PEERS_REPS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(9)
+}
+
+/// Whether workload `letter` runs (`PEERS_WORKLOADS`, letters; all by default).
+fn wanted(letter: char) -> bool {
+    std::env::var("PEERS_WORKLOADS").map_or(true, |v| v.contains(letter))
+}
+
+/// Whether contender `name` is timed (`PEERS_ONLY`, a part of the name; all by default).
+fn timed(name: &str) -> bool {
+    std::env::var("PEERS_ONLY").map_or(true, |v| name.contains(v.as_str()))
+}
 
 // ---------------------------------------------------------------------------------------
 // Workloads.
@@ -94,6 +112,19 @@ trait Cell: Copy + Default + PartialEq {
     fn count(self) -> u64;
     /// The count mod 256 (what a `u8` cell holds).
     fn low_byte(self) -> u8;
+    /// +1 on `cells[i]` for each set bit `i` of `mask` (the sink's `cover_mask`): the
+    /// baselines' `bump_if`, one bit at a time.
+    #[inline(always)]
+    fn add_mask(cells: &mut [Self], mask: u32) {
+        let mut rest = mask;
+        for cell in cells.iter_mut() {
+            if rest == 0 {
+                break;
+            }
+            cell.bump_if(rest & 1 != 0);
+            rest >>= 1;
+        }
+    }
 }
 
 impl Cell for u8 {
@@ -110,6 +141,33 @@ impl Cell for u8 {
     }
     fn low_byte(self) -> u8 {
         self
+    }
+    /// Eight cells at a time as one `u64` (SWAR: each byte's +0/+1 without a carry into
+    /// the next), while the row has eight cells left.
+    #[inline(always)]
+    fn add_mask(cells: &mut [u8], mask: u32) {
+        const HIGH: u64 = 0x8080_8080_8080_8080;
+        let mut rest = mask;
+        let mut at = 0;
+        while rest != 0 {
+            let Some(chunk) = cells.get_mut(at..at + 8) else {
+                // fewer than eight cells left in the row
+                for cell in &mut cells[at..] {
+                    cell.bump_if(rest & 1 != 0);
+                    rest >>= 1;
+                }
+                return;
+            };
+            // the low 8 bits of `rest`, one per byte
+            // (bit i of the mask lands in byte i as 2^i, then each non-zero byte becomes 1)
+            let spread = u64::from(rest & 0xff).wrapping_mul(0x0101_0101_0101_0101) & 0x8040_2010_0804_0201;
+            let ones = ((spread + 0x7f7f_7f7f_7f7f_7f7f) & HIGH) >> 7;
+            let v = u64::from_le_bytes(chunk.try_into().expect("eight cells"));
+            let sum = ((v & !HIGH) + ones) ^ (v & HIGH);
+            chunk.copy_from_slice(&sum.to_le_bytes());
+            rest >>= 8;
+            at += 8;
+        }
     }
 }
 
@@ -196,6 +254,12 @@ impl<T: Cell> CoverageSink for Grid<T> {
         if x0 <= x1 {
             self.row(ix(y))[ix(x0)..=ix(x1)].iter_mut().for_each(Cell::bump);
         }
+    }
+
+    /// Each bit added to its cell, branch-free ([`Cell::add_mask`]).
+    #[inline(always)]
+    fn cover_mask(&mut self, y: u32, x0: u32, mask: u32, _id: u32) {
+        T::add_mask(&mut self.row(ix(y))[ix(x0)..], mask);
     }
 }
 
@@ -529,14 +593,15 @@ impl Row {
     }
 }
 
+/// The median; NaN for a contender that was not timed (see [`timed`]).
 fn median(mut v: Vec<f64>) -> f64 {
     v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
+    v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
 }
 
 /// The untimed pass: each contender once into a `u32` grid (exact counts; the crate's
 /// models and the baselines compared pixel for pixel with `contenders[reference]`), then
-/// `REPS` round-robin timed runs into the `u8` grid (or the pixmap), each contender's first
+/// `reps()` round-robin timed runs (of the contenders [`timed`] keeps) into the `u8` grid (or the pixmap), each contender's first
 /// checked against its `u32` pass. Returns the rows and the notes for the table.
 fn measure(contenders: &[Contender], reference: usize, target: &Target) -> (Vec<Row>, Vec<String>) {
     let (w, h) = (target.width, target.height);
@@ -625,8 +690,8 @@ fn measure(contenders: &[Contender], reference: usize, target: &Target) -> (Vec<
 
     let mut grid = Grid::<u8>::new(w, h);
     let mut times: Vec<Vec<f64>> = vec![Vec::new(); contenders.len()];
-    for rep in 0..REPS {
-        for (k, c) in contenders.iter().enumerate() {
+    for rep in 0..reps() {
+        for (k, c) in contenders.iter().enumerate().filter(|(_, c)| timed(&c.name)) {
             if c.is_tiny_skia() {
                 pixmap.fill(Color::TRANSPARENT);
                 let start = Instant::now();
@@ -663,9 +728,9 @@ fn measure(contenders: &[Contender], reference: usize, target: &Target) -> (Vec<
 fn print_table(title: &str, rows: &[Row], notes: &[String]) {
     let best = rows
         .iter()
-        .filter(|r| r.kind != Kind::Crate)
-        .max_by(|a, b| a.mpix().total_cmp(&b.mpix()))
-        .expect("a peer or baseline");
+        .filter(|r| r.kind != Kind::Crate && !r.seconds.is_nan())
+        .max_by(|a, b| a.mpix().total_cmp(&b.mpix()));
+    let best_mpix = best.map_or(f64::NAN, Row::mpix);
     println!("\n{title}");
     println!(
         "{:<26} {:<9} {:>9} {:>9} {:>11} {:>11} {:>8}",
@@ -680,10 +745,12 @@ fn print_table(title: &str, rows: &[Row], notes: &[String]) {
             r.mpix(),
             r.total,
             r.union,
-            r.mpix() / best.mpix()
+            r.mpix() / best_mpix
         );
     }
-    println!("best peer or baseline: {} ({:.1} Mpix/s)", best.name, best.mpix());
+    if let Some(best) = best {
+        println!("best peer or baseline: {} ({:.1} Mpix/s)", best.name, best_mpix);
+    }
     for n in notes {
         println!("{n}");
     }
@@ -883,29 +950,40 @@ fn overflow_checks_on() -> bool {
 
 fn main() {
     println!(
-        "peer bench: single thread, round-robin, median of {REPS} reps, +1 per covered pixel in a u8 target, \
+        "peer bench: single thread, round-robin, median of {} reps, +1 per covered pixel in a u8 target, \
          cts preset; overflow checks {}",
+        reps(),
         if overflow_checks_on() { "ON" } else { "off" }
     );
-    triangle_workload(
-        "(a) 10k medium triangles (spread 24 px), 1024x1024",
-        1024,
-        &triangles(10_000, 1024, 24, 1),
-    );
-    triangle_workload(
-        "(b) 100k small triangles (spread 4 px), 1024x1024",
-        1024,
-        &triangles(100_000, 1024, 4, 2),
-    );
-    triangle_workload("(c) one triangle, half of 4096x4096", 4096, &half_canvas(4096));
-    line_workload(
-        "(d) 100k random lines, both ends on the 1024x1024 canvas",
-        1024,
-        &lines(100_000, 1024, true, 1),
-    );
-    line_workload(
-        "(e) 100k random lines as benches/lines.rs, ends anywhere (clipping)",
-        1024,
-        &lines(100_000, 1024, false, 1),
-    );
+    if wanted('a') {
+        triangle_workload(
+            "(a) 10k medium triangles (spread 24 px), 1024x1024",
+            1024,
+            &triangles(10_000, 1024, 24, 1),
+        );
+    }
+    if wanted('b') {
+        triangle_workload(
+            "(b) 100k small triangles (spread 4 px), 1024x1024",
+            1024,
+            &triangles(100_000, 1024, 4, 2),
+        );
+    }
+    if wanted('c') {
+        triangle_workload("(c) one triangle, half of 4096x4096", 4096, &half_canvas(4096));
+    }
+    if wanted('d') {
+        line_workload(
+            "(d) 100k random lines, both ends on the 1024x1024 canvas",
+            1024,
+            &lines(100_000, 1024, true, 1),
+        );
+    }
+    if wanted('e') {
+        line_workload(
+            "(e) 100k random lines as benches/lines.rs, ends anywhere (clipping)",
+            1024,
+            &lines(100_000, 1024, false, 1),
+        );
+    }
 }

@@ -30,6 +30,24 @@ pub trait CoverageSink {
             self.cover(x, y, id);
         }
     }
+
+    /// Pixel `x0 + i` of row `y` is covered by primitive `id` for every set bit `i` of
+    /// `mask` (none when it is 0; a set bit is always a pixel of the canvas). What the
+    /// block traversals write, one row of at most 32 pixels at a time: a sink that can
+    /// add a whole mask without a branch per pixel overrides it; by default each run of
+    /// set bits is one [`CoverageSink::cover_span`].
+    #[inline]
+    fn cover_mask(&mut self, y: u32, x0: u32, mask: u32, id: u32) {
+        let mut rest = mask;
+        while rest != 0 {
+            let first = rest.trailing_zeros();
+            // the run of set bits from `first`
+            let len = (!(rest >> first)).trailing_zeros();
+            self.cover_span(y, x0 + first, x0 + first + len - 1, id);
+            let end = first + len;
+            rest = if end >= u32::BITS { 0 } else { rest >> end << end };
+        }
+    }
 }
 
 /// The largest primitive id a [`Coverage`] takes: `u32::MAX - 2` (the two values above it
@@ -272,6 +290,25 @@ impl CoverageSink for CountBuffer {
             *c += 1;
         }
     }
+
+    /// Adds each bit of the mask to its pixel, without a branch per pixel (8 pixels at a
+    /// time while the row has them).
+    #[inline]
+    fn cover_mask(&mut self, y: u32, x0: u32, mask: u32, _id: u32) {
+        let row = y as usize * self.width as usize;
+        let cells = &mut self.counts[row + x0 as usize..row + self.width as usize];
+        let mut rest = mask;
+        for chunk in cells.chunks_mut(8) {
+            if rest == 0 {
+                break;
+            }
+            for c in chunk.iter_mut() {
+                *c += rest & 1;
+                rest >>= 1;
+            }
+        }
+        debug_assert_eq!(rest, 0, "a mask bit beyond the canvas");
+    }
 }
 
 #[cfg(test)]
@@ -299,6 +336,61 @@ mod tests {
             (0, 1, 2, 0)
         );
         assert_eq!(a.total(), 4);
+    }
+
+    /// A sink that records the spans it is given (the default `cover_mask`).
+    #[derive(Default)]
+    struct Spans(Vec<(u32, u32, u32)>);
+
+    impl CoverageSink for Spans {
+        fn cover(&mut self, x: u32, y: u32, _id: u32) {
+            self.0.push((y, x, x));
+        }
+        fn cover_span(&mut self, y: u32, x0: u32, x1: u32, _id: u32) {
+            self.0.push((y, x0, x1));
+        }
+    }
+
+    /// The default `cover_mask`: each run of set bits is one span, by hand.
+    #[test]
+    fn a_mask_is_its_runs_of_set_bits() {
+        let spans = |mask: u32| {
+            let mut s = Spans::default();
+            s.cover_mask(3, 10, mask, 0);
+            s.0
+        };
+        assert_eq!(spans(0), vec![]);
+        assert_eq!(spans(1), vec![(3, 10, 10)]);
+        // 0b1011_0110: bits 1-2, 4-5, 7
+        assert_eq!(spans(0b1011_0110), vec![(3, 11, 12), (3, 14, 15), (3, 17, 17)]);
+        assert_eq!(spans(0x8000_0000), vec![(3, 41, 41)]);
+        assert_eq!(spans(u32::MAX), vec![(3, 10, 41)]);
+        assert_eq!(spans(0xF000_000F), vec![(3, 10, 13), (3, 38, 41)]);
+    }
+
+    /// `CountBuffer::cover_mask` adds exactly the mask's bits, up to the row's last pixel
+    /// (masks ending there, and one in the middle of the row).
+    #[test]
+    fn count_buffer_masks_add_their_bits() {
+        for (x0, mask) in [
+            (0u32, 0b1u32),
+            (3, 0b1110_0111),
+            (30, 0b11),
+            (20, 0xFFF),
+            (0, u32::MAX),
+            (0, 0x8000_0001),
+        ] {
+            let mut a = CountBuffer::new(32, 2);
+            let mut b = CountBuffer::new(32, 2);
+            a.cover_mask(1, x0, mask, 0);
+            for i in 0..32 {
+                if mask >> i & 1 == 1 {
+                    b.cover(x0 + i, 1, 0);
+                }
+            }
+            assert_eq!(a.counts, b.counts, "mask {mask:#b} at {x0}");
+            assert_eq!(a.total(), u64::from(mask.count_ones()));
+        }
     }
 
     #[test]

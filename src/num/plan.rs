@@ -294,10 +294,46 @@ pub trait Lane: Clone + fmt::Debug {
     fn all_non_negative(v: &[Self; 3]) -> bool {
         v.iter().all(Lane::non_negative)
     }
+
+    /// The row ramp of a triangle's three edges: `ramp[k][i] = i * step[k]` for
+    /// `i <= last` (at most [`ROW`] - 1), zero beyond. Every entry is within the plan's
+    /// bound when `last` is at most the range's last column (the planned engines bound
+    /// `min(ROW - 1, width)` steps).
+    #[inline(always)]
+    fn ramp(step: &[Self; 3], last: u32) -> [[Self; ROW]; 3] {
+        let mut ramp: [[Self; ROW]; 3] = std::array::from_fn(|_| std::array::from_fn(|_| Self::zero_value()));
+        for (lanes, step) in ramp.iter_mut().zip(step) {
+            let mut at = Self::zero_value();
+            for lane in lanes.iter_mut().take(last as usize + 1).skip(1) {
+                at.add_to(step);
+                *lane = at.clone();
+            }
+        }
+        ramp
+    }
+
+    /// The inside samples of one row of at most [`ROW`] pixels as a bit mask: bit `i`
+    /// (`i <= last`) is set when all three `row[k] + ramp[k][i] >= 0`. `row` holds the
+    /// three edge values at the row's first sample, and every value at the row's samples
+    /// up to `last` is within the plan's bound. By one addition per pixel and edge here;
+    /// the machine integers test all [`ROW`] lanes at once, without a branch.
+    #[inline(always)]
+    fn row_mask(row: &[Self; 3], ramp: &[[Self; ROW]; 3], last: u32) -> u32 {
+        let mut mask = 0;
+        for i in 0..=last {
+            let at = usize::try_from(i).expect("a lane index");
+            let v: [Self; 3] = std::array::from_fn(|k| row[k].plus(&ramp[k][at]));
+            mask |= u32::from(Self::all_non_negative(&v)) << i;
+        }
+        mask
+    }
 }
 
+/// The pixels of one row mask ([`Lane::row_mask`]): the engines' block side.
+pub const ROW: usize = 8;
+
 macro_rules! int_lane {
-    ($t:ty, $w:expr) => {
+    ($t:ty, $w:expr $(, $simd:item)?) => {
         impl Lane for $t {
             const WIDTH: Width = $w;
             fn from_big(v: &BigInt) -> Self {
@@ -351,12 +387,47 @@ macro_rules! int_lane {
                 // the sign bit of the OR is set when any of them is negative
                 (v[0] | v[1] | v[2]) >= 0
             }
+            $($simd)*
         }
     };
 }
 
-int_lane!(i32, Width::I32);
-int_lane!(i64, Width::I64);
+/// [`Lane::row_mask`] in SIMD (the `wide` crate: SSE2 on every x86-64, AVX2 when the
+/// build enables it, scalar elsewhere): all [`ROW`] lanes added and tested at once,
+/// wrapping, since lanes past `last` may leave the bound and are masked off; the sign
+/// bits of `e0 | e1 | e2` are the lanes outside. Under debug assertions the lanes up to
+/// `last` are checked for overflow first, as every other lane operation is.
+macro_rules! simd_row_mask {
+    ($t:ty, $v:ident, $per:expr) => {
+        #[inline(always)]
+        fn row_mask(row: &[Self; 3], ramp: &[[Self; ROW]; 3], last: u32) -> u32 {
+            debug_assert!((last as usize) < ROW, "a row of at most ROW pixels");
+            if cfg!(debug_assertions) {
+                for (lanes, r) in ramp.iter().zip(row) {
+                    for step in lanes.iter().take(last as usize + 1) {
+                        r.checked_add(*step).expect("planned bound exceeded");
+                    }
+                }
+            }
+            let mut outside = 0u32;
+            for part in 0..ROW / $per {
+                let lane = |k: usize| {
+                    let steps: [$t; $per] = ramp[k][part * $per..][..$per]
+                        .try_into()
+                        .expect("a part of the ramp");
+                    wide::$v::splat(row[k]) + wide::$v::new(steps)
+                };
+                // move_mask: one bit per lane, its sign bit
+                let signs = (lane(0) | lane(1) | lane(2)).move_mask();
+                outside |= (signs as u32) << (part * $per);
+            }
+            !outside & ((2u32 << last) - 1)
+        }
+    };
+}
+
+int_lane!(i32, Width::I32, simd_row_mask!(i32, i32x8, 8););
+int_lane!(i64, Width::I64, simd_row_mask!(i64, i64x4, 4););
 int_lane!(i128, Width::I128);
 
 macro_rules! float_lane {

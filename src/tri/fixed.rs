@@ -1,16 +1,21 @@
 //! The incremental integer rasterizer on the snapped scene: one setup per triangle, then
 //! `E(x+1, y) = E + dY`, `E(x, y+1) = E - dX` (Pineda 1988), traversed in [`BLOCK`] x
-//! [`BLOCK`] blocks by the planned engine's traversal ([`crate::tri::planned`]) run in
-//! i64: per edge, the block corner where E is largest rejects the block when negative and
-//! the opposite corner accepts it when not (the block is filled as spans); only the rest
-//! is tested per pixel, one span per row. Block origins are stepped by addition. i64
-//! throughout; the envelope of [`crate::num::fixed`] guarantees no value can overflow
+//! [`BLOCK`] blocks by the planned engine's traversal ([`crate::tri::planned`]): per edge,
+//! the block corner where E is largest rejects the block when negative and the opposite
+//! corner accepts it when not (the block is filled as spans); only the rest is tested,
+//! a row of up to eight pixels at a time as one SIMD bit mask written whole
+//! ([`CoverageSink::cover_mask`]). Block origins are stepped by addition.
+//!
+//! Width, per triangle: i32 when a bound computed from the setup shows every value of
+//! the traversal fits (eight lanes per SIMD test; most triangles of a canvas-sized scene),
+//! else i64, where the envelope of [`crate::num::fixed`] guarantees no value can overflow
 //! (see there for the bound).
 
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::edge::fixed::{triangle_edges, FixedEdge};
 use crate::geom::FixedTriangle;
+use crate::num::plan::Lane;
 use crate::raster::{fixed_sample_range, FixedGrid, PixelRange};
 use crate::tri::planned::{traverse, Edges};
 
@@ -38,21 +43,107 @@ pub const BLOCK: u32 = 8;
 /// ```
 #[inline]
 pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target: &Target, sink: &mut S) {
-    let Some(Setup { edges, grid, range }) = setup(tri, target) else {
-        return;
+    if let Some((lanes, range)) = edges_at_first_sample(tri, target) {
+        // The planned engine's block traversal: in i32 when this triangle's values fit
+        // (eight pixels per SIMD row test instead of four), else in i64, where every value
+        // it reaches is an edge value at a sample of the range or a multiple of a step by
+        // at most BLOCK, all far below 2^62 inside the envelope.
+        match narrowed(&lanes, &range) {
+            Some(narrow) => traverse(&narrow, &range, id, sink),
+            None => traverse(&lanes, &range, id, sink),
+        }
+    }
+}
+
+/// The lanes in i32 when every value the traversal of `range` can reach fits i32, a plan
+/// made per triangle like the planned engine's width (most triangles of a scene on a
+/// canvas-sized grid are small enough: at 8 subpixel bits, up to about 90 px on a side).
+///
+/// The bound: the traversal holds `E - bias` at samples of the range, each at most
+/// `|origin| + |step_x| w + |step_y| h` (E is linear), and sums of at most `BLOCK` steps
+/// on each axis (block steps, corner steps, the row ramp), so
+/// `|origin| + |step_x| max(w, BLOCK) + |step_y| max(h, BLOCK)` bounds them all (edge by
+/// edge; `w`, `h` the range's last column and row). In i64 it is below
+/// `3.1 * 2^60 + 2 * 2^46 * 2^14 < 2^63` inside the envelope, so computing it cannot
+/// overflow either.
+#[inline(always)]
+fn narrowed(lanes: &Edges<i64>, range: &PixelRange) -> Option<Edges<i32>> {
+    if traversal_bound(lanes, range) > i64::from(i32::MAX) {
+        return None;
+    }
+    // Each value is within the bound just checked, so each conversion is exact.
+    #[allow(clippy::cast_possible_truncation)]
+    let narrow = |v: &[i64; 3]| v.map(|v| v as i32);
+    Some(Edges {
+        origin: narrow(&lanes.origin),
+        step_x: narrow(&lanes.step_x),
+        step_y: narrow(&lanes.step_y),
+    })
+}
+
+/// The bound of [`narrowed`]: at least the magnitude of every value the traversal of
+/// `range` reaches from `lanes`.
+#[inline(always)]
+fn traversal_bound(lanes: &Edges<i64>, range: &PixelRange) -> i64 {
+    let w = i64::from((range.x1 - range.x0).max(BLOCK));
+    let h = i64::from((range.y1 - range.y0).max(BLOCK));
+    // Lane arithmetic: checked under debug assertions, wrapping otherwise (the bound's
+    // own bound, below 2^63, is the proof that nothing wraps).
+    #[inline(always)]
+    fn edge(origin: i64, step_x: i64, step_y: i64, w: i64, h: i64) -> i64 {
+        origin.abs().plus(&step_x.abs().times(&w)).plus(&step_y.abs().times(&h))
+    }
+    let [o, sx, sy] = [lanes.origin, lanes.step_x, lanes.step_y];
+    edge(o[0], sx[0], sy[0], w, h)
+        .max(edge(o[1], sx[1], sy[1], w, h))
+        .max(edge(o[2], sx[2], sy[2], w, h))
+}
+
+/// The setup of [`rasterize`], in one pass over the vertices and inlined into it: the
+/// oriented edges' values `E - bias` at the first sample of the pixel range, their steps
+/// one pixel right (`dY * 2^S`) and down (`-dX * 2^S`), and the range; `None` when the
+/// triangle covers nothing (zero area, or off the canvas). The same values as
+/// [`triangle_edges`] and [`fixed_sample_range`] give (`setup` below, which `scanline`
+/// uses), computed with shifts by `S` instead of divisions.
+///
+/// # Panics
+/// When `tri` was snapped to another grid than `target`'s subpixel bits.
+#[inline(always)]
+fn edges_at_first_sample(tri: &FixedTriangle, target: &Target) -> Option<(Edges<i64>, PixelRange)> {
+    let conv = &target.convention;
+    assert_eq!(
+        tri.bits, conv.subpixel_bits,
+        "triangle snapped to another grid than the target's"
+    );
+    let [a, b, c] = tri.coords();
+    // Oriented so that the interior is E > 0: twice the area is E_ab(c).
+    let area2 = (c[0] - a[0]) * (b[1] - a[1]) - (c[1] - a[1]) * (b[0] - a[0]);
+    let (b, c) = match area2.cmp(&0) {
+        std::cmp::Ordering::Equal => return None,
+        std::cmp::Ordering::Greater => (b, c),
+        std::cmp::Ordering::Less => (c, b),
     };
-    // One pixel right adds dY (in pixel units: dY * 2^S); one pixel down subtracts dX.
-    let shift = grid.one.trailing_zeros();
+    let grid = FixedGrid::of(conv);
+    let lo = |k: usize| grid.first_at_or_after(a[k].min(b[k]).min(c[k]));
+    let hi = |k: usize| grid.last_at_or_before(a[k].max(b[k]).max(c[k]));
+    let range = PixelRange::clamped([lo(0), lo(1)], [hi(0), hi(1)], target.width, target.height)?;
     let first = grid.sample_point(range.x0, range.y0);
-    let lanes = Edges {
-        origin: edges.map(|e: FixedEdge| e.biased_value(first)),
-        step_x: edges.map(|e| e.dy << shift),
-        step_y: edges.map(|e| -(e.dx << shift)),
+    let shift = conv.subpixel_bits;
+    let rule = conv.tie_rule;
+    let mut lanes = Edges {
+        origin: [0; 3],
+        step_x: [0; 3],
+        step_y: [0; 3],
     };
-    // The planned engine's block traversal, in i64: every value it reaches is an edge
-    // value at a sample of the range or a multiple of a step by at most BLOCK, all far
-    // below 2^62 inside the envelope.
-    traverse(&lanes, &range, id, sink);
+    for (k, (from, to)) in [(a, b), (b, c), (c, a)].into_iter().enumerate() {
+        let (dx, dy) = (to[0] - from[0], to[1] - from[1]);
+        let bias = i64::from(!rule.is_inclusive(dx.cmp(&0), dy.cmp(&0)));
+        lanes.origin[k] = (first[0] - from[0]) * dy - (first[1] - from[1]) * dx - bias;
+        // One pixel right adds dY (in pixel units: dY * 2^S); one pixel down subtracts dX.
+        lanes.step_x[k] = dy << shift;
+        lanes.step_y[k] = -(dx << shift);
+    }
+    Some((lanes, range))
 }
 
 /// The per-triangle setup shared by the integer rasterizers.
@@ -84,4 +175,117 @@ pub(crate) fn setup(tri: &FixedTriangle, target: &Target) -> Option<Setup> {
         grid: FixedGrid::of(conv),
         range,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use num_bigint::BigInt;
+
+    use super::*;
+    use crate::convention::{Convention, Preset};
+    use crate::coverage::Coverage;
+    use crate::geom::{Point, Triangle};
+    use crate::tri::planned::bound_of;
+
+    /// The exact largest magnitude the traversal reaches from these lanes (the planned
+    /// engine's bound, proven against a recording lane in `tri::planned`'s tests).
+    fn exact_bound(lanes: &Edges<i64>, range: &PixelRange) -> BigInt {
+        let big = |v: &[i64; 3]| v.map(BigInt::from);
+        let e = Edges {
+            origin: big(&lanes.origin),
+            step_x: big(&lanes.step_x),
+            step_y: big(&lanes.step_y),
+        };
+        bound_of(&e, range).value
+    }
+
+    fn fixed_of(t: &Triangle, target: &Target) -> FixedTriangle {
+        t.snapped(&target.convention).to_fixed().expect("inside the envelope")
+    }
+
+    fn equal_to_oracle(t: &Triangle, target: &Target) {
+        let (mut a, mut b) = (
+            Coverage::new(target.width, target.height),
+            Coverage::new(target.width, target.height),
+        );
+        rasterize(&fixed_of(t, target), 0, target, &mut a);
+        crate::tri::exact::rasterize(&fixed_of(t, target).to_exact(), 0, target, &mut b);
+        assert_eq!(a, b, "{t:?}");
+    }
+
+    /// Triangles from one pixel to a few hundred, at 8 and 16 subpixel bits: the bound
+    /// that picks i32 is never below the exact largest value of the traversal, so a
+    /// triangle traversed in i32 never holds a value i32 cannot.
+    #[test]
+    fn the_i32_plan_bounds_every_value_the_traversal_reaches() {
+        // splitmix64, seeded: the coordinates only need to be spread
+        let mut state = 7u64;
+        let mut next = move || {
+            state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+            let z = (state ^ (state >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+            let z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+            z ^ (z >> 31)
+        };
+        let (mut narrow, mut wide) = (0, 0);
+        for bits in [8, 16] {
+            let conv = Convention {
+                subpixel_bits: bits,
+                ..Preset::Cts.convention()
+            };
+            let target = Target::new(512, 512, conv).unwrap();
+            for k in 0..600u64 {
+                let side = 1 + (k % 60) * (k % 7 + 1);
+                let mut p = || {
+                    let c = |r: u64| i64::try_from(r % (side * 97)).unwrap() - 20;
+                    Point::from_fractions(c(next()) + 100 * 97, 97, c(next()) + 100 * 97, 97)
+                };
+                let t = Triangle::new(p(), p(), p());
+                let Some((lanes, range)) = edges_at_first_sample(&fixed_of(&t, &target), &target) else {
+                    continue;
+                };
+                let ours = traversal_bound(&lanes, &range);
+                assert!(BigInt::from(ours) >= exact_bound(&lanes, &range), "{t:?}");
+                if narrowed(&lanes, &range).is_some() {
+                    narrow += 1;
+                } else {
+                    wide += 1;
+                }
+            }
+        }
+        // both plans were exercised
+        assert!(narrow > 100 && wide > 100, "{narrow} in i32, {wide} in i64");
+    }
+
+    /// At the i32 plan's edge: the right triangle (0,0) (n,0) (0,n) subpixels, grown one
+    /// subpixel at a time; the last n whose bound fits i32 is traversed in i32 and the
+    /// next in i64, and both equal the oracle. By hand: for n ~ 128 px the bound is about
+    /// `2 * 2^8 * n_px * n` ~ 2^31.
+    #[test]
+    fn both_sides_of_the_i32_plan_equal_the_oracle() {
+        let target = Target::new(160, 160, Preset::Cts.convention()).unwrap();
+        let tri = |n: i64| {
+            Triangle::new(
+                Point::from_ints(0, 0),
+                Point::from_fractions(n, 256, 0, 1),
+                Point::from_fractions(0, 1, n, 256),
+            )
+        };
+        let fits = |n: i64| {
+            let (lanes, range) = edges_at_first_sample(&fixed_of(&tri(n), &target), &target).unwrap();
+            narrowed(&lanes, &range).is_some()
+        };
+        let (mut lo, mut hi) = (256, 160 * 256);
+        assert!(fits(lo) && !fits(hi));
+        while hi - lo > 1 {
+            let mid = (lo + hi) / 2;
+            if fits(mid) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        assert!((100 * 256..140 * 256).contains(&lo), "the edge at {lo} subpixels");
+        equal_to_oracle(&tri(lo), &target);
+        equal_to_oracle(&tri(hi), &target);
+    }
 }

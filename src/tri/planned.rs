@@ -33,10 +33,13 @@ use num_traits::{Signed, Zero};
 use crate::convention::{AnyTieRule, Target};
 use crate::coverage::CoverageSink;
 use crate::geom::Triangle;
-use crate::num::plan::{scale_of, scaled, Bound, Lane, Plan, Width};
+use crate::num::plan::{scale_of, scaled, Bound, Lane, Plan, Width, ROW};
 use crate::raster::{exact_sample_range, PixelRange};
 
 use super::fixed::BLOCK;
+
+// A block's row is one row mask.
+const _: () = assert!(BLOCK as usize == ROW);
 
 /// Per edge: `E - bias` at the range's first sample and the two steps (shared with
 /// [`crate::tri::fixed`], which runs the same traversal in i64).
@@ -145,7 +148,7 @@ fn setup(tri: &Triangle, target: &Target, rule: AnyTieRule) -> Option<Setup> {
 
 /// The largest magnitude the traversal reaches (see the module docs): `E - bias` at the
 /// range's corners, and the step multiples it adds.
-fn bound_of(edges: &Edges<BigInt>, range: &PixelRange) -> Bound {
+pub(crate) fn bound_of(edges: &Edges<BigInt>, range: &PixelRange) -> Bound {
     let (w, h) = (range.x1 - range.x0, range.y1 - range.y0);
     let mut best = Bound {
         value: BigInt::zero(),
@@ -164,12 +167,13 @@ fn bound_of(edges: &Edges<BigInt>, range: &PixelRange) -> Bound {
             let e = &edges.origin[k] + &edges.step_x[k] * u + &edges.step_y[k] * v;
             consider(e, &|| format!("edge {k} at pixel ({}, {})", range.x0 + u, range.y0 + v));
         }
-        // A range within one block is filled row by row with single steps; a larger one
-        // steps by up to BLOCK columns or rows and to each block's extreme corners (see
-        // `traverse`).
+        // A range within one block is filled row by row: one step down per row, the row
+        // ramp's up to BLOCK - 1 steps across (`Lane::ramp`); a larger one also steps by
+        // up to BLOCK columns or rows and to each block's extreme corners (see `traverse`).
         let one_block = w < BLOCK && h < BLOCK;
+        let ramp = w.min(BLOCK - 1);
         let (kx, ky) = if one_block {
-            (w.min(1), h.min(1))
+            (ramp, h.min(1))
         } else {
             (w.min(BLOCK), h.min(BLOCK))
         };
@@ -337,10 +341,12 @@ fn add3_to<T: Lane>(a: &mut [T; 3], b: &[T; 3]) {
 pub(crate) fn traverse<T: Lane, S: CoverageSink + ?Sized>(e: &Edges<T>, range: &PixelRange, id: u32, sink: &mut S) {
     let (width, height) = (range.x1 - range.x0, range.y1 - range.y0);
     let last = BLOCK - 1;
+    // `i * step_x` for the columns of a block's row (or of the range, when narrower).
+    let ramp = T::ramp(&e.step_x, last.min(width));
     if width < BLOCK && height < BLOCK {
         // One block: its corners are the range's, where the triangle's bounding box
         // leaves rarely anything to reject; go straight to the rows.
-        fill_rows(e, &e.origin, [range.x0, range.y0], [width, height], id, sink);
+        fill_rows(e, &ramp, &e.origin, [range.x0, range.y0], [width, height], id, sink);
         return;
     }
     // Steps to the next block (used only when there is one) and to a block's far corners,
@@ -366,7 +372,7 @@ pub(crate) fn traverse<T: Lane, S: CoverageSink + ?Sized>(e: &Edges<T>, range: &
         loop {
             let w = last.min(width - bx);
             let c = &rows[usize::from(w != last)];
-            visit_block(e, &block, c, [range.x0 + bx, range.y0 + by], [w, h], id, sink);
+            visit_block(e, &ramp, &block, c, [range.x0 + bx, range.y0 + by], [w, h], id, sink);
             if width - bx < BLOCK {
                 break;
             }
@@ -385,8 +391,10 @@ pub(crate) fn traverse<T: Lane, S: CoverageSink + ?Sized>(e: &Edges<T>, range: &
 /// last column and row, relative). Per edge, only two corners are evaluated: the largest
 /// (all outside when it is negative) and the smallest (all inside when it is not).
 #[inline(always)]
+#[allow(clippy::too_many_arguments)] // the block's state, passed by reference to an inlined body
 fn visit_block<T: Lane, S: CoverageSink + ?Sized>(
     e: &Edges<T>,
+    ramp: &[[T; ROW]; 3],
     origin: &[T; 3],
     c: &CornerSteps<T>,
     at: [u32; 2],
@@ -407,14 +415,16 @@ fn visit_block<T: Lane, S: CoverageSink + ?Sized>(
         }
         return;
     }
-    fill_rows(e, origin, at, size, id, sink);
+    fill_rows(e, ramp, origin, at, size, id, sink);
 }
 
 /// The samples of a `[w, h]` rectangle of pixels from `at`, `origin` holding `E - bias` at
-/// its first: a triangle meets a row in one interval, so each row is one span.
+/// its first, `ramp` the steps across a row: each row's inside samples are one mask
+/// ([`Lane::row_mask`]), written whole ([`CoverageSink::cover_mask`]).
 #[inline(always)]
 fn fill_rows<T: Lane, S: CoverageSink + ?Sized>(
     e: &Edges<T>,
+    ramp: &[[T; ROW]; 3],
     origin: &[T; 3],
     at: [u32; 2],
     size: [u32; 2],
@@ -425,24 +435,14 @@ fn fill_rows<T: Lane, S: CoverageSink + ?Sized>(
     let [w, h] = size;
     debug_assert!(w < BLOCK, "rows are at most a block wide");
     let mut row = origin.clone();
-    for dy in 0..=h {
-        // The row's inside samples as a bit mask, without a branch per pixel; they form
-        // one interval, so the mask's lowest and highest bits are the span's ends.
-        let mut v = row.clone();
-        let mut mask = 0u32;
-        for dx in 0..=w {
-            mask |= u32::from(T::all_non_negative(&v)) << dx;
-            if dx < w {
-                add3_to(&mut v, &e.step_x);
-            }
+    let mut y = y0;
+    loop {
+        sink.cover_mask(y, x0, T::row_mask(&row, ramp, w), id);
+        if y == y0 + h {
+            break;
         }
-        if mask != 0 {
-            let (first, last) = (mask.trailing_zeros(), 31 - mask.leading_zeros());
-            sink.cover_span(y0 + dy, x0 + first, x0 + last, id);
-        }
-        if dy < h {
-            add3_to(&mut row, &e.step_y);
-        }
+        y += 1;
+        add3_to(&mut row, &e.step_y);
     }
 }
 
