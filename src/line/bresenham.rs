@@ -49,9 +49,23 @@ pub fn pixels(from: [i64; 2], to: [i64; 2], tie: BresenhamTie) -> Vec<[i64; 2]> 
     out
 }
 
-/// Draws the line into `sink` (pixels off the canvas are skipped): [`walk`]'s pixels, in
-/// one loop with the tie folded into a threshold (`Stay` steps the minor axis when
-/// `d >= 1`, `Step` when `d >= 0`) and the canvas test on unsigned coordinates.
+/// Draws the line into `sink` (pixels off the canvas are skipped): [`walk`]'s pixels,
+/// with the walk clipped to the canvas first and then run without a test per pixel.
+///
+/// The clip is exact, from a closed form of the walk. In first-octant names (`dx` the
+/// major length, `dy` the minor one, `t` the tie threshold: `Stay` steps the minor axis
+/// when `d >= 1`, `Step` when `d >= 0`), the error `e_k = d_k - t` starts at
+/// `2dy - dx - t` and stays in `[2dy - 2dx, 2dy)` (a step from below 0 adds `2dy`, one from
+/// at least 0 adds `2dy - 2dx`; `0 <= dy <= dx` and `dx >= 1 >= t` keep it there), so
+/// after `k` major steps the walk has made
+///
+/// `m_k = floor((2 k dy + dx - t) / (2 dx))`
+///
+/// minor steps, with `d_k = 2dy - dx + 2 k dy - 2 m_k dx`. Both coordinates move
+/// monotonically with `k`, so the steps on the canvas are one range `k0..=k1`: the major
+/// axis bounds it directly and the minor axis through the inverse of `m_k`. The walk
+/// starts at `k0` from the closed form. Inside ±[`super::MAX_BRESENHAM_COORD`] every
+/// product is below `2^53`.
 #[inline]
 pub fn draw<S: CoverageSink + ?Sized>(
     from: [i64; 2],
@@ -62,32 +76,183 @@ pub fn draw<S: CoverageSink + ?Sized>(
     sink: &mut S,
 ) {
     let axes = Axes::of(from, to);
-    let (mut major, mut minor) = axes.split(from);
-    let threshold = match tie {
+    let Some(Clipped {
+        k0,
+        k1,
+        major,
+        minor,
+        d,
+    }) = clip(&axes, from, tie, target)
+    else {
+        return;
+    };
+    let walk = Walk {
+        k0,
+        k1,
+        major: on_canvas(major),
+        minor: on_canvas(minor),
+        d,
+        major_step: unit(axes.major_sign),
+        minor_step: unit(axes.minor_sign),
+        threshold: threshold(tie),
+        diagonal: 2 * (axes.minor_len - axes.major_len),
+        straight: 2 * axes.minor_len,
+    };
+    if axes.x_major {
+        walk.run::<S, true>(id, sink);
+    } else {
+        walk.run::<S, false>(id, sink);
+    }
+}
+
+/// A clipped walk, ready to run on the canvas.
+struct Walk {
+    k0: i64,
+    k1: i64,
+    major: u32,
+    minor: u32,
+    d: i64,
+    /// +1 or -1 as a wrapping u32 step.
+    major_step: u32,
+    minor_step: u32,
+    threshold: i64,
+    diagonal: i64,
+    straight: i64,
+}
+
+impl Walk {
+    /// Covers the pixels of steps `k0..=k1`, every one on the canvas (no test per pixel).
+    #[inline(always)]
+    fn run<S: CoverageSink + ?Sized, const X_MAJOR: bool>(self, id: u32, sink: &mut S) {
+        let (mut major, mut minor, mut d) = (self.major, self.minor, self.d);
+        let cover = |sink: &mut S, major: u32, minor: u32| {
+            if X_MAJOR {
+                sink.cover(major, minor, id);
+            } else {
+                sink.cover(minor, major, id);
+            }
+        };
+        for _ in self.k0..self.k1 {
+            cover(sink, major, minor);
+            if d >= self.threshold {
+                minor = minor.wrapping_add(self.minor_step);
+                d += self.diagonal;
+            } else {
+                d += self.straight;
+            }
+            major = major.wrapping_add(self.major_step);
+        }
+        cover(sink, major, minor);
+    }
+}
+
+/// The tie as a threshold on the decision value: the minor axis steps when `d >= t`.
+fn threshold(tie: BresenhamTie) -> i64 {
+    match tie {
         BresenhamTie::Stay => 1,
         BresenhamTie::Step => 0,
-    };
-    let (diagonal, straight) = (2 * (axes.minor_len - axes.major_len), 2 * axes.minor_len);
-    let mut d = 2 * axes.minor_len - axes.major_len;
-    let (width, height) = (u64::from(target.width), u64::from(target.height));
-    for k in 0..=axes.major_len {
-        let [x, y] = axes.join(major, minor);
-        // a negative coordinate wraps to a huge u64: one comparison per axis
-        #[allow(clippy::cast_sign_loss, clippy::cast_possible_truncation)]
-        if (x as u64) < width && (y as u64) < height {
-            sink.cover(x as u32, y as u32, id);
-        }
-        if k == axes.major_len {
-            break;
-        }
-        if d >= threshold {
-            minor += axes.minor_sign;
-            d += diagonal;
-        } else {
-            d += straight;
-        }
-        major += axes.major_sign;
     }
+}
+
+/// A coordinate the clip put on the canvas.
+fn on_canvas(v: i64) -> u32 {
+    u32::try_from(v).expect("clipped to the canvas")
+}
+
+/// A sign (-1, 0 or 1) as a wrapping u32 step.
+fn unit(sign: i64) -> u32 {
+    match sign {
+        1 => 1,
+        -1 => u32::MAX,
+        _ => 0,
+    }
+}
+
+/// The steps of a walk on the canvas and the walk's state at the first.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Clipped {
+    /// First step on the canvas.
+    k0: i64,
+    /// Last step on the canvas.
+    k1: i64,
+    /// Major coordinate at `k0`.
+    major: i64,
+    /// Minor coordinate at `k0`.
+    minor: i64,
+    /// Decision value at `k0`.
+    d: i64,
+}
+
+/// The range of `k` in `0..=n` for which `start + sign * f(k)` lies in `0..extent`, for a
+/// nondecreasing `f` given through its inverse: `first(v)` is the smallest `k` with
+/// `f(k) >= v` and `last(v)` the largest with `f(k) <= v` (both may leave `0..=n`).
+fn range_on(
+    start: i64,
+    sign: i64,
+    extent: i64,
+    n: i64,
+    first: impl Fn(i64) -> i64,
+    last: impl Fn(i64) -> i64,
+) -> Option<(i64, i64)> {
+    // The values of f that land on the canvas: lo..=hi.
+    let (lo, hi) = match sign {
+        1 => (-start, extent - 1 - start),
+        -1 => (start - (extent - 1), start),
+        _ => {
+            return (0..extent).contains(&start).then_some((0, n));
+        }
+    };
+    let (k0, k1) = (first(lo).max(0), last(hi).min(n));
+    (k0 <= k1).then_some((k0, k1))
+}
+
+/// Clips the walk of `axes` from `from` to the canvas: `None` when no pixel is on it.
+fn clip(axes: &Axes, from: [i64; 2], tie: BresenhamTie, target: &Target) -> Option<Clipped> {
+    let t = threshold(tie);
+    let (major0, minor0) = axes.split(from);
+    let (width, height) = (i64::from(target.width), i64::from(target.height));
+    let (major_extent, minor_extent) = if axes.x_major { (width, height) } else { (height, width) };
+    let (n, dx, dy) = (axes.major_len, axes.major_len, axes.minor_len);
+    if n == 0 {
+        // One pixel.
+        let on = (0..major_extent).contains(&major0) && (0..minor_extent).contains(&minor0);
+        return on.then_some(Clipped {
+            k0: 0,
+            k1: 0,
+            major: major0,
+            minor: minor0,
+            d: 0,
+        });
+    }
+    // Major: f(k) = k.
+    let (a0, a1) = range_on(major0, axes.major_sign, major_extent, n, |v| v, |v| v)?;
+    // Minor: f(k) = m_k. m_k >= v <=> 2 k dy >= 2 v dx - dx + t; m_k <= v <=> 2 k dy <= (2 v + 1) dx + t - 1.
+    // With dy = 0, m_k = 0 for every k (and `range_on` takes the sign-0 branch).
+    let (b0, b1) = range_on(
+        minor0,
+        axes.minor_sign,
+        minor_extent,
+        n,
+        |v| ceil_div(2 * v * dx - dx + t, 2 * dy),
+        |v| (2 * v * dx + dx + t - 1).div_euclid(2 * dy),
+    )?;
+    let (k0, k1) = (a0.max(b0), a1.min(b1));
+    if k0 > k1 {
+        return None;
+    }
+    let m = (2 * k0 * dy + dx - t).div_euclid(2 * dx);
+    Some(Clipped {
+        k0,
+        k1,
+        major: major0 + axes.major_sign * k0,
+        minor: minor0 + axes.minor_sign * m,
+        d: 2 * dy - dx + 2 * k0 * dy - 2 * m * dx,
+    })
+}
+
+/// `ceil(a / b)` for `b > 0`.
+fn ceil_div(a: i64, b: i64) -> i64 {
+    -(-a).div_euclid(b)
 }
 
 #[cfg(test)]
@@ -118,6 +283,59 @@ mod tests {
                     }
                     assert_eq!(drawn, walked, "{a:?} -> {b:?} {tie:?}");
                 }
+            }
+        }
+    }
+
+    /// `walk`'s pixels on the canvas, drawn with `cover_if_on_canvas` (a test per pixel).
+    fn walked(a: [i64; 2], b: [i64; 2], tie: BresenhamTie, target: &Target) -> Coverage {
+        let mut walked = Coverage::new(target.width, target.height);
+        walk(a, b, tie, |p, _| {
+            super::super::cover_if_on_canvas(p, 0, target, &mut walked)
+        });
+        walked
+    }
+
+    /// The clip, exhaustively: every pair of endpoints within three pixels of a 5x4 canvas
+    /// (every octant, every entry and exit edge and corner, lines that miss, points), both ties.
+    #[test]
+    fn the_clip_is_exact_around_a_small_canvas() {
+        let target = Target::new(5, 4, Convention::default()).unwrap();
+        let ends: Vec<[i64; 2]> = (-3..8).flat_map(|x| (-3..7).map(move |y| [x, y])).collect();
+        for &a in &ends {
+            for &b in &ends {
+                for tie in [BresenhamTie::Stay, BresenhamTie::Step] {
+                    let mut drawn = Coverage::new(5, 4);
+                    draw(a, b, tie, 0, &target, &mut drawn);
+                    assert_eq!(drawn, walked(a, b, tie, &target), "{a:?} -> {b:?} {tie:?}");
+                }
+            }
+        }
+    }
+
+    /// The clip at the envelope: lines from corner to corner of the +-2^24 square and
+    /// steep and shallow ones through a 64x48 canvas, whose start is 2^24 steps away.
+    #[test]
+    fn the_clip_is_exact_at_the_envelope() {
+        let m = super::super::MAX_BRESENHAM_COORD;
+        let target = Target::new(64, 48, Convention::default()).unwrap();
+        let lines = [
+            ([-m, -m], [m, m]),
+            ([m, m], [-m, -m]),
+            ([-m, m], [m, -m]),
+            ([-m, -m + 7], [m, m - 3]),
+            ([-m, 20], [m, 29]),
+            ([m, 45], [-m, 2]),
+            ([30, -m], [33, m]),
+            ([-m, -m / 3], [m, m / 3 + 11]),
+        ];
+        for (a, b) in lines {
+            for tie in [BresenhamTie::Stay, BresenhamTie::Step] {
+                let mut drawn = Coverage::new(64, 48);
+                draw(a, b, tie, 0, &target, &mut drawn);
+                let walked = walked(a, b, tie, &target);
+                assert!(walked.covered_pixels() > 0, "{a:?} -> {b:?} crosses the canvas");
+                assert_eq!(drawn, walked, "{a:?} -> {b:?} {tie:?}");
             }
         }
     }

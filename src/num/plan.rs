@@ -399,6 +399,33 @@ macro_rules! int_lane {
 /// `last` are checked for overflow first, as every other lane operation is.
 macro_rules! simd_row_mask {
     ($t:ty, $v:ident, $per:expr) => {
+        /// As the default, by one multiply per lane and a select (no loop-carried add):
+        /// `i * step` wraps only for lanes past `last`, which are zeroed.
+        #[inline(always)]
+        fn ramp(step: &[Self; 3], last: u32) -> [[Self; ROW]; 3] {
+            if cfg!(debug_assertions) {
+                for &step in step {
+                    for i in 0..=last {
+                        #[allow(clippy::cast_possible_truncation, clippy::cast_possible_wrap)]
+                        step.checked_mul(i as $t).expect("planned bound exceeded");
+                    }
+                }
+            }
+            // `ROW` is 8: every lane index is exact in the lane type
+            #[allow(clippy::cast_possible_truncation, clippy::cast_possible_wrap)]
+            let index: [$t; ROW] = std::array::from_fn(|i| i as $t);
+            let keep: [$t; ROW] = std::array::from_fn(|i| if i <= last as usize { -1 } else { 0 });
+            let mut ramp = [[0; ROW]; 3];
+            for (lanes, &step) in ramp.iter_mut().zip(step) {
+                for part in 0..ROW / $per {
+                    let at = |v: &[$t; ROW]| wide::$v::new(v[part * $per..][..$per].try_into().expect("a part"));
+                    let v = (wide::$v::splat(step) * at(&index)) & at(&keep);
+                    lanes[part * $per..][..$per].copy_from_slice(&v.to_array());
+                }
+            }
+            ramp
+        }
+
         #[inline(always)]
         fn row_mask(row: &[Self; 3], ramp: &[[Self; ROW]; 3], last: u32) -> u32 {
             debug_assert!((last as usize) < ROW, "a row of at most ROW pixels");

@@ -7,29 +7,44 @@
 //! equal `exact-snapped` pixel for pixel: the property tests are its proof (Luebke's
 //! University of Virginia lecture slides call this algorithm "lots of finicky special cases").
 //!
-//! Arithmetic in i128: the numerators reach `|N| < 2^63` inside the envelope
-//! (`|a| <= 2^29`, `|dx|, |dy| <= 2^30`, samples below 2^30 subpixels) and the divisors
-//! `2^S |dy| <= 2^46`.
+//! Arithmetic: each bound's DDA in i64 ([`CeilDda64`]), set up in i128. Every value a
+//! walk passes through is an edge value `E - bias` at a point `(c, sy)` (`c` the column-0
+//! sample offset, `sy` a row's sample, one row past the last included) less at most
+//! `2^S |dy| <= 2^46`: inside the envelope of [`crate::num::fixed`] (`|a| <= 2^29`,
+//! `|dx|, |dy| <= 2^30`, samples below `(16384 + 1) 2^16`) that is below `3.1 * 2^60`,
+//! within [`CeilDda64`]'s `2^62`. The setup checks it anyway (a failed check is a wrong
+//! proof, and panics). A horizontal edge does not walk: it admits the rows on its inner
+//! side, which narrows the rows walked.
 
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::edge::fixed::FixedEdge;
 use crate::geom::FixedTriangle;
-use crate::num::dda::CeilDda;
+use crate::num::dda::CeilDda64;
+use crate::raster::FixedGrid;
 use crate::tri::fixed::{setup, Setup};
+
+/// The magnitude every value of a walk stays below: [`CeilDda64`]'s envelope.
+const WALK_LIMIT: i128 = 1 << 62;
 
 /// One edge's bound on the pixel index `i`, walked down the rows: `ceil(value / d)` (a
 /// left edge: `i >= bound`) or `floor(value / d)` (a right edge: `i <= bound`), both as
-/// a [`CeilDda`] (a floor is the ceil of `value - (d - 1)`).
+/// a [`CeilDda64`] (a floor is the ceil of `value - (d - 1)`).
 #[derive(Debug, Clone, Copy)]
 struct Walker {
     left: bool,
-    bound: CeilDda,
+    bound: CeilDda64,
 }
 
 impl Walker {
-    /// The bound from edge `e` for the row whose sample is at `sy` subpixels.
-    fn new(e: &FixedEdge, sy: i128, one: i128, c: i128) -> Walker {
+    /// The bound from edge `e` from the row whose sample is at `sy` subpixels, for `rows`
+    /// rows.
+    ///
+    /// # Panics
+    /// When a value of the walk reaches `2^62` (impossible inside the envelope: see the
+    /// module docs).
+    fn new(e: &FixedEdge, sy: i128, rows: i128, grid: &FixedGrid) -> Walker {
+        let (one, c) = (i128::from(grid.one), i128::from(grid.centre));
         let (ax, ay, dx, dy) = (
             i128::from(e.a[0]),
             i128::from(e.a[1]),
@@ -39,17 +54,40 @@ impl Walker {
         // Inside: (px - ax) dy - (sy - ay) dx - bias >= 0  <=>  px dy >= n, with px = i one + c:
         // i (one dy) >= n - c dy.
         let n = i128::from(e.bias) + ax * dy + (sy - ay) * dx - c * dy;
-        let left = dy > 0;
-        // left: i >= ceil(n / (one dy)); right (dy < 0): i <= floor(-n / (one |dy|)).
+        // left (dy > 0): i >= ceil(n / (one dy)); right (dy < 0): i <= floor(-n / (one |dy|)).
         // Per row, sy grows by one, so n grows by one dx.
-        let bound = if left {
-            CeilDda::new(n, one * dx, one * dy)
+        let left = dy > 0;
+        let (value, inc, d) = if left {
+            (n, one * dx, one * dy)
         } else {
             let d = -one * dy;
-            CeilDda::new(-n - (d - 1), -one * dx, d)
+            (-n - (d - 1), -one * dx, d)
         };
-        Walker { left, bound }
+        Walker {
+            left,
+            bound: CeilDda64::new(walk_value(value), walk_value(inc), walk_value(d)),
+        }
+        .checked_to(value + rows * inc)
     }
+
+    /// `self`, once the value one step past the last row is shown inside the envelope too
+    /// (the values are linear in the row, so all between are).
+    fn checked_to(self, last: i128) -> Walker {
+        walk_value(last);
+        self
+    }
+}
+
+/// A value of a walk, in i64.
+///
+/// # Panics
+/// At `2^62` or beyond (a wrong envelope proof).
+fn walk_value(v: i128) -> i64 {
+    assert!(
+        v.abs() < WALK_LIMIT,
+        "scanline walk value {v} beyond 2^62: the envelope proof is wrong"
+    );
+    i64::try_from(v).expect("below 2^62")
 }
 
 /// Covers every pixel whose sample is inside `tri` (snapped, inside the envelope), span by
@@ -74,32 +112,113 @@ pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target:
     let Some(Setup { edges, grid, range }) = setup(tri, target) else {
         return;
     };
-    let (one, c) = (i128::from(grid.one), i128::from(grid.centre));
-    let sy0 = i128::from(range.y0) * one + c;
-    // Per edge: a walker for a sloped edge, or the edge itself for a horizontal one.
-    let mut walkers: [Option<Walker>; 3] = edges.map(|e| (e.dy != 0).then(|| Walker::new(&e, sy0, one, c)));
-    let horizontal: [Option<FixedEdge>; 3] = edges.map(|e| (e.dy == 0).then_some(e));
-    for j in range.y0..=range.y1 {
-        let sy = i128::from(j) * one + c;
-        // A horizontal edge: inside iff -(sy - ay) dx - bias >= 0, the same for the whole row.
-        let row_open = horizontal
-            .iter()
-            .flatten()
-            .all(|e| -(sy - i128::from(e.a[1])) * i128::from(e.dx) - i128::from(e.bias) >= 0);
-        let mut lo = i128::from(range.x0);
-        let mut hi = i128::from(range.x1);
-        for w in walkers.iter().flatten() {
-            if w.left {
-                lo = lo.max(w.bound.get());
-            } else {
-                hi = hi.min(w.bound.get());
-            }
+    // A horizontal edge: inside iff -(sy - ay) dx - bias >= 0, the same for the whole row.
+    // With bias in {0, 1} and |dx| >= 1: dx > 0 admits sy <= ay - bias, dx < 0 sy >= ay + bias.
+    let (mut y0, mut y1) = (i64::from(range.y0), i64::from(range.y1));
+    for e in edges.iter().filter(|e| e.dy == 0) {
+        if e.dx > 0 {
+            y1 = y1.min(grid.last_at_or_before(e.a[1] - e.bias));
+        } else {
+            y0 = y0.max(grid.first_at_or_after(e.a[1] + e.bias));
         }
-        if row_open && lo <= hi {
-            let lo = u32::try_from(lo).expect("clamped to the canvas range");
-            let hi = u32::try_from(hi).expect("clamped to the canvas range");
-            sink.cover_span(j, lo, hi, id);
+    }
+    if y0 > y1 {
+        return;
+    }
+    let row = |v: i64| u32::try_from(v).expect("within the range's rows");
+    let (y0, y1) = (row(y0), row(y1));
+    let (sy0, rows) = (i128::from(grid.sample(y0)), i128::from(y1 - y0) + 1);
+    // At most two edges on a side (the dy of a closed triangle sum to zero), and at least
+    // one: the rows walk two or three bounds.
+    let (mut left, mut right) = (SideBounds::default(), SideBounds::default());
+    for e in edges.iter().filter(|e| e.dy != 0) {
+        let w = Walker::new(e, sy0, rows, &grid);
+        if w.left {
+            left.push(w.bound);
+        } else {
+            right.push(w.bound);
         }
-        walkers.iter_mut().flatten().for_each(|w| w.bound.step());
+    }
+    let (x, y) = ([range.x0, range.x1], [y0, y1]);
+    match (left.get(), right.get()) {
+        (Side::One(l), Side::One(r)) => spans([l], [r], x, y, id, sink),
+        (Side::Two(l), Side::One(r)) => spans(l, [r], x, y, id, sink),
+        (Side::One(l), Side::Two(r)) => spans([l], r, x, y, id, sink),
+        _ => unreachable!("a triangle with area has one or two edges on each side"),
+    }
+}
+
+/// The bounds of one side.
+#[derive(Default)]
+struct SideBounds {
+    bounds: [Option<CeilDda64>; 2],
+}
+
+/// One side's bounds, by count.
+enum Side {
+    None,
+    One(CeilDda64),
+    Two([CeilDda64; 2]),
+}
+
+impl SideBounds {
+    fn push(&mut self, b: CeilDda64) {
+        let slot = self
+            .bounds
+            .iter_mut()
+            .find(|s| s.is_none())
+            .expect("at most two edges on a side");
+        *slot = Some(b);
+    }
+
+    fn get(&self) -> Side {
+        match self.bounds {
+            [Some(a), Some(b)] => Side::Two([a, b]),
+            [Some(a), None] => Side::One(a),
+            _ => Side::None,
+        }
+    }
+}
+
+/// The spans of rows `y[0]..=y[1]` within columns `x[0]..=x[1]`: from the largest left
+/// bound to the smallest right bound (one loop per count of bounds on each side, so no
+/// row steps a bound that is not there).
+#[inline(always)]
+fn spans<const L: usize, const R: usize, S: CoverageSink + ?Sized>(
+    mut left: [CeilDda64; L],
+    mut right: [CeilDda64; R],
+    x: [u32; 2],
+    y: [u32; 2],
+    id: u32,
+    sink: &mut S,
+) {
+    let (x0, x1) = (i64::from(x[0]), i64::from(x[1]));
+    for j in y[0]..=y[1] {
+        let lo = left.iter().fold(x0, |lo, b| lo.max(b.get()));
+        let hi = right.iter().fold(x1, |hi, b| hi.min(b.get()));
+        if lo <= hi {
+            // x0 <= lo <= hi <= x1, both u32: exact
+            #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+            sink.cover_span(j, lo as u32, hi as u32, id);
+        }
+        for b in left.iter_mut().chain(right.iter_mut()) {
+            b.step();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The walk's envelope, one unit each side: `2^62 - 1` is a walk value, `2^62` and
+    /// `-2^62` are not.
+    #[test]
+    fn a_walk_value_is_below_2_to_the_62() {
+        assert_eq!(walk_value((1 << 62) - 1), (1 << 62) - 1);
+        assert_eq!(walk_value(1 - (1 << 62)), 1 - (1 << 62));
+        for v in [1i128 << 62, -(1i128 << 62)] {
+            assert!(std::panic::catch_unwind(|| walk_value(v)).is_err(), "{v}");
+        }
     }
 }
