@@ -62,6 +62,7 @@ impl TieRule {
     /// assert!(!TieRule::TopLeft.is_inclusive(Greater, Equal));
     /// assert!(TieRule::BottomLeft.is_inclusive(Greater, Equal));
     /// ```
+    #[inline]
     pub fn is_inclusive(self, dx: Ordering, dy: Ordering) -> bool {
         match dy {
             Ordering::Greater => true,

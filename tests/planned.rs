@@ -20,6 +20,8 @@ use rasterproof::tri::exact;
 use rasterproof::tri::planned::PlannedTriangle;
 
 const CANVAS: u32 = 24;
+/// A canvas wide enough for runs of 8x8 blocks.
+const WIDE: u32 = 96;
 
 fn convention() -> impl Strategy<Value = Convention> {
     (prop::sample::select(Preset::ALL.to_vec()), any::<bool>()).prop_map(|(p, corner)| {
@@ -75,6 +77,19 @@ proptest! {
         let target = Target::new(CANVAS, CANVAS, conv).unwrap();
         same(&t, &target)?;
         same(&t.snapped(&conv).to_exact(), &target)?;
+    }
+
+    /// Triangles at least four blocks wide (the traversal writes each row of a run of
+    /// inside blocks as one span), as written and snapped, and the fixed model on them.
+    #[test]
+    fn wide_triangles_equal_plain(t in any_triangle(WIDE), conv in convention()) {
+        let target = Target::new(WIDE, WIDE * 3 / 4, conv).unwrap();
+        same(&t, &target)?;
+        let snapped = t.snapped(&conv);
+        same(&snapped.to_exact(), &target)?;
+        let mut fixed = Coverage::new(target.width, target.height);
+        rasterproof::tri::fixed::rasterize(&snapped.to_fixed().unwrap(), 0, &target, &mut fixed);
+        prop_assert_eq!(fixed, oracle(&snapped.to_exact(), &target));
     }
 
     /// Small triangles near the far corner of the largest canvas.

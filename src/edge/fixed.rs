@@ -6,6 +6,7 @@ use crate::convention::TieRule;
 use crate::geom::FixedTriangle;
 
 /// `E(p)` for the edge `a -> b` in subpixel units; `[x, y]` pairs inside the envelope.
+#[inline]
 pub fn edge_function(a: [i64; 2], b: [i64; 2], p: [i64; 2]) -> i64 {
     (p[0] - a[0]) * (b[1] - a[1]) - (p[1] - a[1]) * (b[0] - a[0])
 }
@@ -32,6 +33,7 @@ pub struct FixedEdge {
 
 impl FixedEdge {
     /// The edge `a -> b` of a triangle whose interior is `E > 0`.
+    #[inline]
     pub fn new(a: [i64; 2], b: [i64; 2], rule: TieRule) -> FixedEdge {
         let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
         let inclusive = rule.is_inclusive(dx.cmp(&0), dy.cmp(&0));
@@ -50,6 +52,7 @@ impl FixedEdge {
 }
 
 /// Twice the signed area, `E_{v0 v1}(v2)`.
+#[inline]
 pub fn area2(t: &FixedTriangle) -> i64 {
     let v = t.coords();
     edge_function(v[0], v[1], v[2])
@@ -57,6 +60,7 @@ pub fn area2(t: &FixedTriangle) -> i64 {
 
 /// The three edges of the oriented triangle (v1, v2 swapped if needed so the interior is
 /// `E > 0`); `None` for zero area.
+#[inline]
 pub fn triangle_edges(t: &FixedTriangle, rule: TieRule) -> Option<[FixedEdge; 3]> {
     let [a, mut b, mut c] = t.coords();
     match area2(t).cmp(&0) {

@@ -43,13 +43,28 @@ macro_rules! ceil_dda {
             /// when the remainder goes negative. Without a branch (the carry follows the
             /// slope, which a branch predictor guesses badly): the remainder's sign bit,
             /// spread over the word, is the carry's mask.
+            ///
+            /// Lane arithmetic (see ARCHITECTURE.md, "Overflow checks"): checked under
+            /// debug assertions, wrapping otherwise. No step can overflow while the walked
+            /// values fit the type: `q` moves monotonically between `ceil(v / d)` of the
+            /// first and last values, `r` stays in `(-d, d)`.
             #[inline]
             pub fn step(&mut self) {
-                self.r -= self.step_r;
-                // all ones when r < 0, else zero
-                let carry = self.r >> (<$t>::BITS - 1);
-                self.r += self.d & carry;
-                self.q += self.step_q - carry;
+                if cfg!(debug_assertions) {
+                    let r = self.r.checked_sub(self.step_r).expect("the walk left its envelope");
+                    let carry = r >> (<$t>::BITS - 1);
+                    self.r = r + (self.d & carry);
+                    self.q = self
+                        .q
+                        .checked_add(self.step_q - carry)
+                        .expect("the walk left its envelope");
+                } else {
+                    self.r = self.r.wrapping_sub(self.step_r);
+                    // all ones when r < 0, else zero
+                    let carry = self.r >> (<$t>::BITS - 1);
+                    self.r = self.r.wrapping_add(self.d & carry);
+                    self.q = self.q.wrapping_add(self.step_q.wrapping_sub(carry));
+                }
             }
         }
     };

@@ -11,7 +11,8 @@
 //!
 //! Traversal: the pixel range in [`BLOCK`] x [`BLOCK`] blocks as in [`crate::tri::fixed`]
 //! (a block with all four corners outside one edge is skipped, one with all corners inside
-//! all three is filled as spans, the rest is tested pixel by pixel), but every value is
+//! all three is filled as spans, a run of them along a block row as one span per row, the
+//! rest is tested pixel by pixel), but every value is
 //! reached by addition only, and never beyond the range: block origins are stepped by
 //! `BLOCK` steps, corners by `w` and `h` steps, pixels by single steps, each added only
 //! when the next point exists.
@@ -362,6 +363,10 @@ pub(crate) fn traverse<T: Lane, S: CoverageSink + ?Sized>(e: &Edges<T>, range: &
         [corners(&full_x, &part_y), corners(&part_x, &part_y)],
     ];
 
+    // Runs of inside blocks pay off from a few blocks across; narrower ranges write each
+    // inside block at once (measured on the peer bench: merging cost 4 % on its 24 px
+    // triangles and gained 60 % on its half-canvas one).
+    let merge = width >= 4 * BLOCK;
     let mut row_origin = e.origin.clone();
     let mut by = 0;
     loop {
@@ -369,16 +374,37 @@ pub(crate) fn traverse<T: Lane, S: CoverageSink + ?Sized>(e: &Edges<T>, range: &
         let rows = &steps[usize::from(h != last)];
         let mut block = row_origin.clone();
         let mut bx = 0;
+        // The run of whole blocks inside the triangle that ends at the current block:
+        // written as one span per row when it ends (for a large triangle, a row of the
+        // interior is one span however many blocks it crosses).
+        let mut run: Option<[u32; 2]> = None;
+        let y0 = range.y0 + by;
+        let flush = |run: &mut Option<[u32; 2]>, sink: &mut S| {
+            if let Some([x0, x1]) = run.take() {
+                for y in y0..=y0 + h {
+                    sink.cover_span(y, x0, x1, id);
+                }
+            }
+        };
         loop {
             let w = last.min(width - bx);
             let c = &rows[usize::from(w != last)];
-            visit_block(e, &ramp, &block, c, [range.x0 + bx, range.y0 + by], [w, h], id, sink);
+            let x0 = range.x0 + bx;
+            if visit_block(e, &ramp, &block, c, [x0, y0], [w, h], id, sink) {
+                run = Some([run.map_or(x0, |[start, _]| start), x0 + w]);
+                if !merge {
+                    flush(&mut run, sink);
+                }
+            } else {
+                flush(&mut run, sink);
+            }
             if width - bx < BLOCK {
                 break;
             }
             bx += BLOCK;
             add3_to(&mut block, &block_x);
         }
+        flush(&mut run, sink);
         if height - by < BLOCK {
             break;
         }
@@ -389,7 +415,8 @@ pub(crate) fn traverse<T: Lane, S: CoverageSink + ?Sized>(e: &Edges<T>, range: &
 
 /// One block: `origin` holds `E - bias` at its first sample `at`; `size` is `[w, h]` (the
 /// last column and row, relative). Per edge, only two corners are evaluated: the largest
-/// (all outside when it is negative) and the smallest (all inside when it is not).
+/// (all outside when it is negative) and the smallest (all inside when it is not). A
+/// block all inside is left to the caller, which writes runs of them as spans: `true`.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)] // the block's state, passed by reference to an inlined body
 fn visit_block<T: Lane, S: CoverageSink + ?Sized>(
@@ -401,21 +428,16 @@ fn visit_block<T: Lane, S: CoverageSink + ?Sized>(
     size: [u32; 2],
     id: u32,
     sink: &mut S,
-) {
+) -> bool {
     let high = add3(origin, &c.high);
     if !T::all_non_negative(&high) {
-        return; // outside one edge at its largest
+        return false; // outside one edge at its largest
     }
-    let all_inside = T::all_non_negative(&add3(origin, &c.low));
-    let [x0, y0] = at;
-    let [w, h] = size;
-    if all_inside {
-        for y in y0..=y0 + h {
-            sink.cover_span(y, x0, x0 + w, id);
-        }
-        return;
+    if T::all_non_negative(&add3(origin, &c.low)) {
+        return true;
     }
     fill_rows(e, ramp, origin, at, size, id, sink);
+    false
 }
 
 /// The samples of a `[w, h]` rectangle of pixels from `at`, `origin` holding `E - bias` at

@@ -7,7 +7,7 @@
 //! equal `exact-snapped` pixel for pixel: the property tests are its proof (Luebke's
 //! University of Virginia lecture slides call this algorithm "lots of finicky special cases").
 //!
-//! Arithmetic: each bound's DDA in i64 ([`CeilDda64`]), set up in i128. Every value a
+//! Arithmetic: i64 throughout, each bound a [`CeilDda64`]. Every value a
 //! walk passes through is an edge value `E - bias` at a point `(c, sy)` (`c` the column-0
 //! sample offset, `sy` a row's sample, one row past the last included) less at most
 //! `2^S |dy| <= 2^46`: inside the envelope of [`crate::num::fixed`] (`|a| <= 2^29`,
@@ -25,7 +25,7 @@ use crate::raster::FixedGrid;
 use crate::tri::fixed::{setup, Setup};
 
 /// The magnitude every value of a walk stays below: [`CeilDda64`]'s envelope.
-const WALK_LIMIT: i128 = 1 << 62;
+const WALK_LIMIT: u64 = 1 << 62;
 
 /// One edge's bound on the pixel index `i`, walked down the rows: `ceil(value / d)` (a
 /// left edge: `i >= bound`) or `floor(value / d)` (a right edge: `i <= bound`), both as
@@ -43,17 +43,13 @@ impl Walker {
     /// # Panics
     /// When a value of the walk reaches `2^62` (impossible inside the envelope: see the
     /// module docs).
-    fn new(e: &FixedEdge, sy: i128, rows: i128, grid: &FixedGrid) -> Walker {
-        let (one, c) = (i128::from(grid.one), i128::from(grid.centre));
-        let (ax, ay, dx, dy) = (
-            i128::from(e.a[0]),
-            i128::from(e.a[1]),
-            i128::from(e.dx),
-            i128::from(e.dy),
-        );
+    fn new(e: &FixedEdge, sy: i64, rows: i64, grid: &FixedGrid) -> Walker {
+        let (one, c) = (grid.one, grid.centre);
+        let ([ax, ay], dx, dy) = (e.a, e.dx, e.dy);
         // Inside: (px - ax) dy - (sy - ay) dx - bias >= 0  <=>  px dy >= n, with px = i one + c:
-        // i (one dy) >= n - c dy.
-        let n = i128::from(e.bias) + ax * dy + (sy - ay) * dx - c * dy;
+        // i (one dy) >= n - c dy. In i64: |ax dy| <= 2^59, |(sy - ay) dx| < 1.5 * 2^60 and
+        // |c dy| <= 2^45 inside the envelope (see the module docs), so |n| < 2^61.
+        let n = e.bias + ax * dy + (sy - ay) * dx - c * dy;
         // left (dy > 0): i >= ceil(n / (one dy)); right (dy < 0): i <= floor(-n / (one |dy|)).
         // Per row, sy grows by one, so n grows by one dx.
         let left = dy > 0;
@@ -63,31 +59,25 @@ impl Walker {
             let d = -one * dy;
             (-n - (d - 1), -one * dx, d)
         };
+        // The value one step past the last row: below 2^61 + 16385 * 2^46 < 2^62.
+        walk_value(value + rows * inc);
         Walker {
             left,
             bound: CeilDda64::new(walk_value(value), walk_value(inc), walk_value(d)),
         }
-        .checked_to(value + rows * inc)
-    }
-
-    /// `self`, once the value one step past the last row is shown inside the envelope too
-    /// (the values are linear in the row, so all between are).
-    fn checked_to(self, last: i128) -> Walker {
-        walk_value(last);
-        self
     }
 }
 
-/// A value of a walk, in i64.
+/// A value of a walk, checked below `2^62` ([`CeilDda64`]'s envelope).
 ///
 /// # Panics
 /// At `2^62` or beyond (a wrong envelope proof).
-fn walk_value(v: i128) -> i64 {
+fn walk_value(v: i64) -> i64 {
     assert!(
-        v.abs() < WALK_LIMIT,
+        v.unsigned_abs() < WALK_LIMIT,
         "scanline walk value {v} beyond 2^62: the envelope proof is wrong"
     );
-    i64::try_from(v).expect("below 2^62")
+    v
 }
 
 /// Covers every pixel whose sample is inside `tri` (snapped, inside the envelope), span by
@@ -127,7 +117,7 @@ pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target:
     }
     let row = |v: i64| u32::try_from(v).expect("within the range's rows");
     let (y0, y1) = (row(y0), row(y1));
-    let (sy0, rows) = (i128::from(grid.sample(y0)), i128::from(y1 - y0) + 1);
+    let (sy0, rows) = (grid.sample(y0), i64::from(y1 - y0) + 1);
     // At most two edges on a side (the dy of a closed triangle sum to zero), and at least
     // one: the rows walk two or three bounds.
     let (mut left, mut right) = (SideBounds::default(), SideBounds::default());
@@ -217,7 +207,7 @@ mod tests {
     fn a_walk_value_is_below_2_to_the_62() {
         assert_eq!(walk_value((1 << 62) - 1), (1 << 62) - 1);
         assert_eq!(walk_value(1 - (1 << 62)), 1 - (1 << 62));
-        for v in [1i128 << 62, -(1i128 << 62)] {
+        for v in [1i64 << 62, -(1i64 << 62), i64::MIN] {
             assert!(std::panic::catch_unwind(|| walk_value(v)).is_err(), "{v}");
         }
     }
