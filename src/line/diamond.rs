@@ -328,16 +328,8 @@ mod tests {
         // small, the length sets the plan.
         let seg_of = |d: i64| segment([300, 2000], [300 + d, 2000 + d / 5]);
         let fits = |d: i64| fits_i64(&seg_of(d), &target);
-        let (mut lo, mut hi) = (1 << 10, 1 << 22);
-        assert!(fits(lo) && !fits(hi));
-        while hi - lo > 1 {
-            let mid = (lo + hi) / 2;
-            if fits(mid) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
+        let lo = crate::num::last_where(1 << 10, 1 << 22, fits);
+        let hi = lo + 1;
         assert_eq!(lo, 659_868, "the edge");
         for d in [lo, hi] {
             let seg = seg_of(d);

@@ -9,3 +9,23 @@ pub mod plan;
 
 pub use exact::{parse_rational, NumberError, Rounding};
 pub use fixed::{EnvelopeError, SubPixel, FIXED_ENVELOPE_BITS, MAX_SUBPIXEL_BITS};
+
+/// The last `n` in `lo..hi` for which `holds(n)`, for a predicate that holds at `lo`, fails
+/// at `hi` and changes once between (the tests find a plan's width edge with it).
+#[cfg(test)]
+pub(crate) fn last_where(lo: i64, hi: i64, holds: impl Fn(i64) -> bool) -> i64 {
+    assert!(
+        holds(lo) && !holds(hi),
+        "the predicate must hold at {lo} and fail at {hi}"
+    );
+    let (mut lo, mut hi) = (lo, hi);
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if holds(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
+}

@@ -290,16 +290,8 @@ mod tests {
             let (lanes, range) = edges_at_first_sample(&fixed_of(&tri(n), &target), &target).unwrap();
             narrowed(&lanes, &range).is_some()
         };
-        let (mut lo, mut hi) = (256, 160 * 256);
-        assert!(fits(lo) && !fits(hi));
-        while hi - lo > 1 {
-            let mid = (lo + hi) / 2;
-            if fits(mid) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
+        let lo = crate::num::last_where(256, 160 * 256, fits);
+        let hi = lo + 1;
         assert!((100 * 256..140 * 256).contains(&lo), "the edge at {lo} subpixels");
         equal_to_oracle(&tri(lo), &target);
         equal_to_oracle(&tri(hi), &target);

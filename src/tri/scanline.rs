@@ -120,53 +120,25 @@ pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target:
     let (sy0, rows) = (grid.sample(y0), i64::from(y1 - y0) + 1);
     // At most two edges on a side (the dy of a closed triangle sum to zero), and at least
     // one: the rows walk two or three bounds.
-    let (mut left, mut right) = (SideBounds::default(), SideBounds::default());
+    let unused = CeilDda64::new(0, 0, 1);
+    let (mut left, mut right) = ([unused; 2], [unused; 2]);
+    let (mut nl, mut nr) = (0, 0);
     for e in edges.iter().filter(|e| e.dy != 0) {
         let w = Walker::new(e, sy0, rows, &grid);
-        if w.left {
-            left.push(w.bound);
+        let (side, n) = if w.left {
+            (&mut left, &mut nl)
         } else {
-            right.push(w.bound);
-        }
+            (&mut right, &mut nr)
+        };
+        side[*n] = w.bound;
+        *n += 1;
     }
     let (x, y) = ([range.x0, range.x1], [y0, y1]);
-    match (left.get(), right.get()) {
-        (Side::One(l), Side::One(r)) => spans([l], [r], x, y, id, sink),
-        (Side::Two(l), Side::One(r)) => spans(l, [r], x, y, id, sink),
-        (Side::One(l), Side::Two(r)) => spans([l], r, x, y, id, sink),
+    match (nl, nr) {
+        (1, 1) => spans([left[0]], [right[0]], x, y, id, sink),
+        (2, 1) => spans(left, [right[0]], x, y, id, sink),
+        (1, 2) => spans([left[0]], right, x, y, id, sink),
         _ => unreachable!("a triangle with area has one or two edges on each side"),
-    }
-}
-
-/// The bounds of one side.
-#[derive(Default)]
-struct SideBounds {
-    bounds: [Option<CeilDda64>; 2],
-}
-
-/// One side's bounds, by count.
-enum Side {
-    None,
-    One(CeilDda64),
-    Two([CeilDda64; 2]),
-}
-
-impl SideBounds {
-    fn push(&mut self, b: CeilDda64) {
-        let slot = self
-            .bounds
-            .iter_mut()
-            .find(|s| s.is_none())
-            .expect("at most two edges on a side");
-        *slot = Some(b);
-    }
-
-    fn get(&self) -> Side {
-        match self.bounds {
-            [Some(a), Some(b)] => Side::Two([a, b]),
-            [Some(a), None] => Side::One(a),
-            _ => Side::None,
-        }
     }
 }
 
