@@ -188,6 +188,7 @@ impl PixelCentre {
     }
 
     /// The offset in subpixels of a 2^-bits grid (`bits >= 1`).
+    #[inline]
     pub fn offset_subpixels(self, bits: u32) -> i64 {
         match self {
             PixelCentre::Half => 1i64 << (bits - 1),

@@ -163,6 +163,7 @@ pub struct FixedTriangle {
 
 impl FixedTriangle {
     /// The vertices as plain i64 pairs.
+    #[inline]
     pub fn coords(&self) -> [[i64; 2]; 3] {
         self.v.map(|[x, y]| [x.get(), y.get()])
     }

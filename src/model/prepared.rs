@@ -282,7 +282,7 @@ impl PreparedScene {
 
     /// Rasterizes every primitive into `sink` with its id.
     pub fn draw<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S) {
-        self.draw_observed(target, sink, &mut || {});
+        self.draw_observed(target, sink, || {});
     }
 
     /// How many primitives [`PreparedScene::draw_observed`] draws (the clipped triangles
@@ -294,7 +294,7 @@ impl PreparedScene {
 
     /// [`PreparedScene::draw`], calling `after` once each primitive is drawn (a progress
     /// bar's tick: `render` shows one when a run goes on for more than a second).
-    pub fn draw_observed<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S, after: &mut dyn FnMut()) {
+    pub fn draw_observed<S: CoverageSink + ?Sized, F: FnMut()>(&self, target: &Target, sink: &mut S, mut after: F) {
         for (k, l) in self.lines.iter().enumerate() {
             let k = id(self.first_line + k);
             match &self.point_mask {
@@ -304,19 +304,14 @@ impl PreparedScene {
             after();
         }
         match &self.area_mask {
-            None => self.draw_areas(target, sink, after),
-            Some(m) => self.draw_areas(target, &mut m.scissor(sink), after),
+            None => self.draw_areas(target, sink, &mut after),
+            Some(m) => self.draw_areas(target, &mut m.scissor(sink), &mut after),
         }
     }
 
-    fn draw_areas<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S, after: &mut dyn FnMut()) {
+    fn draw_areas<S: CoverageSink + ?Sized, F: FnMut()>(&self, target: &Target, sink: &mut S, after: &mut F) {
         match &self.clipped_triangles {
-            None => {
-                for k in 0..self.triangles.len() {
-                    self.triangles.rasterize_one(k, target, sink);
-                    after();
-                }
-            }
+            None => self.triangles.rasterize_each(target, sink, &mut *after),
             Some(polygons) => {
                 for (k, p) in polygons.iter().enumerate() {
                     p.fill(id(k), target, sink);

@@ -109,6 +109,7 @@ fn fixed_triangles(triangles: &[Triangle], conv: &Convention) -> Result<Vec<Fixe
 }
 
 /// Triangle ids are their indices.
+#[inline]
 fn id_of(k: usize) -> u32 {
     u32::try_from(k).expect("scene triangle counts fit u32")
 }
@@ -143,25 +144,47 @@ impl PreparedTriangles {
 
     /// Rasterizes every triangle whole into `sink`, triangle k with id k.
     pub(crate) fn rasterize_into<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S) {
-        for k in 0..self.len() {
-            self.rasterize_one(k, target, sink);
-        }
+        self.rasterize_each(target, sink, || {});
     }
 
-    /// Rasterizes triangle `k` whole into `sink` with id k.
-    pub(crate) fn rasterize_one<S: CoverageSink + ?Sized>(&self, k: usize, target: &Target, sink: &mut S) {
-        let id = id_of(k);
-        match self {
-            PreparedTriangles::Exact(ts) => exact::rasterize(&ts[k], id, target, sink),
-            PreparedTriangles::Planned(_, ts) => {
-                if let Some(t) = &ts[k] {
-                    t.rasterize(id, sink);
-                }
+    /// Rasterizes every triangle whole into `sink`, triangle k with id k, calling `after`
+    /// once each is drawn. The model is matched once, outside the loop, and `after` is
+    /// inlined: with a match and an indirect call per triangle, `fixed` on the peer
+    /// bench's 100k small triangles took 5.23-5.44 ms against 4.75-4.83 ms (three runs).
+    pub(crate) fn rasterize_each<S: CoverageSink + ?Sized, F: FnMut()>(
+        &self,
+        target: &Target,
+        sink: &mut S,
+        mut after: F,
+    ) {
+        // One loop per model, each calling `draw(triangle, id)` then `after`.
+        fn each<T, F: FnMut()>(ts: &[T], mut draw: impl FnMut(&T, u32), after: &mut F) {
+            for (k, t) in ts.iter().enumerate() {
+                draw(t, id_of(k));
+                after();
             }
-            PreparedTriangles::Fixed(ts) => fixed::rasterize(&ts[k], id, target, sink),
-            PreparedTriangles::Scanline(ts) => scanline::rasterize(&ts[k], id, target, sink),
-            PreparedTriangles::F32(ts, rule) => float::rasterize_f32(&ts[k], id, target, *rule, sink),
-            PreparedTriangles::F64(ts, rule) => float::rasterize_f64(&ts[k], id, target, *rule, sink),
+        }
+        match self {
+            PreparedTriangles::Exact(ts) => each(ts, |t, id| exact::rasterize(t, id, target, sink), &mut after),
+            PreparedTriangles::Planned(_, ts) => each(
+                ts,
+                |t, id| {
+                    if let Some(t) = t {
+                        t.rasterize(id, sink);
+                    }
+                },
+                &mut after,
+            ),
+            PreparedTriangles::Fixed(ts) => each(ts, |t, id| fixed::rasterize(t, id, target, sink), &mut after),
+            PreparedTriangles::Scanline(ts) => {
+                each(ts, |t, id| scanline::rasterize(t, id, target, sink), &mut after);
+            }
+            PreparedTriangles::F32(ts, rule) => {
+                each(ts, |t, id| float::rasterize_f32(t, id, target, *rule, sink), &mut after);
+            }
+            PreparedTriangles::F64(ts, rule) => {
+                each(ts, |t, id| float::rasterize_f64(t, id, target, *rule, sink), &mut after);
+            }
         }
     }
 

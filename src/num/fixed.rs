@@ -39,6 +39,7 @@ pub struct SubPixel(i64);
 
 impl SubPixel {
     /// The integer value in subpixels.
+    #[inline]
     pub fn get(self) -> i64 {
         self.0
     }

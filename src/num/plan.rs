@@ -327,10 +327,41 @@ pub trait Lane: Clone + fmt::Debug {
         }
         mask
     }
+
+    /// The masks of `rows + 1` consecutive rows ([`Lane::row_mask`]; `HALF` says that
+    /// `last < HALF_ROW`, so that the machine integers need test only half the lanes):
+    /// `cover(i, mask)` for row `i` from 0, whose first sample holds `first + i * step_y`;
+    /// every value at the rows' samples up to `last` is within the plan's bound. Row by row here; the machine integers keep each
+    /// edge's row of lanes in SIMD registers and step them down by one vector add.
+    #[inline(always)]
+    fn row_masks<const HALF: bool>(
+        first: &[Self; 3],
+        step_y: &[Self; 3],
+        ramp: &[[Self; ROW]; 3],
+        last: u32,
+        rows: u32,
+        mut cover: impl FnMut(u32, u32),
+    ) {
+        let mut row = first.clone();
+        let mut i = 0;
+        loop {
+            cover(i, Self::row_mask(&row, ramp, last));
+            if i == rows {
+                break;
+            }
+            i += 1;
+            for (r, s) in row.iter_mut().zip(step_y) {
+                r.add_to(s);
+            }
+        }
+    }
 }
 
 /// The pixels of one row mask ([`Lane::row_mask`]): the engines' block side.
 pub const ROW: usize = 8;
+
+/// The pixels of a half row ([`Lane::row_masks`] with `HALF`).
+pub const HALF_ROW: usize = ROW / 2;
 
 macro_rules! int_lane {
     ($t:ty, $w:expr $(, $simd:item)?) => {
@@ -397,10 +428,72 @@ macro_rules! int_lane {
 /// wrapping, since lanes past `last` may leave the bound and are masked off; the sign
 /// bits of `e0 | e1 | e2` are the lanes outside. Under debug assertions the lanes up to
 /// `last` are checked for overflow first, as every other lane operation is.
+/// Under debug assertions, that each row value plus each ramp step up to lane `last` is
+/// exact (the SIMD lanes wrap).
+macro_rules! check_row {
+    ($row:expr, $ramp:expr, $last:expr) => {
+        if cfg!(debug_assertions) {
+            for (lanes, r) in $ramp.iter().zip($row) {
+                for step in lanes.iter().take($last as usize + 1) {
+                    r.checked_add(*step).expect("planned bound exceeded");
+                }
+            }
+        }
+    };
+}
+
+/// The body of the SIMD `row_masks`: `$parts` vectors of `$per` lanes of type `$vt` (all
+/// `ROW` lanes, or the first `HALF_ROW`).
+macro_rules! row_masks_in {
+    ($vt:ty, $per:expr, $parts:expr, $t:ty, $first:ident, $step_y:ident, $ramp:ident, $last:ident, $rows:ident, $cover:ident) => {{
+        const PARTS: usize = $parts;
+        let mut cover = $cover;
+        let mut v: [[$vt; PARTS]; 3] = std::array::from_fn(|k| {
+            std::array::from_fn(|part| {
+                let steps: [$t; $per] = $ramp[k][part * $per..][..$per].try_into().expect("a part of the ramp");
+                <$vt>::splat($first[k]) + <$vt>::new(steps)
+            })
+        });
+        let down: [$vt; 3] = std::array::from_fn(|k| <$vt>::splat($step_y[k]));
+        let keep = (2u32 << $last) - 1;
+        // the rows' first values, stepped checked (debug assertions only)
+        let mut checked = *$first;
+        let mut i = 0;
+        loop {
+            check_row!(&checked, $ramp, $last);
+            let mut outside = 0u32;
+            for part in 0..PARTS {
+                let signs = (v[0][part] | v[1][part] | v[2][part]).move_mask();
+                outside |= (signs as u32) << (part * $per);
+            }
+            cover(i, !outside & keep);
+            if i == $rows {
+                break;
+            }
+            i += 1;
+            for k in 0..3 {
+                for lanes in &mut v[k] {
+                    #[allow(clippy::assign_op_pattern)] // i64x4 has no `+=`
+                    {
+                        *lanes = *lanes + down[k];
+                    }
+                }
+                if cfg!(debug_assertions) {
+                    checked[k] = checked[k].checked_add($step_y[k]).expect("planned bound exceeded");
+                }
+            }
+        }
+    }};
+}
+
 macro_rules! simd_row_mask {
-    ($t:ty, $v:ident, $per:expr) => {
-        /// As the default, by one multiply per lane and a select (no loop-carried add):
-        /// `i * step` wraps only for lanes past `last`, which are zeroed.
+    ($t:ty, $v:ident, $per:expr, $half:ident) => {
+        /// As the default, without a loop-carried add or a multiply (SSE2 has no 32-bit
+        /// lane multiply: `wide` falls back to one scalar multiply per lane, which made
+        /// this a tenth of the peer bench's small triangles): `i * step` is the sum of
+        /// `step`, `2 step` and `4 step` over the set bits of `i`, each selected by a
+        /// constant mask, then lanes past `last` are zeroed. It wraps only in lanes past
+        /// `last`.
         #[inline(always)]
         fn ramp(step: &[Self; 3], last: u32) -> [[Self; ROW]; 3] {
             if cfg!(debug_assertions) {
@@ -411,15 +504,18 @@ macro_rules! simd_row_mask {
                     }
                 }
             }
-            // `ROW` is 8: every lane index is exact in the lane type
-            #[allow(clippy::cast_possible_truncation, clippy::cast_possible_wrap)]
-            let index: [$t; ROW] = std::array::from_fn(|i| i as $t);
+            // lane i of `bit[b]` is all ones when bit b of i is set (`ROW` is 8: three bits)
+            let bit: [[$t; ROW]; 3] =
+                std::array::from_fn(|b| std::array::from_fn(|i| if i & (1 << b) != 0 { -1 } else { 0 }));
             let keep: [$t; ROW] = std::array::from_fn(|i| if i <= last as usize { -1 } else { 0 });
             let mut ramp = [[0; ROW]; 3];
             for (lanes, &step) in ramp.iter_mut().zip(step) {
                 for part in 0..ROW / $per {
                     let at = |v: &[$t; ROW]| wide::$v::new(v[part * $per..][..$per].try_into().expect("a part"));
-                    let v = (wide::$v::splat(step) * at(&index)) & at(&keep);
+                    let one = wide::$v::splat(step);
+                    let two = one + one;
+                    let four = two + two;
+                    let v = ((one & at(&bit[0])) + (two & at(&bit[1])) + (four & at(&bit[2]))) & at(&keep);
                     lanes[part * $per..][..$per].copy_from_slice(&v.to_array());
                 }
             }
@@ -429,13 +525,7 @@ macro_rules! simd_row_mask {
         #[inline(always)]
         fn row_mask(row: &[Self; 3], ramp: &[[Self; ROW]; 3], last: u32) -> u32 {
             debug_assert!((last as usize) < ROW, "a row of at most ROW pixels");
-            if cfg!(debug_assertions) {
-                for (lanes, r) in ramp.iter().zip(row) {
-                    for step in lanes.iter().take(last as usize + 1) {
-                        r.checked_add(*step).expect("planned bound exceeded");
-                    }
-                }
-            }
+            check_row!(row, ramp, last);
             let mut outside = 0u32;
             for part in 0..ROW / $per {
                 let lane = |k: usize| {
@@ -450,11 +540,53 @@ macro_rules! simd_row_mask {
             }
             !outside & ((2u32 << last) - 1)
         }
+
+        /// Each edge's lanes held in vectors (one of [`HALF_ROW`] lanes when `HALF`) and
+        /// stepped down by a vector add, wrapping: under debug assertions each row's
+        /// values up to `last` are checked first, as in `row_mask`.
+        #[inline(always)]
+        fn row_masks<const HALF: bool>(
+            first: &[Self; 3],
+            step_y: &[Self; 3],
+            ramp: &[[Self; ROW]; 3],
+            last: u32,
+            rows: u32,
+            cover: impl FnMut(u32, u32),
+        ) {
+            if HALF {
+                debug_assert!((last as usize) < HALF_ROW, "a row of at most HALF_ROW pixels");
+                row_masks_in!(
+                    wide::$half,
+                    HALF_ROW,
+                    1,
+                    $t,
+                    first,
+                    step_y,
+                    ramp,
+                    last,
+                    rows,
+                    cover
+                );
+            } else {
+                row_masks_in!(
+                    wide::$v,
+                    $per,
+                    ROW / $per,
+                    $t,
+                    first,
+                    step_y,
+                    ramp,
+                    last,
+                    rows,
+                    cover
+                );
+            }
+        }
     };
 }
 
-int_lane!(i32, Width::I32, simd_row_mask!(i32, i32x8, 8););
-int_lane!(i64, Width::I64, simd_row_mask!(i64, i64x4, 4););
+int_lane!(i32, Width::I32, simd_row_mask!(i32, i32x8, 8, i32x4););
+int_lane!(i64, Width::I64, simd_row_mask!(i64, i64x4, 4, i64x4););
 int_lane!(i128, Width::I128);
 
 macro_rules! float_lane {
@@ -600,6 +732,77 @@ mod tests {
         check::<i64>();
         check::<i128>();
         check::<BigInt>();
+    }
+
+    /// The SIMD `ramp`, `row_mask` and `row_masks` (whole and half rows) of the machine integers, and the
+    /// trait's own loops (i128), against plain loops over the lanes, at every row length, for steps and rows of both signs,
+    /// small and near the width's limit (every value the lanes must hold within it).
+    #[test]
+    #[allow(clippy::needless_range_loop, clippy::cast_possible_truncation)] // lanes by index, as written
+    fn simd_rows_equal_plain_loops() {
+        fn check<T: Lane + Copy + PartialEq + TryFrom<i64> + std::ops::Mul<Output = T> + std::ops::Add<Output = T>>(
+            magnitude: i64,
+        ) where
+            <T as TryFrom<i64>>::Error: fmt::Debug,
+        {
+            let t = |v: i64| T::try_from(v).expect("in the lane type");
+            // splitmix64, seeded: values only need to be spread
+            let mut state = 11u64;
+            let mut next = move |m: i64| {
+                state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+                let z = (state ^ (state >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+                let z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+                i64::try_from((z ^ (z >> 31)) % (2 * m.unsigned_abs() + 1)).expect("small") - m
+            };
+            for case in 0..400 {
+                // steps small enough that 7 across and 2 down from any row value stay in the
+                // width
+                let m = if case % 2 == 0 { 40 } else { magnitude };
+                let step: [T; 3] = std::array::from_fn(|_| t(next(m / 16)));
+                let row: [T; 3] = std::array::from_fn(|_| t(next(m / 4)));
+                for last in 0..8u32 {
+                    let ramp = T::ramp(&step, last);
+                    let mut plain_mask = 0u32;
+                    for i in 0..ROW {
+                        let i_t = t(i64::try_from(i).expect("small"));
+                        for k in 0..3 {
+                            let want = if i <= last as usize { step[k] * i_t } else { t(0) };
+                            assert_eq!(ramp[k][i], want, "ramp lane {i} of {last}, case {case}");
+                        }
+                        let inside = (0..3).all(|k| (row[k] + step[k] * i_t).non_negative());
+                        if i <= last as usize && inside {
+                            plain_mask |= 1 << i;
+                        }
+                    }
+                    assert_eq!(T::row_mask(&row, &ramp, last), plain_mask, "row of {last}, case {case}");
+                    // three rows stepped down by `down`, against each row's mask from scratch
+                    let down: [T; 3] = std::array::from_fn(|_| t(next(m / 16)));
+                    let mut want = Vec::new();
+                    for i in 0..3i64 {
+                        let r: [T; 3] = std::array::from_fn(|k| row[k] + down[k] * t(i));
+                        want.push(T::row_mask(&r, &ramp, last));
+                    }
+                    let mut got = Vec::new();
+                    T::row_masks::<false>(&row, &down, &ramp, last, 2, |i, mask| got.push((i, mask)));
+                    assert_eq!(
+                        got,
+                        want.iter().enumerate().map(|(i, &m)| (i as u32, m)).collect::<Vec<_>>()
+                    );
+                    if (last as usize) < HALF_ROW {
+                        got.clear();
+                        T::row_masks::<true>(&row, &down, &ramp, last, 2, |i, mask| got.push((i, mask)));
+                        assert_eq!(
+                            got,
+                            want.iter().enumerate().map(|(i, &m)| (i as u32, m)).collect::<Vec<_>>()
+                        );
+                    }
+                }
+            }
+        }
+        check::<i32>(i64::from(i32::MAX));
+        check::<i64>(i64::MAX / 2);
+        // the trait's loops (no SIMD override)
+        check::<i128>(i64::MAX / 2);
     }
 
     #[test]

@@ -43,12 +43,12 @@ pub const BLOCK: u32 = 8;
 /// ```
 #[inline]
 pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target: &Target, sink: &mut S) {
-    if let Some((lanes, range)) = edges_at_first_sample(tri, target) {
+    if let Some((lanes, range, span)) = edges_at_first_sample(tri, target) {
         // The planned engine's block traversal: in i32 when this triangle's values fit
         // (eight pixels per SIMD row test instead of four), else in i64, where every value
         // it reaches is an edge value at a sample of the range or a multiple of a step by
         // at most BLOCK, all far below 2^62 inside the envelope.
-        match narrowed(&lanes, &range) {
+        match narrowed(&lanes, span) {
             Some(narrow) => traverse(&narrow, &range, id, sink),
             None => traverse_large(&lanes, &range, id, sink),
         }
@@ -63,23 +63,30 @@ fn traverse_large<S: CoverageSink + ?Sized>(lanes: &Edges<i64>, range: &PixelRan
     traverse(lanes, range, id, sink);
 }
 
-/// The lanes in i32 when every value the traversal of `range` can reach fits i32, a plan
-/// made per triangle like the planned engine's width (most triangles of a scene on a
-/// canvas-sized grid are small enough: at 8 subpixel bits, up to about 90 px on a side).
+/// The largest side, in subpixels, of a triangle's bounding box that [`narrowed`] runs in
+/// i32: `4 * 23170^2 + 2 <= i32::MAX < 4 * 23171^2` (about 90 pixels at 8 subpixel bits).
+const I32_SPAN: i64 = 23_170;
+
+/// The lanes in i32 when every value the traversal can reach fits i32, a plan made per
+/// triangle like the planned engine's width (most triangles of a scene on a canvas-sized
+/// grid are small enough: at 8 subpixel bits, up to about 90 px on a side).
 ///
-/// The bound: the traversal holds `E - bias` at samples of the range, each at most
-/// `|origin| + |step_x| w + |step_y| h` (E is linear), and sums of at most `BLOCK` steps
-/// on each axis (block steps, corner steps, the row ramp), so
-/// `|origin| + |step_x| max(w, BLOCK) + |step_y| max(h, BLOCK)` bounds them all (edge by
-/// edge; `w`, `h` the range's last column and row). In i64 it is below
-/// `3.1 * 2^60 + 2 * 2^46 * 2^14 < 2^63` inside the envelope, so computing it cannot
-/// overflow either.
+/// The bound, from `span`, the larger side `B` of the triangle's bounding box in
+/// subpixels: every value the traversal holds is `E - bias` at a sample of the pixel
+/// range, or a difference of two of them (a multiple of a step by at most the range's
+/// side, to the next block or a block's corner, or the row ramp's steps within the range),
+/// or a step itself. A sample `p` of the range lies in the bounding box, as do the
+/// vertices, so `|p - a| <= B` and `|dx|, |dy| <= B` give `|E| <= 2 B^2`, `|E - bias| <=
+/// 2 B^2 + 1` and a difference at most `4 B^2`; a step is `|d| 2^S <= B 2^16 < 2^31`. So
+/// `B <= I32_SPAN` keeps every value in i32 (the test below checks it against the exact
+/// largest value of the traversal; an unused step, of a range one pixel wide or high, is
+/// held but never added).
 #[inline(always)]
-fn narrowed(lanes: &Edges<i64>, range: &PixelRange) -> Option<Edges<i32>> {
-    if traversal_bound(lanes, range) > i64::from(i32::MAX) {
+fn narrowed(lanes: &Edges<i64>, span: i64) -> Option<Edges<i32>> {
+    if span > I32_SPAN {
         return None;
     }
-    // Each value is within the bound just checked, so each conversion is exact.
+    // Each value is within the bound just proven, so each conversion is exact.
     #[allow(clippy::cast_possible_truncation)]
     let narrow = |v: &[i64; 3]| v.map(|v| v as i32);
     Some(Edges {
@@ -89,27 +96,9 @@ fn narrowed(lanes: &Edges<i64>, range: &PixelRange) -> Option<Edges<i32>> {
     })
 }
 
-/// The bound of [`narrowed`]: at least the magnitude of every value the traversal of
-/// `range` reaches from `lanes`.
-#[inline(always)]
-fn traversal_bound(lanes: &Edges<i64>, range: &PixelRange) -> i64 {
-    let w = i64::from((range.x1 - range.x0).max(BLOCK));
-    let h = i64::from((range.y1 - range.y0).max(BLOCK));
-    // Lane arithmetic: checked under debug assertions, wrapping otherwise (the bound's
-    // own bound, below 2^63, is the proof that nothing wraps).
-    #[inline(always)]
-    fn edge(origin: i64, step_x: i64, step_y: i64, w: i64, h: i64) -> i64 {
-        origin.abs().plus(&step_x.abs().times(&w)).plus(&step_y.abs().times(&h))
-    }
-    let [o, sx, sy] = [lanes.origin, lanes.step_x, lanes.step_y];
-    edge(o[0], sx[0], sy[0], w, h)
-        .max(edge(o[1], sx[1], sy[1], w, h))
-        .max(edge(o[2], sx[2], sy[2], w, h))
-}
-
 /// The setup of [`rasterize`], in one pass over the vertices and inlined into it: the
 /// oriented edges' values `E - bias` at the first sample of the pixel range, their steps
-/// one pixel right (`dY * 2^S`) and down (`-dX * 2^S`), and the range; `None` when the
+/// one pixel right (`dY * 2^S`) and down (`-dX * 2^S`), the range and the larger side of the bounding box in subpixels; `None` when the
 /// triangle covers nothing (zero area, or off the canvas). The same values as
 /// [`triangle_edges`] and [`fixed_sample_range`] give (`setup` below, which `scanline`
 /// uses), computed with shifts by `S` instead of divisions. Written out rather than
@@ -120,26 +109,44 @@ fn traversal_bound(lanes: &Edges<i64>, range: &PixelRange) -> i64 {
 /// # Panics
 /// When `tri` was snapped to another grid than `target`'s subpixel bits.
 #[inline(always)]
-fn edges_at_first_sample(tri: &FixedTriangle, target: &Target) -> Option<(Edges<i64>, PixelRange)> {
+fn edges_at_first_sample(tri: &FixedTriangle, target: &Target) -> Option<(Edges<i64>, PixelRange, i64)> {
     let conv = &target.convention;
     assert_eq!(
         tri.bits, conv.subpixel_bits,
         "triangle snapped to another grid than the target's"
     );
+    // Lane arithmetic (checked under debug assertions, wrapping otherwise): the envelope
+    // of `crate::num::fixed` is the proof that nothing here overflows (coordinates within
+    // 2^29, samples below 2^30, so differences within 2^31 and every product and edge
+    // value below 2^62); the test profile keeps the checks on.
+    let sub = |a: i64, b: i64| a.minus(&b);
+    let mul = |a: i64, b: i64| a.times(&b);
     let [a, b, c] = tri.coords();
     // Oriented so that the interior is E > 0: twice the area is E_ab(c).
-    let area2 = (c[0] - a[0]) * (b[1] - a[1]) - (c[1] - a[1]) * (b[0] - a[0]);
+    let area2 = sub(
+        mul(sub(c[0], a[0]), sub(b[1], a[1])),
+        mul(sub(c[1], a[1]), sub(b[0], a[0])),
+    );
     let (b, c) = match area2.cmp(&0) {
         std::cmp::Ordering::Equal => return None,
         std::cmp::Ordering::Greater => (b, c),
         std::cmp::Ordering::Less => (c, b),
     };
-    let grid = FixedGrid::of(conv);
-    let lo = |k: usize| grid.first_at_or_after(a[k].min(b[k]).min(c[k]));
-    let hi = |k: usize| grid.last_at_or_before(a[k].max(b[k]).max(c[k]));
-    let range = PixelRange::clamped([lo(0), lo(1)], [hi(0), hi(1)], target.width, target.height)?;
-    let first = grid.sample_point(range.x0, range.y0);
     let shift = conv.subpixel_bits;
+    let grid = FixedGrid::of(conv);
+    // `FixedGrid::first_at_or_after` and `last_at_or_before` (ceil and floor of
+    // `(v - centre) / 2^S`), as shifts in lane arithmetic.
+    let min = |k: usize| a[k].min(b[k]).min(c[k]);
+    let max = |k: usize| a[k].max(b[k]).max(c[k]);
+    let (min, max) = ([min(0), min(1)], [max(0), max(1)]);
+    let lo = |k: usize| sub(0, sub(grid.centre, min[k]) >> shift);
+    let hi = |k: usize| sub(max[k], grid.centre) >> shift;
+    let range = PixelRange::clamped([lo(0), lo(1)], [hi(0), hi(1)], target.width, target.height)?;
+    let span = sub(max[0], min[0]).max(sub(max[1], min[1]));
+    let first = [
+        (i64::from(range.x0) << shift) + grid.centre,
+        (i64::from(range.y0) << shift) + grid.centre,
+    ];
     // The tie rule's `is_inclusive` without a branch: an edge going down owns its
     // samples, and a horizontal one (dx != 0: no edge of a triangle with area has length
     // zero) when it runs left under top-left, right under bottom-left.
@@ -150,16 +157,19 @@ fn edges_at_first_sample(tri: &FixedTriangle, target: &Target) -> Option<(Edges<
         step_y: [0; 3],
     };
     for (k, (from, to)) in [(a, b), (b, c), (c, a)].into_iter().enumerate() {
-        let (dx, dy) = (to[0] - from[0], to[1] - from[1]);
+        let (dx, dy) = (sub(to[0], from[0]), sub(to[1], from[1]));
         let inclusive = (dy > 0) | ((dy == 0) & ((dx > 0) == bottom_left));
         debug_assert_eq!(inclusive, conv.tie_rule.is_inclusive(dx.cmp(&0), dy.cmp(&0)));
         let bias = i64::from(!inclusive);
-        lanes.origin[k] = (first[0] - from[0]) * dy - (first[1] - from[1]) * dx - bias;
+        lanes.origin[k] = sub(
+            sub(mul(sub(first[0], from[0]), dy), mul(sub(first[1], from[1]), dx)),
+            bias,
+        );
         // One pixel right adds dY (in pixel units: dY * 2^S); one pixel down subtracts dX.
         lanes.step_x[k] = dy << shift;
-        lanes.step_y[k] = -(dx << shift);
+        lanes.step_y[k] = sub(0, dx << shift);
     }
-    Some((lanes, range))
+    Some((lanes, range, span))
 }
 
 /// The per-triangle setup shared by the integer rasterizers.
@@ -256,12 +266,16 @@ mod tests {
                     Point::from_fractions(c(next()) + 100 * 97, 97, c(next()) + 100 * 97, 97)
                 };
                 let t = Triangle::new(p(), p(), p());
-                let Some((lanes, range)) = edges_at_first_sample(&fixed_of(&t, &target), &target) else {
+                let Some((lanes, range, span)) = edges_at_first_sample(&fixed_of(&t, &target), &target) else {
                     continue;
                 };
-                let ours = traversal_bound(&lanes, &range);
-                assert!(BigInt::from(ours) >= exact_bound(&lanes, &range), "{t:?}");
-                if narrowed(&lanes, &range).is_some() {
+                if narrowed(&lanes, span).is_some() {
+                    let exact = exact_bound(&lanes, &range);
+                    // the proof's bound, and under it the largest value the traversal holds
+                    assert!(exact <= BigInt::from(4 * span * span + 2), "{t:?}");
+                    assert!(exact <= BigInt::from(i32::MAX), "{t:?}");
+                    let steps = [lanes.step_x, lanes.step_y].concat();
+                    assert!(steps.iter().all(|s| i32::try_from(*s).is_ok()), "{t:?}");
                     narrow += 1;
                 } else {
                     wide += 1;
@@ -273,9 +287,9 @@ mod tests {
     }
 
     /// At the i32 plan's edge: the right triangle (0,0) (n,0) (0,n) subpixels, grown one
-    /// subpixel at a time; the last n whose bound fits i32 is traversed in i32 and the
-    /// next in i64, and both equal the oracle. By hand: for n ~ 128 px the bound is about
-    /// `2 * 2^8 * n_px * n` ~ 2^31.
+    /// subpixel at a time; the last n traversed in i32 is the proof's 23170 subpixels
+    /// (`4 n^2 + 2 <= i32::MAX` for it, not for the next), the next runs in i64, and both
+    /// equal the oracle.
     #[test]
     fn both_sides_of_the_i32_plan_equal_the_oracle() {
         let target = Target::new(160, 160, Preset::Cts.convention()).unwrap();
@@ -287,12 +301,13 @@ mod tests {
             )
         };
         let fits = |n: i64| {
-            let (lanes, range) = edges_at_first_sample(&fixed_of(&tri(n), &target), &target).unwrap();
-            narrowed(&lanes, &range).is_some()
+            let (lanes, _, span) = edges_at_first_sample(&fixed_of(&tri(n), &target), &target).unwrap();
+            narrowed(&lanes, span).is_some()
         };
         let lo = crate::num::last_where(256, 160 * 256, fits);
         let hi = lo + 1;
-        assert!((100 * 256..140 * 256).contains(&lo), "the edge at {lo} subpixels");
+        assert_eq!(lo, 23_170, "the edge");
+        assert!(4 * lo * lo + 2 <= i64::from(i32::MAX) && 4 * hi * hi + 2 > i64::from(i32::MAX));
         equal_to_oracle(&tri(lo), &target);
         equal_to_oracle(&tri(hi), &target);
     }
