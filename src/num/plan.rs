@@ -331,8 +331,9 @@ pub trait Lane: Clone + fmt::Debug {
     /// The masks of `rows + 1` consecutive rows ([`Lane::row_mask`]; `HALF` says that
     /// `last < HALF_ROW`, so that the machine integers need test only half the lanes):
     /// `cover(i, mask)` for row `i` from 0, whose first sample holds `first + i * step_y`;
-    /// every value at the rows' samples up to `last` is within the plan's bound. Row by row here; the machine integers keep each
-    /// edge's row of lanes in SIMD registers and step them down by one vector add.
+    /// every value at the rows' samples up to `last` is within the plan's bound. Row by row
+    /// here; the machine integers keep each edge's row of lanes in SIMD registers and step
+    /// them down by one vector add.
     #[inline(always)]
     fn row_masks<const HALF: bool>(
         first: &[Self; 3],
@@ -423,11 +424,6 @@ macro_rules! int_lane {
     };
 }
 
-/// [`Lane::row_mask`] in SIMD (the `wide` crate: SSE2 on every x86-64, AVX2 when the
-/// build enables it, scalar elsewhere): all [`ROW`] lanes added and tested at once,
-/// wrapping, since lanes past `last` may leave the bound and are masked off; the sign
-/// bits of `e0 | e1 | e2` are the lanes outside. Under debug assertions the lanes up to
-/// `last` are checked for overflow first, as every other lane operation is.
 /// Under debug assertions, that each row value plus each ramp step up to lane `last` is
 /// exact (the SIMD lanes wrap).
 macro_rules! check_row {
@@ -486,6 +482,11 @@ macro_rules! row_masks_in {
     }};
 }
 
+/// [`Lane::row_mask`] in SIMD (the `wide` crate: SSE2 on every x86-64, AVX2 when the
+/// build enables it, scalar elsewhere): all [`ROW`] lanes added and tested at once,
+/// wrapping, since lanes past `last` may leave the bound and are masked off; the sign
+/// bits of `e0 | e1 | e2` are the lanes outside. Under debug assertions the lanes up to
+/// `last` are checked for overflow first, as every other lane operation is.
 macro_rules! simd_row_mask {
     ($t:ty, $v:ident, $per:expr, $half:ident) => {
         /// As the default, without a loop-carried add or a multiply (SSE2 has no 32-bit
@@ -734,9 +735,10 @@ mod tests {
         check::<BigInt>();
     }
 
-    /// The SIMD `ramp`, `row_mask` and `row_masks` (whole and half rows) of the machine integers, and the
-    /// trait's own loops (i128), against plain loops over the lanes, at every row length, for steps and rows of both signs,
-    /// small and near the width's limit (every value the lanes must hold within it).
+    /// The SIMD `ramp`, `row_mask` and `row_masks` (whole and half rows) of the machine
+    /// integers, and the trait's own loops (i128), against plain loops over the lanes, at
+    /// every row length, for steps and rows of both signs, small and near the width's
+    /// limit (every value the lanes must hold within it).
     #[test]
     #[allow(clippy::needless_range_loop, clippy::cast_possible_truncation)] // lanes by index, as written
     fn simd_rows_equal_plain_loops() {
@@ -777,24 +779,19 @@ mod tests {
                     assert_eq!(T::row_mask(&row, &ramp, last), plain_mask, "row of {last}, case {case}");
                     // three rows stepped down by `down`, against each row's mask from scratch
                     let down: [T; 3] = std::array::from_fn(|_| t(next(m / 16)));
-                    let mut want = Vec::new();
-                    for i in 0..3i64 {
-                        let r: [T; 3] = std::array::from_fn(|k| row[k] + down[k] * t(i));
-                        want.push(T::row_mask(&r, &ramp, last));
-                    }
+                    let want: Vec<(u32, u32)> = (0..3u32)
+                        .map(|i| {
+                            let r: [T; 3] = std::array::from_fn(|k| row[k] + down[k] * t(i64::from(i)));
+                            (i, T::row_mask(&r, &ramp, last))
+                        })
+                        .collect();
                     let mut got = Vec::new();
                     T::row_masks::<false>(&row, &down, &ramp, last, 2, |i, mask| got.push((i, mask)));
-                    assert_eq!(
-                        got,
-                        want.iter().enumerate().map(|(i, &m)| (i as u32, m)).collect::<Vec<_>>()
-                    );
+                    assert_eq!(got, want, "rows of {last}, case {case}");
                     if (last as usize) < HALF_ROW {
                         got.clear();
                         T::row_masks::<true>(&row, &down, &ramp, last, 2, |i, mask| got.push((i, mask)));
-                        assert_eq!(
-                            got,
-                            want.iter().enumerate().map(|(i, &m)| (i as u32, m)).collect::<Vec<_>>()
-                        );
+                        assert_eq!(got, want, "half rows of {last}, case {case}");
                     }
                 }
             }
