@@ -22,13 +22,17 @@
 //! zero, top-left rule, sample at the pixel centre):
 //! - `crate fixed`, `crate scanline`, `crate exact-snapped`: the crate's models through
 //!   `prepare` (outside the timer) and `PreparedScene::draw` into [`Grid`], a
-//!   `CoverageSink` whose `cover` and `cover_span` write through a row slice;
+//!   `CoverageSink` whose `cover` and `cover_span` write through a row slice (a span of
+//!   at most eight pixels as one eight-byte add), `cover_mask` eight cells a time as one
+//!   `u64` and `cover_block` a block's row masks from one offset stepped by the row
+//!   length (only `exact-snapped`'s setup is in `prepare`: `fixed` and `scanline` set
+//!   each triangle up in `draw`);
 //! - `baseline plain`: a textbook i64 incremental edge-function loop over the bounding box
 //!   (E stepped by addition per pixel and per row, `e0 >= 0 && e1 >= 0 && e2 >= 0`);
 //! - `baseline branch-free`: the same loop adding the mask `(e0 | e1 | e2) >= 0`;
 //! - `baseline 8x8 blocks`: 8x8 blocks stepped by addition, one trivial-reject and one
-//!   trivial-accept corner per edge, accepted blocks as row spans, partial blocks per pixel
-//!   branch-free. The baselines snap the exact vertices themselves (i64, 8 bits, half away
+//!   trivial-accept corner per edge, accepted blocks as row spans (through the sink's
+//!   `cover_span`, as the crate's), partial blocks per pixel branch-free. The baselines snap the exact vertices themselves (i64, 8 bits, half away
 //!   from zero) and do their whole setup inside the timer, as the crate's draw does;
 //! - `tiny-skia fill`: tiny-skia's non-AA path fill (`anti_alias: false`,
 //!   `FillRule::Winding`, identity transform, opaque source-over, so its fast span path),
@@ -125,7 +129,30 @@ trait Cell: Copy + Default + PartialEq {
             rest >>= 1;
         }
     }
+    /// `add_mask` on eight cells and an eight-bit mask.
+    #[inline(always)]
+    fn add_mask8(cells: &mut [Self; 8], mask: u8) {
+        Self::add_mask(cells, u32::from(mask));
+    }
 }
+
+/// Each 8-bit mask as eight bytes, byte `i` 1 where bit `i` is set (the SWAR `add_mask`'s
+/// spread, one load instead of a multiply and four masks).
+const BYTE_ONES: [u64; 256] = {
+    let mut table = [0; 256];
+    let mut m = 0;
+    while m < 256 {
+        let mut i = 0;
+        while i < 8 {
+            if m >> i & 1 != 0 {
+                table[m] |= 1 << (8 * i);
+            }
+            i += 1;
+        }
+        m += 1;
+    }
+    table
+};
 
 impl Cell for u8 {
     #[inline(always)]
@@ -146,7 +173,6 @@ impl Cell for u8 {
     /// the next), while the row has eight cells left.
     #[inline(always)]
     fn add_mask(cells: &mut [u8], mask: u32) {
-        const HIGH: u64 = 0x8080_8080_8080_8080;
         let mut rest = mask;
         let mut at = 0;
         while rest != 0 {
@@ -158,16 +184,18 @@ impl Cell for u8 {
                 }
                 return;
             };
-            // the low 8 bits of `rest`, one per byte
-            // (bit i of the mask lands in byte i as 2^i, then each non-zero byte becomes 1)
-            let spread = u64::from(rest & 0xff).wrapping_mul(0x0101_0101_0101_0101) & 0x8040_2010_0804_0201;
-            let ones = ((spread + 0x7f7f_7f7f_7f7f_7f7f) & HIGH) >> 7;
-            let v = u64::from_le_bytes(chunk.try_into().expect("eight cells"));
-            let sum = ((v & !HIGH) + ones) ^ (v & HIGH);
-            chunk.copy_from_slice(&sum.to_le_bytes());
+            Self::add_mask8(chunk.try_into().expect("eight cells"), rest.to_le_bytes()[0]);
             rest >>= 8;
             at += 8;
         }
+    }
+    /// Each byte's +0/+1 without a carry into the next.
+    #[inline(always)]
+    fn add_mask8(cells: &mut [u8; 8], mask: u8) {
+        const HIGH: u64 = 0x8080_8080_8080_8080;
+        let ones = BYTE_ONES[usize::from(mask)];
+        let v = u64::from_le_bytes(*cells);
+        *cells = (((v & !HIGH) + ones) ^ (v & HIGH)).to_le_bytes();
     }
 }
 
@@ -251,8 +279,20 @@ impl<T: Cell> CoverageSink for Grid<T> {
 
     #[inline]
     fn cover_span(&mut self, y: u32, x0: u32, x1: u32, _id: u32) {
-        if x0 <= x1 {
-            self.row(ix(y))[ix(x0)..=ix(x1)].iter_mut().for_each(Cell::bump);
+        if x0 > x1 {
+            return;
+        }
+        let (row, x0, len) = (self.row(ix(y)), ix(x0), ix(x1 - x0) + 1);
+        match row.get_mut(x0..x0 + 8) {
+            // a short span with eight cells on the canvas from its start: one eight-cell add
+            // (longer ones vectorise as they are)
+            Some(cells) if len <= 8 => {
+                T::add_mask8(
+                    cells.try_into().expect("eight cells"),
+                    (0xffff_u16 >> (16 - len)).to_le_bytes()[0],
+                );
+            }
+            _ => row[x0..x0 + len].iter_mut().for_each(Cell::bump),
         }
     }
 
@@ -260,6 +300,35 @@ impl<T: Cell> CoverageSink for Grid<T> {
     #[inline(always)]
     fn cover_mask(&mut self, y: u32, x0: u32, mask: u32, _id: u32) {
         T::add_mask(&mut self.row(ix(y))[ix(x0)..], mask);
+    }
+
+    /// The rows' masks from one offset stepped by the row length, when the block's eight
+    /// columns are all on the canvas; else row by row.
+    #[inline(always)]
+    fn cover_block(&mut self, y0: u32, x0: u32, block: u64, id: u32) {
+        let rows = ix((71 - block.leading_zeros()) / 8); // up to the last non-zero byte
+        let (x0, y0u) = (ix(x0), ix(y0));
+        if x0 + 8 > self.width || y0u + rows > self.height {
+            let mut rest = block;
+            for y in y0.. {
+                if rest == 0 {
+                    break;
+                }
+                self.cover_mask(
+                    y,
+                    u32::try_from(x0).expect("a column"),
+                    u32::from(rest.to_le_bytes()[0]),
+                    id,
+                );
+                rest >>= 8;
+            }
+            return;
+        }
+        let mut at = y0u * self.width + x0;
+        for row in block.to_le_bytes().into_iter().take(rows) {
+            T::add_mask8((&mut self.cells[at..at + 8]).try_into().expect("eight cells"), row);
+            at += self.width;
+        }
     }
 }
 
@@ -427,8 +496,10 @@ fn baseline_blocks<T: Cell>(tris: &[Snapped], grid: &mut Grid<T>) {
                 let rejected = ((e[0] + hi[0]) | (e[1] + hi[1]) | (e[2] + hi[2])) < 0;
                 if !rejected {
                     if ((e[0] + lo[0]) | (e[1] + lo[1]) | (e[2] + lo[2])) >= 0 {
+                        // the sink's span writer, as the crate's accepted blocks use
+                        let col = |x: usize| u32::try_from(x).expect("a column");
                         for y in by..=by1 {
-                            grid.row(y)[bx..=bx1].iter_mut().for_each(Cell::bump);
+                            grid.cover_span(col(y), col(bx), col(bx1), 0);
                         }
                     } else {
                         let mut pe_row = e;

@@ -48,6 +48,27 @@ pub trait CoverageSink {
             rest = if end >= u32::BITS { 0 } else { rest >> end << end };
         }
     }
+
+    /// The masks of up to eight consecutive rows of at most eight pixels at once, byte `i`
+    /// of `block` being row `y0 + i`'s [`CoverageSink::cover_mask`] (bit `8 i + j` covers
+    /// pixel `(x0 + j, y0 + i)`; a set bit is always a pixel of the canvas, and the rows
+    /// past the last non-zero byte may not exist). What the block traversals write for a
+    /// block the triangle's edges cross: a sink that can step from row to row without
+    /// finding each row again overrides it; by default each non-zero byte is one
+    /// `cover_mask`.
+    #[inline]
+    fn cover_block(&mut self, y0: u32, x0: u32, block: u64, id: u32) {
+        let mut rest = block;
+        let mut y = y0;
+        while rest != 0 {
+            let row = u32::from(rest.to_le_bytes()[0]);
+            if row != 0 {
+                self.cover_mask(y, x0, row, id);
+            }
+            rest >>= 8;
+            y += 1;
+        }
+    }
 }
 
 /// The largest primitive id a [`Coverage`] takes: `u32::MAX - 2` (the two values above it
@@ -366,6 +387,25 @@ mod tests {
         assert_eq!(spans(0x8000_0000), vec![(3, 41, 41)]);
         assert_eq!(spans(u32::MAX), vec![(3, 10, 41)]);
         assert_eq!(spans(0xF000_000F), vec![(3, 10, 13), (3, 38, 41)]);
+    }
+
+    /// The default `cover_block`: byte `i` is row `y0 + i`'s mask, zero bytes write
+    /// nothing, and nothing past the last non-zero byte is touched (by hand).
+    #[test]
+    fn a_block_is_its_rows_masks() {
+        let spans = |block: u64| {
+            let mut s = Spans::default();
+            s.cover_block(5, 10, block, 0);
+            s.0
+        };
+        assert_eq!(spans(0), vec![]);
+        assert_eq!(spans(1), vec![(5, 10, 10)]);
+        // row 0: 0b0000_0101 (pixels 10, 12); row 1: none; row 2: 0xff (10..=17)
+        assert_eq!(spans(0x00ff_0005), vec![(5, 10, 10), (5, 12, 12), (7, 10, 17)]);
+        // the last row's top bit: pixel (17, 12)
+        assert_eq!(spans(0x8000_0000_0000_0000), vec![(12, 17, 17)]);
+        assert_eq!(spans(u64::MAX).len(), 8);
+        assert_eq!(spans(u64::MAX)[7], (12, 10, 17));
     }
 
     /// `CountBuffer::cover_mask` adds exactly the mask's bits, up to the row's last pixel

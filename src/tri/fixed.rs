@@ -4,7 +4,8 @@
 //! the block corner where E is largest rejects the block when negative and the opposite
 //! corner accepts it when not (a run of accepted blocks along a block row is written as
 //! one span per row); only the rest is tested, a row of up to eight pixels at a time as
-//! one SIMD bit mask written whole ([`CoverageSink::cover_mask`]). Block origins are stepped by addition.
+//! one SIMD bit mask, and a block's masks written at once ([`CoverageSink::cover_block`]).
+//! Block origins are stepped by addition.
 //!
 //! Width, per triangle: i32 when a bound computed from the setup shows every value of
 //! the traversal fits (eight lanes per SIMD test; most triangles of a canvas-sized scene),

@@ -464,8 +464,11 @@ fn visit_block<T: Lane, S: CoverageSink + ?Sized>(
 
 /// The samples of a `[w, h]` rectangle of pixels from `at`, `origin` holding `E - bias` at
 /// its first, `ramp` the steps across a row: each row's inside samples are one mask
-/// ([`Lane::row_masks`], half rows when `HALF` says `w < HALF_ROW`), written whole
-/// ([`CoverageSink::cover_mask`]).
+/// ([`Lane::row_masks`], half rows when `HALF` says `w < HALF_ROW`), and the rectangle's
+/// masks one write ([`CoverageSink::cover_block`]: with the rows' writes between them,
+/// `fixed` on the peer bench's 10k medium triangles took 3.05-3.13 ms against 2.73-2.86,
+/// its 100k small ones 4.53-4.73 against 4.35-4.46; two alternating runs of each build,
+/// overflow checks off).
 #[inline(always)]
 fn fill_rows<T: Lane, S: CoverageSink + ?Sized, const HALF: bool>(
     e: &Edges<T>,
@@ -479,9 +482,14 @@ fn fill_rows<T: Lane, S: CoverageSink + ?Sized, const HALF: bool>(
     let [x0, y0] = at;
     let [w, h] = size;
     debug_assert!(w < BLOCK, "rows are at most a block wide");
+    // every row's mask first, then one write (`ROW` bits a row, at most `BLOCK` rows)
+    let mut block = 0u64;
     T::row_masks::<HALF>(origin, &e.step_y, ramp, w, h, |i, mask| {
-        sink.cover_mask(y0 + i, x0, mask, id)
+        block |= u64::from(mask) << (i * 8);
     });
+    if block != 0 {
+        sink.cover_block(y0, x0, block, id);
+    }
 }
 
 #[cfg(test)]
