@@ -149,6 +149,7 @@ fn add_owner(
 impl CoverageSink for Coverage {
     /// # Panics
     /// `id` above [`MAX_ID`], or `(x, y)` off the canvas.
+    #[inline]
     fn cover(&mut self, x: u32, y: u32, id: u32) {
         self.cover_span(y, x, x, id);
     }
@@ -157,6 +158,7 @@ impl CoverageSink for Coverage {
     ///
     /// # Panics
     /// `id` above [`MAX_ID`], or the span off the canvas.
+    #[inline]
     fn cover_span(&mut self, y: u32, x0: u32, x1: u32, id: u32) {
         assert!(id <= MAX_ID, "primitive id {id} above the largest, {MAX_ID}");
         assert!(
