@@ -32,8 +32,9 @@
 //! - `baseline branch-free`: the same loop adding the mask `(e0 | e1 | e2) >= 0`;
 //! - `baseline 8x8 blocks`: 8x8 blocks stepped by addition, one trivial-reject and one
 //!   trivial-accept corner per edge, accepted blocks as row spans (through the sink's
-//!   `cover_span`, as the crate's), partial blocks per pixel branch-free. The baselines snap the exact vertices themselves (i64, 8 bits, half away
-//!   from zero) and do their whole setup inside the timer, as the crate's draw does;
+//!   `cover_span`, as the crate's), partial blocks per pixel branch-free. The baselines
+//!   snap the exact vertices themselves (i64, 8 bits, half away from zero) and do their
+//!   whole setup inside the timer, as the crate's draw does;
 //! - `tiny-skia fill`: tiny-skia's non-AA path fill (`anti_alias: false`,
 //!   `FillRule::Winding`, identity transform, opaque source-over, so its fast span path),
 //!   one `fill_path` per triangle (one path of all of them would merge overlaps), into a
@@ -307,26 +308,17 @@ impl<T: Cell> CoverageSink for Grid<T> {
     #[inline(always)]
     fn cover_block(&mut self, y0: u32, x0: u32, block: u64, id: u32) {
         let rows = ix((71 - block.leading_zeros()) / 8); // up to the last non-zero byte
-        let (x0, y0u) = (ix(x0), ix(y0));
-        if x0 + 8 > self.width || y0u + rows > self.height {
-            let mut rest = block;
-            for y in y0.. {
-                if rest == 0 {
-                    break;
-                }
-                self.cover_mask(
-                    y,
-                    u32::try_from(x0).expect("a column"),
-                    u32::from(rest.to_le_bytes()[0]),
-                    id,
-                );
-                rest >>= 8;
+        let masks = block.to_le_bytes().into_iter().take(rows);
+        let (x, y) = (ix(x0), ix(y0));
+        if x + 8 > self.width || y + rows > self.height {
+            for (y, mask) in (y0..).zip(masks) {
+                self.cover_mask(y, x0, u32::from(mask), id);
             }
             return;
         }
-        let mut at = y0u * self.width + x0;
-        for row in block.to_le_bytes().into_iter().take(rows) {
-            T::add_mask8((&mut self.cells[at..at + 8]).try_into().expect("eight cells"), row);
+        let mut at = y * self.width + x;
+        for mask in masks {
+            T::add_mask8((&mut self.cells[at..at + 8]).try_into().expect("eight cells"), mask);
             at += self.width;
         }
     }
@@ -497,9 +489,9 @@ fn baseline_blocks<T: Cell>(tris: &[Snapped], grid: &mut Grid<T>) {
                 if !rejected {
                     if ((e[0] + lo[0]) | (e[1] + lo[1]) | (e[2] + lo[2])) >= 0 {
                         // the sink's span writer, as the crate's accepted blocks use
-                        let col = |x: usize| u32::try_from(x).expect("a column");
+                        let at = |v: usize| u32::try_from(v).expect("on the canvas");
                         for y in by..=by1 {
-                            grid.cover_span(col(y), col(bx), col(bx1), 0);
+                            grid.cover_span(at(y), at(bx), at(bx1), 0);
                         }
                     } else {
                         let mut pe_row = e;
