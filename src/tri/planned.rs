@@ -482,7 +482,9 @@ fn fill_rows<T: Lane, S: CoverageSink + ?Sized, const HALF: bool>(
     let [x0, y0] = at;
     let [w, h] = size;
     debug_assert!(w < BLOCK, "rows are at most a block wide");
-    // every row's mask first, then one write (`ROW` bits a row, at most `BLOCK` rows)
+    // every row's mask first, then one write: byte `i` row `i`, `cover_block`'s layout
+    // (a row's mask fits its byte and the rows the block's eight bytes)
+    const { assert!(ROW <= 8 && BLOCK <= 8, "a block's masks fill one u64") };
     let mut block = 0u64;
     T::row_masks::<HALF>(origin, &e.step_y, ramp, w, h, |i, mask| {
         block |= u64::from(mask) << (i * 8);
