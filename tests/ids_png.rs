@@ -1,4 +1,4 @@
-//! `render --ids-out` (issue 11, part 6; DESIGN.md §5 "ids PNG"): the file read back with
+//! `render --ids-out` (the ids PNG format in docs/cli.md): the file read back with
 //! the `image` crate holds, pixel by pixel, what the coverage says: `id + 1` little-endian
 //! in R, G, B, alpha 255 for one owner, the highest id with alpha 254 for several, zero
 //! where uncovered.

@@ -9,6 +9,9 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
+#[path = "layering/map.rs"]
+mod map;
+
 /// The layers, bottom first. A module may use its own layer and the ones below it.
 /// A new top-level module must be added here, in the layer it belongs to (the test fails
 /// for a file, or a `crate::X` reference, whose module is not in this table).

@@ -40,13 +40,13 @@ fn ok(r: Result<(), rasterproof::check::Violation>) -> Result<(), TestCaseError>
 proptest! {
     #![proptest_config(config("proptest-regressions/properties.txt"))]
 
-    /// Invariant 3: fixed == exact-snapped on every triangle family and every preset.
+    /// Model agreement: fixed == exact-snapped on every triangle family and every preset.
     #[test]
     fn fixed_equals_exact_snapped(t in any_triangle(CANVAS), p in preset()) {
         agree(&[t], &target(CANVAS, p))?;
     }
 
-    /// Invariant 3 under every snapping rounding (the directed ones too: floor, ceiling,
+    /// Model agreement under every snapping rounding (the directed ones too: floor, ceiling,
     /// towards zero) and every subpixel precision: fixed and scanline == exact-snapped.
     #[test]
     fn integer_models_equal_exact_snapped_under_every_rounding(
@@ -66,7 +66,7 @@ proptest! {
         }
     }
 
-    /// Invariant 3 far from the origin, on the largest canvas.
+    /// Model agreement far from the origin, on the largest canvas.
     #[test]
     fn fixed_equals_exact_snapped_far_from_origin(t in triangle(Scale::FarFromOrigin, MAX_CANVAS), p in preset()) {
         agree(&[t], &target(MAX_CANVAS, p))?;
@@ -91,7 +91,7 @@ proptest! {
         }
     }
 
-    /// Invariant 2 on random Delaunay meshes: every sample inside the hull owned exactly
+    /// Watertightness on random Delaunay meshes: every sample inside the hull owned exactly
     /// once, none outside, no double cover.
     #[test]
     fn meshes_are_watertight(mesh in delaunay_mesh([-4, -4], 40, 8, 24), p in preset()) {
@@ -103,7 +103,7 @@ proptest! {
         }
     }
 
-    /// Invariant 2 on tie-heavy meshes (vertices on the half-pixel grid: samples on shared
+    /// Watertightness on tie-heavy meshes (vertices on the half-pixel grid: samples on shared
     /// edges and on vertices everywhere).
     #[test]
     fn tie_heavy_meshes_are_watertight(mesh in tie_heavy_mesh(CANVAS, 24), p in preset()) {
@@ -115,7 +115,7 @@ proptest! {
         agree(&mesh.triangles, &target)?;
     }
 
-    /// Invariant 1: exact barycentrics sum to 1 anywhere (inside or extrapolated); integer
+    /// The barycentric invariant: exact barycentrics sum to 1 anywhere (inside or extrapolated); integer
     /// edge values sum to twice the area at every sample of the canvas corners and centre.
     #[test]
     fn barycentrics_sum_exactly(t in any_triangle(CANVAS), x in 0u32..CANVAS, y in 0u32..CANVAS, p in preset()) {
@@ -129,7 +129,7 @@ proptest! {
         }
     }
 
-    /// Invariant 4: rotation and winding reversal change nothing.
+    /// Invariance: rotation and winding reversal change nothing.
     #[test]
     fn rotation_and_winding_change_nothing(t in any_triangle(CANVAS), p in preset()) {
         let target = target(CANVAS, p);
@@ -138,7 +138,7 @@ proptest! {
         }
     }
 
-    /// Invariant 4: translation by whole pixels moves the coverage (nearest-even presets;
+    /// Invariance: translation by whole pixels moves the coverage (nearest-even presets;
     /// see `check_translation` for why half-away-from-zero is excluded).
     #[test]
     fn translation_moves_coverage(t in any_triangle(CANVAS), dx in -6i64..=6, dy in -6i64..=6,

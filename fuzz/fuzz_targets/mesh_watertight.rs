@@ -1,4 +1,4 @@
-//! Watertight meshes and invariance (DESIGN §3, invariants 2 and 4): a rectangle cut into
+//! Watertight meshes and invariance (the watertight and invariance checkers): a rectangle cut into
 //! a grid of 1 to 3 x 1 to 3 cells, every interior vertex moved within its cell (and
 //! every boundary vertex along its side) by less than 1/16 of a cell, each cell split
 //! along either diagonal:

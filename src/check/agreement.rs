@@ -1,4 +1,4 @@
-//! Invariant 3: two models agree pixel for pixel (fixed == exact-snapped; float against
+//! Model agreement: two models agree pixel for pixel (fixed == exact-snapped; float against
 //! exact, where the differences are the float trade).
 
 use std::collections::BTreeSet;

@@ -1,4 +1,4 @@
-//! Invariant 1: barycentrics sum to exactly 1 (exact); integer edge values sum to twice the
+//! The barycentric invariant: barycentrics sum to exactly 1 (exact); integer edge values sum to twice the
 //! area (fixed); float sums are off by a measured number of ulps.
 
 use num_traits::One;

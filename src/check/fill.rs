@@ -1,4 +1,4 @@
-//! Invariant 7 (fills): a triangulation of a polygon covers exactly the polygon's fill,
+//! The fill invariants: a triangulation of a polygon covers exactly the polygon's fill,
 //! each pixel once.
 
 use super::Violation;

@@ -1,4 +1,4 @@
-//! Invariant 4: coverage does not change under vertex rotation or winding reversal, and
+//! Invariance: coverage does not change under vertex rotation or winding reversal, and
 //! moves with a translation by whole pixels.
 
 use super::Violation;

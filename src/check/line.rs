@@ -1,4 +1,4 @@
-//! Invariant 5: lines. Bresenham pixels lie within 1/2 pixel of the ideal line on the minor
+//! The line invariants: Bresenham pixels lie within 1/2 pixel of the ideal line on the minor
 //! axis, one per major step, endpoints included, 8-connected, none twice; they equal the
 //! exact reference except at exact ties, where they follow the convention; `a -> b` and
 //! `b -> a` differ only at ties. The integer diamond-exit model equals the exact reading.

@@ -1,4 +1,4 @@
-//! Invariant 2: a triangulation of a convex region covers every sample inside the region
+//! Watertightness: a triangulation of a convex region covers every sample inside the region
 //! exactly once and nothing outside; no pixel is covered twice.
 //!
 //! "Inside the region" is decided independently of the triangles: against the region's

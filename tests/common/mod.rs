@@ -1,6 +1,6 @@
 //! An independent oracle for the tests, sharing no code with the crate's models: integer
 //! snapping written out by hand, i128 edge values on the subpixel grid, and the tie rule
-//! taken literally from DESIGN.md's reading — the sample is moved right by ε and down
+//! taken literally from its ε reading — the sample is moved right by ε and down
 //! (top-left) or up (bottom-left) by ε², and E at the moved sample is compared with 0 as
 //! a polynomial in ε (lexicographically: E, then dE/dε, then the ε² coefficient).
 
