@@ -22,6 +22,7 @@
 //! clipped *segment* that shrinks to one point is a real result (a segment of length
 //! zero: the one point of the closed segment in the closed window) and is kept.
 
+pub mod arithmetic;
 pub mod cohen_sutherland;
 pub mod halfplane;
 pub mod homogeneous;

@@ -1,0 +1,259 @@
+//! Clipping in a chosen arithmetic, results read back exactly: the one place that picks,
+//! for exact, f64 or f32, which clipper runs and how its inputs are converted (a
+//! coordinate that does not fit the float type is an error naming it) and its float
+//! results are turned back into exact points (every finite float is a rational). What
+//! `rasterproof clip --model` computes.
+//!
+//! - a closed contour: Sutherland-Hodgman (Sutherland & Hodgman 1974) against the
+//!   window's half-planes, then [`area_or_empty`];
+//! - a segment: Cohen-Sutherland (Sproull & Sutherland 1968) against a rectangle,
+//!   Cyrus-Beck against a convex window;
+//! - a clip-space triangle: clipped against the view volume, divided and mapped
+//!   (Blinn & Newell 1978), then clipped against the window as a contour.
+
+use glam::{DVec2, Vec2};
+use num_rational::BigRational;
+
+use super::halfplane::{clip_segment_exact, HalfPlane, HalfPlaneF32, HalfPlaneF64};
+use super::homogeneous::{self, clip_to_window_exact, divide_then_clip_exact, ClipVertex, ProjectError, Viewport};
+use super::{area_or_empty, cohen_sutherland, sutherland_hodgman, Window};
+use crate::geom::Point;
+
+/// The arithmetic a [`Clipper`] runs in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Arithmetic {
+    /// BigRational: the exact result.
+    Exact,
+    /// f64 with glam.
+    F64,
+    /// f32 with glam.
+    F32,
+}
+
+impl Arithmetic {
+    /// The arithmetic named `exact`, `float64` or `float32` (the CLI's `--model`), `None`
+    /// for any other name.
+    pub fn from_name(name: &str) -> Option<Arithmetic> {
+        match name {
+            "exact" => Some(Arithmetic::Exact),
+            "float64" => Some(Arithmetic::F64),
+            "float32" => Some(Arithmetic::F32),
+            _ => None,
+        }
+    }
+}
+
+/// A float's exact value.
+fn from_f64(v: f64) -> Result<BigRational, String> {
+    BigRational::from_float(v).ok_or_else(|| format!("a float result is not finite: {v}"))
+}
+
+fn point64(p: DVec2) -> Result<Point, String> {
+    Ok(Point::new(from_f64(p.x)?, from_f64(p.y)?))
+}
+
+fn point32(p: Vec2) -> Result<Point, String> {
+    point64(p.as_dvec2())
+}
+
+/// Clipping against one window (or none) in one arithmetic. Every error is a sentence
+/// that starts with the name of what was being clipped (`what`, e.g. `triangles[2]`).
+///
+/// ```
+/// use rasterproof::clip::arithmetic::{Arithmetic, Clipper};
+/// use rasterproof::clip::Window;
+/// use rasterproof::geom::Point;
+/// use rasterproof::num::parse_rational;
+/// let n = |s| parse_rational(s).unwrap();
+/// let window = Window::rect(n("0"), n("0"), n("2"), n("2")).unwrap();
+/// let clipper = Clipper::new(Arithmetic::F32, Some(&window)).unwrap();
+/// let kept = clipper.segment(&Point::from_ints(-2, 1), &Point::from_ints(4, 1), "lines[0]").unwrap();
+/// assert_eq!(kept, Some((Point::from_ints(0, 1), Point::from_ints(2, 1))));
+/// ```
+pub struct Clipper {
+    arithmetic: Arithmetic,
+    window: Option<Window>,
+    planes: Vec<HalfPlane>,
+    planes64: Vec<HalfPlaneF64>,
+    planes32: Vec<HalfPlaneF32>,
+}
+
+impl Clipper {
+    /// A clipper for `window` (`None`: nothing is clipped) in `arithmetic`.
+    ///
+    /// # Errors
+    /// A line of the window has a coefficient beyond the float type (the message names
+    /// the window edge).
+    pub fn new(arithmetic: Arithmetic, window: Option<&Window>) -> Result<Clipper, String> {
+        let planes = window.map(Window::half_planes).unwrap_or_default();
+        let beyond = |k: usize, ty: &str| {
+            format!("clip: the line of window edge {k} has a coefficient (a, b or c in a x + b y + c >= 0) beyond {ty}")
+        };
+        let planes64 = match arithmetic {
+            Arithmetic::F64 => planes
+                .iter()
+                .enumerate()
+                .map(|(k, h)| h.to_f64().ok_or_else(|| beyond(k, "f64")))
+                .collect::<Result<Vec<_>, _>>()?,
+            _ => Vec::new(),
+        };
+        let planes32 = match arithmetic {
+            Arithmetic::F32 => planes
+                .iter()
+                .enumerate()
+                .map(|(k, h)| h.to_f32().ok_or_else(|| beyond(k, "f32")))
+                .collect::<Result<Vec<_>, _>>()?,
+            _ => Vec::new(),
+        };
+        Ok(Clipper {
+            arithmetic,
+            window: window.cloned(),
+            planes,
+            planes64,
+            planes32,
+        })
+    }
+
+    fn to64(p: &Point, what: &str) -> Result<DVec2, String> {
+        p.to_f64()
+            .ok_or_else(|| format!("{what}: a coordinate does not fit f64"))
+    }
+
+    fn to32(p: &Point, what: &str) -> Result<Vec2, String> {
+        p.to_f32()
+            .ok_or_else(|| format!("{what}: a coordinate does not fit f32"))
+    }
+
+    /// A closed contour clipped by Sutherland-Hodgman (unchanged without a window), empty
+    /// when what is left encloses no area ([`area_or_empty`]).
+    ///
+    /// # Errors
+    /// A coordinate does not fit the float type, or a float result is not finite.
+    pub fn contour(&self, c: &[Point], what: &str) -> Result<Vec<Point>, String> {
+        self.sutherland_hodgman(c, what).map(area_or_empty)
+    }
+
+    fn sutherland_hodgman(&self, c: &[Point], what: &str) -> Result<Vec<Point>, String> {
+        if self.window.is_none() {
+            return Ok(c.to_vec());
+        }
+        match self.arithmetic {
+            Arithmetic::Exact => Ok(sutherland_hodgman::clip_exact(c, &self.planes)),
+            Arithmetic::F64 => {
+                let v = c.iter().map(|p| Self::to64(p, what)).collect::<Result<Vec<_>, _>>()?;
+                sutherland_hodgman::clip_f64(&v, &self.planes64)
+                    .into_iter()
+                    .map(|p| point64(p).map_err(|e| format!("{what}: {e}")))
+                    .collect()
+            }
+            Arithmetic::F32 => {
+                let v = c.iter().map(|p| Self::to32(p, what)).collect::<Result<Vec<_>, _>>()?;
+                sutherland_hodgman::clip_f32(&v, &self.planes32)
+                    .into_iter()
+                    .map(|p| point32(p).map_err(|e| format!("{what}: {e}")))
+                    .collect()
+            }
+        }
+    }
+
+    /// A segment: Cohen-Sutherland for a rectangle, Cyrus-Beck for a convex window;
+    /// `None` when nothing of it is inside.
+    ///
+    /// # Errors
+    /// A coordinate or a bound does not fit the float type, or a float result is not
+    /// finite.
+    pub fn segment(&self, a: &Point, b: &Point, what: &str) -> Result<Option<(Point, Point)>, String> {
+        let Some(window) = &self.window else {
+            return Ok(Some((a.clone(), b.clone())));
+        };
+        let (fa, fb) = match self.arithmetic {
+            Arithmetic::Exact => (DVec2::ZERO, DVec2::ZERO),
+            Arithmetic::F64 => (Self::to64(a, what)?, Self::to64(b, what)?),
+            // f32 values, held in f64 (exactly) until the f32 clipper takes them back
+            Arithmetic::F32 => (Self::to32(a, what)?.as_dvec2(), Self::to32(b, what)?.as_dvec2()),
+        };
+        let both = |r: Option<(DVec2, DVec2)>| -> Result<Option<(Point, Point)>, String> {
+            r.map(|(p, q)| Ok((point64(p)?, point64(q)?)))
+                .transpose()
+                .map_err(|e: String| format!("{what}: {e}"))
+        };
+        match (window, self.arithmetic) {
+            (Window::Rect(r), Arithmetic::Exact) => Ok(cohen_sutherland::clip_exact(a, b, r)),
+            (Window::Convex(_), Arithmetic::Exact) => Ok(clip_segment_exact(a, b, &self.planes)),
+            (Window::Rect(r), Arithmetic::F64) => {
+                let r = r.to_f64().ok_or("clip: a bound does not fit f64")?;
+                both(cohen_sutherland::clip_f64(fa, fb, &r))
+            }
+            (Window::Rect(r), Arithmetic::F32) => {
+                let r = r.to_f32().ok_or("clip: a bound does not fit f32")?;
+                both(
+                    cohen_sutherland::clip_f32(fa.as_vec2(), fb.as_vec2(), &r)
+                        .map(|(p, q)| (p.as_dvec2(), q.as_dvec2())),
+                )
+            }
+            (Window::Convex(_), Arithmetic::F64) => both(HalfPlaneF64::clip_segment(fa, fb, &self.planes64)),
+            (Window::Convex(_), Arithmetic::F32) => both(
+                HalfPlaneF32::clip_segment(fa.as_vec2(), fb.as_vec2(), &self.planes32)
+                    .map(|(p, q)| (p.as_dvec2(), q.as_dvec2())),
+            ),
+        }
+    }
+
+    /// A clip-space triangle: clipped against the view volume, divided and mapped by
+    /// `viewport` (or, with `divide_first`, exact only, divided first and clipped in 2D),
+    /// then clipped against the window as a [`contour`](Clipper::contour).
+    ///
+    /// # Errors
+    /// `divide_first` outside exact arithmetic, a vertex with `w <= 0` under
+    /// `divide_first`, a number that does not fit the float type, or a float result that
+    /// is not finite.
+    pub fn clip_space(
+        &self,
+        t: &[ClipVertex; 3],
+        viewport: &Viewport,
+        divide_first: bool,
+        what: &str,
+    ) -> Result<Vec<Point>, String> {
+        let window_space: Vec<Point> = match self.arithmetic {
+            Arithmetic::Exact if divide_first => match divide_then_clip_exact(t, viewport) {
+                // seen edge-on: it covers no sample, as on the clip-space path
+                Err(ProjectError::EdgeOn) => Vec::new(),
+                Err(e) => return Err(format!("{what}: {e} (--divide-first)")),
+                Ok(vertices) => vertices.into_iter().map(|v| v.point).collect(),
+            },
+            _ if divide_first => return Err("--divide-first: only with --model exact".into()),
+            Arithmetic::Exact => clip_to_window_exact(t, viewport)
+                .into_iter()
+                .map(|v| v.point)
+                .collect(),
+            Arithmetic::F64 => {
+                let vp = viewport.to_f64().ok_or("viewport: a number does not fit f64")?;
+                let v = t
+                    .iter()
+                    .map(ClipVertex::to_f64)
+                    .collect::<Option<Vec<_>>>()
+                    .ok_or_else(|| format!("{what}: a coordinate does not fit f64"))?;
+                homogeneous::clip_to_window_f64(&v, &vp)
+                    .into_iter()
+                    .map(|v| point64(v.point).map_err(|e| format!("{what}: {e}")))
+                    .collect::<Result<_, _>>()?
+            }
+            Arithmetic::F32 => {
+                let vp = viewport.to_f32().ok_or("viewport: a number does not fit f32")?;
+                let v = t
+                    .iter()
+                    .map(ClipVertex::to_f32)
+                    .collect::<Option<Vec<_>>>()
+                    .ok_or_else(|| format!("{what}: a coordinate does not fit f32"))?;
+                homogeneous::clip_to_window_f32(&v, &vp)
+                    .into_iter()
+                    .map(|v| point32(v.point).map_err(|e| format!("{what}: {e}")))
+                    .collect::<Result<_, _>>()?
+            }
+        };
+        if window_space.is_empty() {
+            return Ok(window_space);
+        }
+        self.contour(&window_space, what)
+    }
+}
