@@ -86,3 +86,8 @@ pub mod strategy;
 #[cfg(feature = "trade")]
 pub mod trade;
 pub mod tri;
+
+// The README's Rust example runs as a doc test.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
