@@ -88,6 +88,6 @@ pub mod trade;
 pub mod tri;
 
 // The README's Rust example runs as a doc test.
-#[cfg(doctest)]
+#[cfg(all(doctest, feature = "proptest"))]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;

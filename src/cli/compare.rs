@@ -57,7 +57,7 @@ pub enum ReportFormat {
     /// The summary table (findings by pixel kind and reason class), then the first
     /// `--limit` pixels, each with its exact explanation.
     Text,
-    /// Everything, as one JSON object (schema in README.md, "rasterproof compare").
+    /// Everything, as one JSON object (schema in docs/oracle.md, `compare`).
     Json,
 }
 

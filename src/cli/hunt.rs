@@ -84,7 +84,7 @@ pub struct Options {
     #[arg(long, value_name = "DURATION", value_parser = parse_duration)]
     time: Option<Duration>,
     /// Write the report as JSON: seed, shard, cases requested and run, the convention, the
-    /// counts and every finding with its minimal scene (schema: README, `hunt`).
+    /// counts and every finding with its minimal scene (schema: docs/oracle.md, `hunt`).
     #[arg(long, value_name = "FILE.json")]
     report: Option<PathBuf>,
     /// Write the result as JUnit XML: one failed test case per finding, one passing

@@ -29,7 +29,7 @@ pub struct Options {
 pub enum Format {
     /// One line per primitive, the summary, the fixed-width models' verdicts.
     Text,
-    /// The same as one JSON object (schema in README.md, "rasterproof plan").
+    /// The same as one JSON object (schema in docs/cli.md, `plan`).
     Json,
 }
 
