@@ -36,30 +36,41 @@
 //! assert_eq!(coverage.double_covered().count(), 0);
 //! ```
 //!
-//! ## Entry points
+//! ## Entry points: one function per operation
 //!
-//! | to | call |
-//! |---|---|
-//! | render a scene file with a model | [`scene::parse_scene`], then [`model::render`]`(model, &scene.primitives(), &target)` |
-//! | render these triangles | [`model::render_triangles`] |
-//! | prepare once, draw many times (benchmarks, a colour picture) | [`model::prepare`], [`model::PreparedScene::draw`] |
-//! | one triangle, polygon or line in one arithmetic | `tri::{exact, fixed, scanline, float}::rasterize*`, `fill::polygon`, `line::*` |
-//! | where a pixel's sample sits; which pixels a box covers | [`raster`] |
-//! | check an invariant on any coverage | `check::check_*` |
-//! | clip exactly or in floats | [`clip`] |
-//! | compare another renderer's output with the exact answer, explain each difference | [`oracle::compare()`], [`oracle::Theirs`] |
-//! | explain one pixel of a scene | [`oracle::explain_pixel`] |
-//! | every model's speed and error side by side, by coordinate magnitude (feature `trade`) | `trade::run`, `trade::Report` |
+//! | to | call | feature |
+//! |---|---|---|
+//! | read a scene file (exact numbers, errors naming file, field, value) | [`parse_scene`] | |
+//! | render it with a model | [`render`]`(model, &scene.primitives(), &target)` ([`render_triangles`] for a list of triangles; [`prepare`] once and [`PreparedScene::draw`] many times) | |
+//! | plan it: per primitive, the cheapest arithmetic proven exact | [`plan_scene`] | |
+//! | compare another renderer's output ([`Theirs`]) with the exact answer, every differing pixel classified | [`compare`] | |
+//! | explain one pixel exactly (sample, edges, values, flags) | [`explain_pixel`] | |
+//! | fit the convention another renderer follows | [`fit`] | |
+//! | hunt: scenes another renderer (a closure `Fn(&Scene) -> Result<Theirs, _>`) gets wrong, shrunk | [`hunt`] | `proptest` |
+//! | test your own triangle rasterizer (a closure) against the oracle | [`find_counterexample`] | `proptest` |
+//! | check an invariant on any coverage | `check::check_*` ([`check`]) | |
+//! | run the invariant suite (what `rasterproof check` runs) | [`harness::suite::Plan::run`] | `proptest` |
+//! | every model's speed and error side by side | `trade::run` | `trade` |
+//! | one primitive in one arithmetic | `tri::{exact, planned, fixed, scanline, float}`, `line::*`, `fill::polygon::*` | |
+//! | where a pixel's sample sits; which pixels a box covers | [`raster`] | |
+//! | clip exactly or in floats | [`clip`], [`clip::arithmetic::Clipper`] | |
+//!
+//! The types these take and return are re-exported here too: [`Model`], [`Target`],
+//! [`Preset`], [`Point`], [`Triangle`], [`Polygon`], [`Scene`], [`Primitives`],
+//! [`Coverage`], [`CoverageSink`], [`Violation`].
 //!
 //! The layers and the pipeline a scene takes from file to coverage are drawn in
 //! ARCHITECTURE.md at the top of the repository.
 //!
 //! ## Features
 //! - `proptest`: the strategies in `strategy` (random triangles, spade meshes, tie-heavy
-//!   inputs) for your own property tests, and `harness`: the counterexample search for
-//!   your own rasterizer and the invariant suite behind `rasterproof check` (run on a
-//!   rayon thread pool, sharded, into a report: `harness::suite::Plan`).
-//! - `cli` (default): the `rasterproof` command; implies `proptest`.
+//!   inputs) for your own property tests; `harness`: the counterexample search for your
+//!   own rasterizer and the invariant suite behind `rasterproof check`; the hunt
+//!   (`oracle::hunt`). No thread-pool crate: cases run on scoped threads.
+//! - `trade`: the trade (`trade`) and its pictures (plotters); implies `proptest`.
+//! - `cli` (default): the `rasterproof` command (clap, indicatif, ctrlc); implies
+//!   `trade`. A crate that only tests its own rasterizer depends on rasterproof with
+//!   `default-features = false, features = ["proptest"]`.
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
@@ -86,6 +97,19 @@ pub mod strategy;
 #[cfg(feature = "trade")]
 pub mod trade;
 pub mod tri;
+
+pub use check::Violation;
+pub use convention::{Preset, Target};
+pub use coverage::{Coverage, CoverageSink};
+pub use geom::{Point, Polygon, Triangle};
+#[cfg(feature = "proptest")]
+pub use harness::{find_counterexample, HarnessConfig};
+pub use model::plan::plan_scene;
+pub use model::{prepare, render, render_triangles, Model, PreparedScene, Primitives};
+#[cfg(feature = "proptest")]
+pub use oracle::hunt::{hunt, HuntConfig};
+pub use oracle::{compare, explain_pixel, fit, Theirs};
+pub use scene::{parse_scene, Scene};
 
 // The README's Rust example runs as a doc test.
 #[cfg(all(doctest, feature = "proptest"))]
