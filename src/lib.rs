@@ -43,10 +43,10 @@
 //! | read a scene file (exact numbers, errors naming file, field, value) | [`parse_scene`] | |
 //! | render it with a model | [`render`]`(model, &scene.primitives(), &target)` ([`render_triangles`] for a list of triangles; [`prepare`] once and [`PreparedScene::draw`] many times) | |
 //! | plan it: per primitive, the cheapest arithmetic proven exact | [`plan_scene`] | |
-//! | compare another renderer's output ([`Theirs`]) with the exact answer, every differing pixel classified | [`compare`] | |
+//! | compare another renderer's output ([`Theirs`]) with the exact answer, every differing pixel classified | [`compare()`] | |
 //! | explain one pixel exactly (sample, edges, values, flags) | [`explain_pixel`] | |
-//! | fit the convention another renderer follows | [`fit`] | |
-//! | hunt: scenes another renderer (a closure `Fn(&Scene) -> Result<Theirs, _>`) gets wrong, shrunk | [`hunt`] | `proptest` |
+//! | fit the convention another renderer follows | [`fit()`] | |
+//! | hunt: scenes another renderer (a closure `Fn(&Scene) -> Result<Theirs, _>`) gets wrong, shrunk | [`hunt()`] | `proptest` |
 //! | test your own triangle rasterizer (a closure) against the oracle | [`find_counterexample`] | `proptest` |
 //! | check an invariant on any coverage | `check::check_*` ([`check`]) | |
 //! | run the invariant suite (what `rasterproof check` runs) | [`harness::suite::Plan::run`] | `proptest` |
