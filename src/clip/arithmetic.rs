@@ -222,10 +222,7 @@ impl Clipper {
                 Ok(vertices) => vertices.into_iter().map(|v| v.point).collect(),
             },
             _ if divide_first => return Err("--divide-first: only with --model exact".into()),
-            Arithmetic::Exact => clip_to_window_exact(t, viewport)
-                .into_iter()
-                .map(|v| v.point)
-                .collect(),
+            Arithmetic::Exact => clip_to_window_exact(t, viewport).into_iter().map(|v| v.point).collect(),
             Arithmetic::F64 => {
                 let vp = viewport.to_f64().ok_or("viewport: a number does not fit f64")?;
                 let v = t

@@ -48,7 +48,10 @@ fn files_in_map(map: &str) -> BTreeSet<String> {
     let mut named = BTreeSet::new();
     for line in map.lines().map(str::trim).filter(|l| l.starts_with('|')) {
         let cells: Vec<&str> = line.trim_matches('|').split('|').collect();
-        let Some(folder) = cells.first().and_then(|c| backticked(c).into_iter().find(|w| w.ends_with('/'))) else {
+        let Some(folder) = cells
+            .first()
+            .and_then(|c| backticked(c).into_iter().find(|w| w.ends_with('/')))
+        else {
             continue;
         };
         for word in cells.get(1).map(|c| backticked(c)).unwrap_or_default() {
@@ -84,7 +87,11 @@ fn every_source_file_is_on_the_map_and_the_map_names_no_other() {
     let files = source_files(root);
     let map = fs::read_to_string(root.join("ARCHITECTURE.md")).expect("ARCHITECTURE.md");
     let mut errors = map_errors(&files, &map);
-    let tests = map.split('`').skip(1).step_by(2).filter(|w| w.starts_with("tests/") && w.ends_with(".rs"));
+    let tests = map
+        .split('`')
+        .skip(1)
+        .step_by(2)
+        .filter(|w| w.starts_with("tests/") && w.ends_with(".rs"));
     errors.extend(
         tests
             .filter(|t| !root.join(t).is_file())
@@ -196,7 +203,14 @@ fn absolute(at: &[String], path: &[String]) -> Vec<String> {
 /// means the file itself).
 fn without_tests(code: &str) -> &str {
     match code.find("#[cfg(test)]") {
-        Some(at) if code[at..].trim_start_matches("#[cfg(test)]").trim_start().starts_with("mod tests") => &code[..at],
+        Some(at)
+            if code[at..]
+                .trim_start_matches("#[cfg(test)]")
+                .trim_start()
+                .starts_with("mod tests") =>
+        {
+            &code[..at]
+        }
         _ => code,
     }
 }
@@ -297,7 +311,11 @@ fn sources_cite_no_outside_document_and_number_no_invariant() {
             }
         }
     }
-    assert!(found.is_empty(), "cite a real source; name invariants:\n{}", found.join("\n"));
+    assert!(
+        found.is_empty(),
+        "cite a real source; name invariants:\n{}",
+        found.join("\n")
+    );
 }
 
 mod scanner {
@@ -310,9 +328,16 @@ mod scanner {
     #[test]
     fn a_missing_and_a_stale_file_are_named() {
         let map = "| folder | files |\n|---|---|\n| `src/` | `lib.rs`, `geom.rs` |\n| `src/tri/` | `mod.rs`, `fixed.rs` (blocks), `gone.rs` | `tests/tri.rs`, `blocks.rs` |\n| `src/harness/` | `suite/run.rs` |\n";
-        let files: Vec<String> = ["src/lib.rs", "src/geom.rs", "src/tri/mod.rs", "src/tri/fixed.rs", "src/tri/blocks.rs", "src/harness/suite/run.rs"]
-            .map(String::from)
-            .to_vec();
+        let files: Vec<String> = [
+            "src/lib.rs",
+            "src/geom.rs",
+            "src/tri/mod.rs",
+            "src/tri/fixed.rs",
+            "src/tri/blocks.rs",
+            "src/harness/suite/run.rs",
+        ]
+        .map(String::from)
+        .to_vec();
         assert_eq!(
             map_errors(&files, map),
             [
@@ -328,7 +353,13 @@ mod scanner {
         let got: Vec<String> = named_paths(code).iter().map(|p| p.join("::")).collect();
         assert_eq!(
             got,
-            ["super::fixed::BLOCK", "super::planned", "super::planned::Edges", "crate::num::plan::Lane::plus", "self::inner::Y"]
+            [
+                "super::fixed::BLOCK",
+                "super::planned",
+                "super::planned::Edges",
+                "crate::num::plan::Lane::plus",
+                "self::inner::Y"
+            ]
         );
     }
 
@@ -336,10 +367,16 @@ mod scanner {
     fn a_circle_between_siblings_is_found_and_a_parent_child_pair_is_not() {
         let both = files(&[
             ("src/tri/mod.rs", "mod fixed; mod planned; pub use fixed::rasterize;"),
-            ("src/tri/fixed.rs", "use super::planned::{traverse, Edges};\nuse super::Thing;"),
+            (
+                "src/tri/fixed.rs",
+                "use super::planned::{traverse, Edges};\nuse super::Thing;",
+            ),
             ("src/tri/planned.rs", "use crate::tri::fixed::BLOCK;"),
         ]);
-        assert_eq!(circles(&import_graph(&both)), ["src/tri/fixed.rs -> src/tri/planned.rs -> src/tri/fixed.rs"]);
+        assert_eq!(
+            circles(&import_graph(&both)),
+            ["src/tri/fixed.rs -> src/tri/planned.rs -> src/tri/fixed.rs"]
+        );
         let untied = files(&[
             ("src/tri/mod.rs", "mod blocks; mod fixed; mod planned;"),
             ("src/tri/blocks.rs", "use super::Thing;"),
@@ -361,8 +398,14 @@ mod scanner {
             ["src/trade/measure.rs -> src/trade/plot.rs -> src/trade/report.rs -> src/trade/measure.rs"]
         );
         let tests_only = files(&[
-            ("src/a/x.rs", "use super::y::f;\n#[cfg(test)]\nmod tests { use super::super::y::g; }"),
-            ("src/a/y.rs", "pub fn f() {}\n#[cfg(test)]\nmod tests { use crate::a::x::h; }"),
+            (
+                "src/a/x.rs",
+                "use super::y::f;\n#[cfg(test)]\nmod tests { use super::super::y::g; }",
+            ),
+            (
+                "src/a/y.rs",
+                "pub fn f() {}\n#[cfg(test)]\nmod tests { use crate::a::x::h; }",
+            ),
         ]);
         assert_eq!(circles(&import_graph(&tests_only)), Vec::<String>::new());
     }

@@ -6,7 +6,7 @@
 //! The duplicate check is a second pass over the text with a [`DeserializeSeed`] that
 //! builds nothing: it walks the document, keeps the path of the object it is in (the
 //! reader's form, `triangles[2].v`), and stops at the first key an object already holds.
-//! Numbers are not read at all, so serde_json's `arbitrary_precision` text is untouched.
+//! Numbers are not read at all.
 
 use std::borrow::Cow;
 use std::collections::HashSet;
@@ -142,8 +142,7 @@ impl<'de> Visitor<'de> for Walk<'_> {
         }
     }
 
-    /// An object, or (with `arbitrary_precision`) a number, which serde_json hands over as
-    /// a one-key map: one key cannot repeat, so numbers need no special case.
+    /// An object: its keys, each checked against the ones before it.
     fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<(), A::Error> {
         let mut seen = Seen::default();
         while let Some(key) = map.next_key_seed(KeySeed)? {

@@ -32,9 +32,10 @@
 //! `NaN` and `Infinity` are not JSON: a bare one is a syntax error, explained as such.
 //! Every error names the file, the field path and the value.
 
+use json::{Map, Value};
 use num_rational::BigRational;
-use serde_json::{Map, Value};
 
+mod json;
 mod keys;
 mod reader;
 mod shapes;
@@ -156,7 +157,7 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
 /// poorly: a key repeated in one object (the object's path and the key), and a bare `NaN`
 /// or `Infinity` (the position and what to write instead).
 fn read_json(text: &str, p: &Reader<'_>) -> Result<Value, SceneError> {
-    let value: Value = serde_json::from_str(text).map_err(|e| {
+    let value: Value = json::from_str(text).map_err(|e| {
         let message = match keys::non_json_literal_hint(text, e.line(), e.column()) {
             Some(hint) => format!("malformed JSON: {e}: {hint}"),
             None => format!("malformed JSON: {e}"),
@@ -170,7 +171,7 @@ fn read_json(text: &str, p: &Reader<'_>) -> Result<Value, SceneError> {
 }
 
 impl Reader<'_> {
-    fn canvas_side(&self, root: &Map<String, Value>, field: &str) -> Result<u32, SceneError> {
+    fn canvas_side(&self, root: &Map, field: &str) -> Result<u32, SceneError> {
         let v = root
             .get(field)
             .ok_or_else(|| self.err(field, "missing (required)".to_string()))?;
@@ -181,7 +182,7 @@ impl Reader<'_> {
         Ok(u32::try_from(n).expect("checked against MAX_CANVAS"))
     }
 
-    fn overrides(&self, root: &Map<String, Value>) -> Result<Overrides, SceneError> {
+    fn overrides(&self, root: &Map) -> Result<Overrides, SceneError> {
         let mut o = Overrides::default();
         if let Some(v) = root.get("subpixel_bits") {
             let n = self.integer(v, "subpixel_bits")?;

@@ -1,8 +1,8 @@
 //! A JSON reader for the scene schema: typed reads (strings, integers, exact numbers,
 //! arrays, points) whose errors name the file, the field path and the offending value.
 
+use super::json::{Map, Value};
 use num_rational::BigRational;
-use serde_json::{Map, Value};
 
 use crate::geom::Point;
 use crate::num::parse_rational;
@@ -47,7 +47,7 @@ impl Reader<'_> {
 
     /// Refuses any key of `obj` (the object at path `at`) that is not in `known`: a typo
     /// must not silently change the meaning of a file.
-    pub(super) fn known_fields(&self, obj: &Map<String, Value>, at: &str, known: &[&str]) -> Result<(), SceneError> {
+    pub(super) fn known_fields(&self, obj: &Map, at: &str, known: &[&str]) -> Result<(), SceneError> {
         for key in obj.keys() {
             if !known.contains(&key.as_str()) {
                 let field = if at.is_empty() {
@@ -76,7 +76,7 @@ impl Reader<'_> {
     /// An exact number: a JSON number as written, or a string with a decimal or fraction.
     pub(super) fn coordinate(&self, v: &Value, field: &str) -> Result<BigRational, SceneError> {
         let text = match v {
-            // With serde_json's arbitrary_precision, a number keeps the text it was written as.
+            // A number keeps the text it was written as (json.rs).
             Value::Number(n) => n.to_string(),
             Value::String(s) => s.clone(),
             _ => {

@@ -1,9 +1,9 @@
 //! The shape fields of a scene: `triangles`, `lines`, `polygons`, `clip_space_triangles`,
 //! and the clipping fields `viewport` and `clip`.
 
+use super::json::{Map, Value};
 use num_rational::BigRational;
 use num_traits::Signed;
-use serde_json::{Map, Value};
 
 use super::reader::{kind, show, Reader};
 use super::{MAX_POLYGON_VERTICES, MAX_TRIANGLES};
@@ -46,7 +46,7 @@ impl Reader<'_> {
     /// each (`shape` says which, for the error).
     fn triangle_vertices<const D: usize>(
         &self,
-        obj: &Map<String, Value>,
+        obj: &Map,
         at: &str,
         shape: &str,
     ) -> Result<[[BigRational; D]; 3], SceneError> {
