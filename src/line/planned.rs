@@ -61,7 +61,8 @@ use num_traits::{Signed, Zero};
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::geom::Point;
-use crate::num::plan::{ceil_div, floor_div, index, indices_above, scale_of, scaled, Bound, Lane, Plan, Width};
+use crate::num::lane::Lane;
+use crate::num::plan::{ceil_div, floor_div, index, indices_above, scale_of, scaled, Bound, Plan, Width};
 
 /// The four half-planes `su u + sv v <= r` of the diamond, in [`super::diamond`]'s order.
 const PLANES: [(i8, i8); 4] = [(1, 1), (1, -1), (-1, 1), (-1, -1)];

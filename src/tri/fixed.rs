@@ -16,7 +16,7 @@ use crate::convention::{Target, TieRule};
 use crate::coverage::CoverageSink;
 use crate::edge::fixed::{triangle_edges, FixedEdge};
 use crate::geom::FixedTriangle;
-use crate::num::plan::Lane;
+use crate::num::lane::Lane;
 use crate::raster::{fixed_sample_range, FixedGrid, PixelRange};
 use crate::tri::planned::{traverse, Edges};
 

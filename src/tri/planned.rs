@@ -34,7 +34,8 @@ use num_traits::{Signed, Zero};
 use crate::convention::{AnyTieRule, Target};
 use crate::coverage::CoverageSink;
 use crate::geom::Triangle;
-use crate::num::plan::{scale_of, scaled, Bound, Lane, Plan, Width, HALF_ROW, ROW};
+use crate::num::lane::{Lane, HALF_ROW, ROW};
+use crate::num::plan::{scale_of, scaled, Bound, Plan, Width};
 use crate::raster::{exact_sample_range, PixelRange};
 
 use super::fixed::BLOCK;

@@ -51,7 +51,8 @@ use super::{closed_edges, Crossing, Sweep};
 use crate::convention::{Target, TieRule};
 use crate::coverage::CoverageSink;
 use crate::geom::{FillRule, Point, Polygon};
-use crate::num::plan::{ceil_div, floor_div, index, indices_above, scale_of, scaled, Bound, Lane, Plan, Width};
+use crate::num::lane::Lane;
+use crate::num::plan::{ceil_div, floor_div, index, indices_above, scale_of, scaled, Bound, Plan, Width};
 use crate::raster::{exact_sample_range, PixelRange};
 
 /// One edge of the table, independent of the width: its rows, the constant thresholds
