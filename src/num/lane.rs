@@ -2,14 +2,16 @@
 //! subtract, multiply, compare, and a triangle row's inside mask) and its implementations
 //! for each [`Width`]'s type, with the SIMD row tests of the machine integers (the `wide`
 //! crate), so that one traversal is written once and runs in whatever width
-//! [`crate::num::plan`] chose for a primitive.
+//! [`crate::num::plan`] chose for a primitive; and the scaffold every planned engine keeps
+//! a primitive in (`Planned`): its plan, its state in the planned width, and the one
+//! dispatch from that width to the engine compiled for it.
 
 use std::fmt;
 
 use num_bigint::BigInt;
 use num_traits::{Signed, ToPrimitive, Zero};
 
-use super::plan::Width;
+use super::plan::{Bound, Plan, Width};
 
 /// The arithmetic of a planned engine, implemented by every [`Width`]'s type: the engines
 /// are generic over it, so one traversal is written once and runs in each width.
@@ -419,6 +421,93 @@ impl Lane for BigInt {
         !self.is_negative()
     }
 }
+/// What a planned engine keeps per primitive, one type per lane type (a triangle's edges,
+/// a segment's values, a polygon's remainders): its setup computes the state exactly, in
+/// [`BigInt`], and [`Planned`] converts it once to the width of the plan.
+pub(crate) trait LaneState {
+    /// The state held in lane type `T`.
+    type In<T: Lane>: Clone + fmt::Debug;
+    /// The exact state in `T` (every value within the plan's bound, so exact).
+    fn convert<T: Lane>(exact: &Self::In<BigInt>) -> Self::In<T>;
+}
+
+/// An engine, generic over the lane type, run on a primitive's state in whichever width
+/// was planned: [`Planned::run`] matches the width once per primitive and calls the
+/// engine compiled for that type, so no dispatch reaches its loops.
+pub(crate) trait InWidth<F: LaneState> {
+    /// What the run returns.
+    type Output;
+    /// Runs the engine on `state`, held in `T`.
+    fn run<T: Lane>(self, state: &F::In<T>) -> Self::Output;
+}
+
+/// A state in the planned width: one arm per [`Width`], the one place besides the width
+/// itself and its [`Lane`] implementation that a new width is added to.
+#[derive(Debug, Clone)]
+enum Lanes<F: LaneState> {
+    F32(F::In<f32>),
+    I32(F::In<i32>),
+    F64(F::In<f64>),
+    I64(F::In<i64>),
+    I128(F::In<i128>),
+    /// Boxed, so that arbitrary precision does not widen the machine widths' primitives.
+    Big(Box<F::In<BigInt>>),
+}
+
+/// A primitive as every planned engine keeps it: its plan and its state in the planned
+/// width.
+#[derive(Debug, Clone)]
+pub(crate) struct Planned<F: LaneState> {
+    plan: Plan,
+    lanes: Lanes<F>,
+}
+
+impl<F: LaneState> Planned<F> {
+    /// `exact` in the cheapest width that holds `bound`.
+    pub(crate) fn new(scale: BigInt, bound: Bound, exact: F::In<BigInt>) -> Planned<F> {
+        Self::in_width(Plan::new(scale, bound), exact)
+    }
+
+    /// `exact` in `width`, or `Err(plan)` (the plan it would have) when `width` cannot
+    /// hold `bound`: for the tests and benches that force every width.
+    pub(crate) fn forced(scale: BigInt, bound: Bound, exact: F::In<BigInt>, width: Width) -> Result<Planned<F>, Plan> {
+        match Plan::forced(scale.clone(), bound.clone(), width) {
+            Some(plan) => Ok(Self::in_width(plan, exact)),
+            None => Err(Plan::new(scale, bound)),
+        }
+    }
+
+    fn in_width(plan: Plan, exact: F::In<BigInt>) -> Planned<F> {
+        let lanes = match plan.width {
+            Width::F32 => Lanes::F32(F::convert(&exact)),
+            Width::I32 => Lanes::I32(F::convert(&exact)),
+            Width::F64 => Lanes::F64(F::convert(&exact)),
+            Width::I64 => Lanes::I64(F::convert(&exact)),
+            Width::I128 => Lanes::I128(F::convert(&exact)),
+            Width::Big => Lanes::Big(Box::new(exact)),
+        };
+        Planned { plan, lanes }
+    }
+
+    /// The plan: scale, bound and width.
+    pub(crate) fn plan(&self) -> &Plan {
+        &self.plan
+    }
+
+    /// Runs `engine` on the state, in the planned width.
+    #[inline]
+    pub(crate) fn run<E: InWidth<F>>(&self, engine: E) -> E::Output {
+        match &self.lanes {
+            Lanes::F32(s) => engine.run(s),
+            Lanes::I32(s) => engine.run(s),
+            Lanes::F64(s) => engine.run(s),
+            Lanes::I64(s) => engine.run(s),
+            Lanes::I128(s) => engine.run(s),
+            Lanes::Big(s) => engine.run(&**s),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
