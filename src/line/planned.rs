@@ -61,7 +61,8 @@ use num_traits::{Signed, Zero};
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::geom::Point;
-use crate::num::plan::{ceil_div, floor_div, index, indices_above, scale_of, scaled, Bound, Lane, Plan, Width};
+use crate::num::lane::{InWidth, Lane, LaneState, Planned};
+use crate::num::plan::{ceil_div, floor_div, index, indices_above, scale_of, scaled, Bound, Plan, Width};
 
 /// The four half-planes `su u + sv v <= r` of the diamond, in [`super::diamond`]'s order.
 const PLANES: [(i8, i8); 4] = [(1, 1), (1, -1), (-1, 1), (-1, -1)];
@@ -106,15 +107,30 @@ impl<T: Lane> Seg<T> {
     }
 }
 
-/// The segment in the planned width.
+/// A segment's state in each width: its values.
 #[derive(Debug, Clone)]
-enum Lanes {
-    F32(Seg<f32>),
-    I32(Seg<i32>),
-    F64(Seg<f64>),
-    I64(Seg<i64>),
-    I128(Seg<i128>),
-    Big(Box<Seg<BigInt>>),
+struct SegLanes;
+
+impl LaneState for SegLanes {
+    type In<T: Lane> = Seg<T>;
+    fn convert<T: Lane>(exact: &Seg<BigInt>) -> Seg<T> {
+        Seg::from_big(exact)
+    }
+}
+
+/// The candidate walk of one segment, run in the planned width.
+struct Draw<'a, S: ?Sized> {
+    walk: &'a Walk,
+    id: u32,
+    sink: &'a mut S,
+}
+
+impl<S: CoverageSink + ?Sized> InWidth<SegLanes> for Draw<'_, S> {
+    type Output = ();
+    #[inline]
+    fn run<T: Lane>(self, seg: &Seg<T>) {
+        walk(self.walk, seg, self.id, self.sink);
+    }
 }
 
 /// The walk, independent of the width.
@@ -139,8 +155,7 @@ struct Walk {
 #[derive(Debug, Clone)]
 pub struct PlannedSegment {
     walk: Walk,
-    plan: Plan,
-    lanes: Lanes,
+    planned: Planned<SegLanes>,
 }
 
 /// The exact setup.
@@ -331,8 +346,8 @@ impl PlannedSegment {
     /// (zero length, or no candidate pixel on the canvas).
     pub fn new(a: &Point, b: &Point, target: &Target) -> Option<PlannedSegment> {
         let s = setup(a, b, target)?;
-        let plan = Plan::new(s.scale, s.bound);
-        Some(Self::in_width(s.walk, plan, &s.seg))
+        let planned = Planned::new(s.scale, s.bound, s.seg);
+        Some(PlannedSegment { walk: s.walk, planned })
     }
 
     /// As [`PlannedSegment::new`] but in `width`: `Ok(None)` when it draws nothing,
@@ -342,27 +357,13 @@ impl PlannedSegment {
         let Some(s) = setup(a, b, target) else {
             return Ok(None);
         };
-        match Plan::forced(s.scale.clone(), s.bound.clone(), width) {
-            Some(plan) => Ok(Some(Self::in_width(s.walk, plan, &s.seg))),
-            None => Err(Plan::new(s.scale, s.bound)),
-        }
-    }
-
-    fn in_width(walk: Walk, plan: Plan, seg: &Seg<BigInt>) -> PlannedSegment {
-        let lanes = match plan.width {
-            Width::F32 => Lanes::F32(Seg::from_big(seg)),
-            Width::I32 => Lanes::I32(Seg::from_big(seg)),
-            Width::F64 => Lanes::F64(Seg::from_big(seg)),
-            Width::I64 => Lanes::I64(Seg::from_big(seg)),
-            Width::I128 => Lanes::I128(Seg::from_big(seg)),
-            Width::Big => Lanes::Big(Box::new(seg.clone())),
-        };
-        PlannedSegment { walk, plan, lanes }
+        let planned = Planned::forced(s.scale, s.bound, s.seg, width)?;
+        Ok(Some(PlannedSegment { walk: s.walk, planned }))
     }
 
     /// The plan: scale, bound and width.
     pub fn plan(&self) -> &Plan {
-        &self.plan
+        self.planned.plan()
     }
 
     /// Draws every pixel the segment leaves the diamond of: equal, pixel for pixel, to
@@ -388,14 +389,8 @@ impl PlannedSegment {
     /// assert_eq!(p.covered_pixels(), 6); // one per column 0..=5; the end's pixel is not left
     /// ```
     pub fn draw<S: CoverageSink + ?Sized>(&self, id: u32, sink: &mut S) {
-        match &self.lanes {
-            Lanes::F32(s) => walk(&self.walk, s, id, sink),
-            Lanes::I32(s) => walk(&self.walk, s, id, sink),
-            Lanes::F64(s) => walk(&self.walk, s, id, sink),
-            Lanes::I64(s) => walk(&self.walk, s, id, sink),
-            Lanes::I128(s) => walk(&self.walk, s, id, sink),
-            Lanes::Big(s) => walk(&self.walk, s, id, sink),
-        }
+        let walk = &self.walk;
+        self.planned.run(Draw { walk, id, sink });
     }
 }
 

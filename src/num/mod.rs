@@ -1,10 +1,12 @@
 //! Numbers: exact rationals read without f64 ([`exact`]), fixed-point subpixels with one
-//! documented envelope ([`fixed`]), and precision planning ([`plan`]): the cheapest
-//! integer width that is provably exact for a scene's bounds.
+//! documented envelope ([`fixed`]), precision planning ([`plan`]): the cheapest
+//! integer width that is provably exact for a scene's bounds, and the lane arithmetic the
+//! planned engines run in that width ([`lane`]).
 
 pub mod dda;
 pub mod exact;
 pub mod fixed;
+pub mod lane;
 pub mod plan;
 
 pub use exact::{parse_rational, NumberError, Rounding};

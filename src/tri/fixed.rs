@@ -1,11 +1,12 @@
 //! The incremental integer rasterizer on the snapped scene: one setup per triangle, then
 //! `E(x+1, y) = E + dY`, `E(x, y+1) = E - dX` (Pineda 1988), traversed in [`BLOCK`] x
-//! [`BLOCK`] blocks by the planned engine's traversal ([`crate::tri::planned`]): per edge,
-//! the block corner where E is largest rejects the block when negative and the opposite
-//! corner accepts it when not (a run of accepted blocks along a block row is written as
-//! one span per row); only the rest is tested, a row of up to eight pixels at a time as
-//! one SIMD bit mask, and a block's masks written at once ([`CoverageSink::cover_block`]).
-//! Block origins are stepped by addition.
+//! [`BLOCK`] blocks by the block kernel it shares with the planned engine
+//! ([`crate::tri::planned`]; `tri/blocks.rs`): per edge, the block corner where E is
+//! largest rejects the block when negative and the opposite corner accepts it when not (a
+//! run of accepted blocks along a block row is written as one span per row); only the rest
+//! is tested, a row of up to eight pixels at a time as one SIMD bit mask, and a block's
+//! masks written at once ([`CoverageSink::cover_block`]). Block origins are stepped by
+//! addition.
 //!
 //! Width, per triangle: i32 when a bound computed from the setup shows every value of
 //! the traversal fits (eight lanes per SIMD test; most triangles of a canvas-sized scene),
@@ -16,12 +17,11 @@ use crate::convention::{Target, TieRule};
 use crate::coverage::CoverageSink;
 use crate::edge::fixed::{triangle_edges, FixedEdge};
 use crate::geom::FixedTriangle;
-use crate::num::plan::Lane;
+use crate::num::lane::Lane;
 use crate::raster::{fixed_sample_range, FixedGrid, PixelRange};
-use crate::tri::planned::{traverse, Edges};
 
-/// Block side, in pixels (the L of Pineda's `E(x+L, y) = E + L dY`).
-pub const BLOCK: u32 = 8;
+pub use super::blocks::BLOCK;
+use super::blocks::{traverse, Edges};
 
 /// Covers every pixel whose sample is inside `tri` (already snapped, inside the envelope).
 /// Equal, pixel for pixel, to [`crate::tri::exact::rasterize`] on the same snapped triangle.
@@ -209,7 +209,7 @@ mod tests {
     use crate::convention::{Convention, Preset};
     use crate::coverage::Coverage;
     use crate::geom::{Point, Triangle};
-    use crate::tri::planned::bound_of;
+    use crate::tri::blocks::bound_of;
 
     /// The exact largest magnitude the traversal reaches from these lanes (the planned
     /// engine's bound, proven against a recording lane in `tri::planned`'s tests).

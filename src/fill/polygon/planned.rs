@@ -51,7 +51,8 @@ use super::{closed_edges, Crossing, Sweep};
 use crate::convention::{Target, TieRule};
 use crate::coverage::CoverageSink;
 use crate::geom::{FillRule, Point, Polygon};
-use crate::num::plan::{ceil_div, floor_div, index, indices_above, scale_of, scaled, Bound, Lane, Plan, Width};
+use crate::num::lane::{InWidth, Lane, LaneState, Planned};
+use crate::num::plan::{ceil_div, floor_div, index, indices_above, scale_of, scaled, Bound, Plan, Width};
 use crate::raster::{exact_sample_range, PixelRange};
 
 /// One edge of the table, independent of the width: its rows, the constant thresholds
@@ -98,15 +99,30 @@ impl<T: Lane> Remainders<T> {
     }
 }
 
-/// The remainders in the planned width.
+/// A polygon's state in each width: the remainders of its edges that step.
 #[derive(Debug, Clone)]
-enum Lanes {
-    F32(Vec<Remainders<f32>>),
-    I32(Vec<Remainders<i32>>),
-    F64(Vec<Remainders<f64>>),
-    I64(Vec<Remainders<i64>>),
-    I128(Vec<Remainders<i128>>),
-    Big(Vec<Remainders<BigInt>>),
+struct PolygonLanes;
+
+impl LaneState for PolygonLanes {
+    type In<T: Lane> = Vec<Remainders<T>>;
+    fn convert<T: Lane>(exact: &Vec<Remainders<BigInt>>) -> Vec<Remainders<T>> {
+        exact.iter().map(Remainders::from_big).collect()
+    }
+}
+
+/// The active edge table of one polygon, run in the planned width.
+struct Sweeping<'a, S: ?Sized> {
+    polygon: &'a PlannedPolygon,
+    id: u32,
+    sink: &'a mut S,
+}
+
+impl<S: CoverageSink + ?Sized> InWidth<PolygonLanes> for Sweeping<'_, S> {
+    type Output = ();
+    #[inline]
+    fn run<T: Lane>(self, remainders: &Vec<Remainders<T>>) {
+        self.polygon.traverse(remainders, self.id, self.sink);
+    }
 }
 
 /// A polygon set up for the planned engine: its pixel range, edge table, plan and the
@@ -118,8 +134,7 @@ pub struct PlannedPolygon {
     contours: usize,
     fill_rule: FillRule,
     edges: Vec<TableEdge>,
-    plan: Plan,
-    lanes: Lanes,
+    planned: Planned<PolygonLanes>,
 }
 
 /// The exact setup.
@@ -301,8 +316,8 @@ impl PlannedPolygon {
     /// because no sample of the canvas lies in its outline's bounding box.
     pub fn new(poly: &Polygon, target: &Target) -> Option<PlannedPolygon> {
         let s = setup(poly, target)?;
-        let plan = Plan::new(s.scale.clone(), s.bound.clone());
-        Some(Self::in_width(poly, target, s, plan))
+        let planned = Planned::new(s.scale, s.bound, s.remainders);
+        Some(Self::of(poly, target, s.range, s.edges, planned))
     }
 
     /// As [`PlannedPolygon::new`] but in `width`: `Ok(None)` when it covers nothing,
@@ -312,38 +327,30 @@ impl PlannedPolygon {
         let Some(s) = setup(poly, target) else {
             return Ok(None);
         };
-        match Plan::forced(s.scale.clone(), s.bound.clone(), width) {
-            Some(plan) => Ok(Some(Self::in_width(poly, target, s, plan))),
-            None => Err(Plan::new(s.scale, s.bound)),
-        }
+        let planned = Planned::forced(s.scale, s.bound, s.remainders, width)?;
+        Ok(Some(Self::of(poly, target, s.range, s.edges, planned)))
     }
 
-    fn in_width(poly: &Polygon, target: &Target, s: Setup, plan: Plan) -> PlannedPolygon {
-        fn lane<T: Lane>(v: &[Remainders<BigInt>]) -> Vec<Remainders<T>> {
-            v.iter().map(Remainders::from_big).collect()
-        }
-        let lanes = match plan.width {
-            Width::F32 => Lanes::F32(lane(&s.remainders)),
-            Width::I32 => Lanes::I32(lane(&s.remainders)),
-            Width::F64 => Lanes::F64(lane(&s.remainders)),
-            Width::I64 => Lanes::I64(lane(&s.remainders)),
-            Width::I128 => Lanes::I128(lane(&s.remainders)),
-            Width::Big => Lanes::Big(s.remainders),
-        };
+    fn of(
+        poly: &Polygon,
+        target: &Target,
+        range: PixelRange,
+        edges: Vec<TableEdge>,
+        planned: Planned<PolygonLanes>,
+    ) -> PlannedPolygon {
         PlannedPolygon {
             target: *target,
-            range: s.range,
+            range,
             contours: poly.contours().count(),
             fill_rule: poly.fill_rule,
-            edges: s.edges,
-            plan,
-            lanes,
+            edges,
+            planned,
         }
     }
 
     /// The plan: scale, bound and width.
     pub fn plan(&self) -> &Plan {
-        &self.plan
+        self.planned.plan()
     }
 
     /// Covers every pixel whose moved sample is inside the polygon under its fill rule:
@@ -371,14 +378,11 @@ impl PlannedPolygon {
     /// assert_eq!(a, b);
     /// ```
     pub fn rasterize<S: CoverageSink + ?Sized>(&self, id: u32, sink: &mut S) {
-        match &self.lanes {
-            Lanes::F32(r) => self.traverse(r, id, sink),
-            Lanes::I32(r) => self.traverse(r, id, sink),
-            Lanes::F64(r) => self.traverse(r, id, sink),
-            Lanes::I64(r) => self.traverse(r, id, sink),
-            Lanes::I128(r) => self.traverse(r, id, sink),
-            Lanes::Big(r) => self.traverse(r, id, sink),
-        }
+        self.planned.run(Sweeping {
+            polygon: self,
+            id,
+            sink,
+        });
     }
 
     /// The active edge table over the rows of the range, generic over the planned width
