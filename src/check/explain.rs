@@ -1,17 +1,172 @@
-//! Explaining one pixel: the exact edge values of a triangle at its sample.
+//! Explaining one pixel: a triangle's exact edge evidence at a sample ([`triangle_at`]:
+//! each oriented edge's value, side, inclusive flag and distance, and the verdict), and
+//! that evidence as one line ([`explain_sample`]). The oracle's explanations
+//! (`oracle::evidence`) re-export it.
 
-use std::fmt::Write as _;
+use std::cmp::Ordering;
+use std::fmt::{self, Write as _};
 
+use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
-use crate::convention::Target;
-use crate::edge::exact::triangle_edges;
-use crate::geom::Triangle;
-use crate::num::exact::exact_text;
+use crate::convention::{AnyTieRule, Target};
+use crate::edge::exact::{edge_function, oriented};
+use crate::geom::{Point, Triangle};
+use crate::num::exact::{exact_text, pair_text};
 use crate::raster::sample_exact;
 
+/// Which side of its triangle an edge is, from its direction once the triangle is
+/// oriented so its interior is `E > 0` (y down).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Side {
+    /// Runs down the screen, the interior to its right.
+    Left,
+    /// Runs up the screen.
+    Right,
+    /// Horizontal, the interior below it.
+    Top,
+    /// Horizontal, the interior above it.
+    Bottom,
+}
+
+impl Side {
+    /// Of an oriented edge `(dx, dy)`.
+    pub fn of(dx: Ordering, dy: Ordering) -> Side {
+        match (dy, dx) {
+            (Ordering::Greater, _) => Side::Left,
+            (Ordering::Less, _) => Side::Right,
+            (Ordering::Equal, Ordering::Less) => Side::Top,
+            (Ordering::Equal, _) => Side::Bottom,
+        }
+    }
+
+    /// `left`, `right`, `top` or `bottom`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Side::Left => "left",
+            Side::Right => "right",
+            Side::Top => "top",
+            Side::Bottom => "bottom",
+        }
+    }
+}
+
+/// One edge of an oriented triangle at a sample.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct EdgeAt {
+    /// 0, 1 or 2: the edge v0->v1, v1->v2, v2->v0 of the oriented triangle.
+    pub index: usize,
+    /// Its start.
+    pub from: Point,
+    /// Its end.
+    pub to: Point,
+    /// `E` at the sample, exactly.
+    pub value: BigRational,
+    /// Which side of the triangle it is.
+    pub side: Side,
+    /// Whether it owns the samples on it under the rule asked for.
+    pub inclusive: bool,
+    /// The squared distance from the sample to the edge (the segment), exactly.
+    pub distance2: BigRational,
+}
+
+/// A triangle at a sample: its oriented edges and the verdict.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct TriangleAt {
+    /// The three edges.
+    pub edges: [EdgeAt; 3],
+    /// Every edge has `E > 0`, or `E == 0` and is inclusive.
+    pub inside: bool,
+}
+
+/// Triangle `t` at sample `p` under `rule`; `None` for a zero-area triangle (it covers
+/// nothing under any rule).
+pub fn triangle_at(t: &Triangle, p: &Point, rule: AnyTieRule) -> Option<TriangleAt> {
+    let t = oriented(t)?;
+    let edge = |index: usize| {
+        let (a, b) = (&t.v[index], &t.v[(index + 1) % 3]);
+        let zero = BigRational::zero();
+        let (dx, dy) = ((&b.x - &a.x).cmp(&zero), (&b.y - &a.y).cmp(&zero));
+        EdgeAt {
+            index,
+            from: a.clone(),
+            to: b.clone(),
+            value: edge_function(a, b, p),
+            side: Side::of(dx, dy),
+            inclusive: rule.is_inclusive(dx, dy),
+            distance2: segment_distance2(p, a, b),
+        }
+    };
+    let edges = [edge(0), edge(1), edge(2)];
+    let inside = edges
+        .iter()
+        .all(|e| e.value.is_positive() || (e.value.is_zero() && e.inclusive));
+    Some(TriangleAt { edges, inside })
+}
+
+impl TriangleAt {
+    /// The edges the sample lies on (`E == 0`).
+    pub fn zero_edges(&self) -> impl Iterator<Item = &EdgeAt> + '_ {
+        self.edges.iter().filter(|e| e.value.is_zero())
+    }
+
+    /// The squared distance to the nearest edge.
+    pub fn distance2(&self) -> BigRational {
+        self.edges
+            .iter()
+            .map(|e| e.distance2.clone())
+            .min()
+            .expect("three edges")
+    }
+}
+
+impl fmt::Display for TriangleAt {
+    /// `edge 0 (a -> b, left): E=v (inclusive); ... -> inside`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (k, e) in self.edges.iter().enumerate() {
+            if k > 0 {
+                f.write_str("; ")?;
+            }
+            write!(
+                f,
+                "edge {} ({} -> {}, {}): E={} ({})",
+                e.index,
+                pair_text(&e.from.x, &e.from.y),
+                pair_text(&e.to.x, &e.to.y),
+                e.side.name(),
+                exact_text(&e.value),
+                if e.inclusive { "inclusive" } else { "exclusive" }
+            )?;
+        }
+        f.write_str(if self.inside { " -> inside" } else { " -> outside" })
+    }
+}
+
+/// The squared distance from `p` to the segment `a b`, exactly: to the nearer end when
+/// `p` projects outside it, else `E^2 / |b - a|^2`.
+pub fn segment_distance2(p: &Point, a: &Point, b: &Point) -> BigRational {
+    let (dx, dy) = (&b.x - &a.x, &b.y - &a.y);
+    let len2 = &dx * &dx + &dy * &dy;
+    let to = |q: &Point| {
+        let (ux, uy) = (&p.x - &q.x, &p.y - &q.y);
+        &ux * &ux + &uy * &uy
+    };
+    if len2.is_zero() {
+        return to(a);
+    }
+    let along = (&p.x - &a.x) * &dx + (&p.y - &a.y) * &dy;
+    if !along.is_positive() {
+        to(a)
+    } else if along >= len2 {
+        to(b)
+    } else {
+        let e = edge_function(a, b, p);
+        &e * &e / len2
+    }
+}
+
 /// Why the exact model puts pixel `(x, y)` inside or outside `tri`: the sample, each
-/// edge's exact value and inclusive flag, and the verdict.
+/// edge's exact value and inclusive flag (from [`triangle_at`]), and the verdict.
 ///
 /// ```
 /// use rasterproof::check::explain_sample;
@@ -26,18 +181,46 @@ use crate::raster::sample_exact;
 pub fn explain_sample(tri: &Triangle, x: u32, y: u32, target: &Target) -> String {
     let p = sample_exact(x, y, target);
     let mut s = format!("sample {p}");
-    let Some(edges) = triangle_edges(tri, target.convention.tie_rule) else {
+    let Some(at) = triangle_at(tri, &p, target.convention.tie_rule.into()) else {
         s.push_str(": zero-area triangle -> outside");
         return s;
     };
-    let mut inside = true;
-    for (k, e) in edges.iter().enumerate() {
-        let v = e.value(&p);
+    for e in &at.edges {
         let flag = if e.inclusive { "inclusive" } else { "exclusive" };
-        let ok = v.is_positive() || (v.is_zero() && e.inclusive);
-        inside &= ok;
-        let _ = write!(s, "; edge {k}: E={} ({flag})", exact_text(&v));
+        let _ = write!(s, "; edge {}: E={} ({flag})", e.index, exact_text(&e.value));
     }
-    s.push_str(if inside { " -> inside" } else { " -> outside" });
+    s.push_str(if at.inside { " -> inside" } else { " -> outside" });
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(n: i64, d: i64) -> BigRational {
+        BigRational::new(n.into(), d.into())
+    }
+
+    #[test]
+    fn sides_and_verdicts_by_hand() {
+        // (0,0) (0,4) (4,0) oriented: v0 (0,0) -> v1 (0,4) runs down: the left edge;
+        // (0,4) -> (4,0) runs up: right; (4,0) -> (0,0) runs left: top.
+        let t = Triangle::new(Point::from_ints(0, 0), Point::from_ints(0, 4), Point::from_ints(4, 0));
+        let at = triangle_at(&t, &Point::new(q(0, 1), q(1, 2)), AnyTieRule::TopLeft).unwrap();
+        let sides: Vec<&str> = at.edges.iter().map(|e| e.side.name()).collect();
+        assert_eq!(sides, ["left", "right", "top"]);
+        // (0, 1/2) lies on the left edge: inside under top-left, outside under top-right.
+        assert!(at.inside);
+        assert_eq!(at.zero_edges().map(|e| e.index).collect::<Vec<_>>(), [0]);
+        assert!(at.to_string().ends_with("-> inside"), "{at}");
+        let right = triangle_at(&t, &Point::new(q(0, 1), q(1, 2)), AnyTieRule::TopRight).unwrap();
+        assert!(!right.inside);
+        assert_eq!(at.distance2(), q(0, 1));
+        assert!(triangle_at(
+            &Triangle::new(Point::from_ints(0, 0), Point::from_ints(1, 1), Point::from_ints(2, 2)),
+            &Point::from_ints(1, 1),
+            AnyTieRule::AllInclusive
+        )
+        .is_none());
+    }
 }

@@ -1,147 +1,20 @@
 //! The exact evidence behind a verdict at one sample: a triangle's edge values, inclusive
-//! flags and which side of the triangle each edge is; a polygon's winding numbers; the
-//! distance from a sample to a primitive's nearest edge, exact (its square is rational).
+//! flags and which side of the triangle each edge is ([`triangle_at`], computed by
+//! [`crate::check`] and re-exported here); a polygon's winding numbers; the distance from
+//! a sample to a primitive's nearest edge, exact (its square is rational).
 
-use std::cmp::Ordering;
 use std::fmt::{self, Write as _};
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{Signed, Zero};
+use num_traits::Zero;
 
-use crate::convention::{AnyTieRule, TieRule};
-use crate::edge::exact::{edge_function, oriented};
+pub use crate::check::{segment_distance2, triangle_at, EdgeAt, Side, TriangleAt};
+use crate::convention::TieRule;
 use crate::fill::polygon::{contour_winding_exact, locate_exact, Location};
-use crate::geom::{Point, Polygon, Triangle};
+use crate::geom::{Point, Polygon};
 use crate::model::Shape;
-use crate::num::exact::{exact_text, nearest_f64, pair_text};
-
-/// Which side of its triangle an edge is, from its direction once the triangle is
-/// oriented so its interior is `E > 0` (y down).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Side {
-    /// Runs down the screen, the interior to its right.
-    Left,
-    /// Runs up the screen.
-    Right,
-    /// Horizontal, the interior below it.
-    Top,
-    /// Horizontal, the interior above it.
-    Bottom,
-}
-
-impl Side {
-    /// Of an oriented edge `(dx, dy)`.
-    pub fn of(dx: Ordering, dy: Ordering) -> Side {
-        match (dy, dx) {
-            (Ordering::Greater, _) => Side::Left,
-            (Ordering::Less, _) => Side::Right,
-            (Ordering::Equal, Ordering::Less) => Side::Top,
-            (Ordering::Equal, _) => Side::Bottom,
-        }
-    }
-
-    /// `left`, `right`, `top` or `bottom`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Side::Left => "left",
-            Side::Right => "right",
-            Side::Top => "top",
-            Side::Bottom => "bottom",
-        }
-    }
-}
-
-/// One edge of an oriented triangle at a sample.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct EdgeAt {
-    /// 0, 1 or 2: the edge v0->v1, v1->v2, v2->v0 of the oriented triangle.
-    pub index: usize,
-    /// Its start.
-    pub from: Point,
-    /// Its end.
-    pub to: Point,
-    /// `E` at the sample, exactly.
-    pub value: BigRational,
-    /// Which side of the triangle it is.
-    pub side: Side,
-    /// Whether it owns the samples on it under the rule asked for.
-    pub inclusive: bool,
-    /// The squared distance from the sample to the edge (the segment), exactly.
-    pub distance2: BigRational,
-}
-
-/// A triangle at a sample: its oriented edges and the verdict.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct TriangleAt {
-    /// The three edges.
-    pub edges: [EdgeAt; 3],
-    /// Every edge has `E > 0`, or `E == 0` and is inclusive.
-    pub inside: bool,
-}
-
-/// Triangle `t` at sample `p` under `rule`; `None` for a zero-area triangle (it covers
-/// nothing under any rule).
-pub fn triangle_at(t: &Triangle, p: &Point, rule: AnyTieRule) -> Option<TriangleAt> {
-    let t = oriented(t)?;
-    let edge = |index: usize| {
-        let (a, b) = (&t.v[index], &t.v[(index + 1) % 3]);
-        let zero = BigRational::zero();
-        let (dx, dy) = ((&b.x - &a.x).cmp(&zero), (&b.y - &a.y).cmp(&zero));
-        EdgeAt {
-            index,
-            from: a.clone(),
-            to: b.clone(),
-            value: edge_function(a, b, p),
-            side: Side::of(dx, dy),
-            inclusive: rule.is_inclusive(dx, dy),
-            distance2: segment_distance2(p, a, b),
-        }
-    };
-    let edges = [edge(0), edge(1), edge(2)];
-    let inside = edges
-        .iter()
-        .all(|e| e.value.is_positive() || (e.value.is_zero() && e.inclusive));
-    Some(TriangleAt { edges, inside })
-}
-
-impl TriangleAt {
-    /// The edges the sample lies on (`E == 0`).
-    pub fn zero_edges(&self) -> impl Iterator<Item = &EdgeAt> + '_ {
-        self.edges.iter().filter(|e| e.value.is_zero())
-    }
-
-    /// The squared distance to the nearest edge.
-    pub fn distance2(&self) -> BigRational {
-        self.edges
-            .iter()
-            .map(|e| e.distance2.clone())
-            .min()
-            .expect("three edges")
-    }
-}
-
-impl fmt::Display for TriangleAt {
-    /// `edge 0 (a -> b, left): E=v (inclusive); ... -> inside`.
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        for (k, e) in self.edges.iter().enumerate() {
-            if k > 0 {
-                f.write_str("; ")?;
-            }
-            write!(
-                f,
-                "edge {} ({} -> {}, {}): E={} ({})",
-                e.index,
-                pair_text(&e.from.x, &e.from.y),
-                pair_text(&e.to.x, &e.to.y),
-                e.side.name(),
-                exact_text(&e.value),
-                if e.inclusive { "inclusive" } else { "exclusive" }
-            )?;
-        }
-        f.write_str(if self.inside { " -> inside" } else { " -> outside" })
-    }
-}
+use crate::num::exact::{exact_text, nearest_f64};
 
 /// A polygon at a sample: the winding number of the moved sample around each contour,
 /// whether the sample itself lies on an edge, and the verdict.
@@ -205,29 +78,6 @@ impl fmt::Display for PolygonAt {
             f.write_str(", the sample lies on an edge")?;
         }
         f.write_str(if self.inside { " -> inside" } else { " -> outside" })
-    }
-}
-
-/// The squared distance from `p` to the segment `a b`, exactly: to the nearer end when
-/// `p` projects outside it, else `E^2 / |b - a|^2`.
-pub fn segment_distance2(p: &Point, a: &Point, b: &Point) -> BigRational {
-    let (dx, dy) = (&b.x - &a.x, &b.y - &a.y);
-    let len2 = &dx * &dx + &dy * &dy;
-    let to = |q: &Point| {
-        let (ux, uy) = (&p.x - &q.x, &p.y - &q.y);
-        &ux * &ux + &uy * &uy
-    };
-    if len2.is_zero() {
-        return to(a);
-    }
-    let along = (&p.x - &a.x) * &dx + (&p.y - &a.y) * &dy;
-    if !along.is_positive() {
-        to(a)
-    } else if along >= len2 {
-        to(b)
-    } else {
-        let e = edge_function(a, b, p);
-        &e * &e / len2
     }
 }
 
@@ -298,29 +148,6 @@ mod tests {
         assert_eq!(distance_text(&q(1, 4)), "1/2 ≈ 0.5000 px");
         // A degenerate segment is its point.
         assert_eq!(segment_distance2(&Point::from_ints(3, 4), &a, &a), q(25, 1));
-    }
-
-    #[test]
-    fn sides_and_verdicts_by_hand() {
-        // (0,0) (0,4) (4,0) oriented: v0 (0,0) -> v1 (0,4) runs down: the left edge;
-        // (0,4) -> (4,0) runs up: right; (4,0) -> (0,0) runs left: top.
-        let t = Triangle::new(Point::from_ints(0, 0), Point::from_ints(0, 4), Point::from_ints(4, 0));
-        let at = triangle_at(&t, &Point::new(q(0, 1), q(1, 2)), AnyTieRule::TopLeft).unwrap();
-        let sides: Vec<&str> = at.edges.iter().map(|e| e.side.name()).collect();
-        assert_eq!(sides, ["left", "right", "top"]);
-        // (0, 1/2) lies on the left edge: inside under top-left, outside under top-right.
-        assert!(at.inside);
-        assert_eq!(at.zero_edges().map(|e| e.index).collect::<Vec<_>>(), [0]);
-        assert!(at.to_string().ends_with("-> inside"), "{at}");
-        let right = triangle_at(&t, &Point::new(q(0, 1), q(1, 2)), AnyTieRule::TopRight).unwrap();
-        assert!(!right.inside);
-        assert_eq!(at.distance2(), q(0, 1));
-        assert!(triangle_at(
-            &Triangle::new(Point::from_ints(0, 0), Point::from_ints(1, 1), Point::from_ints(2, 2)),
-            &Point::from_ints(1, 1),
-            AnyTieRule::AllInclusive
-        )
-        .is_none());
     }
 
     #[test]

@@ -1,0 +1,326 @@
+//! Comparing another renderer's output with the oracle's, pixel by pixel, and explaining
+//! every difference ([`compare`], [`Report`]).
+//!
+//! This module holds the diffing: how a pixel differs ([`PixelKind`], [`Relation`]), why
+//! a comparison cannot be made ([`CompareError`]) and [`compare`] itself. Its parts, each
+//! re-exported here: the evidence at one differing pixel and the spatial index of the
+//! shapes that may explain it (`pixel`), and the [`Report`] with its text, JSON and
+//! difference picture (`report`).
+
+mod pixel;
+mod report;
+
+use std::collections::BTreeMap;
+use std::fmt;
+
+pub(crate) use pixel::{evidence, pixel_box_holds};
+pub use pixel::{DiffPixel, Finding};
+pub use report::{reason_text, Report, EMPTY_COLOUR, MATCHED_COLOUR, REPORT_VERSION};
+
+use super::reason::Classifier;
+use super::theirs::{Format, TheirPixel, Theirs};
+use crate::convention::Target;
+use crate::coverage::Coverage;
+use crate::model::{prepare, Model, ModelError, Primitives};
+use pixel::{guessed, named, Candidates};
+
+/// How a differing pixel differs, seen from the whole pixel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum PixelKind {
+    /// The oracle covers it, they do not (or they name fewer owners).
+    Missing,
+    /// They cover it, the oracle does not.
+    Extra,
+    /// Both cover it, with different owners.
+    WrongOwner,
+    /// They cover it more often than the oracle (a second owner, or one twice).
+    Double,
+}
+
+impl PixelKind {
+    /// Every kind, in report order.
+    pub const ALL: [PixelKind; 4] = [
+        PixelKind::Missing,
+        PixelKind::Extra,
+        PixelKind::WrongOwner,
+        PixelKind::Double,
+    ];
+
+    /// Its name in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            PixelKind::Missing => "missing",
+            PixelKind::Extra => "extra",
+            PixelKind::WrongOwner => "wrong owner",
+            PixelKind::Double => "double",
+        }
+    }
+
+    /// Its colour in the difference picture.
+    pub fn colour(self) -> [u8; 3] {
+        match self {
+            PixelKind::Missing => [230, 40, 40],
+            PixelKind::Extra => [40, 200, 60],
+            PixelKind::WrongOwner => [240, 220, 40],
+            PixelKind::Double => [220, 60, 220],
+        }
+    }
+}
+
+/// One primitive's part in a differing pixel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Relation {
+    /// The primitive covers the pixel in the oracle, not in theirs.
+    Missing,
+    /// The primitive covers the pixel in theirs, not in the oracle.
+    Extra,
+}
+
+impl Relation {
+    /// `missing` or `extra`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Relation::Missing => "missing",
+            Relation::Extra => "extra",
+        }
+    }
+}
+
+/// Their canvas is not the scene's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SizeMismatch {
+    /// Their width and height.
+    pub theirs: (u32, u32),
+    /// The scene's.
+    pub scene: (u32, u32),
+}
+
+impl SizeMismatch {
+    /// `Err` when `theirs` is not `target`'s size.
+    pub fn check(theirs: &Theirs, target: &Target) -> Result<(), SizeMismatch> {
+        let m = SizeMismatch {
+            theirs: (theirs.width(), theirs.height()),
+            scene: (target.width, target.height),
+        };
+        if m.theirs == m.scene {
+            Ok(())
+        } else {
+            Err(m)
+        }
+    }
+}
+
+impl fmt::Display for SizeMismatch {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "their image is {}x{} but the scene's canvas is {}x{}",
+            self.theirs.0, self.theirs.1, self.scene.0, self.scene.1
+        )
+    }
+}
+
+/// Why a comparison could not be made.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum CompareError {
+    /// Their canvas is not the scene's.
+    Size(SizeMismatch),
+    /// The oracle must be an exact model.
+    NotExact(Model),
+    /// The oracle model refused the scene.
+    Model(ModelError),
+}
+
+impl fmt::Display for CompareError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CompareError::Size(m) => write!(f, "{m}"),
+            CompareError::NotExact(m) => write!(
+                f,
+                "--model {}: the oracle must be an exact model (exact, exact-snapped, exact-plain, exact-snapped-plain)",
+                m.name()
+            ),
+            CompareError::Model(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for CompareError {}
+
+/// Compares `theirs` with what the exact `model` renders of `primitives` on `target`, and
+/// explains every differing pixel (see [`super::reason`] for the classes).
+///
+/// What a pixel's owners are in each format, and so what can differ: a mask names none
+/// (missing and extra only; an extra pixel is explained by the primitive that explains it
+/// best, `guessed`); an ids PNG names the highest owner and marks several (a pixel the
+/// oracle gives owners `O` should hold `max(O)`, marked when `|O| >= 2`); JSON names all.
+///
+/// ```
+/// use rasterproof::model::{render, Model};
+/// use rasterproof::oracle::{compare, Format, Theirs};
+/// use rasterproof::scene::parse_scene;
+/// let scene = parse_scene(r#"{"width": 4, "height": 4, "triangles": [{"v": [[0, 0], [4, 0], [0, 4]]}]}"#, "s.json").unwrap();
+/// let target = scene.target().unwrap();
+/// let ours = render(Model::ExactSnapped, &scene.primitives(), &target).unwrap();
+/// let theirs = Theirs::from_coverage(&ours, Format::Ids);
+/// let report = compare(&scene.primitives(), &target, Model::ExactSnapped, &theirs).unwrap();
+/// assert!(report.pixels.is_empty());
+/// ```
+///
+/// # Errors
+/// Their canvas differs from `target`'s, `model` is not exact, or it refuses the scene.
+pub fn compare(
+    primitives: &Primitives,
+    target: &Target,
+    model: Model,
+    theirs: &Theirs,
+) -> Result<Report, CompareError> {
+    SizeMismatch::check(theirs, target).map_err(CompareError::Size)?;
+    if !model.is_exact() {
+        return Err(CompareError::NotExact(model));
+    }
+    let prepared = prepare(model, primitives, target).map_err(CompareError::Model)?;
+    let ours = prepared.coverage(target);
+    let shapes = prepared.shapes().ok_or(CompareError::NotExact(model))?;
+    let mut classifier = Classifier::new(primitives, target, model, &shapes);
+    let index = Candidates::new(&shapes, target);
+    let mut keys: Vec<(u32, u32)> = ours.iter().map(|(x, y, _)| (y, x)).collect();
+    keys.extend(theirs.covered().into_iter().map(|(x, y)| (y, x)));
+    keys.sort_unstable();
+    keys.dedup();
+    let mut pixels = Vec::new();
+    for (y, x) in keys {
+        {
+            let o = ours.owners(x, y);
+            let t = theirs.pixel(x, y);
+            let Some((kind, missing, extra, unnamed)) = differ(o, &t, theirs.format()) else {
+                continue;
+            };
+            let mut findings = Vec::new();
+            for id in missing {
+                findings.push(named(&mut classifier, primitives, id, Relation::Missing, x, y, target));
+            }
+            for id in extra {
+                findings.push(named(&mut classifier, primitives, id, Relation::Extra, x, y, target));
+            }
+            if unnamed {
+                let candidates: Vec<usize> = index
+                    .near(x, y)
+                    .into_iter()
+                    .filter(|&k| !o.iter().any(|&id| usize::try_from(id).ok() == Some(k)))
+                    .collect();
+                findings.push(guessed(&mut classifier, primitives, &candidates, x, y, target));
+            }
+            pixels.push(DiffPixel {
+                x,
+                y,
+                kind,
+                ours: o.to_vec(),
+                theirs: t,
+                findings,
+            });
+        }
+    }
+    Ok(Report {
+        model,
+        convention: target.convention,
+        format: theirs.format(),
+        width: target.width,
+        height: target.height,
+        ours_covered: ours.covered_pixels(),
+        theirs_covered: theirs.covered_pixels(),
+        pixels,
+        ours,
+    })
+}
+
+/// Differing pixels of `ours` against `theirs`, by kind, as [`compare`] counts them (without
+/// explaining them); with `stop`, counting ends once that many are found.
+pub fn count_differences(ours: &Coverage, theirs: &Theirs, stop: Option<usize>) -> BTreeMap<PixelKind, usize> {
+    let mut keys: Vec<(u32, u32)> = ours.iter().map(|(x, y, _)| (y, x)).collect();
+    keys.extend(theirs.covered().into_iter().map(|(x, y)| (y, x)));
+    keys.sort_unstable();
+    keys.dedup();
+    let mut out = BTreeMap::new();
+    let mut total = 0;
+    for (y, x) in keys {
+        if let Some((kind, ..)) = differ(ours.owners(x, y), &theirs.pixel(x, y), theirs.format()) {
+            *out.entry(kind).or_insert(0) += 1;
+            total += 1;
+            if stop.is_some_and(|s| total >= s) {
+                break;
+            }
+        }
+    }
+    out
+}
+
+/// The multiset difference `a - b` of two ascending lists.
+fn minus(a: &[u32], b: &[u32]) -> Vec<u32> {
+    let mut rest = b.to_vec();
+    let mut out = Vec::new();
+    for &v in a {
+        if let Some(k) = rest.iter().position(|&w| w == v) {
+            rest.remove(k);
+        } else {
+            out.push(v);
+        }
+    }
+    out
+}
+
+/// How ours (`o`) and theirs (`t`) differ at a pixel: the kind, the ids missing in theirs,
+/// the ids extra in theirs, and whether an owner they do not name is extra; `None` when
+/// they agree (as far as the format tells).
+fn differ(o: &[u32], t: &TheirPixel, format: Format) -> Option<(PixelKind, Vec<u32>, Vec<u32>, bool)> {
+    match format {
+        Format::Mask => match (o.is_empty(), t.covered) {
+            (false, false) => Some((PixelKind::Missing, o.to_vec(), Vec::new(), false)),
+            (true, true) => Some((PixelKind::Extra, Vec::new(), Vec::new(), true)),
+            _ => None,
+        },
+        Format::Ids => {
+            let (Some(&h), Some(&top)) = (t.ids.first(), o.last()) else {
+                return match (o.is_empty(), t.covered) {
+                    (false, false) => Some((PixelKind::Missing, o.to_vec(), Vec::new(), false)),
+                    (true, true) => Some((PixelKind::Extra, Vec::new(), t.ids.clone(), t.several)),
+                    _ => None,
+                };
+            };
+            let several = o.len() > 1;
+            if h == top && t.several == several {
+                None
+            } else if h == top && t.several {
+                Some((PixelKind::Double, Vec::new(), Vec::new(), true))
+            } else if h == top {
+                Some((PixelKind::Missing, o[..o.len() - 1].to_vec(), Vec::new(), false))
+            } else {
+                // One owner named: every other owner of ours is missing. Several marked: the
+                // highest is named, so only ours above it are known to be missing.
+                let missing: Vec<u32> = o
+                    .iter()
+                    .copied()
+                    .filter(|&id| if t.several { id > h } else { id != h })
+                    .collect();
+                let extra = if o.contains(&h) { Vec::new() } else { vec![h] };
+                Some((PixelKind::WrongOwner, missing, extra, false))
+            }
+        }
+        Format::Json => {
+            if o == t.ids.as_slice() {
+                return None;
+            }
+            let (missing, extra) = (minus(o, &t.ids), minus(&t.ids, o));
+            let kind = if t.ids.is_empty() || extra.is_empty() {
+                PixelKind::Missing
+            } else if o.is_empty() {
+                PixelKind::Extra
+            } else if missing.is_empty() {
+                PixelKind::Double
+            } else {
+                PixelKind::WrongOwner
+            };
+            Some((kind, missing, extra, false))
+        }
+    }
+}

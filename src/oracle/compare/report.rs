@@ -1,0 +1,392 @@
+//! The [`Report`] of a comparison: its summary, text, JSON and difference picture, and a
+//! reason in words ([`reason_text`]).
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+
+use image::{Rgb, RgbImage};
+use serde_json::{json, Value};
+
+use super::pixel::point_text;
+use super::{DiffPixel, PixelKind};
+use crate::convention::Convention;
+use crate::coverage::picture::{upscale, Scale};
+use crate::coverage::Coverage;
+use crate::model::Model;
+use crate::num::exact::exact_text;
+use crate::oracle::evidence::{distance_f64, distance_text, exact_distance};
+use crate::oracle::reason::{Reason, ReasonClass};
+use crate::oracle::theirs::{Format, TheirPixel};
+
+/// The version of the JSON report's schema ([`Report::to_json`]).
+pub const REPORT_VERSION: u32 = 1;
+
+/// The colour of a pixel both cover with the same owners, in the difference picture.
+pub const MATCHED_COLOUR: [u8; 3] = [128, 128, 128];
+/// The colour of a pixel neither covers.
+pub const EMPTY_COLOUR: [u8; 3] = [0, 0, 0];
+
+/// The comparison of their output with the oracle's.
+#[derive(Debug, Clone)]
+pub struct Report {
+    /// The oracle model.
+    pub model: Model,
+    /// The convention.
+    pub convention: Convention,
+    /// How their file was read.
+    pub format: Format,
+    /// Canvas width.
+    pub width: u32,
+    /// Canvas height.
+    pub height: u32,
+    /// Pixels the oracle covers.
+    pub ours_covered: usize,
+    /// Pixels they cover.
+    pub theirs_covered: usize,
+    /// Every differing pixel, row-major.
+    pub pixels: Vec<DiffPixel>,
+    pub(super) ours: Coverage,
+}
+
+impl Report {
+    /// True when their output equals the oracle's (as far as the format tells).
+    pub fn identical(&self) -> bool {
+        self.pixels.is_empty()
+    }
+
+    /// Findings counted by pixel kind and reason class (a pixel with two primitives'
+    /// findings counts twice).
+    pub fn summary(&self) -> BTreeMap<(PixelKind, ReasonClass), usize> {
+        let mut out = BTreeMap::new();
+        for p in &self.pixels {
+            for f in &p.findings {
+                *out.entry((p.kind, f.reason.class())).or_insert(0) += 1;
+            }
+        }
+        out
+    }
+
+    /// Differing pixels by kind.
+    pub fn pixels_by_kind(&self) -> BTreeMap<PixelKind, usize> {
+        let mut out = BTreeMap::new();
+        for p in &self.pixels {
+            *out.entry(p.kind).or_insert(0) += 1;
+        }
+        out
+    }
+
+    /// The text report: a header, the summary table (findings by pixel kind and reason
+    /// class), then the first `limit` differing pixels, each with every finding's reason
+    /// and the oracle's exact evidence.
+    pub fn to_text(&self, scene: &str, theirs: &str, limit: usize) -> String {
+        let mut s = String::new();
+        let _ = writeln!(
+            s,
+            "compare: {theirs} (as {}) against {scene}: model {}, {}",
+            self.format.name(),
+            self.model.name(),
+            self.convention
+        );
+        let _ = writeln!(
+            s,
+            "canvas {}x{}: the oracle covers {} pixels, theirs {}; {} differ",
+            self.width,
+            self.height,
+            self.ours_covered,
+            self.theirs_covered,
+            self.pixels.len()
+        );
+        if self.pixels.is_empty() {
+            s.push_str("identical\n");
+            return s;
+        }
+        let summary = self.summary();
+        let classes: Vec<ReasonClass> = ReasonClass::ALL
+            .into_iter()
+            .filter(|c| summary.keys().any(|(_, k)| k == c))
+            .collect();
+        let by_kind = self.pixels_by_kind();
+        let _ = write!(s, "\n{:<12} {:>7}", "", "pixels");
+        for c in &classes {
+            let _ = write!(s, " {:>10}", c.name());
+        }
+        s.push('\n');
+        for kind in PixelKind::ALL {
+            let Some(n) = by_kind.get(&kind) else { continue };
+            let _ = write!(s, "{:<12} {n:>7}", kind.name());
+            for c in &classes {
+                let _ = write!(s, " {:>10}", summary.get(&(kind, *c)).copied().unwrap_or(0));
+            }
+            s.push('\n');
+        }
+        s.push_str(
+            "(pixels: differing pixels of each kind; the class columns count findings, one per pixel and primitive)\n",
+        );
+        let shown = self.pixels.len().min(limit);
+        if shown > 0 {
+            let _ = writeln!(s, "\nthe first {shown} of {} differing pixels:", self.pixels.len());
+        }
+        for p in self.pixels.iter().take(limit) {
+            let _ = writeln!(
+                s,
+                "({}, {}) {}: oracle {}, theirs {}",
+                p.x,
+                p.y,
+                p.kind.name(),
+                owners_text(&p.ours),
+                their_text(&p.theirs, self.format)
+            );
+            for f in &p.findings {
+                let who = match (&f.primitive, f.id) {
+                    (Some(name), Some(id)) => format!("{name} (id {id})"),
+                    (None, Some(id)) => format!("id {id}"),
+                    _ => "no primitive".to_string(),
+                };
+                let guess = if f.guessed {
+                    " (their output names no owner; the best explanation)"
+                } else {
+                    ""
+                };
+                let _ = writeln!(
+                    s,
+                    "  {who} {}{guess}: {}: {}",
+                    f.relation.name(),
+                    f.reason.class().name(),
+                    reason_text(&f.reason)
+                );
+                let _ = writeln!(s, "    {}", f.evidence);
+            }
+        }
+        s
+    }
+
+    /// The JSON report (schema version [`REPORT_VERSION`]), complete:
+    /// `{"version", "scene", "theirs", "format", "model", "convention": {preset, tie_rule,
+    /// pixel_centre, subpixel_bits, rounding}, "width", "height", "ours_covered",
+    /// "theirs_covered", "differing", "pixels_by_kind": {kind: n}, "summary": [{kind, class,
+    /// count}], "pixels": [{x, y, kind, ours: [ids], theirs: {covered, ids, several},
+    /// findings: [{id, primitive, relation, guessed, class, reason: {...}, evidence}]}]}`.
+    /// A reason holds, by class: `tie` `{edges: [{index, from, to, side, value,
+    /// inclusive}], rules}`; `clip` `{unclipped_covers}`; `line-rule` `{rules}`;
+    /// `fill-rule` `{winding, fill_rule}`; `snapping` `{subpixel_bits (null: unsnapped),
+    /// roundings}`; `near-edge` and `gross` `{distance: {squared, exact, approx} or null}`.
+    /// Exact numbers are strings (`"7/2"`).
+    pub fn to_json(&self, scene: &str, theirs: &str) -> Value {
+        let c = &self.convention;
+        let summary: Vec<Value> = self
+            .summary()
+            .iter()
+            .map(|((k, class), n)| json!({"kind": k.name(), "class": class.name(), "count": n}))
+            .collect();
+        let by_kind: serde_json::Map<String, Value> = self
+            .pixels_by_kind()
+            .iter()
+            .map(|(k, n)| (k.name().to_string(), json!(n)))
+            .collect();
+        let pixels: Vec<Value> = self
+            .pixels
+            .iter()
+            .map(|p| {
+                let findings: Vec<Value> = p
+                    .findings
+                    .iter()
+                    .map(|f| {
+                        json!({
+                            "id": f.id,
+                            "primitive": f.primitive,
+                            "relation": f.relation.name(),
+                            "guessed": f.guessed,
+                            "class": f.reason.class().name(),
+                            "reason": reason_json(&f.reason),
+                            "evidence": f.evidence,
+                        })
+                    })
+                    .collect();
+                json!({
+                    "x": p.x, "y": p.y, "kind": p.kind.name(), "ours": p.ours,
+                    "theirs": {"covered": p.theirs.covered, "ids": p.theirs.ids, "several": p.theirs.several},
+                    "findings": findings,
+                })
+            })
+            .collect();
+        json!({
+            "version": REPORT_VERSION,
+            "scene": scene,
+            "theirs": theirs,
+            "format": self.format.name(),
+            "model": self.model.name(),
+            "convention": {
+                "preset": c.preset.name(),
+                "tie_rule": c.tie_rule.name(),
+                "pixel_centre": c.pixel_centre.name(),
+                "subpixel_bits": c.subpixel_bits,
+                "rounding": c.rounding.name(),
+            },
+            "width": self.width,
+            "height": self.height,
+            "ours_covered": self.ours_covered,
+            "theirs_covered": self.theirs_covered,
+            "differing": self.pixels.len(),
+            "pixels_by_kind": by_kind,
+            "summary": summary,
+            "pixels": pixels,
+        })
+    }
+
+    /// The difference picture at scale 1: [`EMPTY_COLOUR`] where neither covers,
+    /// [`MATCHED_COLOUR`] where both agree, each differing pixel its kind's
+    /// [`PixelKind::colour`]. Scale it with [`crate::coverage::picture::upscale`].
+    pub fn diff_image(&self) -> RgbImage {
+        let mut img = RgbImage::from_pixel(self.width, self.height, Rgb(EMPTY_COLOUR));
+        for (x, y, _) in self.ours.iter() {
+            img.put_pixel(x, y, Rgb(MATCHED_COLOUR));
+        }
+        for p in &self.pixels {
+            img.put_pixel(p.x, p.y, Rgb(p.kind.colour()));
+        }
+        img
+    }
+
+    /// [`Report::diff_image`] scaled by `scale`.
+    pub fn diff_picture(&self, scale: Scale) -> RgbImage {
+        upscale(&self.diff_image(), scale)
+    }
+
+    /// The legend of the difference picture: each colour, what it means and how many
+    /// pixels have it.
+    pub fn diff_legend(&self, scale: Scale) -> String {
+        let by_kind = self.pixels_by_kind();
+        let hex = |c: [u8; 3]| format!("#{:02x}{:02x}{:02x}", c[0], c[1], c[2]);
+        let matched = self.ours_covered - self.pixels.iter().filter(|p| !p.ours.is_empty()).count();
+        let mut s = format!(
+            "difference picture: {}x{} canvas, each pixel {k}x{k} picture pixels\n",
+            self.width,
+            self.height,
+            k = scale.get()
+        );
+        let _ = writeln!(
+            s,
+            "{}  matched (both cover it, same owners)  {matched}",
+            hex(MATCHED_COLOUR)
+        );
+        for kind in PixelKind::ALL {
+            let _ = writeln!(
+                s,
+                "{}  {:<36}  {}",
+                hex(kind.colour()),
+                kind.name(),
+                by_kind.get(&kind).copied().unwrap_or(0)
+            );
+        }
+        let _ = writeln!(s, "{}  neither covers it", hex(EMPTY_COLOUR));
+        s
+    }
+}
+
+fn owners_text(ids: &[u32]) -> String {
+    if ids.is_empty() {
+        "none".to_string()
+    } else {
+        let v: Vec<String> = ids.iter().map(u32::to_string).collect();
+        format!("[{}]", v.join(", "))
+    }
+}
+
+fn their_text(t: &TheirPixel, format: Format) -> String {
+    match (format, t.covered) {
+        (_, false) => "none".to_string(),
+        (Format::Mask, true) => "covered".to_string(),
+        (Format::Ids, true) if t.several => format!("{} and others (several owners)", owners_text(&t.ids)),
+        _ => owners_text(&t.ids),
+    }
+}
+
+/// A reason in words.
+pub fn reason_text(r: &Reason) -> String {
+    match r {
+        Reason::Tie { edges, rules } => {
+            let names: Vec<&str> = rules.iter().map(|r| r.name()).collect();
+            let on = if edges.is_empty() {
+                "the sample lies on the polygon's outline".to_string()
+            } else {
+                let e: Vec<String> = edges
+                    .iter()
+                    .map(|e| {
+                        format!(
+                            "edge {} {} -> {} (a {} edge, {} here)",
+                            e.index,
+                            point_text(&e.from),
+                            point_text(&e.to),
+                            e.side.name(),
+                            if e.inclusive { "inclusive" } else { "exclusive" }
+                        )
+                    })
+                    .collect();
+                format!("the sample lies on {}", e.join(" and "))
+            };
+            format!("{on}; their answer is the tie rule {}", names.join(" or "))
+        }
+        Reason::Clip { unclipped_covers } => format!(
+            "the primitive without the clip window {} the pixel: they did not clip (or clipped elsewhere)",
+            if *unclipped_covers { "covers" } else { "does not cover" }
+        ),
+        Reason::LineRule { rules } => format!("their answer is the line rule {}", rules.join(" or ")),
+        Reason::FillRule { winding, fill_rule } => {
+            format!(
+                "winding number {winding}; their answer is the fill rule {}",
+                fill_rule.name()
+            )
+        }
+        Reason::Snapping {
+            bits: Some(b),
+            roundings,
+        } => {
+            let names: Vec<&str> = roundings.iter().map(|r| r.name()).collect();
+            format!(
+                "their answer is snapping to {b} subpixel bits, rounding {}",
+                names.join(" or ")
+            )
+        }
+        Reason::Snapping { bits: None, .. } => {
+            "their answer is the unsnapped primitive (no subpixel snapping of 1..=16 bits gives it)".to_string()
+        }
+        Reason::NearEdge { distance2 } => format!("the sample is {} from an edge", distance_text(distance2)),
+        Reason::Gross { distance2: Some(d) } => format!("the sample is {} from the nearest edge", distance_text(d)),
+        Reason::Gross { distance2: None } => "no edge within 1 px".to_string(),
+    }
+}
+
+fn distance_json(d2: &num_rational::BigRational) -> Value {
+    json!({"squared": exact_text(d2), "exact": exact_distance(d2), "approx": distance_f64(d2)})
+}
+
+fn reason_json(r: &Reason) -> Value {
+    match r {
+        Reason::Tie { edges, rules } => {
+            let edges: Vec<Value> = edges
+                .iter()
+                .map(|e| {
+                    json!({
+                        "index": e.index,
+                        "from": [exact_text(&e.from.x), exact_text(&e.from.y)],
+                        "to": [exact_text(&e.to.x), exact_text(&e.to.y)],
+                        "side": e.side.name(),
+                        "value": exact_text(&e.value),
+                        "inclusive": e.inclusive,
+                    })
+                })
+                .collect();
+            let rules: Vec<&str> = rules.iter().map(|r| r.name()).collect();
+            json!({"edges": edges, "rules": rules})
+        }
+        Reason::Clip { unclipped_covers } => json!({"unclipped_covers": unclipped_covers}),
+        Reason::LineRule { rules } => json!({ "rules": rules }),
+        Reason::FillRule { winding, fill_rule } => json!({"winding": winding, "fill_rule": fill_rule.name()}),
+        Reason::Snapping { bits, roundings } => {
+            let names: Vec<&str> = roundings.iter().map(|r| r.name()).collect();
+            json!({"subpixel_bits": bits, "roundings": names})
+        }
+        Reason::NearEdge { distance2 } => json!({ "distance": distance_json(distance2) }),
+        Reason::Gross { distance2 } => json!({ "distance": distance2.as_ref().map(distance_json) }),
+    }
+}

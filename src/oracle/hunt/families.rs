@@ -1,0 +1,167 @@
+//! The scenes a hunt draws: the scene [`Family`]s, the scene of one case
+//! ([`generate_scene`]), and the coordinates of a scene (every one, mutably; rounded to
+//! f32 by [`float32_exact`]).
+
+use num_rational::BigRational;
+use proptest::strategy::{BoxedStrategy, Strategy, ValueTree};
+use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+
+use super::HuntConfig;
+use crate::geom::{Point, Polygon, Triangle};
+use crate::line::{BresenhamTie, Line, LineRule};
+use crate::scene::Scene;
+use crate::strategy::polygon::any_polygon;
+use crate::strategy::{delaunay_mesh, diamond_line, pixel_line, tie_heavy_mesh, triangle, Scale};
+
+/// A family of generated scenes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Family {
+    /// A tie-heavy mesh: vertices on pixel centres, corners and snapping ties.
+    Mesh,
+    /// A Delaunay mesh of random points on the 1/256 px grid.
+    Delaunay,
+    /// Random triangles of every size (pixel, medium, sliver, huge, tie-heavy).
+    Triangles,
+    /// Slivers: a third vertex a few subpixels off the line through the other two.
+    Slivers,
+    /// Triangles with vertices far off the canvas (up to the integer envelope).
+    Huge,
+    /// A Delaunay mesh on a fine 2^-16 px grid.
+    Fine,
+    /// Bresenham and diamond-exit lines.
+    Lines,
+    /// Polygons: simple, with holes, tangled, stellated, tie-heavy.
+    Polygons,
+}
+
+impl Family {
+    /// Every family.
+    pub const ALL: [Family; 8] = [
+        Family::Mesh,
+        Family::Delaunay,
+        Family::Triangles,
+        Family::Slivers,
+        Family::Huge,
+        Family::Fine,
+        Family::Lines,
+        Family::Polygons,
+    ];
+
+    /// Its name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Family::Mesh => "mesh",
+            Family::Delaunay => "delaunay",
+            Family::Triangles => "triangles",
+            Family::Slivers => "slivers",
+            Family::Huge => "huge",
+            Family::Fine => "fine",
+            Family::Lines => "lines",
+            Family::Polygons => "polygons",
+        }
+    }
+
+    /// Parses a name written by [`Family::name`].
+    pub fn from_name(name: &str) -> Option<Family> {
+        Family::ALL.into_iter().find(|f| f.name() == name)
+    }
+
+    /// Triangles, lines and polygons of this family on a `canvas` x `canvas` target.
+    fn strategy(self, canvas: u32) -> BoxedStrategy<(Vec<Triangle>, Vec<Line>, Vec<Polygon>)> {
+        let side = i64::from(canvas);
+        let tris = |s: BoxedStrategy<Triangle>| {
+            proptest::collection::vec(s, 1..4)
+                .prop_map(|t| (t, Vec::new(), Vec::new()))
+                .boxed()
+        };
+        let mesh =
+            |s: BoxedStrategy<crate::strategy::Mesh>| s.prop_map(|m| (m.triangles, Vec::new(), Vec::new())).boxed();
+        match self {
+            Family::Mesh => mesh(tie_heavy_mesh(canvas, 12)),
+            Family::Delaunay => mesh(delaunay_mesh([0, 0], side, 8, 12)),
+            Family::Triangles => tris(crate::strategy::any_triangle(canvas)),
+            Family::Slivers => tris(triangle(Scale::Sliver, canvas)),
+            Family::Huge => tris(triangle(Scale::Huge, canvas)),
+            Family::Fine => mesh(delaunay_mesh([0, 0], side, 16, 12)),
+            Family::Lines => (
+                proptest::collection::vec(pixel_line(side, 2), 0..3),
+                proptest::collection::vec(diamond_line(canvas), 0..3),
+            )
+                .prop_map(|(b, d)| {
+                    let bresenham = b.into_iter().map(|(a, b)| Line {
+                        from: Point::from_ints(a[0], a[1]),
+                        to: Point::from_ints(b[0], b[1]),
+                        rule: LineRule::Bresenham(BresenhamTie::Stay),
+                    });
+                    (Vec::new(), bresenham.chain(d).collect(), Vec::new())
+                })
+                .boxed(),
+            Family::Polygons => proptest::collection::vec(any_polygon(canvas, 8), 1..3)
+                .prop_map(|p| (Vec::new(), Vec::new(), p))
+                .boxed(),
+        }
+    }
+}
+
+/// The scene of case `k`: the same config and `k` always give the same scene.
+///
+/// # Errors
+/// A strategy rejected every value it drew (the message names the family).
+pub fn generate_scene(config: &HuntConfig, k: u64) -> Result<Scene, String> {
+    let family = config.families[usize::try_from(k % config.families.len() as u64).expect("small")];
+    let mut bytes = [0u8; 32];
+    bytes[..8].copy_from_slice(&config.seed.to_le_bytes());
+    bytes[8..16].copy_from_slice(&k.to_le_bytes());
+    bytes[16] = 0x48; // 'H': not the suite's streams
+    let mut runner = TestRunner::new_with_rng(Config::default(), TestRng::from_seed(RngAlgorithm::ChaCha, &bytes));
+    let (triangles, lines, polygons) = family
+        .strategy(config.canvas)
+        .new_tree(&mut runner)
+        .map_err(|e| format!("hunt: family {}: {e}", family.name()))?
+        .current();
+    let mut scene = Scene::new(config.canvas, config.canvas, triangles);
+    scene.lines = lines;
+    scene.polygons = polygons;
+    scene.preset = config.preset;
+    scene.overrides = config.overrides;
+    if config.float32_exact {
+        float32_exact(&mut scene);
+    }
+    Ok(scene)
+}
+
+/// Every window-space coordinate of `scene`, mutably (triangles, line ends, polygons).
+pub(super) fn coordinates(scene: &mut Scene) -> Vec<&mut BigRational> {
+    let mut out: Vec<&mut BigRational> = Vec::new();
+    for t in &mut scene.triangles {
+        for v in &mut t.triangle.v {
+            out.push(&mut v.x);
+            out.push(&mut v.y);
+        }
+    }
+    for l in &mut scene.lines {
+        for v in [&mut l.from, &mut l.to] {
+            out.push(&mut v.x);
+            out.push(&mut v.y);
+        }
+    }
+    for p in &mut scene.polygons {
+        for v in p.outline.iter_mut().chain(p.holes.iter_mut().flatten()) {
+            out.push(&mut v.x);
+            out.push(&mut v.y);
+        }
+    }
+    out
+}
+
+/// Rounds every coordinate to the nearest f32, exactly (so a program reading f32 sees the
+/// scene the oracle sees).
+pub fn float32_exact(scene: &mut Scene) {
+    for v in coordinates(scene) {
+        if let Some(f) = crate::num::exact::nearest_f32(v) {
+            if let Some(exact) = BigRational::from_float(f) {
+                *v = exact;
+            }
+        }
+    }
+}

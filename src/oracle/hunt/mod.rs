@@ -1,0 +1,226 @@
+//! Differential testing of another renderer (`rasterproof hunt`): scenes drawn from the
+//! suite's families, rendered by their renderer and compared with the oracle; every
+//! distinct failure shrunk with their renderer in the loop to a minimal scene, with its
+//! explanation and a ready-to-paste Rust test.
+//!
+//! Their renderer is any `Fn(&Scene) -> Result<Theirs, Failure>`: an external program
+//! ([`crate::oracle::program::Program`]) or a Rust closure.
+//!
+//! At scale, as `check` runs: one [`Shard`] of the cases (N machines run disjoint cases
+//! and together exactly the unsharded hunt's), within a time budget (the cases that ran
+//! are the first of the shard's, in order), into a [`HuntReport`] written as JSON
+//! ([`HuntReport::to_json`]) or JUnit XML ([`HuntReport::junit`]).
+//!
+//! This module holds the configuration ([`HuntConfig`]) and the run loop ([`hunt`]); its
+//! parts, each re-exported here: the scene families (`families`), the verdict on one
+//! scene and the signatures of a failure (`verdict`), the shrinker (`shrink`), the report
+//! (`report`), a finding as a Rust test (`test_text`) and the convention a fit names
+//! (`convention`).
+
+mod convention;
+mod families;
+mod report;
+mod shrink;
+mod test_text;
+mod verdict;
+
+use std::collections::BTreeMap;
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+pub use convention::{hunt_convention, preferred};
+pub use families::{float32_exact, generate_scene, Family};
+pub use report::{HuntFinding, HuntReport, REPORT_FORMAT, REPORT_VERSION};
+pub use shrink::{primitive_count, shrink};
+pub use test_text::rust_test;
+pub use verdict::{judge, signatures, Signature, Verdict};
+
+use verdict::Outcome;
+
+use crate::convention::Preset;
+use crate::harness::suite::Shard;
+use crate::model::Model;
+use crate::oracle::program::Failure;
+use crate::oracle::theirs::Theirs;
+use crate::scene::{Overrides, Scene};
+
+/// How a hunt runs.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct HuntConfig {
+    /// How many scenes.
+    pub cases: u64,
+    /// Seed of the scene generator (same seed, same scenes).
+    pub seed: u64,
+    /// The families, case `k` drawing from `families[k % len]`.
+    pub families: Vec<Family>,
+    /// Canvas side of every scene.
+    pub canvas: u32,
+    /// The convention every scene states: a preset and overrides.
+    pub preset: Preset,
+    /// The overrides.
+    pub overrides: Overrides,
+    /// The oracle: `exact-snapped`, or `exact` for a renderer that does not snap.
+    pub model: Model,
+    /// Round every coordinate to the nearest f32 (for programs that read floats).
+    pub float32_exact: bool,
+    /// Runs of their renderer allowed per shrink.
+    pub shrink_runs: usize,
+    /// The shard to run: the cases `k` of `0..cases` with `k mod N == K - 1` (case `k`'s
+    /// scene is the same in every shard; [`Shard::WHOLE`] runs them all).
+    pub shard: Shard,
+    /// No case starts once this much time has passed since the hunt started (the running
+    /// ones finish, and what was found is still shrunk); `None`: no limit.
+    pub budget: Option<Duration>,
+}
+
+impl Default for HuntConfig {
+    fn default() -> Self {
+        HuntConfig {
+            cases: 200,
+            seed: 0,
+            families: Family::ALL.to_vec(),
+            canvas: 16,
+            preset: Preset::D3d11,
+            overrides: Overrides::default(),
+            model: Model::ExactSnapped,
+            float32_exact: false,
+            shrink_runs: 400,
+            shard: Shard::WHOLE,
+            budget: None,
+        }
+    }
+}
+
+/// One case's scene, signatures and outcome.
+type CaseResult = (u64, Scene, Vec<Signature>, Outcome);
+
+/// Runs the hunt: the scenes of `config.shard`'s cases among `0..config.cases` rendered by
+/// `render` on `jobs` threads, each compared with the oracle; every distinct signature's
+/// first case shrunk. `tick` is called once per case (a progress bar).
+///
+/// With `config.budget`, no case starts once the budget has passed: the running ones
+/// finish, and the cases that ran are the first of the shard's, in order (a case is
+/// claimed, in order, only while the budget lasts, and every claimed case runs), so a
+/// time-limited hunt's counts and findings are those of a shorter hunt. What was found is
+/// shrunk whatever the budget.
+///
+/// ```
+/// use rasterproof::harness::suite::Shard;
+/// use rasterproof::model::{render, Model};
+/// use rasterproof::oracle::hunt::{hunt, HuntConfig};
+/// use rasterproof::oracle::{Format, Theirs};
+/// // A renderer that is the oracle itself finds nothing.
+/// let honest = |s: &rasterproof::scene::Scene| {
+///     let c = render(Model::ExactSnapped, &s.primitives(), &s.target().unwrap()).unwrap();
+///     Ok(Theirs::from_coverage(&c, Format::Json))
+/// };
+/// let config = HuntConfig { cases: 16, ..HuntConfig::default() };
+/// let report = hunt(&config, &honest, 1, &|| {}).unwrap();
+/// assert!(report.findings.is_empty());
+/// assert_eq!(report.same + report.refused, 16);
+/// // Shard 2 of 3: cases 1, 4, 7, 10, 13; a zero budget runs none of them.
+/// let shard = HuntConfig { shard: Shard::new(2, 3).unwrap(), ..config.clone() };
+/// assert_eq!(hunt(&shard, &honest, 2, &|| {}).unwrap().cases, 5);
+/// let none = HuntConfig { budget: Some(std::time::Duration::ZERO), ..shard };
+/// let report = hunt(&none, &honest, 1, &|| {}).unwrap();
+/// assert_eq!((report.requested, report.cases, report.stopped_by_time), (5, 0, true));
+/// ```
+///
+/// # Errors
+/// A scene could not be generated.
+pub fn hunt<R>(config: &HuntConfig, render: &R, jobs: usize, tick: &(dyn Fn() + Sync)) -> Result<HuntReport, String>
+where
+    R: Fn(&Scene) -> Result<Theirs, Failure> + Sync,
+{
+    let requested = config.shard.case_count(config.cases);
+    let deadline = config.budget.and_then(|b| Instant::now().checked_add(b));
+    // The next of the shard's cases to claim (its index among them), and whether claiming
+    // has ended (the budget passed, or a scene could not be generated). Claims are made
+    // under the lock, in order, so the claimed cases are always the first `next`.
+    let claims: Mutex<(u64, bool)> = Mutex::new((0, false));
+    let claim = || -> Option<u64> {
+        let mut c = claims.lock().expect("no panics hold it");
+        if c.1 || c.0 >= requested {
+            return None;
+        }
+        if deadline.is_some_and(|d| Instant::now() >= d) {
+            c.1 = true;
+            return None;
+        }
+        let k = config.shard.case_at(c.0)?;
+        c.0 += 1;
+        Some(k)
+    };
+    let results: Mutex<Vec<CaseResult>> = Mutex::new(Vec::new());
+    let error: Mutex<Option<String>> = Mutex::new(None);
+    std::thread::scope(|s| {
+        for _ in 0..jobs.max(1) {
+            s.spawn(|| {
+                while let Some(k) = claim() {
+                    let scene = match generate_scene(config, k) {
+                        Ok(s) => s,
+                        Err(e) => {
+                            *error.lock().expect("no panics hold it") = Some(e);
+                            claims.lock().expect("no panics hold it").1 = true;
+                            break;
+                        }
+                    };
+                    let verdict = judge(&scene, render(&scene), config.model);
+                    let outcome = Outcome::of(&verdict);
+                    let sigs = signatures(&verdict);
+                    results
+                        .lock()
+                        .expect("no panics hold it")
+                        .push((k, scene, sigs, outcome));
+                    tick();
+                }
+            });
+        }
+    });
+    if let Some(e) = error.into_inner().expect("no panics hold it") {
+        return Err(e);
+    }
+    let mut results = results.into_inner().expect("no panics hold it");
+    results.sort_by_key(|r| r.0);
+    let cases = results.len() as u64;
+    let (mut same, mut differing, mut failed, mut refused) = (0u64, 0u64, 0u64, 0u64);
+    let mut first: BTreeMap<Signature, (u64, Scene, u64)> = BTreeMap::new();
+    for (k, scene, sigs, outcome) in results {
+        *match outcome {
+            Outcome::Same => &mut same,
+            Outcome::Differs => &mut differing,
+            Outcome::Failed => &mut failed,
+            Outcome::Refused => &mut refused,
+        } += 1;
+        for sig in sigs {
+            first.entry(sig).or_insert_with(|| (k, scene.clone(), 0)).2 += 1;
+        }
+    }
+    let mut findings = Vec::new();
+    for (signature, (case, original, cases)) in first {
+        let mut keeps = |s: &Scene| signatures(&judge(s, render(s), config.model)).contains(&signature);
+        let (minimal, runs) = shrink(&original, &mut keeps, config.shrink_runs);
+        let verdict = judge(&minimal, render(&minimal), config.model);
+        findings.push(HuntFinding {
+            signature,
+            case,
+            cases,
+            original,
+            minimal,
+            verdict,
+            runs,
+        });
+    }
+    findings.sort_by_key(|f| (f.case, f.signature.clone()));
+    Ok(HuntReport {
+        config: config.clone(),
+        requested,
+        cases,
+        stopped_by_time: cases < requested,
+        same,
+        differing,
+        failed,
+        refused,
+        findings,
+    })
+}

@@ -1,0 +1,347 @@
+//! What a hunt found: its [`HuntFinding`]s and the [`HuntReport`], written as JSON
+//! ([`HuntReport::to_json`], format [`REPORT_FORMAT`] version [`REPORT_VERSION`]) or JUnit
+//! XML ([`HuntReport::junit`]).
+
+use std::fmt::Write as _;
+
+use super::shrink::primitive_count;
+use super::verdict::{Outcome, Signature, Verdict};
+use super::HuntConfig;
+use crate::harness::suite::report::{json_object as object, json_value as j, xml_escape};
+use crate::scene::Scene;
+
+/// A distinct failure, shrunk.
+#[derive(Debug, Clone)]
+pub struct HuntFinding {
+    /// What it is.
+    pub signature: Signature,
+    /// The first case that showed it.
+    pub case: u64,
+    /// How many cases showed it.
+    pub cases: u64,
+    /// That case's scene.
+    pub original: Scene,
+    /// The scene after shrinking: no step of the shrinker keeps the failure.
+    pub minimal: Scene,
+    /// Their verdict on the minimal scene.
+    pub verdict: Verdict,
+    /// Runs of their renderer the shrink took.
+    pub runs: usize,
+}
+
+/// What a hunt found.
+#[derive(Debug, Clone)]
+pub struct HuntReport {
+    /// The configuration it ran with (its shard, budget, convention and oracle model).
+    pub config: HuntConfig,
+    /// The cases asked for: the shard's cases among `0..config.cases`.
+    pub requested: u64,
+    /// Cases run: the first `cases` of the shard's, in order (all of them unless the
+    /// time budget stopped the hunt).
+    pub cases: u64,
+    /// Whether the time budget stopped the hunt before every requested case ran.
+    pub stopped_by_time: bool,
+    /// Identical to the oracle.
+    pub same: u64,
+    /// Differing.
+    pub differing: u64,
+    /// Their renderer failed.
+    pub failed: u64,
+    /// The oracle refused the scene.
+    pub refused: u64,
+    /// Every distinct failure, by its first case.
+    pub findings: Vec<HuntFinding>,
+}
+
+/// The `format` of a hunt report ([`HuntReport::to_json`]).
+pub const REPORT_FORMAT: &str = "rasterproof hunt report";
+
+/// The schema version of a hunt report ([`HuntReport::to_json`]).
+pub const REPORT_VERSION: u64 = 1;
+
+impl HuntReport {
+    /// The convention every scene stated, as a JSON object: `{"preset", "tie_rule",
+    /// "pixel_centre", "subpixel_bits", "rounding"}`.
+    fn convention_json(&self) -> String {
+        let c = self.config.overrides.apply(self.config.preset);
+        object(&[
+            ("preset", j(c.preset.name())),
+            ("tie_rule", j(c.tie_rule.name())),
+            ("pixel_centre", j(c.pixel_centre.name())),
+            ("subpixel_bits", j(&c.subpixel_bits)),
+            ("rounding", j(c.rounding.name())),
+        ])
+    }
+
+    /// The report as a JSON document (schema version [`REPORT_VERSION`]; also in README's
+    /// `hunt` section), `renderer` naming what was hunted (`hunt --cmd`'s command): one
+    /// object, one field a line in this order, each finding on a line of its own, ending in
+    /// a newline.
+    ///
+    /// - `format` (`"rasterproof hunt report"`), `version` (1), `rasterproof` (the version
+    ///   that ran it), `cmd` (`renderer`), `seed`;
+    /// - `shard`: `{"k": K, "n": N}` (`{"k": 1, "n": 1}`: the whole run);
+    /// - `cases` (the whole run's, `0..cases`), `cases_requested` (the shard's among them),
+    ///   `cases_run` (the first of the shard's, in order), `stopped_by_time` (the budget
+    ///   stopped the hunt before every requested case ran);
+    /// - `families` (names), `canvas`, `float32_exact`, `shrink_runs` (the runs allowed
+    ///   per shrink), `time_budget_ms` (`null`: none), `convention` (`{"preset",
+    ///   "tie_rule", "pixel_centre", "subpixel_bits", "rounding"}`), `model` (the oracle:
+    ///   `exact-snapped` or `exact`);
+    /// - `counts`: `{"same", "differ", "failed", "refused"}` over the cases run;
+    /// - `findings`, by first case: `{"signature"` ([`Signature::describe`]), `"slug"`
+    ///   ([`Signature::slug`]), `"first_case"`, `"cases"` (how many showed it),
+    ///   `"primitives"` (of the minimal scene), `"scene"` (the minimal scene: the JSON
+    ///   object [`Scene::to_json`] writes), `"shrink_runs"` (renderer runs the shrink
+    ///   took), `"minimal_verdict"` (`differs`, `failed`, or `same` / `refused` when the
+    ///   minimal scene no longer fails)`}`.
+    ///
+    /// ```
+    /// use rasterproof::oracle::hunt::{hunt, HuntConfig};
+    /// use rasterproof::oracle::program::{Failure, FailureKind};
+    /// // A renderer that always fails: one finding.
+    /// let broken = |_: &rasterproof::scene::Scene| {
+    ///     Err(Failure { kind: FailureKind::Exit, message: "exit status 3".to_string() })
+    /// };
+    /// let config = HuntConfig { cases: 3, shrink_runs: 4, ..HuntConfig::default() };
+    /// let report = hunt(&config, &broken, 1, &|| {}).unwrap();
+    /// let v: serde_json::Value = serde_json::from_str(&report.to_json("broken")).unwrap();
+    /// assert_eq!(v["format"], "rasterproof hunt report");
+    /// assert_eq!(v["counts"]["failed"], 3);
+    /// assert_eq!(v["findings"][0]["signature"], "non-zero exit");
+    /// assert!(v["findings"][0]["scene"]["triangles"].is_array());
+    /// ```
+    pub fn to_json(&self, renderer: &str) -> String {
+        let c = &self.config;
+        let findings: Vec<String> = self
+            .findings
+            .iter()
+            .map(|f| {
+                let scene = serde_json::from_str::<serde_json::Value>(&f.minimal.to_json())
+                    .map_or_else(|_| j(&f.minimal.to_json()), |v| j(&v));
+                object(&[
+                    ("signature", j(&f.signature.describe())),
+                    ("slug", j(&f.signature.slug())),
+                    ("first_case", j(&f.case)),
+                    ("cases", j(&f.cases)),
+                    ("primitives", j(&primitive_count(&f.minimal))),
+                    ("scene", scene),
+                    ("shrink_runs", j(&f.runs)),
+                    ("minimal_verdict", j(Outcome::of(&f.verdict).name())),
+                ])
+            })
+            .collect();
+        let findings = if findings.is_empty() {
+            "[]".to_string()
+        } else {
+            format!("[\n    {}\n  ]", findings.join(",\n    "))
+        };
+        let families: Vec<&str> = c.families.iter().map(|f| f.name()).collect();
+        let fields: [(&str, String); 19] = [
+            ("format", j(REPORT_FORMAT)),
+            ("version", j(&REPORT_VERSION)),
+            ("rasterproof", j(env!("CARGO_PKG_VERSION"))),
+            ("cmd", j(renderer)),
+            ("seed", j(&c.seed)),
+            (
+                "shard",
+                object(&[("k", j(&c.shard.index())), ("n", j(&c.shard.count()))]),
+            ),
+            ("cases", j(&c.cases)),
+            ("cases_requested", j(&self.requested)),
+            ("cases_run", j(&self.cases)),
+            ("stopped_by_time", j(&self.stopped_by_time)),
+            ("families", j(&families)),
+            ("canvas", j(&c.canvas)),
+            ("float32_exact", j(&c.float32_exact)),
+            ("shrink_runs", j(&c.shrink_runs)),
+            (
+                "time_budget_ms",
+                c.budget.map_or_else(|| "null".to_string(), |b| j(&b.as_millis())),
+            ),
+            ("convention", self.convention_json()),
+            ("model", j(c.model.name())),
+            (
+                "counts",
+                object(&[
+                    ("same", j(&self.same)),
+                    ("differ", j(&self.differing)),
+                    ("failed", j(&self.failed)),
+                    ("refused", j(&self.refused)),
+                ]),
+            ),
+            ("findings", findings),
+        ];
+        let body: Vec<String> = fields
+            .iter()
+            .map(|(key, value)| format!("  {}: {value}", j(key)))
+            .collect();
+        format!("{{\n{}\n}}\n", body.join(",\n"))
+    }
+
+    /// The report as JUnit XML, `renderer` naming what was hunted: one `<testsuite
+    /// name="rasterproof hunt">` in a `<testsuites>`, with the seed, shard, cases, budget
+    /// stop, convention, model and `renderer` as properties; one `<testcase
+    /// classname="rasterproof.hunt" name="SIGNATURE">` per finding (by first case), holding
+    /// a `<failure>` whose message is the signature and whose text gives the first case,
+    /// how many cases showed it, and the minimal scene; then one passing `<testcase
+    /// name="identical to the oracle">` whose `<system-out>` carries the counts. Every
+    /// text is escaped for XML.
+    ///
+    /// ```
+    /// use rasterproof::oracle::hunt::{hunt, HuntConfig};
+    /// use rasterproof::oracle::program::{Failure, FailureKind};
+    /// let broken = |_: &rasterproof::scene::Scene| {
+    ///     Err(Failure { kind: FailureKind::Exit, message: "exit <3> & more".to_string() })
+    /// };
+    /// let config = HuntConfig { cases: 2, shrink_runs: 4, ..HuntConfig::default() };
+    /// let xml = hunt(&config, &broken, 1, &|| {}).unwrap().junit("a < b");
+    /// assert!(xml.contains("<testsuite name=\"rasterproof hunt\" tests=\"2\" failures=\"1\""));
+    /// assert!(xml.contains("value=\"a &lt; b\""));
+    /// assert!(xml.contains("exit &lt;3&gt; &amp; more"));
+    /// assert_eq!(xml.matches("<testcase ").count(), 2);
+    /// ```
+    pub fn junit(&self, renderer: &str) -> String {
+        let c = &self.config;
+        let failures = self.findings.len();
+        let counts = format!(
+            "tests=\"{}\" failures=\"{failures}\" errors=\"0\" skipped=\"0\"",
+            failures + 1
+        );
+        let mut x = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+        let _ = writeln!(x, "<testsuites name=\"rasterproof hunt\" {counts}>");
+        let _ = writeln!(x, "  <testsuite name=\"rasterproof hunt\" {counts}>");
+        x.push_str("    <properties>\n");
+        for (name, value) in [
+            ("rasterproof", env!("CARGO_PKG_VERSION").to_string()),
+            ("cmd", renderer.to_string()),
+            ("seed", c.seed.to_string()),
+            ("shard", c.shard.to_string()),
+            ("cases", c.cases.to_string()),
+            ("cases_requested", self.requested.to_string()),
+            ("cases_run", self.cases.to_string()),
+            ("stopped_by_time", self.stopped_by_time.to_string()),
+            ("convention", c.overrides.apply(c.preset).to_string()),
+            ("model", c.model.name().to_string()),
+        ] {
+            let _ = writeln!(
+                x,
+                "      <property name=\"{name}\" value=\"{}\"/>",
+                xml_escape(&value, true)
+            );
+        }
+        x.push_str("    </properties>\n");
+        for f in &self.findings {
+            let description = f.signature.describe();
+            let _ = writeln!(
+                x,
+                "    <testcase classname=\"rasterproof.hunt\" name=\"{}\">",
+                xml_escape(&description, true)
+            );
+            let message = format!("{description}: {} cases, first case {}", f.cases, f.case);
+            let mut text = format!(
+                "{description}\nfirst case: {} ({} cases showed it)\nminimal scene ({} primitives, {}x{}, {} shrink runs):\n{}",
+                f.case,
+                f.cases,
+                primitive_count(&f.minimal),
+                f.minimal.width,
+                f.minimal.height,
+                f.runs,
+                f.minimal.to_json()
+            );
+            if let Verdict::Failed(failure) = &f.verdict {
+                let _ = write!(text, "\ntheir renderer on the minimal scene: {failure}");
+            }
+            let _ = writeln!(
+                x,
+                "      <failure type=\"finding\" message=\"{}\">{}</failure>",
+                xml_escape(&message, true),
+                xml_escape(&text, false)
+            );
+            x.push_str("    </testcase>\n");
+        }
+        let mut out = format!(
+            "{} identical, {} differ, {} failed, {} refused by the oracle, of {} cases run ({} requested)",
+            self.same, self.differing, self.failed, self.refused, self.cases, self.requested
+        );
+        if self.stopped_by_time {
+            out.push_str("; stopped by the time budget");
+        }
+        x.push_str("    <testcase classname=\"rasterproof.hunt\" name=\"identical to the oracle\">\n");
+        let _ = writeln!(x, "      <system-out>{}</system-out>", xml_escape(&out, false));
+        x.push_str("    </testcase>\n");
+        x.push_str("  </testsuite>\n</testsuites>\n");
+        x
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::time::Duration;
+
+    use super::*;
+    use crate::harness::suite::Shard;
+    use crate::oracle::hunt::hunt;
+    use crate::oracle::program::Failure;
+    use crate::oracle::theirs::Theirs;
+
+    /// A report of no case is still a whole document: every field, empty findings.
+    #[test]
+    fn an_empty_report_has_every_field() {
+        let config = HuntConfig {
+            cases: 4,
+            shard: Shard::new(3, 3).unwrap(),
+            budget: Some(Duration::from_millis(1500)),
+            ..HuntConfig::default()
+        };
+        let never = |_: &Scene| -> Result<Theirs, Failure> { unreachable!("no case runs") };
+        let report = hunt(
+            &HuntConfig {
+                budget: Some(Duration::ZERO),
+                ..config.clone()
+            },
+            &never,
+            1,
+            &|| {},
+        )
+        .unwrap();
+        let report = HuntReport { config, ..report };
+        let v: serde_json::Value = serde_json::from_str(&report.to_json("r \"q\"")).unwrap();
+        let keys: Vec<&str> = v.as_object().unwrap().keys().map(String::as_str).collect();
+        for key in [
+            "format",
+            "version",
+            "rasterproof",
+            "cmd",
+            "seed",
+            "shard",
+            "cases",
+            "cases_requested",
+            "cases_run",
+            "stopped_by_time",
+            "families",
+            "canvas",
+            "float32_exact",
+            "shrink_runs",
+            "time_budget_ms",
+            "convention",
+            "model",
+            "counts",
+            "findings",
+        ] {
+            assert!(keys.contains(&key), "{key}: {keys:?}");
+        }
+        assert_eq!(keys.len(), 19);
+        assert_eq!(v["cmd"], "r \"q\"");
+        assert_eq!(v["shard"], serde_json::json!({"k": 3, "n": 3}));
+        assert_eq!((&v["cases_requested"], &v["cases_run"]), (&1.into(), &0.into()));
+        assert_eq!(v["time_budget_ms"], 1500);
+        assert_eq!(v["stopped_by_time"], true);
+        let x = report.junit("r \"q\"");
+        assert!(
+            x.contains("value=\"r &quot;q&quot;\"") && x.contains("stopped by the time budget"),
+            "{x}"
+        );
+        assert_eq!(x.matches("<testcase ").count(), 1);
+    }
+}

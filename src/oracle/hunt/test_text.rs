@@ -1,0 +1,63 @@
+//! A finding as a ready-to-paste Rust `#[test]` ([`rust_test`]).
+
+use std::fmt::Write as _;
+
+use super::report::HuntFinding;
+use super::verdict::Verdict;
+use crate::model::Model;
+
+/// A Rust `#[test]` that pastes into a project's tests: the minimal scene, the oracle's
+/// owners of every pixel where their renderer differed (asserted: they hold), and where to
+/// call their renderer.
+pub fn rust_test(f: &HuntFinding, n: usize, model: Model) -> String {
+    let model_path = match model {
+        Model::Exact => "Exact",
+        _ => "ExactSnapped",
+    };
+    let mut s = format!(
+        "/// Found by `rasterproof hunt` (case {}): {}.\n#[test]\nfn hunt_finding_{n:02}_{}() {{\n",
+        f.case,
+        f.signature.describe(),
+        f.signature.slug()
+    );
+    let _ = writeln!(
+        s,
+        "    let scene = rasterproof::scene::parse_scene(r#\"{}\"#, \"finding-{n:02}.json\").unwrap();",
+        f.minimal.to_json().trim()
+    );
+    s.push_str("    let target = scene.target().unwrap();\n");
+    let _ = writeln!(
+        s,
+        "    let oracle = rasterproof::model::render(rasterproof::model::Model::{model_path}, &scene.primitives(), &target).unwrap();"
+    );
+    match &f.verdict {
+        Verdict::Differs(r) => {
+            s.push_str("    // The oracle's owners where their renderer differed:\n");
+            for p in &r.pixels {
+                let ids: Vec<String> = p.ours.iter().map(u32::to_string).collect();
+                let classes: Vec<&str> = p.findings.iter().map(|f| f.reason.class().name()).collect();
+                let _ = writeln!(
+                    s,
+                    "    assert_eq!(oracle.owners({}, {}), &[{}][..]); // theirs: {} ({}: {})",
+                    p.x,
+                    p.y,
+                    ids.join(", "),
+                    if p.theirs.covered {
+                        format!("{:?}", p.theirs.ids)
+                    } else {
+                        "uncovered".to_string()
+                    },
+                    p.kind.name(),
+                    classes.join(", ")
+                );
+            }
+        }
+        Verdict::Failed(failure) => {
+            let _ = writeln!(s, "    // Their renderer failed on this scene: {failure}");
+            s.push_str("    let _ = oracle;\n");
+        }
+        Verdict::Same | Verdict::Refused(_) => s.push_str("    let _ = oracle;\n"),
+    }
+    s.push_str("    // Render `scene` with your renderer here and assert it equals `oracle`.\n}\n");
+    s
+}

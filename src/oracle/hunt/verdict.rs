@@ -1,0 +1,137 @@
+//! What their renderer did with one scene: the [`Verdict`] ([`judge`]), the case's
+//! [`Outcome`] that hunt counts, and the [`Signature`]s hunt deduplicates failures by
+//! ([`signatures`]).
+
+use crate::model::Model;
+use crate::oracle::compare::{compare, PixelKind, Report};
+use crate::oracle::program::{Failure, FailureKind};
+use crate::oracle::reason::ReasonClass;
+use crate::oracle::theirs::Theirs;
+use crate::scene::Scene;
+
+/// What their renderer did with one scene.
+#[derive(Debug, Clone)]
+pub enum Verdict {
+    /// Identical to the oracle.
+    Same,
+    /// Different: the comparison.
+    Differs(Box<Report>),
+    /// Their renderer failed.
+    Failed(Failure),
+    /// The oracle refused the scene (it is outside the model's envelope): not their fault.
+    Refused(String),
+}
+
+/// Compares their output (or failure) on `scene` with `model`'s.
+pub fn judge(scene: &Scene, theirs: Result<Theirs, Failure>, model: Model) -> Verdict {
+    let theirs = match theirs {
+        Ok(t) => t,
+        Err(f) => return Verdict::Failed(f),
+    };
+    let Some(target) = scene.target() else {
+        return Verdict::Refused("invalid canvas or convention".to_string());
+    };
+    match compare(&scene.primitives(), &target, model, &theirs) {
+        Ok(r) if r.identical() => Verdict::Same,
+        Ok(r) => Verdict::Differs(Box::new(r)),
+        Err(e) => Verdict::Refused(e.to_string()),
+    }
+}
+
+/// How one case ended, as hunt counts it: its [`Verdict`] without the evidence.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Outcome {
+    /// Identical to the oracle.
+    Same,
+    /// Different.
+    Differs,
+    /// Their renderer failed.
+    Failed,
+    /// The oracle refused the scene.
+    Refused,
+}
+
+impl Outcome {
+    /// The outcome of `verdict`.
+    pub(super) fn of(verdict: &Verdict) -> Outcome {
+        match verdict {
+            Verdict::Same => Outcome::Same,
+            Verdict::Differs(_) => Outcome::Differs,
+            Verdict::Failed(_) => Outcome::Failed,
+            Verdict::Refused(_) => Outcome::Refused,
+        }
+    }
+
+    /// In one word: `same`, `differs`, `failed` or `refused`.
+    pub(super) fn name(self) -> &'static str {
+        match self {
+            Outcome::Same => "same",
+            Outcome::Differs => "differs",
+            Outcome::Failed => "failed",
+            Outcome::Refused => "refused",
+        }
+    }
+}
+
+/// A distinct failure: what hunt deduplicates by.
+#[derive(Debug, Clone, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Signature {
+    /// A differing pixel: its kind, the reason class, the primitive kind (`triangles`,
+    /// `lines`, `polygons`, or `none` when no primitive explains it).
+    Pixel(PixelKind, ReasonClass, String),
+    /// Their renderer failed this way.
+    Failure(FailureKind),
+}
+
+impl Signature {
+    /// In words: `missing pixel, tie, triangles`.
+    pub fn describe(&self) -> String {
+        match self {
+            Signature::Pixel(kind, class, primitive) => format!("{} pixel, {}, {primitive}", kind.name(), class.name()),
+            Signature::Failure(kind) => kind.name().to_string(),
+        }
+    }
+
+    /// For file and test names: `missing_pixel_tie_triangles`.
+    pub fn slug(&self) -> String {
+        self.describe()
+            .chars()
+            .map(|c| {
+                if c.is_ascii_alphanumeric() {
+                    c.to_ascii_lowercase()
+                } else {
+                    '_'
+                }
+            })
+            .collect::<String>()
+            .split('_')
+            .filter(|s| !s.is_empty())
+            .collect::<Vec<_>>()
+            .join("_")
+    }
+}
+
+/// Every signature a verdict shows (none for `Same` and `Refused`).
+pub fn signatures(verdict: &Verdict) -> Vec<Signature> {
+    let mut out = Vec::new();
+    match verdict {
+        Verdict::Differs(r) => {
+            for p in &r.pixels {
+                for f in &p.findings {
+                    let kind = f
+                        .primitive
+                        .as_deref()
+                        .and_then(|n| n.split('[').next())
+                        .unwrap_or("none")
+                        .to_string();
+                    out.push(Signature::Pixel(p.kind, f.reason.class(), kind));
+                }
+            }
+        }
+        Verdict::Failed(f) => out.push(Signature::Failure(f.kind)),
+        Verdict::Same | Verdict::Refused(_) => {}
+    }
+    out.sort();
+    out.dedup();
+    out
+}
