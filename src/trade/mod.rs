@@ -46,6 +46,7 @@ mod exact_only;
 mod far;
 mod lines;
 mod measure;
+mod metric;
 mod plot;
 mod polygons;
 mod predicate_map;
@@ -56,11 +57,10 @@ mod workloads;
 
 use std::fmt;
 
+pub use metric::Metric;
 pub use plot::Picture;
 pub use predicate_map::{Decision, MapPanel, PredicateMap};
-pub use report::{
-    Cell, Metric, Onset, Outcome, Placement, PlanSummary, Report, SpeedEntry, SpeedOutcome, WorkloadReport,
-};
+pub use report::{Cell, Onset, Outcome, Placement, PlanSummary, Report, SpeedEntry, SpeedOutcome, WorkloadReport};
 
 /// The arithmetic facts the trade needs about a model, read from the model's own
 /// [`crate::model::Arithmetic`] (the one per-model choice; the trade runs the float
