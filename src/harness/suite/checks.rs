@@ -85,8 +85,8 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
         });
     };
 
-    // The barycentric invariant: exact sums at a few samples (a zero-area triangle has none: the
-    // checker would pass it vacuously), integer sums where the envelope allows.
+    // The barycentric invariant: exact sums at a few samples (a zero-area triangle has
+    // none: the checker would pass it vacuously), integer sums where the envelope allows.
     let samples = [(0u32, 0u32), (CANVAS / 2, CANVAS / 3), (CANVAS - 1, CANVAS - 1)];
     let points: Vec<Point> = samples.iter().map(|&(x, y)| sample_exact(x, y, &tri_target)).collect();
     if barycentric_exact(&c.triangle, &points[0]).is_none() {
@@ -335,8 +335,8 @@ fn clip_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
     }
 }
 
-/// The polygon invariant: the scanline filler equals the oracle on any polygon; a simple polygon's
-/// triangulation covers exactly its fill, once (the `fixed` model's route).
+/// The polygon invariant: the scanline filler equals the oracle on any polygon; a simple
+/// polygon's triangulation covers exactly its fill, once (the `fixed` model's route).
 fn polygon_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
     let target = target(CANVAS, c.preset);
     let mut push = |invariant, model: Model, result, polygon: &Polygon| {
@@ -396,8 +396,8 @@ fn polygon_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
     push("triangulation", Model::Fixed, result, &c.simple);
 }
 
-/// The line invariant: Bresenham (both ties), its reversal, diamond-exit agreement, and the DDA's
-/// departures (the float trade for lines).
+/// The line invariant: Bresenham (both ties), its reversal, diamond-exit agreement, and
+/// the DDA's departures (the float trade for lines).
 fn line_checks(c: &Case, out: &mut Vec<Outcome>) {
     let as_line = |(a, b): ([i64; 2], [i64; 2]), tie| Line {
         from: Point::from_ints(a[0], a[1]),
