@@ -8,7 +8,10 @@
 //!   ([`generate`]), every checker on each ([`run_case`]) and the table of outcomes
 //!   ([`Tally`]); at scale, a [`Plan`] (shard, threads, time budget) run into a
 //!   [`Report`] (JSON, JUnit XML, merged across shards).
+//! - [`runner`]: numbered cases on scoped threads, their results in index order, a stop
+//!   predicate before each case (what a [`Plan`] runs on; meant for every case loop).
 
+pub mod runner;
 pub mod search;
 pub mod suite;
 

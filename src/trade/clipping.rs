@@ -17,7 +17,8 @@ use crate::strategy::polygon::simple_polygon;
 use crate::strategy::tie_heavy_coordinate;
 
 use super::measure::CLIP_OUTSIDE;
-use super::report::{Cell, Metric, Outcome, Placement, SpeedEntry, WorkloadReport};
+use super::metric::Metric;
+use super::report::{Cell, Outcome, Placement, SpeedEntry, WorkloadReport};
 use super::speed::{entries, Contender, Job};
 use super::workloads::{draw, place_point, place_window, runner};
 use super::{Config, Family, Magnitude, Sizes};

@@ -15,7 +15,8 @@ use crate::strategy::{diamond_line, pixel_line};
 
 use super::exact_only::{self, Spec};
 use super::measure::{LINE_HALF_PIXEL, LINE_REFERENCE};
-use super::report::{Cell, Metric, Outcome, Placement, WorkloadReport};
+use super::metric::Metric;
+use super::report::{Cell, Outcome, Placement, WorkloadReport};
 use super::speed::{entries, model_jobs, Contender};
 use super::workloads::{draw_n, place_lines, runner};
 use super::{Config, Family, Sizes};

@@ -5,7 +5,7 @@
 
 use crate::coverage::CoverageSink;
 
-use super::report::Metric;
+use super::metric::Metric;
 
 /// Every covered `(pixel, primitive)` pair, as `y << 46 | x << 32 | id`.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]

@@ -26,10 +26,10 @@
 //!     would refuse there (the integer envelope, 2^21 px at 8 bits; Bresenham endpoints
 //!     beyond 2^24; the float range);
 //!   - exact and integer models then draw the workload at the origin: their answer is the
-//!     same at every whole-pixel translation (exact arithmetic; invariant 4, tested in
-//!     `tests/properties.rs`; the integer models equal `exact-snapped` inside the
-//!     envelope), and so is their cost (the planned engine and `fixed` compute relative to
-//!     each primitive's first sample);
+//!     same at every whole-pixel translation (exact arithmetic; the translation
+//!     invariant, tested in `tests/properties.rs`; the integer models equal
+//!     `exact-snapped` inside the envelope), and so is their cost (the planned engine
+//!     and `fixed` compute relative to each primitive's first sample);
 //!   - float models compute with the placed coordinates: triangles by the float
 //!     rasterizer of [`crate::tri::float`] run over the window at `M` (`far`: its loop
 //!     with `M` added to each sample, exact in f64, then rounded to the model's type as
@@ -46,6 +46,7 @@ mod exact_only;
 mod far;
 mod lines;
 mod measure;
+mod metric;
 mod plot;
 mod polygons;
 mod predicate_map;
@@ -56,11 +57,10 @@ mod workloads;
 
 use std::fmt;
 
+pub use metric::Metric;
 pub use plot::Picture;
 pub use predicate_map::{Decision, MapPanel, PredicateMap};
-pub use report::{
-    Cell, Metric, Onset, Outcome, Placement, PlanSummary, Report, SpeedEntry, SpeedOutcome, WorkloadReport,
-};
+pub use report::{Cell, Onset, Outcome, Placement, PlanSummary, Report, SpeedEntry, SpeedOutcome, WorkloadReport};
 
 /// The arithmetic facts the trade needs about a model, read from the model's own
 /// [`crate::model::Arithmetic`] (the one per-model choice; the trade runs the float

@@ -20,24 +20,28 @@ use super::measure::{
     area_metrics, corner_subset, departures, median_max, shared_edge_pixels, Pairs, BARYCENTRIC_EXACT,
     BARYCENTRIC_ULPS, GOURAUD,
 };
-use super::report::{Cell, Metric, Outcome, Placement, PlanSummary, WorkloadReport};
+use super::metric::Metric;
+use super::report::{Cell, Outcome, Placement, PlanSummary, WorkloadReport};
 use super::speed::{entries, model_jobs, refusal, Contender};
 use super::workloads::{colours, draw_n, mesh, place_triangles, runner};
 use super::{arith, Config, Family, Sizes};
 
-/// The contenders, in report order.
-const MODELS: [Model; 10] = [
-    Model::ExactPlain,
-    Model::Exact,
-    Model::ExactSnappedPlain,
-    Model::ExactSnapped,
-    Model::Fixed,
-    Model::Scanline,
-    Model::Float32,
-    Model::Float64,
-    Model::Float32Naive,
-    Model::Float64Naive,
-];
+/// The contenders, in report order: every model of [`Model::ALL`], the exact ones first,
+/// unsnapped before snapped and each plain oracle just before its planned engine
+/// (`exact-plain`, `exact`, `exact-snapped-plain`, `exact-snapped`), then the integer and
+/// float models in their [`Model::ALL`] order. A new model joins the trade by itself.
+fn models() -> Vec<Model> {
+    let mut all = Model::ALL.to_vec();
+    // A stable sort: the models of one key keep their order in `ALL`.
+    all.sort_by_key(|&m| {
+        if arith::is_unbounded(m) {
+            (u8::from(m.snaps()), u8::from(!arith::is_plain(m)))
+        } else {
+            (2, 0)
+        }
+    });
+    all
+}
 
 /// The side of the plain oracles' corner.
 pub(crate) const SUBSET_SIDE: u32 = 32;
@@ -198,8 +202,9 @@ fn measure(w: &Workload, config: &Config, sizes: &Sizes) -> WorkloadReport {
 
     // Speed at the origin, round-robin: the draw of the prepared workload, and prepare
     // and draw.
-    let prims: Vec<Primitives> = MODELS.iter().map(|&m| Primitives::from_triangles(pick(m).0)).collect();
-    let contenders = MODELS
+    let models = models();
+    let prims: Vec<Primitives> = models.iter().map(|&m| Primitives::from_triangles(pick(m).0)).collect();
+    let contenders = models
         .iter()
         .zip(&prims)
         .map(|(&m, p)| {
@@ -231,7 +236,7 @@ fn measure(w: &Workload, config: &Config, sizes: &Sizes) -> WorkloadReport {
         .collect();
 
     // Errors at the origin, for every model (the exact and integer ones keep them).
-    let origin: Vec<(Model, Outcome)> = MODELS
+    let origin: Vec<(Model, Outcome)> = models
         .iter()
         .map(|&m| {
             let (tris, t, r, colours) = pick(m);
@@ -484,4 +489,28 @@ fn far_metrics(
         of: 3 * picks.len() as u64,
     });
     metrics
+}
+
+#[cfg(test)]
+mod tests {
+    /// The contenders derived from `Model::ALL` are today's, in today's report order.
+    #[test]
+    fn the_contenders_are_every_model_in_report_order() {
+        let names: Vec<&str> = super::models().iter().map(|m| m.name()).collect();
+        assert_eq!(
+            names,
+            [
+                "exact-plain",
+                "exact",
+                "exact-snapped-plain",
+                "exact-snapped",
+                "fixed",
+                "scanline",
+                "float32",
+                "float64",
+                "float32-naive",
+                "float64-naive",
+            ]
+        );
+    }
 }

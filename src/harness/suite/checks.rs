@@ -2,7 +2,7 @@
 
 use num_rational::BigRational;
 
-use super::{Case, CaseRun, Outcome, Skip, CANVAS};
+use super::{models, Case, CaseRun, Outcome, Skip, CANVAS};
 use crate::check::{
     check_agreement, check_barycentric_exact, check_barycentric_fixed, check_clip_raster, check_diamond_agreement,
     check_inside, check_line_pixels, check_line_reference, check_line_symmetry, check_rotation_and_winding,
@@ -68,8 +68,10 @@ fn skip(invariant: &'static str, model: Model, reason: &'static str) -> Skip {
     }
 }
 
-/// Invariants 1-4 on the case's triangle and meshes; returns the float32 barycentric sum
-/// errors (ulps of 1) and the number of samples where none could be measured.
+/// The barycentric invariant, the watertightness invariant, the agreement invariant and
+/// the invariance invariant on the case's triangle and meshes; returns the float32
+/// barycentric sum errors (ulps of 1) and the number of samples where none could be
+/// measured.
 fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) -> (Vec<f64>, u64) {
     let tri_target = target(CANVAS, c.preset);
     let tri = std::slice::from_ref(&c.triangle);
@@ -83,8 +85,8 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
         });
     };
 
-    // 1. barycentrics: exact sums at a few samples (a zero-area triangle has none: the
-    // checker would pass it vacuously), integer sums where the envelope allows.
+    // The barycentric invariant: exact sums at a few samples (a zero-area triangle has
+    // none: the checker would pass it vacuously), integer sums where the envelope allows.
     let samples = [(0u32, 0u32), (CANVAS / 2, CANVAS / 3), (CANVAS - 1, CANVAS - 1)];
     let points: Vec<Point> = samples.iter().map(|&(x, y)| sample_exact(x, y, &tri_target)).collect();
     if barycentric_exact(&c.triangle, &points[0]).is_none() {
@@ -114,35 +116,28 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
         )),
     }
 
-    // 2. watertight meshes, and 3. agreement on them: every model against its plain
-    // oracle (exact-snapped-plain for the models that snap, exact-plain for the others).
+    // The watertightness invariant on the meshes, and the agreement invariant on them:
+    // every model against its plain oracle (exact-snapped-plain for the models that snap,
+    // exact-plain for the others).
     let meshes = [
         (
             &c.mesh,
             c.mesh_canvas,
             ("watertight", "agreement (mesh)"),
-            &[
-                Model::Exact,
-                Model::ExactSnapped,
-                Model::Fixed,
-                Model::Scanline,
-                Model::Float32,
-                Model::Float64,
-                Model::Float32Naive,
-            ][..],
+            models::mesh(),
         ),
         (
             &c.fine_mesh,
             MAX_CANVAS,
             ("watertight (fine mesh)", "agreement (fine mesh)"),
-            &[Model::Float32, Model::Float64][..],
+            models::fine_mesh(),
         ),
     ];
     for (mesh, side, (w_name, a_name), models) in meshes {
         let mesh_target = target(side, c.preset);
         let reference_exact = render_triangles(Model::ExactPlain, &mesh.triangles, &mesh_target);
         let reference_snapped = render_triangles(Model::ExactSnappedPlain, &mesh.triangles, &mesh_target);
-        for &model in models {
+        for model in models {
             let (watertight, agreement) = match render_triangles(model, &mesh.triangles, &mesh_target) {
                 Err(e) => {
                     let v = Violation::new("watertight", e.to_string());
@@ -170,8 +165,9 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
         }
     }
 
-    // 3. agreement on a single random triangle (every family), against the plain oracle.
-    for model in [Model::Exact, Model::ExactSnapped, Model::Fixed, Model::Scanline] {
+    // The agreement invariant on a single random triangle (every family), against the
+    // plain oracle.
+    for model in models::must_hold() {
         let reference = model.reference();
         match render_triangles(reference, tri, &tri_target) {
             Ok(expected) => {
@@ -188,8 +184,8 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
         }
     }
 
-    // 4. invariance.
-    for model in [Model::ExactSnapped, Model::Fixed, Model::Float32] {
+    // The invariance invariant: rotation and winding, whole-pixel translation.
+    for model in models::rotation() {
         push(
             "rotation/winding",
             model,
@@ -198,7 +194,7 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
             CANVAS,
         );
     }
-    for model in [Model::ExactSnapped, Model::Fixed] {
+    for model in models::translation() {
         let (dx, dy) = c.shift;
         push(
             "translation",
@@ -211,7 +207,7 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
     (ulps, ulps_skipped)
 }
 
-/// Invariant 6 (clipping): exact Sutherland-Hodgman output inside the window and
+/// The clipping invariant: exact Sutherland-Hodgman output inside the window and
 /// rasterizing to raster(P) ∩ raster(W); exact Cohen-Sutherland keeping exactly the part
 /// inside; the float forms' outputs outside the window counted (the measured trade).
 fn clip_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
@@ -250,7 +246,7 @@ fn clip_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
     );
     // The planned engines on the clipped polygon (rational vertices out of exact
     // clipping) equal the plain oracle.
-    for model in [Model::Exact, Model::ExactSnapped] {
+    for model in models::clip_agreement() {
         let reference = model.reference();
         let scene = polygon_case();
         let drawn =
@@ -339,8 +335,8 @@ fn clip_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
     }
 }
 
-/// Invariant 7: the scanline filler equals the oracle on any polygon; a simple polygon's
-/// triangulation covers exactly its fill, once (the `fixed` model's route).
+/// The polygon invariant: the scanline filler equals the oracle on any polygon; a simple
+/// polygon's triangulation covers exactly its fill, once (the `fixed` model's route).
 fn polygon_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
     let target = target(CANVAS, c.preset);
     let mut push = |invariant, model: Model, result, polygon: &Polygon| {
@@ -366,7 +362,7 @@ fn polygon_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
         )
         .map_err(|e| Violation::new("polygon agreement", e.to_string()))
     };
-    for model in [Model::Scanline, Model::ExactSnapped, Model::Exact] {
+    for model in models::polygon_agreement() {
         let reference = model.reference();
         let agreement = fill(reference, &c.polygon).and_then(|expected| {
             let theirs = fill(model, &c.polygon)?;
@@ -400,8 +396,8 @@ fn polygon_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
     push("triangulation", Model::Fixed, result, &c.simple);
 }
 
-/// Invariant 5: Bresenham (both ties), its reversal, diamond-exit agreement, and the DDA's
-/// departures (the float trade for lines).
+/// The line invariant: Bresenham (both ties), its reversal, diamond-exit agreement, and
+/// the DDA's departures (the float trade for lines).
 fn line_checks(c: &Case, out: &mut Vec<Outcome>) {
     let as_line = |(a, b): ([i64; 2], [i64; 2]), tie| Line {
         from: Point::from_ints(a[0], a[1]),
@@ -446,11 +442,13 @@ fn line_checks(c: &Case, out: &mut Vec<Outcome>) {
         push("line symmetry", Model::Fixed, label, symmetry, as_line(c.line, tie));
     }
     let target = target(CANVAS, c.preset);
-    for (model, label) in [
-        (Model::Fixed, "diamond"),
-        (Model::ExactSnapped, Model::ExactSnapped.name()),
-        (Model::Exact, Model::Exact.name()),
-    ] {
+    for model in models::diamond() {
+        // The integer models share one diamond-exit walk, named by the algorithm.
+        let label = if models::is_integer(model) {
+            "diamond"
+        } else {
+            model.name()
+        };
         push(
             "diamond agreement",
             model,

@@ -1,28 +1,14 @@
 //! Running the suite at scale: a [`Plan`] (seed, cases, shard, threads, time budget) run
-//! on a rayon thread pool into a [`Report`]. The cases run in blocks; each block's cases
-//! run in parallel, their results are collected by case index and folded into the report
-//! in index order, so the report does not depend on the number of threads.
+//! by the harness's [`Runner`] into a [`Report`]. The shard's cases run on `jobs`
+//! threads; their results come back in case order and are folded into the report one by
+//! one as they come, so the report does not depend on the number of threads.
 
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
-use rayon::prelude::*;
-
 use super::{generate, run_case, CaseRun, Outcome, Report, Shard};
-
-/// Cases per thread in one block: enough that the threads seldom wait for each other at
-/// a block's end (`--cases 64 --jobs 2`: 1.86 times as fast as one thread), few enough
-/// that the progress and `--out` files follow closely.
-const BLOCK_PER_THREAD: u64 = 32;
-
-/// At most this many cases in a block (unless there are more threads): a block's runs,
-/// their scenes included, are held until it is folded into the report.
-const BLOCK_MAX: u64 = 2048;
-
-/// Stack of each worker thread: the main thread's usual 8 MiB, for the deep recursions of
-/// the exact arithmetic and the triangulation on big inputs.
-const STACK: usize = 8 << 20;
+use crate::harness::runner::{RunError, Runner, DEFAULT_STACK};
 
 /// At most this many threads.
 pub const MAX_JOBS: usize = 1024;
@@ -142,61 +128,51 @@ impl Plan {
     /// shard's, and the report says why the others did not.
     ///
     /// # Errors
-    /// `jobs` outside `1..=MAX_JOBS`, the thread pool cannot start, a case cannot be
+    /// `jobs` outside `1..=MAX_JOBS`, the threads cannot start, a case cannot be
     /// generated, or `hooks.on_case` fails: its message.
     pub fn run_with(&self, mut hooks: Hooks<'_>) -> Result<Report, String> {
         if !(1..=MAX_JOBS).contains(&self.jobs) {
             return Err(format!("jobs {}: expected 1..={MAX_JOBS} threads", self.jobs));
         }
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(self.jobs)
-            .stack_size(STACK)
-            .thread_name(|i| format!("rasterproof-check-{i}"))
-            .build()
-            .map_err(|e| format!("cannot start {} threads: {e}", self.jobs))?;
+        let runner = Runner {
+            threads: self.jobs,
+            stack: DEFAULT_STACK,
+            name: "rasterproof-check",
+        };
         let start = Instant::now();
         let deadline = self.budget.and_then(|b| start.checked_add(b));
         let never = AtomicBool::new(false);
         let stop = hooks.stop.unwrap_or(&never);
         let halted = || stop.load(Ordering::Relaxed) || deadline.is_some_and(|d| Instant::now() >= d);
         let tick = hooks.tick;
-        let total = self.case_count();
-        let threads = u64::try_from(self.jobs).unwrap_or(1);
-        let block = (BLOCK_PER_THREAD * threads).min(BLOCK_MAX).max(threads);
+        let case_of = |j: u64| self.shard.case_at(j).expect("a position of the shard's cases");
+        let case = |j: u64| {
+            let run = generate(self.seed, case_of(j)).map(|case| run_case(&case));
+            if let Some(tick) = tick {
+                tick();
+            }
+            run
+        };
         let files = self.scene_files.as_ref();
         let path_of = |k: u64| move |o: &Outcome| files.and_then(|f| f.path_for(k, o)).map(|p| p.display().to_string());
         let mut report = Report::new(self.seed, self.cases, self.shard);
-        let mut j = 0;
-        while j < total {
-            let ks: Vec<u64> = (j..total.min(j.saturating_add(block)))
-                .filter_map(|i| self.shard.case_at(i))
-                .collect();
-            let runs: Vec<Option<Result<CaseRun, String>>> = pool.install(|| {
-                ks.par_iter()
-                    .map(|&k| {
-                        if halted() {
-                            return None;
-                        }
-                        let run = generate(self.seed, k).map(|case| run_case(&case));
-                        if let Some(tick) = tick {
-                            tick();
-                        }
-                        Some(run)
-                    })
-                    .collect()
-            });
-            for (&k, run) in ks.iter().zip(runs) {
-                let Some(run) = run else {
-                    report.stop(self.stopped_why(&report, stop.load(Ordering::Relaxed)));
-                    return Ok(report);
-                };
-                let run = run?;
-                if let Some(on_case) = hooks.on_case.as_mut() {
-                    on_case(k, &run)?;
-                }
-                report.add(k, &run, &path_of(k));
+        let mut fold = |j: u64, run: Result<CaseRun, String>| -> Result<(), String> {
+            let k = case_of(j);
+            let run = run?;
+            if let Some(on_case) = hooks.on_case.as_mut() {
+                on_case(k, &run)?;
             }
-            j = j.saturating_add(block);
+            report.add(k, &run, &path_of(k));
+            Ok(())
+        };
+        let ran = runner
+            .run(self.case_count(), &halted, &case, &mut fold)
+            .map_err(|e| match e {
+                RunError::Spawn(e) => format!("cannot start {} threads: {e}", self.jobs),
+                RunError::Case(e) => e,
+            })?;
+        if ran.stopped {
+            report.stop(self.stopped_why(&report, stop.load(Ordering::Relaxed)));
         }
         Ok(report)
     }

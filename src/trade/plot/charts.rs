@@ -1,0 +1,298 @@
+//! Pictures (a) and (b) of the trade: speed against error per workload with the Pareto
+//! front, and error against coordinate magnitude, one line per contender.
+
+use plotters::prelude::*;
+
+use super::{colour, err, legend, legend_entries, Area, SANS};
+use crate::trade::report::{Outcome, Report, SpeedOutcome, WorkloadReport};
+use crate::trade::Magnitude;
+
+/// A rate of 0 is drawn here, on the tick labelled `0`.
+const ZERO: f64 = 0.1;
+/// Non-zero rates below it are drawn at it, so that none sits on the `0` line.
+const SMALLEST: f64 = 0.2;
+/// The log axes' ends (per million).
+const BOTTOM: f64 = 0.06;
+const TOP: f64 = 4e6;
+
+fn rate_label(v: f64) -> String {
+    if (v - ZERO).abs() < 1e-9 {
+        "0".into()
+    } else if v < ZERO {
+        String::new()
+    } else if v >= 1.0 {
+        format!("{v:.0}")
+    } else {
+        format!("{v}")
+    }
+}
+
+fn speed_label(v: f64) -> String {
+    if v >= 1.0 {
+        format!("{v:.0}")
+    } else {
+        format!("{v:.1e}")
+    }
+}
+
+/// A workload's headline rate per million at `m` for `contender` (`None`: refused or
+/// not run).
+fn headline(w: &WorkloadReport, contender: &str, m: Magnitude) -> Option<f64> {
+    let c = w.cell(contender, m)?;
+    match &c.outcome {
+        Outcome::Refused(_) => None,
+        Outcome::Measured { metrics, .. } => {
+            let h = metrics.first()?;
+            Some(if h.is_zero() {
+                ZERO
+            } else {
+                h.per_million().unwrap_or(0.0).max(SMALLEST)
+            })
+        }
+    }
+}
+
+/// The magnitude picture (a) shows: the largest run at or below 2^20 px (fixed's
+/// envelope), else the smallest run.
+pub(crate) fn speed_error_magnitude(r: &Report) -> Magnitude {
+    let limit = 1u64 << 20;
+    r.config
+        .magnitudes
+        .iter()
+        .rev()
+        .find(|m| m.px() <= limit)
+        .or(r.config.magnitudes.first())
+        .copied()
+        .unwrap_or(Magnitude::DEFAULT[0])
+}
+
+fn grid_shape(n: usize) -> (usize, usize) {
+    let cols = if n <= 4 { n.max(1) } else { 4 };
+    (n.div_ceil(cols).max(1), cols)
+}
+
+/// Picture (a).
+pub(super) fn speed_error<DB: DrawingBackend>(root: &Area<DB>, r: &Report) -> Result<(), String> {
+    root.fill(&WHITE).map_err(err)?;
+    let m = speed_error_magnitude(r);
+    let (_, h) = root.dim_in_pixel();
+    let (top, rest) = root.split_vertically(56);
+    top.titled(
+        &format!(
+            "Speed against error at {m} px from the origin, per workload: each contender a point; ringed and joined \
+             in black: the Pareto front"
+        ),
+        (SANS, 26),
+    )
+    .map_err(err)?;
+    let (grid, bottom) = rest.split_vertically(h - 56 - 150);
+    let n = r.workloads.len();
+    let (rows, cols) = grid_shape(n);
+    let panels = grid.split_evenly((rows, cols));
+    for (panel, w) in panels.iter().zip(&r.workloads) {
+        let points: Vec<(String, f64, f64, bool)> = w
+            .speed
+            .iter()
+            .filter_map(|s| match s.outcome {
+                SpeedOutcome::Measured { median, .. } if median > 0.0 => {
+                    Some((s.contender.clone(), median, headline(w, &s.contender, m)?, s.exact))
+                }
+                _ => None,
+            })
+            .collect();
+        let refused: Vec<&str> = w
+            .speed
+            .iter()
+            .filter(|s| headline(w, &s.contender, m).is_none())
+            .map(|s| s.contender.as_str())
+            .collect();
+        let lo = points.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+        let hi = points.iter().map(|p| p.1).fold(0.0, f64::max);
+        let (lo, hi) = if lo.is_finite() && hi > 0.0 {
+            (lo / 3.0, hi * 3.0)
+        } else {
+            (1e-3, 1e3)
+        };
+        let caption = if refused.is_empty() {
+            w.name.clone()
+        } else {
+            format!("{} (refused: {})", w.name, refused.join(", "))
+        };
+        let mut chart = ChartBuilder::on(panel)
+            .caption(caption, (SANS, 16))
+            .margin(10)
+            .x_label_area_size(44)
+            .y_label_area_size(64)
+            .build_cartesian_2d((lo..hi).log_scale(), (BOTTOM..TOP).log_scale())
+            .map_err(err)?;
+        let x_desc = format!("speed, {} (log)", w.unit);
+        let first = w
+            .cells
+            .iter()
+            .find_map(|c| c.outcome.headline().map(|h| h.name()))
+            .unwrap_or("errors");
+        let y_desc = format!("{first} per million");
+        chart
+            .configure_mesh()
+            .x_desc(x_desc)
+            .y_desc(y_desc)
+            .x_labels(5)
+            .y_labels(8)
+            .x_label_formatter(&|v| speed_label(*v))
+            .y_label_formatter(&|v| rate_label(*v))
+            .axis_desc_style((SANS, 14))
+            .label_style((SANS, 12))
+            .draw()
+            .map_err(err)?;
+        // The Pareto front: fastest first, keeping each point with less error than every
+        // faster one.
+        let mut sorted = points.clone();
+        sorted.sort_by(|a, b| b.1.total_cmp(&a.1));
+        let mut front: Vec<(f64, f64)> = Vec::new();
+        for p in &sorted {
+            let better = match front.last() {
+                None => true,
+                Some(&(_, e)) => p.2 < e,
+            };
+            if better {
+                front.push((p.1, p.2));
+            }
+        }
+        let mut steps = Vec::new();
+        for (k, &(s, e)) in front.iter().enumerate() {
+            if k > 0 {
+                steps.push((s, front[k - 1].1));
+            }
+            steps.push((s, e));
+        }
+        chart
+            .draw_series(LineSeries::new(steps, BLACK.stroke_width(2)))
+            .map_err(err)?;
+        for &(s, e) in &front {
+            chart
+                .draw_series(std::iter::once(Circle::new((s, e), 11, BLACK.stroke_width(2))))
+                .map_err(err)?;
+        }
+        for (name, s, e, exact) in &points {
+            let c = colour(name);
+            if *exact {
+                chart.draw_series(std::iter::once(Circle::new((*s, *e), 6, c.filled())))
+            } else {
+                chart.draw_series(std::iter::once(TriangleMarker::new((*s, *e), 8, c.filled())))
+            }
+            .map_err(err)?;
+        }
+    }
+    legend(
+        &bottom,
+        &legend_entries(r),
+        6,
+        "Circles: exact and integer models; triangles: float models. Speed: drawing the prepared workload at the \
+         origin, median of the round-robin repetitions.\nError: per million pixels the exact answer covers (lines: \
+         line pixels; clipping: output vertices); 0 is exactly zero. A refused contender is not drawn.",
+    )
+}
+
+/// Picture (b).
+pub(super) fn error_magnitude<DB: DrawingBackend>(root: &Area<DB>, r: &Report) -> Result<(), String> {
+    root.fill(&WHITE).map_err(err)?;
+    let (_, h) = root.dim_in_pixel();
+    let (top, rest) = root.split_vertically(56);
+    top.titled(
+        "Error against coordinate magnitude (the window at M px from the origin), one line per contender",
+        (SANS, 26),
+    )
+    .map_err(err)?;
+    let (grid, bottom) = rest.split_vertically(h - 56 - 150);
+    let mags = r.config.magnitudes.clone();
+    let labels: Vec<String> = mags.iter().map(|m| m.label()).collect();
+    let n = mags.len();
+    let (rows, cols) = grid_shape(r.workloads.len());
+    let panels = grid.split_evenly((rows, cols));
+    let last = u32::try_from(n.saturating_sub(1)).map_err(err)?;
+    for (panel, w) in panels.iter().zip(&r.workloads) {
+        let first = w
+            .cells
+            .iter()
+            .find_map(|c| c.outcome.headline().map(|h| h.name()))
+            .unwrap_or("errors");
+        let mut chart = ChartBuilder::on(panel)
+            .caption(w.name.clone(), (SANS, 16))
+            .margin(10)
+            .x_label_area_size(44)
+            .y_label_area_size(64)
+            .build_cartesian_2d((0u32..last).into_segmented(), (BOTTOM..TOP).log_scale())
+            .map_err(err)?;
+        let label_of = |v: &SegmentValue<u32>| match v {
+            SegmentValue::CenterOf(i) | SegmentValue::Exact(i) => labels
+                .get(usize::try_from(*i).unwrap_or(usize::MAX))
+                .cloned()
+                .unwrap_or_default(),
+            SegmentValue::Last => String::new(),
+        };
+        chart
+            .configure_mesh()
+            .x_desc("magnitude M, px (2^k)")
+            .y_desc(format!("{first} per million"))
+            .x_labels(n)
+            .y_labels(8)
+            .x_label_formatter(&label_of)
+            .y_label_formatter(&|v| rate_label(*v))
+            .axis_desc_style((SANS, 14))
+            .label_style((SANS, 12))
+            .draw()
+            .map_err(err)?;
+        let mut refusing = 0;
+        for s in &w.speed {
+            let c = colour(&s.contender);
+            let mut run: Vec<(SegmentValue<u32>, f64)> = Vec::new();
+            let any_refused = w
+                .cells
+                .iter()
+                .any(|c| c.contender == s.contender && matches!(c.outcome, Outcome::Refused(_)));
+            // Each refusing contender's crosses a little lower than the last one's.
+            let cross_y = 1.5e6 / 2f64.powi(refusing);
+            if any_refused {
+                refusing += 1;
+            }
+            let mut runs = Vec::new();
+            for (k, &m) in mags.iter().enumerate() {
+                let x = SegmentValue::CenterOf(u32::try_from(k).map_err(err)?);
+                match w.cell(&s.contender, m).map(|c| &c.outcome) {
+                    Some(Outcome::Measured { .. }) => {
+                        run.push((x, headline(w, &s.contender, m).unwrap_or(ZERO)));
+                    }
+                    Some(Outcome::Refused(_)) => {
+                        runs.push(std::mem::take(&mut run));
+                        chart
+                            .draw_series(std::iter::once(Cross::new((x, cross_y), 7, c.stroke_width(3))))
+                            .map_err(err)?;
+                    }
+                    None => runs.push(std::mem::take(&mut run)),
+                }
+            }
+            runs.push(run);
+            for line in runs.into_iter().filter(|l| !l.is_empty()) {
+                let width = if s.exact { 2 } else { 3 };
+                chart
+                    .draw_series(LineSeries::new(line.clone(), c.stroke_width(width)))
+                    .map_err(err)?;
+                for p in line {
+                    if s.exact {
+                        chart.draw_series(std::iter::once(Circle::new(p, 4, c.filled())))
+                    } else {
+                        chart.draw_series(std::iter::once(TriangleMarker::new(p, 6, c.filled())))
+                    }
+                    .map_err(err)?;
+                }
+            }
+        }
+    }
+    legend(
+        &bottom,
+        &legend_entries(r),
+        6,
+        "A cross near the top: the model refuses the workload there (integer envelope, Bresenham endpoints beyond \
+         2^24, float range). Error per million as in the tables; 0 is exactly zero.",
+    )
+}
