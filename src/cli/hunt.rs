@@ -10,11 +10,9 @@ use std::time::Duration;
 use indicatif::{ProgressBar, ProgressStyle};
 use rasterproof::convention::Preset;
 use rasterproof::harness::suite::Shard;
-use rasterproof::oracle::hunt::{
-    generate_scene, hunt, hunt_convention, preferred, rust_test, Family, HuntConfig, Verdict,
-};
+use rasterproof::oracle::hunt::{fit_convention, hunt, rust_test, Family, HuntConfig, Verdict};
 use rasterproof::oracle::program::Program;
-use rasterproof::oracle::{fit, Background, Format};
+use rasterproof::oracle::{Background, Format};
 
 use rasterproof::model::Model;
 
@@ -165,7 +163,10 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     };
     let render_with = |s: &rasterproof::scene::Scene| program.render(s);
     if o.fit_first {
-        fit_first(&mut config, &render_with)?;
+        let (best, overrides, model) = fit_convention(&config, &render_with)?;
+        eprintln!("fit: hunting under {best} (oracle {})", model.name());
+        config.overrides = overrides;
+        config.model = model;
     }
     let bar = if o.quiet {
         ProgressBar::hidden()
@@ -252,51 +253,6 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     } else {
         ExitCode::from(1)
     })
-}
-
-/// How many tie-heavy probe scenes `--fit-first` renders: the conventions that explain
-/// every one of them are kept (one scene rarely tells every rule and snapping apart).
-const FIT_PROBES: u64 = 6;
-
-/// `--fit-first`: the convention that explains their renders of [`FIT_PROBES`] tie-heavy
-/// scenes, set on `config`.
-fn fit_first(
-    config: &mut HuntConfig,
-    render_with: &dyn Fn(
-        &rasterproof::scene::Scene,
-    ) -> Result<rasterproof::oracle::Theirs, rasterproof::oracle::program::Failure>,
-) -> Result<(), String> {
-    let probe = HuntConfig {
-        families: vec![Family::Mesh],
-        ..config.clone()
-    };
-    let mut exact: Option<Vec<rasterproof::oracle::Candidate>> = None;
-    let mut last = None;
-    for k in 0..FIT_PROBES {
-        let scene = generate_scene(&probe, u64::MAX - k)?;
-        let target = scene.target().ok_or("--fit-first: invalid probe scene")?;
-        let theirs =
-            render_with(&scene).map_err(|f| format!("--fit-first: the renderer failed on a probe scene: {f}"))?;
-        let found = fit(&scene.primitives(), &target, &theirs).map_err(|e| format!("--fit-first: {e}"))?;
-        exact = Some(match exact {
-            None => found.exact.clone(),
-            Some(kept) => kept.into_iter().filter(|c| found.exact.contains(c)).collect(),
-        });
-        last = Some(found);
-    }
-    let exact = exact.unwrap_or_default();
-    let Some(best) = preferred(&exact) else {
-        return Err(format!(
-            "--fit-first: no convention hunt can state explains the renderer's images of the {FIT_PROBES} probe scenes \
-             (the last probe's fit:)\n{}",
-            last.map(|f| f.to_text()).unwrap_or_default()
-        ));
-    };
-    let (overrides, model) = hunt_convention(&best).expect("preferred only returns statable conventions");
-    eprintln!("fit: hunting under {best} (oracle {})", model.name());
-    config.overrides = overrides;
-    config.model = model;
-    Ok(())
 }
 
 /// The `.txt` of a finding: what it is, its minimal scene's comparison (or failure), and

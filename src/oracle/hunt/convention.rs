@@ -1,10 +1,61 @@
 //! The convention a hunt states in its scenes when it follows a fit of their renderer's
-//! output ([`hunt_convention`], [`preferred`]).
+//! output ([`hunt_convention`], [`preferred`]), and the fit made before a hunt
+//! ([`fit_convention`], `hunt --fit-first`).
 
+use super::{generate_scene, Family, HuntConfig};
 use crate::convention::{AnyTieRule, PixelCentre, TieRule};
 use crate::model::Model;
-use crate::oracle::fit::Candidate;
-use crate::scene::Overrides;
+use crate::oracle::fit::{fit, Candidate};
+use crate::oracle::program::Failure;
+use crate::oracle::Theirs;
+use crate::scene::{Overrides, Scene};
+
+/// How many tie-heavy probe scenes [`fit_convention`] renders: the conventions that
+/// explain every one of them are kept (one scene rarely tells every rule and snapping
+/// apart).
+pub const FIT_PROBES: u64 = 6;
+
+/// `hunt --fit-first`: the convention that explains `render`'s images of [`FIT_PROBES`]
+/// tie-heavy probe scenes (mesh scenes drawn from `config`'s seed and convention), as the
+/// fit ([`preferred`] among the exact ones) and the scene overrides and oracle model that
+/// state it ([`hunt_convention`]). Set them on the config to hunt under that convention.
+///
+/// # Errors
+/// A probe scene cannot be made, the renderer fails on one, the fit refuses one, or no
+/// convention hunt can state explains every probe (the message holds the last probe's
+/// fit).
+pub fn fit_convention(
+    config: &HuntConfig,
+    render: &dyn Fn(&Scene) -> Result<Theirs, Failure>,
+) -> Result<(Candidate, Overrides, Model), String> {
+    let probe = HuntConfig {
+        families: vec![Family::Mesh],
+        ..config.clone()
+    };
+    let mut exact: Option<Vec<Candidate>> = None;
+    let mut last = None;
+    for k in 0..FIT_PROBES {
+        let scene = generate_scene(&probe, u64::MAX - k)?;
+        let target = scene.target().ok_or("--fit-first: invalid probe scene")?;
+        let theirs = render(&scene).map_err(|f| format!("--fit-first: the renderer failed on a probe scene: {f}"))?;
+        let found = fit(&scene.primitives(), &target, &theirs).map_err(|e| format!("--fit-first: {e}"))?;
+        exact = Some(match exact {
+            None => found.exact.clone(),
+            Some(kept) => kept.into_iter().filter(|c| found.exact.contains(c)).collect(),
+        });
+        last = Some(found);
+    }
+    let exact = exact.unwrap_or_default();
+    let Some(best) = preferred(&exact) else {
+        return Err(format!(
+            "--fit-first: no convention hunt can state explains the renderer's images of the {FIT_PROBES} probe scenes \
+             (the last probe's fit:)\n{}",
+            last.map(|f| f.to_text()).unwrap_or_default()
+        ));
+    };
+    let (overrides, model) = hunt_convention(&best).expect("preferred only returns statable conventions");
+    Ok((best, overrides, model))
+}
 
 /// The convention a fit names, as scene overrides and the oracle model, when hunt can
 /// state it in a scene file: a top-left or bottom-left rule and 1..=16 bits (the oracle

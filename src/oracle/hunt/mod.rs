@@ -25,10 +25,9 @@ mod test_text;
 mod verdict;
 
 use std::collections::BTreeMap;
-use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
-pub use convention::{hunt_convention, preferred};
+pub use convention::{fit_convention, hunt_convention, preferred, FIT_PROBES};
 pub use families::{float32_exact, generate_scene, Family};
 pub use report::{HuntFinding, HuntReport, REPORT_FORMAT, REPORT_VERSION};
 pub use shrink::{primitive_count, shrink};
@@ -38,6 +37,7 @@ pub use verdict::{judge, signatures, Signature, Verdict};
 use verdict::Outcome;
 
 use crate::convention::Preset;
+use crate::harness::runner::{RunError, Runner};
 use crate::harness::suite::Shard;
 use crate::model::Model;
 use crate::oracle::program::Failure;
@@ -134,54 +134,32 @@ where
 {
     let requested = config.shard.case_count(config.cases);
     let deadline = config.budget.and_then(|b| Instant::now().checked_add(b));
-    // The next of the shard's cases to claim (its index among them), and whether claiming
-    // has ended (the budget passed, or a scene could not be generated). Claims are made
-    // under the lock, in order, so the claimed cases are always the first `next`.
-    let claims: Mutex<(u64, bool)> = Mutex::new((0, false));
-    let claim = || -> Option<u64> {
-        let mut c = claims.lock().expect("no panics hold it");
-        if c.1 || c.0 >= requested {
-            return None;
-        }
-        if deadline.is_some_and(|d| Instant::now() >= d) {
-            c.1 = true;
-            return None;
-        }
-        let k = config.shard.case_at(c.0)?;
-        c.0 += 1;
-        Some(k)
+    // The cases that ran are the first of the shard's, in order (the runner hands on an
+    // unbroken prefix), whatever the number of threads.
+    let stop = || deadline.is_some_and(|d| Instant::now() >= d);
+    let case = |i: u64| -> Result<CaseResult, String> {
+        let k = config
+            .shard
+            .case_at(i)
+            .ok_or_else(|| format!("the shard has no case at position {i}"))?;
+        let scene = generate_scene(config, k)?;
+        let verdict = judge(&scene, render(&scene), config.model);
+        let (sigs, outcome) = (signatures(&verdict), Outcome::of(&verdict));
+        tick();
+        Ok((k, scene, sigs, outcome))
     };
-    let results: Mutex<Vec<CaseResult>> = Mutex::new(Vec::new());
-    let error: Mutex<Option<String>> = Mutex::new(None);
-    std::thread::scope(|s| {
-        for _ in 0..jobs.max(1) {
-            s.spawn(|| {
-                while let Some(k) = claim() {
-                    let scene = match generate_scene(config, k) {
-                        Ok(s) => s,
-                        Err(e) => {
-                            *error.lock().expect("no panics hold it") = Some(e);
-                            claims.lock().expect("no panics hold it").1 = true;
-                            break;
-                        }
-                    };
-                    let verdict = judge(&scene, render(&scene), config.model);
-                    let outcome = Outcome::of(&verdict);
-                    let sigs = signatures(&verdict);
-                    results
-                        .lock()
-                        .expect("no panics hold it")
-                        .push((k, scene, sigs, outcome));
-                    tick();
-                }
-            });
-        }
-    });
-    if let Some(e) = error.into_inner().expect("no panics hold it") {
-        return Err(e);
-    }
-    let mut results = results.into_inner().expect("no panics hold it");
-    results.sort_by_key(|r| r.0);
+    let runner = Runner {
+        threads: jobs.max(1),
+        name: "rasterproof-hunt",
+        ..Runner::default()
+    };
+    let mut results: Vec<CaseResult> = Vec::new();
+    runner
+        .run(requested, &stop, &case, &mut |_, r| r.map(|r| results.push(r)))
+        .map_err(|e| match e {
+            RunError::Spawn(e) => format!("cannot start {jobs} threads: {e}"),
+            RunError::Case(e) => e,
+        })?;
     let cases = results.len() as u64;
     let (mut same, mut differing, mut failed, mut refused) = (0u64, 0u64, 0u64, 0u64);
     let mut first: BTreeMap<Signature, (u64, Scene, u64)> = BTreeMap::new();
