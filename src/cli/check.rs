@@ -17,7 +17,7 @@ use rasterproof::harness::suite::{Hooks, Plan, Report, SceneFiles, Shard, MAX_JO
 use rasterproof::harness::CaseRun;
 use rasterproof::scene::Scene;
 
-use super::{parse_duration, parse_shard, print_stdout, writable_outputs, Outputs};
+use super::{parse_duration, parse_shard, print_stdout, writable_outputs, Outputs, ProgressArgs};
 
 /// What `check` was asked to do.
 #[derive(clap::Args)]
@@ -36,9 +36,8 @@ pub struct Options {
     /// files).
     #[arg(long, requires = "out")]
     out_float: bool,
-    /// Hide the progress bar.
-    #[arg(long)]
-    quiet: bool,
+    #[command(flatten)]
+    progress: ProgressArgs,
     /// Run the cases on N threads (1..=1024); the results do not depend on N.
     #[arg(long, value_name = "N", default_value_t = 1, value_parser = parse_jobs)]
     jobs: usize,
@@ -101,7 +100,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             float: o.out_float,
         }),
     };
-    let bar = if o.quiet {
+    let bar = if o.progress.quiet {
         ProgressBar::hidden()
     } else {
         ProgressBar::new(plan.case_count())

@@ -12,6 +12,8 @@ use rasterproof::geom::Point;
 use rasterproof::num::exact::json_pair;
 use rasterproof::scene::parse_scene_bytes;
 
+use super::OutputFormat;
+
 /// What `clip` was asked to do.
 #[derive(clap::Args)]
 pub struct Options {
@@ -29,18 +31,18 @@ pub struct Options {
     /// triangles) left with no area — a point or a segment, as when it touches the window
     /// only at a corner or along an edge. A line touching the window in one point is that
     /// point twice (a segment of length zero).
-    #[arg(long, value_enum, default_value_t = Format::Json)]
-    format: Format,
+    #[arg(long, default_value_t = OutputFormat::Json, value_parser = OutputFormat::parser(FORMATS))]
+    format: OutputFormat,
 }
 
-/// How `clip` reports on stdout.
-#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum Format {
-    /// `{"triangles":[...],"lines":[...],"polygons":[...],"clip_space_triangles":[...]}`.
-    Json,
-    /// A one-line summary.
-    Text,
-}
+/// `--format`'s values for `clip`, with their help.
+const FORMATS: [(OutputFormat, &str); 2] = [
+    (
+        OutputFormat::Json,
+        r#"`{"triangles":[...],"lines":[...],"polygons":[...],"clip_space_triangles":[...]}`"#,
+    ),
+    (OutputFormat::Text, "A one-line summary"),
+];
 
 /// A point as `["x","y"]`, exact text.
 fn pt(p: &Point) -> String {
@@ -51,6 +53,7 @@ fn list(points: &[Point]) -> String {
     format!("[{}]", points.iter().map(pt).collect::<Vec<_>>().join(","))
 }
 
+/// Clips the scene's primitives as `o` asks and prints them (or the summary); exit 0.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
     let name = o.scene.display().to_string();
     let arith = Arithmetic::from_name(&o.model).ok_or_else(|| {
@@ -107,7 +110,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         ));
     }
     match o.format {
-        Format::Json => {
+        OutputFormat::Json => {
             let json = format!(
                 "{{\"triangles\":[{}],\"lines\":[{}],\"polygons\":[{}],\"clip_space_triangles\":[{}]}}",
                 triangles.join(","),
@@ -117,7 +120,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             );
             crate::cli::print_stdout(&json)?;
         }
-        Format::Text => {
+        OutputFormat::Text => {
             let kept = |v: &[String]| v.iter().filter(|s| s.as_str() != "[]").count();
             crate::cli::print_stdout(&format!(
                 "{name}: {} clipping: {}/{} triangles, {}/{} lines, {}/{} polygons, {}/{} clip-space triangles keep something",

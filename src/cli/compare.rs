@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use rasterproof::coverage::picture::{legend_path, Scale};
 use rasterproof::oracle::{compare, Background, Format, Theirs};
 
-use super::{ConventionArgs, Outputs};
+use super::{ConventionArgs, OutputFormat, Outputs};
 
 /// What `compare` was asked to do.
 #[derive(clap::Args)]
@@ -37,8 +37,8 @@ pub struct Options {
     #[arg(long = "diff-out", value_name = "DIFF.png")]
     diff_out: Option<PathBuf>,
     /// Output format on stdout.
-    #[arg(long = "format", value_enum, default_value_t = ReportFormat::Text)]
-    format_out: ReportFormat,
+    #[arg(long = "format", default_value_t = OutputFormat::Text, value_parser = OutputFormat::parser(FORMATS))]
+    format_out: OutputFormat,
     /// Text output: how many differing pixels to explain one by one (JSON lists all).
     #[arg(long, default_value_t = 20)]
     limit: usize,
@@ -51,15 +51,18 @@ pub struct Options {
     fit: bool,
 }
 
-/// How `compare` reports on stdout.
-#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum ReportFormat {
-    /// The summary table (findings by pixel kind and reason class), then the first
-    /// `--limit` pixels, each with its exact explanation.
-    Text,
-    /// Everything, as one JSON object (schema in docs/oracle.md, `compare`).
-    Json,
-}
+/// `--format`'s values for `compare`, with their help.
+const FORMATS: [(OutputFormat, &str); 2] = [
+    (
+        OutputFormat::Text,
+        "The summary table (findings by pixel kind and reason class), then the first \
+         `--limit` pixels, each with its exact explanation",
+    ),
+    (
+        OutputFormat::Json,
+        "Everything, as one JSON object (schema in docs/oracle.md, `compare`)",
+    ),
+];
 
 /// `--background R,G,B[,A]`.
 fn parse_background(text: &str) -> Result<Background, String> {
@@ -78,6 +81,9 @@ fn parse_background(text: &str) -> Result<Background, String> {
     }
 }
 
+/// Compares their output with the oracle (or, with `--fit`, searches the conventions),
+/// writes `--diff-out` and prints the report; exit 1 when the images differ (or no
+/// convention fits).
 pub fn run(o: &Options) -> Result<ExitCode, String> {
     let model = super::parse_model(&o.model)?;
     let format = match &o.theirs_as {
@@ -106,7 +112,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             other => format!("{name}: {other}"),
         })?;
         match o.format_out {
-            ReportFormat::Text => super::write_stdout(|out| {
+            OutputFormat::Text => super::write_stdout(|out| {
                 writeln!(
                     out,
                     "compare --fit: {theirs_name} (as {}) against {name}",
@@ -114,7 +120,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
                 )?;
                 out.write_all(found.to_text().as_bytes())
             })?,
-            ReportFormat::Json => super::print_stdout(&found.to_json().to_string())?,
+            OutputFormat::Json => super::print_stdout(&found.to_json().to_string())?,
         }
         return Ok(if found.exact.is_empty() {
             ExitCode::from(1)
@@ -134,10 +140,10 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         outputs.commit()?;
     }
     match o.format_out {
-        ReportFormat::Text => {
+        OutputFormat::Text => {
             super::write_stdout(|out| out.write_all(report.to_text(&name, &theirs_name, o.limit).as_bytes()))?
         }
-        ReportFormat::Json => super::print_stdout(&report.to_json(&name, &theirs_name).to_string())?,
+        OutputFormat::Json => super::print_stdout(&report.to_json(&name, &theirs_name).to_string())?,
     }
     Ok(if report.identical() {
         ExitCode::SUCCESS

@@ -5,7 +5,7 @@ use std::process::ExitCode;
 
 use rasterproof::oracle::explain_pixel;
 
-use super::ConventionArgs;
+use super::{ConventionArgs, OutputFormat};
 
 /// What `explain` was asked to do.
 #[derive(clap::Args)]
@@ -18,19 +18,18 @@ pub struct Options {
     #[command(flatten)]
     convention: ConventionArgs,
     /// Output format on stdout.
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    format: Format,
+    #[arg(long, default_value_t = OutputFormat::Text, value_parser = OutputFormat::parser(FORMATS))]
+    format: OutputFormat,
 }
 
-/// How `explain` reports.
-#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum Format {
-    /// The sample, each nearby primitive's exact evidence (as written and snapped), and
-    /// what every model decides.
-    Text,
-    /// The same as one JSON object.
-    Json,
-}
+/// `--format`'s values for `explain`, with their help.
+const FORMATS: [(OutputFormat, &str); 2] = [
+    (
+        OutputFormat::Text,
+        "The sample, each nearby primitive's exact evidence (as written and snapped), and what every model decides",
+    ),
+    (OutputFormat::Json, "The same as one JSON object"),
+];
 
 /// `X,Y`.
 fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
@@ -42,6 +41,7 @@ fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
     ))
 }
 
+/// Explains the pixel `o` names and prints it; exit 0.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
     let (x, y) = parse_pixel(&o.pixel)?;
     let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
@@ -52,11 +52,11 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         )
     })?;
     match o.format {
-        Format::Text => super::write_stdout(|out| {
+        OutputFormat::Text => super::write_stdout(|out| {
             writeln!(out, "{name}: {}", target.convention)?;
             out.write_all(why.to_text().as_bytes())
         })?,
-        Format::Json => super::print_stdout(&why.to_json().to_string())?,
+        OutputFormat::Json => super::print_stdout(&why.to_json().to_string())?,
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -6,6 +6,8 @@ use std::process::ExitCode;
 use image::Rgba;
 use rasterproof::fill::flood::{load_png, paint, span_region, Connectivity, Region, MAX_IMAGE_SIDE};
 
+use super::OutputFormat;
+
 /// What `flood` was asked to do.
 #[derive(clap::Args)]
 pub struct Options {
@@ -31,20 +33,25 @@ pub struct Options {
     #[arg(short = 'o', long = "out")]
     out: Option<PathBuf>,
     /// Output format on stdout.
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    format: Format,
+    #[arg(long, default_value_t = OutputFormat::Text, value_parser = OutputFormat::parser(FORMATS))]
+    format: OutputFormat,
 }
 
-/// How `flood` reports on stdout.
-#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum Format {
-    /// A one-line summary: pixel count, connectivity, seed, file.
-    Text,
-    /// `{"width":W,"height":H,"at":[x,y],"connectivity":4,"pixels":[[x,y],...]}`, the
-    /// region's pixels row-major (by y, then x).
-    Json,
-}
+/// `--format`'s values for `flood`, with their help.
+const FORMATS: [(OutputFormat, &str); 2] = [
+    (
+        OutputFormat::Text,
+        "A one-line summary: pixel count, connectivity, seed, file",
+    ),
+    (
+        OutputFormat::Json,
+        "`{\"width\":W,\"height\":H,\"at\":[x,y],\"connectivity\":4,\"pixels\":[[x,y],...]}`, \
+         the region's pixels row-major (by y, then x)",
+    ),
+];
 
+/// Finds the seed pixel's region, writes `--out` recoloured and prints the region
+/// (the summary, or the pixels as JSON with the summary on stderr); exit 0.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
     let at = parse_at(&o.at)?;
     let connectivity = parse_connectivity(&o.connectivity)?;
@@ -76,11 +83,11 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         summary.push_str(&format!(", recoloured {r},{g},{b},{a} into {}", path.display()));
     }
     match o.format {
-        Format::Json => {
+        OutputFormat::Json => {
             crate::cli::write_stdout(|out| write_json(out, &region, at, connectivity))?;
             eprintln!("{summary}");
         }
-        Format::Text => crate::cli::print_stdout(&summary)?,
+        OutputFormat::Text => crate::cli::print_stdout(&summary)?,
     }
     Ok(ExitCode::SUCCESS)
 }

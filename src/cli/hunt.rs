@@ -16,7 +16,7 @@ use rasterproof::oracle::{Background, Format};
 
 use rasterproof::model::Model;
 
-use super::{parse_duration, parse_shard, writable_outputs, ConventionArgs, Outputs};
+use super::{parse_duration, parse_shard, writable_outputs, ConventionArgs, Outputs, ProgressArgs};
 
 /// What `hunt` was asked to do.
 #[derive(clap::Args)]
@@ -69,9 +69,8 @@ pub struct Options {
     /// Runs of the renderer allowed per shrink.
     #[arg(long, default_value_t = 400)]
     shrink_runs: usize,
-    /// Hide the progress bar.
-    #[arg(long)]
-    quiet: bool,
+    #[command(flatten)]
+    progress: ProgressArgs,
     /// Run shard K of N only: the cases k of 0..cases with k mod N = K - 1 (1 <= K <= N);
     /// the N shards together run exactly the unsharded hunt's cases.
     #[arg(long, value_name = "K/N", value_parser = parse_shard)]
@@ -168,7 +167,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         config.overrides = overrides;
         config.model = model;
     }
-    let bar = if o.quiet {
+    let bar = if o.progress.quiet {
         ProgressBar::hidden()
     } else {
         ProgressBar::new(config.shard.case_count(config.cases))

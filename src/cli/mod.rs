@@ -18,6 +18,59 @@ use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU32, Ordering};
 
+/// `--format`: what a command prints on stdout (`clip`, `compare`, `explain`, `flood`,
+/// `plan`, `render`, `trade`). Each command gives the values its own help and order
+/// through [`OutputFormat::parser`].
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum OutputFormat {
+    /// Text for people.
+    Text,
+    /// JSON for programs.
+    Json,
+}
+
+impl OutputFormat {
+    /// The value on the command line: `text` or `json`.
+    pub fn name(self) -> &'static str {
+        match self {
+            OutputFormat::Text => "text",
+            OutputFormat::Json => "json",
+        }
+    }
+
+    /// `--format`'s parser: these values, in this order (the order `--help` and clap's
+    /// errors list them), each with its `--help` line for the command.
+    pub fn parser(
+        values: [(OutputFormat, &'static str); 2],
+    ) -> impl clap::builder::TypedValueParser<Value = OutputFormat> {
+        use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+        PossibleValuesParser::new(values.map(|(f, help)| PossibleValue::new(f.name()).help(help))).map(
+            move |name: String| {
+                values
+                    .iter()
+                    .map(|&(f, _)| f)
+                    .find(|f| f.name() == name)
+                    .expect("clap accepts only the possible values")
+            },
+        )
+    }
+}
+
+impl Display for OutputFormat {
+    /// The value's name, as `--help` shows the default.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// The progress options that `check` and `hunt` share (flattened into each).
+#[derive(clap::Args, Debug, Clone, Copy, Default)]
+pub struct ProgressArgs {
+    /// Hide the progress bar.
+    #[arg(long)]
+    pub quiet: bool,
+}
+
 /// The exit codes, at the end of every command's `--help`.
 pub const EXIT_CODES: &str = "Exit codes:
   0  success (compare: identical)

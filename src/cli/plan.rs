@@ -8,6 +8,8 @@ use std::process::ExitCode;
 use rasterproof::model::plan::{plan_scene, ScenePlan};
 use serde_json::{json, Value};
 
+use super::OutputFormat;
+
 /// What `plan` was asked to do.
 #[derive(clap::Args)]
 pub struct Options {
@@ -20,19 +22,23 @@ pub struct Options {
     #[arg(long)]
     preset: Option<String>,
     /// Output format on stdout.
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    format: Format,
+    #[arg(long, default_value_t = OutputFormat::Text, value_parser = OutputFormat::parser(FORMATS))]
+    format: OutputFormat,
 }
 
-/// How `plan` reports.
-#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum Format {
-    /// One line per primitive, the summary, the fixed-width models' verdicts.
-    Text,
-    /// The same as one JSON object (schema in docs/cli.md, `plan`).
-    Json,
-}
+/// `--format`'s values for `plan`, with their help.
+const FORMATS: [(OutputFormat, &str); 2] = [
+    (
+        OutputFormat::Text,
+        "One line per primitive, the summary, the fixed-width models' verdicts",
+    ),
+    (
+        OutputFormat::Json,
+        "The same as one JSON object (schema in docs/cli.md, `plan`)",
+    ),
+];
 
+/// Plans the scene with the model `o` names and prints the plan; exit 0.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
     let model = super::parse_model(&o.model)?;
     if !model.plans() {
@@ -43,8 +49,8 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let (name, scene, target) = super::load_scene(&o.scene, o.preset.as_deref())?;
     let plan = plan_scene(model, &scene.primitives(), &target).map_err(|e| format!("{name}: {e} (model {model})"))?;
     match o.format {
-        Format::Text => super::print_stdout(&text(&name, &target.convention.to_string(), &plan))?,
-        Format::Json => super::print_stdout(&json(&name, &target.convention.to_string(), &plan).to_string())?,
+        OutputFormat::Text => super::print_stdout(&text(&name, &target.convention.to_string(), &plan))?,
+        OutputFormat::Json => super::print_stdout(&json(&name, &target.convention.to_string(), &plan).to_string())?,
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -12,7 +12,7 @@ use rasterproof::model::plan;
 use rasterproof::model::{prepare, PreparedScene};
 use std::time::{Duration, Instant};
 
-use super::Outputs;
+use super::{OutputFormat, Outputs};
 
 /// What `render` was asked to do.
 #[derive(clap::Args)]
@@ -43,21 +43,26 @@ pub struct Options {
     #[arg(long, value_name = "K", allow_hyphen_values = true)]
     scale: Option<String>,
     /// Output format on stdout.
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    format: Format,
+    #[arg(long, default_value_t = OutputFormat::Text, value_parser = OutputFormat::parser(FORMATS))]
+    format: OutputFormat,
 }
 
-/// How `render` reports on stdout.
-#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum Format {
-    /// Up to 64x64 pixels, the coverage as a grid (`.` uncovered, the owner id's last
-    /// digit, `#` several owners; row 0 first), then a one-line summary naming the model
-    /// and preset.
-    Text,
-    /// `{"width":W,"height":H,"pixels":[[x,y,[ids...]],...]}`.
-    Json,
-}
+/// `--format`'s values for `render`, with their help.
+const FORMATS: [(OutputFormat, &str); 2] = [
+    (
+        OutputFormat::Text,
+        "Up to 64x64 pixels, the coverage as a grid (`.` uncovered, the owner id's \
+         last digit, `#` several owners; row 0 first), then a one-line summary naming \
+         the model and preset",
+    ),
+    (
+        OutputFormat::Json,
+        r#"`{"width":W,"height":H,"pixels":[[x,y,[ids...]],...]}`"#,
+    ),
+];
 
+/// Renders the scene with the model `o` names, writes the pictures asked for (all or
+/// none) and prints the coverage and summary; exit 0.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
     let model = super::parse_model(&o.model)?;
     let scale_asked = o.scale.as_deref().map(parse_scale).transpose()?;
@@ -107,14 +112,14 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         summary.push_str(&format!("; wrote {} (scale {k})", wrote.join(", ")));
     }
     match o.format {
-        Format::Json => {
+        OutputFormat::Json => {
             crate::cli::write_stdout(|out| {
                 coverage.write_json(out)?;
                 writeln!(out)
             })?;
             eprintln!("{summary}");
         }
-        Format::Text => {
+        OutputFormat::Text => {
             let small = target.width <= ASCII_GRID_MAX_SIDE && target.height <= ASCII_GRID_MAX_SIDE;
             let grid = if small { coverage.to_ascii() } else { String::new() };
             crate::cli::print_stdout(&format!("{grid}{summary}"))?;

@@ -7,6 +7,8 @@ use std::process::ExitCode;
 
 use rasterproof::trade::{run as run_trade, Config, Family, Magnitude, Report};
 
+use super::OutputFormat;
+
 /// What `trade` was asked to do.
 #[derive(clap::Args)]
 pub struct Options {
@@ -30,21 +32,21 @@ pub struct Options {
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
     /// Output format on stdout.
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    format: Format,
+    #[arg(long, default_value_t = OutputFormat::Text, value_parser = OutputFormat::parser(FORMATS))]
+    format: OutputFormat,
     /// No progress lines on stderr.
     #[arg(long)]
     quiet: bool,
 }
 
-/// How `trade` reports on stdout.
-#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum Format {
-    /// The tables (trade.md's Markdown).
-    Text,
-    /// trade.json's object (schema in README.md, "The trade").
-    Json,
-}
+/// `--format`'s values for `trade`, with their help.
+const FORMATS: [(OutputFormat, &str); 2] = [
+    (OutputFormat::Text, "The tables (trade.md's Markdown)"),
+    (
+        OutputFormat::Json,
+        "trade.json's object (schema in README.md, \"The trade\")",
+    ),
+];
 
 /// `--family` values, or every family.
 fn families(names: &[String]) -> Result<Vec<Family>, String> {
@@ -98,6 +100,8 @@ fn write_files(dir: &Path, report: &Report, json: &str, markdown: &str) -> Resul
     staged
 }
 
+/// Runs the trade as `o` asks, writes `--out` (all or nothing) and prints the tables;
+/// exit 1 when an exact or integer model shows an error.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
     let config = Config {
         quick: o.quick,
@@ -121,8 +125,8 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         write_files(dir, &report, &json, &markdown)?;
     }
     match o.format {
-        Format::Text => super::write_stdout(|w| w.write_all(markdown.as_bytes()))?,
-        Format::Json => super::write_stdout(|w| w.write_all(json.as_bytes()))?,
+        OutputFormat::Text => super::write_stdout(|w| w.write_all(markdown.as_bytes()))?,
+        OutputFormat::Json => super::write_stdout(|w| w.write_all(json.as_bytes()))?,
     }
     if !quiet {
         eprintln!("trade: done in {:.1} s", start.elapsed().as_secs_f64());
