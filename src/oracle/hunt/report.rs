@@ -156,10 +156,7 @@ impl HuntReport {
             ("canvas", j(&c.canvas)),
             ("float32_exact", j(&c.float32_exact)),
             ("shrink_runs", j(&c.shrink_runs)),
-            (
-                "time_budget_ms",
-                c.budget.map_or_else(|| "null".to_string(), |b| j(&b.as_millis())),
-            ),
+            ("time_budget_ms", j(&c.budget.map(|b| b.as_millis()))),
             ("convention", self.convention_json()),
             ("model", j(c.model.name())),
             (
