@@ -11,6 +11,7 @@
 //! - [`runner`]: numbered cases on scoped threads, their results in index order, a stop
 //!   predicate before each case (what a [`Plan`] runs on; meant for every case loop).
 
+pub mod junit;
 pub mod runner;
 pub mod search;
 pub mod suite;

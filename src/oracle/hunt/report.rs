@@ -7,7 +7,8 @@ use std::fmt::Write as _;
 use super::shrink::primitive_count;
 use super::verdict::{Outcome, Signature, Verdict};
 use super::HuntConfig;
-use crate::harness::suite::report::{json_object as object, json_value as j, xml_escape};
+use crate::harness::junit::{Failure, TestCase, TestSuite, TestSuites};
+use crate::harness::suite::report::{json_object as object, json_value as j};
 use crate::scene::Scene;
 
 /// A distinct failure, shrunk.
@@ -155,10 +156,7 @@ impl HuntReport {
             ("canvas", j(&c.canvas)),
             ("float32_exact", j(&c.float32_exact)),
             ("shrink_runs", j(&c.shrink_runs)),
-            (
-                "time_budget_ms",
-                c.budget.map_or_else(|| "null".to_string(), |b| j(&b.as_millis())),
-            ),
+            ("time_budget_ms", j(&c.budget.map(|b| b.as_millis()))),
             ("convention", self.convention_json()),
             ("model", j(c.model.name())),
             (
@@ -203,16 +201,22 @@ impl HuntReport {
     /// ```
     pub fn junit(&self, renderer: &str) -> String {
         let c = &self.config;
-        let failures = self.findings.len();
-        let counts = format!(
-            "tests=\"{}\" failures=\"{failures}\" errors=\"0\" skipped=\"0\"",
-            failures + 1
+        let mut cases: Vec<TestCase> = self.findings.iter().map(finding_case).collect();
+        let mut out = format!(
+            "{} identical, {} differ, {} failed, {} refused by the oracle, of {} cases run ({} requested)",
+            self.same, self.differing, self.failed, self.refused, self.cases, self.requested
         );
-        let mut x = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
-        let _ = writeln!(x, "<testsuites name=\"rasterproof hunt\" {counts}>");
-        let _ = writeln!(x, "  <testsuite name=\"rasterproof hunt\" {counts}>");
-        x.push_str("    <properties>\n");
-        for (name, value) in [
+        if self.stopped_by_time {
+            out.push_str("; stopped by the time budget");
+        }
+        cases.push(TestCase {
+            classname: "rasterproof.hunt".to_string(),
+            name: "identical to the oracle".to_string(),
+            failure: None,
+            skipped: None,
+            system_out: Some(out),
+        });
+        let properties = [
             ("rasterproof", env!("CARGO_PKG_VERSION").to_string()),
             ("cmd", renderer.to_string()),
             ("seed", c.seed.to_string()),
@@ -223,55 +227,48 @@ impl HuntReport {
             ("stopped_by_time", self.stopped_by_time.to_string()),
             ("convention", c.overrides.apply(c.preset).to_string()),
             ("model", c.model.name().to_string()),
-        ] {
-            let _ = writeln!(
-                x,
-                "      <property name=\"{name}\" value=\"{}\"/>",
-                xml_escape(&value, true)
-            );
+        ];
+        TestSuites {
+            name: "rasterproof hunt".to_string(),
+            suites: vec![TestSuite {
+                name: "rasterproof hunt".to_string(),
+                properties: properties.map(|(name, value)| (name.to_string(), value)).to_vec(),
+                cases,
+            }],
         }
-        x.push_str("    </properties>\n");
-        for f in &self.findings {
-            let description = f.signature.describe();
-            let _ = writeln!(
-                x,
-                "    <testcase classname=\"rasterproof.hunt\" name=\"{}\">",
-                xml_escape(&description, true)
-            );
-            let message = format!("{description}: {} cases, first case {}", f.cases, f.case);
-            let mut text = format!(
-                "{description}\nfirst case: {} ({} cases showed it)\nminimal scene ({} primitives, {}x{}, {} shrink runs):\n{}",
-                f.case,
-                f.cases,
-                primitive_count(&f.minimal),
-                f.minimal.width,
-                f.minimal.height,
-                f.runs,
-                f.minimal.to_json()
-            );
-            if let Verdict::Failed(failure) = &f.verdict {
-                let _ = write!(text, "\ntheir renderer on the minimal scene: {failure}");
-            }
-            let _ = writeln!(
-                x,
-                "      <failure type=\"finding\" message=\"{}\">{}</failure>",
-                xml_escape(&message, true),
-                xml_escape(&text, false)
-            );
-            x.push_str("    </testcase>\n");
-        }
-        let mut out = format!(
-            "{} identical, {} differ, {} failed, {} refused by the oracle, of {} cases run ({} requested)",
-            self.same, self.differing, self.failed, self.refused, self.cases, self.requested
-        );
-        if self.stopped_by_time {
-            out.push_str("; stopped by the time budget");
-        }
-        x.push_str("    <testcase classname=\"rasterproof.hunt\" name=\"identical to the oracle\">\n");
-        let _ = writeln!(x, "      <system-out>{}</system-out>", xml_escape(&out, false));
-        x.push_str("    </testcase>\n");
-        x.push_str("  </testsuite>\n</testsuites>\n");
-        x
+        .to_xml()
+    }
+}
+
+/// A finding as a failed JUnit test case named by its signature: the message counts its
+/// cases, the text gives its first case, the minimal scene and, when their renderer
+/// failed on that scene, how.
+fn finding_case(f: &HuntFinding) -> TestCase {
+    let description = f.signature.describe();
+    let message = format!("{description}: {} cases, first case {}", f.cases, f.case);
+    let mut text = format!(
+        "{description}\nfirst case: {} ({} cases showed it)\nminimal scene ({} primitives, {}x{}, {} shrink runs):\n{}",
+        f.case,
+        f.cases,
+        primitive_count(&f.minimal),
+        f.minimal.width,
+        f.minimal.height,
+        f.runs,
+        f.minimal.to_json()
+    );
+    if let Verdict::Failed(failure) = &f.verdict {
+        let _ = write!(text, "\ntheir renderer on the minimal scene: {failure}");
+    }
+    TestCase {
+        classname: "rasterproof.hunt".to_string(),
+        name: description,
+        failure: Some(Failure {
+            kind: "finding".to_string(),
+            message,
+            text,
+        }),
+        skipped: None,
+        system_out: None,
     }
 }
 

@@ -1,9 +1,11 @@
 //! A report as JUnit XML (`check --junit`), the format CI systems display: one test case
-//! per row of the table, failed when the row's model must hold and it has violations.
+//! per row of the table, failed when the row's model must hold and it has violations,
+//! written by the JUnit writer [`crate::harness::junit`].
 
 use std::fmt::Write as _;
 
 use super::Report;
+use crate::harness::junit::{Failure, TestCase, TestSuite, TestSuites};
 
 /// How many failing cases a test case's `<failure>` lists before "and N more".
 const LISTED: usize = 10;
@@ -26,68 +28,43 @@ impl Report {
     /// ```
     pub fn junit(&self) -> String {
         let t = self.tally();
-        let rows: Vec<_> = t.rows().collect();
-        let failed = rows
-            .iter()
-            .filter(|r| r.violations > 0 && t.row_must_hold(r.invariant, r.label))
-            .count();
-        let skipped = rows.iter().filter(|r| r.cases == 0).count();
-        let counts = format!(
-            "tests=\"{}\" failures=\"{failed}\" errors=\"0\" skipped=\"{skipped}\"",
-            rows.len()
-        );
-        let mut x = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
-        let _ = writeln!(x, "<testsuites name=\"rasterproof check\" {counts}>");
-        let _ = writeln!(
-            x,
-            "  <testsuite name=\"{}\" {counts}>",
-            attribute(&format!(
-                "rasterproof check, seed {}, shard {}",
-                self.seed(),
-                self.shards()
-            ))
-        );
-        x.push_str("    <properties>\n");
-        for (name, value) in [
+        let cases = t
+            .rows()
+            .map(|r| {
+                let of = format!("{} of {} cases", r.violations, r.cases);
+                let failed = r.violations > 0 && t.row_must_hold(r.invariant, r.label);
+                TestCase {
+                    classname: "rasterproof.check".to_string(),
+                    name: format!("{} / {}", r.invariant, r.label),
+                    failure: failed.then(|| Failure {
+                        kind: "violation".to_string(),
+                        message: format!("{of} violate {} on {}", r.invariant, r.label),
+                        text: self.failure_text(r.invariant, r.label),
+                    }),
+                    skipped: (r.cases == 0)
+                        .then(|| format!("all {} cases skipped (the check could not run)", r.skipped)),
+                    system_out: (!failed && r.cases > 0 && r.violations > 0)
+                        .then(|| format!("{of} violate it: a float model's measured trade, not a failure")),
+                }
+            })
+            .collect();
+        let properties = [
             ("rasterproof", self.rasterproof_version().to_string()),
             ("seed", self.seed().to_string()),
             ("cases", self.cases().to_string()),
             ("shard", self.shards().to_string()),
             ("cases_run", self.cases_run().to_string()),
             ("complete", self.is_complete().to_string()),
-        ] {
-            let _ = writeln!(x, "      <property name=\"{name}\" value=\"{}\"/>", attribute(&value));
+        ];
+        TestSuites {
+            name: "rasterproof check".to_string(),
+            suites: vec![TestSuite {
+                name: format!("rasterproof check, seed {}, shard {}", self.seed(), self.shards()),
+                properties: properties.map(|(name, value)| (name.to_string(), value)).to_vec(),
+                cases,
+            }],
         }
-        x.push_str("    </properties>\n");
-        for r in &rows {
-            let name = attribute(&format!("{} / {}", r.invariant, r.label));
-            let _ = write!(x, "    <testcase classname=\"rasterproof.check\" name=\"{name}\"");
-            let of = format!("{} of {} cases", r.violations, r.cases);
-            if r.violations > 0 && t.row_must_hold(r.invariant, r.label) {
-                let message = format!("{of} violate {} on {}", r.invariant, r.label);
-                let _ = write!(
-                    x,
-                    ">\n      <failure type=\"violation\" message=\"{}\">",
-                    attribute(&message)
-                );
-                x.push_str(&text(&self.failure_text(r.invariant, r.label)));
-                x.push_str("</failure>\n    </testcase>\n");
-            } else if r.cases == 0 {
-                let message = format!("all {} cases skipped (the check could not run)", r.skipped);
-                let _ = writeln!(
-                    x,
-                    ">\n      <skipped message=\"{}\"/>\n    </testcase>",
-                    attribute(&message)
-                );
-            } else if r.violations > 0 {
-                let out = format!("{of} violate it: a float model's measured trade, not a failure");
-                let _ = writeln!(x, ">\n      <system-out>{}</system-out>\n    </testcase>", text(&out));
-            } else {
-                x.push_str("/>\n");
-            }
-        }
-        x.push_str("  </testsuite>\n</testsuites>\n");
-        x
+        .to_xml()
     }
 
     /// The first failing cases of the row (`invariant`, `label`): case, explanation and
@@ -110,55 +87,5 @@ impl Report {
             let _ = writeln!(s, "and {} more", mine.len() - LISTED);
         }
         s
-    }
-}
-
-/// `s` as XML character data.
-fn text(s: &str) -> String {
-    escape(s, false)
-}
-
-/// `s` as an XML attribute value between double quotes (line breaks and tabs kept as
-/// character references, which attribute normalisation would otherwise turn into spaces).
-fn attribute(s: &str) -> String {
-    escape(s, true)
-}
-
-/// `s` as XML: character data, or (`attribute`) an attribute value between double quotes
-/// (line breaks and tabs as character references); characters XML 1.0 cannot hold become
-/// U+FFFD. Shared with `hunt`'s JUnit file.
-pub(crate) fn escape(s: &str, attribute: bool) -> String {
-    let mut out = String::with_capacity(s.len());
-    for c in s.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&apos;"),
-            '\n' if attribute => out.push_str("&#10;"),
-            '\r' => out.push_str("&#13;"),
-            '\t' if attribute => out.push_str("&#9;"),
-            '\n' | '\t' => out.push(c),
-            // XML 1.0 holds no other control character, not even as a reference.
-            c if u32::from(c) < 0x20 || c == '\u{FFFE}' || c == '\u{FFFF}' => out.push('\u{FFFD}'),
-            c => out.push(c),
-        }
-    }
-    out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn escape_covers_markup_quotes_and_control_characters() {
-        assert_eq!(
-            text("a < b && c > \"d\" 'e'"),
-            "a &lt; b &amp;&amp; c &gt; &quot;d&quot; &apos;e&apos;"
-        );
-        assert_eq!(text("x\ny\tz\u{1}\r"), "x\ny\tz\u{FFFD}&#13;");
-        assert_eq!(attribute("x\ny\tz"), "x&#10;y&#9;z");
     }
 }

@@ -48,7 +48,6 @@ mod reason;
 mod tests;
 
 pub(crate) use json::{j as json_value, object as json_object};
-pub(crate) use junit::escape as xml_escape;
 pub use reason::reason_of;
 
 use std::collections::BTreeMap;
