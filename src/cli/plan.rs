@@ -5,8 +5,7 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use rasterproof::model::plan::{plan_scene, ScenePlan};
-use serde_json::{json, Value};
+use rasterproof::model::plan::plan_scene;
 
 use super::OutputFormat;
 
@@ -49,68 +48,8 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let (name, scene, target) = super::load_scene(&o.scene, o.preset.as_deref())?;
     let plan = plan_scene(model, &scene.primitives(), &target).map_err(|e| format!("{name}: {e} (model {model})"))?;
     match o.format {
-        OutputFormat::Text => super::print_stdout(&text(&name, &target.convention.to_string(), &plan))?,
-        OutputFormat::Json => super::print_stdout(&json(&name, &target.convention.to_string(), &plan).to_string())?,
+        OutputFormat::Text => super::print_stdout(&plan.to_text(&name, &target.convention.to_string()))?,
+        OutputFormat::Json => super::print_stdout(&plan.to_json(&name, &target.convention.to_string()))?,
     }
     Ok(ExitCode::SUCCESS)
-}
-
-fn text(name: &str, convention: &str, plan: &ScenePlan) -> String {
-    let mut s = format!("{name}: model {}, {convention}\n", plan.model);
-    for p in &plan.primitives {
-        let what = match &p.plan {
-            Some(plan) => plan.to_string(),
-            None => "not planned (covers nothing, or a Bresenham line)".into(),
-        };
-        s.push_str(&format!("{} {} (id {}): {what}\n", p.kind, p.index, p.id));
-    }
-    s.push_str(&format!("summary: {}\n", plan.summary()));
-    s.push_str("fixed-width models:\n");
-    for v in &plan.fixed_width {
-        let verdict = match &v.broken_by {
-            None => "exact for this scene".to_string(),
-            Some(why) => format!("not exact (or not proven): {why}"),
-        };
-        s.push_str(&format!("  {:<9} {verdict}\n", v.model.name()));
-    }
-    s.pop();
-    s
-}
-
-fn json(name: &str, convention: &str, plan: &ScenePlan) -> Value {
-    let primitives: Vec<Value> = plan
-        .primitives
-        .iter()
-        .map(|p| match &p.plan {
-            Some(q) => json!({
-                "kind": p.kind,
-                "index": p.index,
-                "id": p.id,
-                "width": q.width.name(),
-                "bound": q.bound.value.to_string(),
-                "bound_bits": q.bound.bits(),
-                "bound_at": q.bound.what,
-                "scale": q.scale.to_string(),
-            }),
-            None => json!({"kind": p.kind, "index": p.index, "id": p.id, "width": null}),
-        })
-        .collect();
-    let by_width: serde_json::Map<String, Value> = plan
-        .by_width()
-        .into_iter()
-        .map(|(w, n)| (w.name().to_string(), json!(n)))
-        .collect();
-    let fixed: Vec<Value> = plan
-        .fixed_width
-        .iter()
-        .map(|v| json!({"model": v.model.name(), "exact": v.exact, "broken_by": v.broken_by}))
-        .collect();
-    json!({
-        "scene": name,
-        "model": plan.model.name(),
-        "convention": convention,
-        "primitives": primitives,
-        "by_width": by_width,
-        "fixed_width": fixed,
-    })
 }

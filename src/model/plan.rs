@@ -17,6 +17,8 @@
 
 use std::collections::BTreeMap;
 
+use serde_json::{json, Value};
+
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
@@ -74,6 +76,74 @@ impl ScenePlan {
     /// One line: see [`summary`].
     pub fn summary(&self) -> String {
         summary(&self.primitives)
+    }
+
+    /// The plan for a person (`rasterproof plan`): a line per primitive (its width, bound
+    /// and scale, or why it is not planned), the summary, and each fixed-width model's
+    /// verdict. `name` names the scene and `convention` the convention it was planned under.
+    pub fn to_text(&self, name: &str, convention: &str) -> String {
+        let plan = self;
+        let mut s = format!("{name}: model {}, {convention}\n", plan.model);
+        for p in &plan.primitives {
+            let what = match &p.plan {
+                Some(plan) => plan.to_string(),
+                None => "not planned (covers nothing, or a Bresenham line)".into(),
+            };
+            s.push_str(&format!("{} {} (id {}): {what}\n", p.kind, p.index, p.id));
+        }
+        s.push_str(&format!("summary: {}\n", plan.summary()));
+        s.push_str("fixed-width models:\n");
+        for v in &plan.fixed_width {
+            let verdict = match &v.broken_by {
+                None => "exact for this scene".to_string(),
+                Some(why) => format!("not exact (or not proven): {why}"),
+            };
+            s.push_str(&format!("  {:<9} {verdict}\n", v.model.name()));
+        }
+        s.pop();
+        s
+    }
+
+    /// The plan as one JSON object (`rasterproof plan --format json`; the schema is in
+    /// docs/cli.md, `plan`).
+    pub fn to_json(&self, name: &str, convention: &str) -> String {
+        let plan = self;
+        let primitives: Vec<Value> = plan
+            .primitives
+            .iter()
+            .map(|p| match &p.plan {
+                Some(q) => json!({
+                    "kind": p.kind,
+                    "index": p.index,
+                    "id": p.id,
+                    "width": q.width.name(),
+                    "bound": q.bound.value.to_string(),
+                    "bound_bits": q.bound.bits(),
+                    "bound_at": q.bound.what,
+                    "scale": q.scale.to_string(),
+                }),
+                None => json!({"kind": p.kind, "index": p.index, "id": p.id, "width": null}),
+            })
+            .collect();
+        let by_width: serde_json::Map<String, Value> = plan
+            .by_width()
+            .into_iter()
+            .map(|(w, n)| (w.name().to_string(), json!(n)))
+            .collect();
+        let fixed: Vec<Value> = plan
+            .fixed_width
+            .iter()
+            .map(|v| json!({"model": v.model.name(), "exact": v.exact, "broken_by": v.broken_by}))
+            .collect();
+        json!({
+            "scene": name,
+            "model": plan.model.name(),
+            "convention": convention,
+            "primitives": primitives,
+            "by_width": by_width,
+            "fixed_width": fixed,
+        })
+        .to_string()
     }
 }
 
