@@ -513,3 +513,58 @@ fn help_states_exit_codes_and_the_exact_models() {
         "{help}"
     );
 }
+
+/// `plan` lists every primitive in id order (triangles first, then lines), in both
+/// formats: the triangle is planned in some width, a Bresenham line is not planned (it
+/// runs in i64 whatever the plan), and the JSON says the same as the text.
+#[test]
+fn plan_lists_primitives_in_id_order_in_text_and_json() {
+    let dir = tempdir::Dir::new("plan");
+    let scene = write(
+        &dir,
+        "s.json",
+        r#"{"width": 8, "height": 8,
+            "lines": [{"from": [0, 0], "to": [7, 3], "rule": "bresenham"}],
+            "triangles": [{"v": [[0, 0], [4, 0], [0, 4]]}]}"#,
+    );
+    let run = |format: &str| {
+        let out = bin()
+            .args(["plan", scene.to_str().unwrap(), "--format", format])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let text = run("text");
+    let lines: Vec<&str> = text.lines().collect();
+    assert!(lines[0].ends_with("model exact-snapped, preset d3d11 (tie rule top-left, pixel centre 0.5, 8 subpixel bits, rounding nearest-even)"), "{text}");
+    assert!(lines[1].starts_with("triangle 0 (id 0): "), "{text}");
+    assert!(!lines[1].contains("not planned"), "{text}");
+    assert_eq!(
+        lines[2], "line 0 (id 1): not planned (covers nothing, or a Bresenham line)",
+        "{text}"
+    );
+    assert!(lines[3].starts_with("summary: "), "{text}");
+    assert_eq!(lines[4], "fixed-width models:", "{text}");
+    let json: serde_json::Value = serde_json::from_str(&run("json")).unwrap();
+    let prims = json["primitives"].as_array().unwrap();
+    assert_eq!(prims.len(), 2);
+    assert_eq!(
+        (prims[0]["kind"].as_str(), prims[0]["id"].as_u64()),
+        (Some("triangle"), Some(0))
+    );
+    assert!(prims[0]["width"].is_string(), "{json}");
+    assert_eq!(
+        (prims[1]["kind"].as_str(), prims[1]["id"].as_u64()),
+        (Some("line"), Some(1))
+    );
+    assert!(prims[1]["width"].is_null(), "{json}");
+    assert_eq!(json["model"], "exact-snapped");
+    let planned: u64 = json["by_width"]
+        .as_object()
+        .unwrap()
+        .values()
+        .map(|n| n.as_u64().unwrap())
+        .sum();
+    assert_eq!(planned, 1, "{json}");
+}

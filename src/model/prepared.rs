@@ -325,19 +325,11 @@ impl PreparedScene {
         }
     }
 
-    /// Every primitive's plan, in id order (see [`crate::model::plan`]): lines first, then
-    /// the triangles (clipped ones as their clipped polygons), then the polygons and the
+    /// Every primitive's plan, in id order (see [`crate::model::plan`]): the triangles
+    /// (clipped ones as their clipped polygons), then the lines, the polygons and the
     /// clip-space triangles.
     pub fn plans(&self) -> Vec<PrimitivePlan> {
         let mut out = Vec::new();
-        for (k, l) in self.lines.iter().enumerate() {
-            out.push(PrimitivePlan {
-                kind: "line",
-                index: k,
-                id: id(self.first_line + k),
-                plan: l.plan().cloned(),
-            });
-        }
         match &self.clipped_triangles {
             None => {
                 for k in 0..self.triangles.len() {
@@ -359,6 +351,14 @@ impl PreparedScene {
                     });
                 }
             }
+        }
+        for (k, l) in self.lines.iter().enumerate() {
+            out.push(PrimitivePlan {
+                kind: "line",
+                index: k,
+                id: id(self.first_line + k),
+                plan: l.plan().cloned(),
+            });
         }
         for (k, p) in self.polygons.iter().enumerate() {
             let (kind, index) = if k < self.scene_polygons {
