@@ -82,18 +82,17 @@ impl ScenePlan {
     /// and scale, or why it is not planned), the summary, and each fixed-width model's
     /// verdict. `name` names the scene and `convention` the convention it was planned under.
     pub fn to_text(&self, name: &str, convention: &str) -> String {
-        let plan = self;
-        let mut s = format!("{name}: model {}, {convention}\n", plan.model);
-        for p in &plan.primitives {
+        let mut s = format!("{name}: model {}, {convention}\n", self.model);
+        for p in &self.primitives {
             let what = match &p.plan {
-                Some(plan) => plan.to_string(),
+                Some(q) => q.to_string(),
                 None => "not planned (covers nothing, or a Bresenham line)".into(),
             };
             s.push_str(&format!("{} {} (id {}): {what}\n", p.kind, p.index, p.id));
         }
-        s.push_str(&format!("summary: {}\n", plan.summary()));
+        s.push_str(&format!("summary: {}\n", self.summary()));
         s.push_str("fixed-width models:\n");
-        for v in &plan.fixed_width {
+        for v in &self.fixed_width {
             let verdict = match &v.broken_by {
                 None => "exact for this scene".to_string(),
                 Some(why) => format!("not exact (or not proven): {why}"),
@@ -107,8 +106,7 @@ impl ScenePlan {
     /// The plan as one JSON object (`rasterproof plan --format json`; the schema is in
     /// docs/cli.md, `plan`).
     pub fn to_json(&self, name: &str, convention: &str) -> String {
-        let plan = self;
-        let primitives: Vec<Value> = plan
+        let primitives: Vec<Value> = self
             .primitives
             .iter()
             .map(|p| match &p.plan {
@@ -125,19 +123,19 @@ impl ScenePlan {
                 None => json!({"kind": p.kind, "index": p.index, "id": p.id, "width": null}),
             })
             .collect();
-        let by_width: serde_json::Map<String, Value> = plan
+        let by_width: serde_json::Map<String, Value> = self
             .by_width()
             .into_iter()
             .map(|(w, n)| (w.name().to_string(), json!(n)))
             .collect();
-        let fixed: Vec<Value> = plan
+        let fixed: Vec<Value> = self
             .fixed_width
             .iter()
             .map(|v| json!({"model": v.model.name(), "exact": v.exact, "broken_by": v.broken_by}))
             .collect();
         json!({
             "scene": name,
-            "model": plan.model.name(),
+            "model": self.model.name(),
             "convention": convention,
             "primitives": primitives,
             "by_width": by_width,
