@@ -9,7 +9,7 @@
 //! - `dda f32/f64 walk`: `dda::walk_f32/f64` counting pixels; `dda f32/f64 pixels (Vec)`:
 //!   `dda::pixels_f32/f64`, each line's pixels into a fresh `Vec`;
 //! - `bresenham draw`: ours into a `CountBuffer` (pixels on the canvas only);
-//! - `diamond fixed`: `diamond::draw` of the same endpoints (pixel centres, 8 subpixel
+//! - `diamond fixed`: `diamond::rasterize` of the same endpoints (pixel centres, 8 subpixel
 //!   bits) into a `CountBuffer` (pixels drawn: on the canvas, last pixel excluded);
 //! - `exact bresenham`: the exact reference `exact::resolve(&exact::ideal(..))` on the
 //!   first 1000 lines only (its cost per pixel does not depend on the workload size).
@@ -96,13 +96,13 @@ fn exact_count(ls: &[([i64; 2], [i64; 2])]) -> u64 {
 
 fn bresenham_draw(ls: &[([i64; 2], [i64; 2])], target: &Target, sink: &mut CountBuffer) {
     for (k, &(a, b)) in ls.iter().enumerate() {
-        bresenham::draw(a, b, BresenhamTie::Stay, k as u32, target, sink);
+        bresenham::rasterize(a, b, BresenhamTie::Stay, k as u32, target, sink);
     }
 }
 
 fn diamond_draw(segs: &[FixedSegment], target: &Target, sink: &mut CountBuffer) {
     for (k, s) in segs.iter().enumerate() {
-        diamond::draw(s, k as u32, target, sink);
+        diamond::rasterize(s, k as u32, target, sink);
     }
 }
 

@@ -24,9 +24,9 @@ mod workloads;
 use workloads::{half_canvas, triangles};
 
 fn covered(model: Model, tris: &[Triangle], target: &Target) -> u64 {
-    let prepared = prepare(model, &Primitives::from_triangles(tris), target).unwrap();
+    let prepared = prepare(&Primitives::from_triangles(tris), target, model).unwrap();
     let mut sink = CountBuffer::new(target.width, target.height);
-    prepared.draw(target, &mut sink);
+    prepared.render(target, &mut sink);
     sink.total()
 }
 
@@ -50,7 +50,7 @@ fn bench_workload(
         let target = Target::new(side, side, Preset::D3d11.convention()).unwrap();
         let pixels = covered(model, tris, &target);
         group.throughput(Throughput::Elements(pixels));
-        let prepared = prepare(model, &Primitives::from_triangles(tris), &target).unwrap();
+        let prepared = prepare(&Primitives::from_triangles(tris), &target, model).unwrap();
         let mut sink = CountBuffer::new(side, side);
         let label = if is_exact {
             format!("{model} ({} tris, {side}px)", tris.len())
@@ -58,7 +58,7 @@ fn bench_workload(
             model.to_string()
         };
         group.bench_function(BenchmarkId::from_parameter(label), |b| {
-            b.iter(|| prepared.draw(&target, &mut sink));
+            b.iter(|| prepared.render(&target, &mut sink));
         });
     }
     group.finish();
@@ -106,11 +106,11 @@ fn bench_as_written(c: &mut Criterion, name: &str, side: u32, full: &[Triangle],
     ] {
         let pixels = covered(model, tris, &target);
         group.throughput(Throughput::Elements(pixels));
-        let prepared = prepare(model, &Primitives::from_triangles(tris), &target).unwrap();
+        let prepared = prepare(&Primitives::from_triangles(tris), &target, model).unwrap();
         let mut sink = CountBuffer::new(side, side);
         let label = format!("{model} ({} tris)", tris.len());
         group.bench_function(BenchmarkId::from_parameter(label), |b| {
-            b.iter(|| prepared.draw(&target, &mut sink));
+            b.iter(|| prepared.render(&target, &mut sink));
         });
     }
     group.finish();

@@ -21,7 +21,7 @@
 //! Triangle contenders (all on the `cts` preset's grid: 8 subpixel bits, half away from
 //! zero, top-left rule, sample at the pixel centre):
 //! - `crate fixed`, `crate scanline`, `crate exact-snapped`: the crate's models through
-//!   `prepare` (outside the timer) and `PreparedScene::draw` into [`Grid`], a
+//!   `prepare` (outside the timer) and `PreparedScene::render` into [`Grid`], a
 //!   `CoverageSink` whose `cover` and `cover_span` write through a row slice (a span of
 //!   at most eight pixels as one eight-byte add), `cover_mask` eight cells a time as one
 //!   `u64` and `cover_block` a block's row masks from one offset stepped by the row
@@ -46,7 +46,7 @@
 //!
 //! Line contenders (`crate *` and `line_drawing` skip pixels off the canvas one by one):
 //! - `crate fixed`: `Model::Fixed` on `Line`s with `LineRule::Bresenham(BresenhamTie::Stay)`
-//!   through `prepare` and `draw`; `crate bresenham::draw`: the same walk called directly;
+//!   through `prepare` and `draw`; `crate bresenham::rasterize`: the same walk called directly;
 //! - `line_drawing`: `line_drawing::Bresenham`, both ends included; it draws
 //!   `floor(k dy / dx)`, not the nearest pixel, so its pixels differ (its count does not
 //!   while both ends are on the canvas);
@@ -58,7 +58,7 @@
 //! Every table prints each contender's count; the crate models and the baselines must
 //! cover the same pixels (checked pixel for pixel against `baseline plain` on a `u32` grid
 //! before the timed runs, and each timed run's `u8` buffer against its own `u32` pass;
-//! lines: against `crate bresenham::draw`); tiny-skia's sampling is its own, so its
+//! lines: against `crate bresenham::rasterize`); tiny-skia's sampling is its own, so its
 //! count and the pixels where it differs are printed. "vs best" is the ratio of Mpix/s to
 //! the best peer or baseline of the workload.
 
@@ -541,7 +541,7 @@ fn clipline_draw<T: Cell>(ls: &[[i32; 4]], clip: &Clip<i32>, grid: &mut Grid<T>)
 /// The crate's Bresenham called directly.
 fn crate_bresenham_draw<T: Cell>(ls: &[Segment], tie: BresenhamTie, target: &Target, grid: &mut Grid<T>) {
     for (k, &(a, b)) in ls.iter().enumerate() {
-        bresenham::draw(a, b, tie, u32::try_from(k).expect("ids fit u32"), target, grid);
+        bresenham::rasterize(a, b, tie, u32::try_from(k).expect("ids fit u32"), target, grid);
     }
 }
 
@@ -600,7 +600,7 @@ impl<'a> Contender<'a> {
     /// Draws into `grid` (every job but tiny-skia's).
     fn draw<T: Cell>(&self, target: &Target, grid: &mut Grid<T>) {
         match &self.job {
-            Job::Prepared(p) => p.draw(target, grid),
+            Job::Prepared(p) => p.render(target, grid),
             Job::Plain(ts) => baseline_plain(ts, grid),
             Job::BranchFree(ts) => baseline_branch_free(ts, grid),
             Job::Blocks(ts) => baseline_blocks(ts, grid),
@@ -850,7 +850,7 @@ fn paint(blend_mode: BlendMode, alpha: u8) -> Paint<'static> {
 fn triangle_workload(title: &str, side: u32, tris: &[Triangle]) {
     let target = Target::new(side, side, Preset::Cts.convention()).expect("a valid target");
     let primitives = Primitives::from_triangles(tris);
-    let model = |m: Model| prepare(m, &primitives, &target).expect("the workload is inside every envelope");
+    let model = |m: Model| prepare(&primitives, &target, m).expect("the workload is inside every envelope");
     let snapped = snapped(tris);
     let paths = tiny_skia_paths(tris);
     let contenders = vec![
@@ -935,7 +935,7 @@ fn line_workload(title: &str, side: u32, ls: &[Segment]) {
             .collect(),
         ..Primitives::default()
     };
-    let fixed = prepare(Model::Fixed, &primitives, &target).expect("endpoints inside the envelope");
+    let fixed = prepare(&primitives, &target, Model::Fixed).expect("endpoints inside the envelope");
     let narrow = |v: i64| i32::try_from(v).expect("endpoints fit i32");
     let clip_ls: Vec<[i32; 4]> = ls
         .iter()
@@ -944,7 +944,7 @@ fn line_workload(title: &str, side: u32, ls: &[Segment]) {
     let clip = Clip::<i32>::from_size(side, side).expect("a valid clip");
     let contenders = vec![
         Contender::new("crate fixed (Line model)", Kind::Crate, Job::Prepared(fixed)),
-        Contender::new("crate bresenham::draw", Kind::Crate, Job::CrateBresenham(ls)),
+        Contender::new("crate bresenham::rasterize", Kind::Crate, Job::CrateBresenham(ls)),
         Contender::new("line_drawing Bresenham", Kind::Peer, Job::LineDrawing(ls)),
         Contender::new(
             "clipline line_b_proj",
@@ -997,7 +997,10 @@ fn line_workload(title: &str, side: u32, ls: &[Segment]) {
         ),
     );
     if rows[0].total != rows[1].total {
-        notes.insert(0, "MISMATCH: the Line model and bresenham::draw differ".to_string());
+        notes.insert(
+            0,
+            "MISMATCH: the Line model and bresenham::rasterize differ".to_string(),
+        );
     }
     print_table(title, &rows, &notes);
 }

@@ -43,11 +43,11 @@ fn prepare_polygons(model: Model, polygons: &[Polygon], target: &Target) -> Prep
         polygons: polygons.to_vec(),
         ..Primitives::default()
     };
-    prepare(model, &primitives, target).unwrap()
+    prepare(&primitives, target, model).unwrap()
 }
 
 fn fill_all(prepared: &PreparedScene, target: &Target, sink: &mut CountBuffer) {
-    prepared.draw(target, sink);
+    prepared.render(target, sink);
 }
 
 fn covered(prepared: &PreparedScene, target: &Target) -> u64 {

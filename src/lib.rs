@@ -31,7 +31,7 @@
 //! let (a, b, c, d) = (Point::from_ints(0, 0), Point::from_ints(4, 0), Point::from_ints(4, 4), Point::from_ints(0, 4));
 //! let mesh = [Triangle::new(a.clone(), b, c.clone()), Triangle::new(a, c, d)];
 //! let target = Target::new(4, 4, Preset::D3d11.convention()).unwrap();
-//! let coverage = render_triangles(Model::Fixed, &mesh, &target).unwrap();
+//! let coverage = render_triangles(&mesh, &target, Model::Fixed).unwrap();
 //! assert_eq!(coverage.covered_pixels(), 16);
 //! assert_eq!(coverage.double_covered().count(), 0);
 //! ```
@@ -41,7 +41,7 @@
 //! | to | call | feature |
 //! |---|---|---|
 //! | read a scene file (exact numbers, errors naming file, field, value) | [`parse_scene`] | |
-//! | render it with a model | [`render`]`(model, &scene.primitives(), &target)` ([`render_triangles`] for a list of triangles; [`prepare`] once and [`PreparedScene::draw`] many times) | |
+//! | render it with a model | [`render`]`(&scene.primitives(), &target, model)` ([`render_triangles`] for a list of triangles; [`prepare`] once and [`PreparedScene::render`] many times) | |
 //! | plan it: per primitive, the cheapest arithmetic proven exact | [`plan_scene`] | |
 //! | compare another renderer's output ([`Theirs`]) with the exact answer, every differing pixel classified | [`compare()`] | |
 //! | explain one pixel exactly (sample, edges, values, flags) | [`explain_pixel`] | |
@@ -49,11 +49,18 @@
 //! | hunt: scenes another renderer (a closure `Fn(&Scene) -> Result<Theirs, _>`) gets wrong, shrunk | [`hunt()`] | `proptest` |
 //! | test your own triangle rasterizer (a closure) against the oracle | [`find_counterexample`] | `proptest` |
 //! | check an invariant on any coverage | `check::check_*` ([`check`]) | |
-//! | run the invariant suite (what `rasterproof check` runs) | [`harness::suite::Plan::run`] | `proptest` |
+//! | run the invariant suite (what `rasterproof check` runs) | [`harness::suite::SuiteConfig::run`] | `proptest` |
 //! | every model's speed and error side by side | `trade::run` | `trade` |
 //! | one primitive in one arithmetic | `tri::{exact, planned, fixed, scanline, float}`, `line::*`, `fill::polygon::*` | |
 //! | where a pixel's sample sits; which pixels a box covers | [`raster`] | |
 //! | clip exactly or in floats | [`clip`], [`clip::arithmetic::Clipper`] | |
+//!
+//! Every entry point takes its arguments in one order: the input (the scene's primitives
+//! and the target, then their output or renderer where there is one), then the options
+//! (the model, a configuration), then where the output goes (a sink, a progress callback);
+//! results are returned. One verb per operation: a primitive is *rasterized*
+//! (`tri::*::rasterize`, `line::*::rasterize`, `fill::polygon::rasterize*`), a scene is
+//! *rendered* with a model.
 //!
 //! The types these take and return are re-exported here too: [`Model`], [`Target`],
 //! [`Preset`], [`Point`], [`Triangle`], [`Polygon`], [`Scene`], [`Primitives`],

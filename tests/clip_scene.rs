@@ -185,14 +185,14 @@ fn a_primitive_touching_the_window_covers_nothing() {
         ..scene.clone()
     };
     assert_eq!(
-        render(Model::Exact, &alone.primitives(), &target)
+        render(&alone.primitives(), &target, Model::Exact)
             .unwrap()
             .covered_pixels(),
         3
     );
     for model in [Model::Exact, Model::ExactSnapped, Model::Fixed, Model::Scanline] {
         assert_eq!(
-            render(model, &scene.primitives(), &target).unwrap().covered_pixels(),
+            render(&scene.primitives(), &target, model).unwrap().covered_pixels(),
             0,
             "{model}"
         );
@@ -212,7 +212,7 @@ fn render_honours_clip() {
     scene.polygons.clear();
     scene.clip_space_triangles.clear();
     let target = scene.target().unwrap();
-    let exact = render(Model::Exact, &scene.primitives(), &target).unwrap();
+    let exact = render(&scene.primitives(), &target, Model::Exact).unwrap();
     assert_eq!(exact.covered_pixels(), 55);
     for model in [
         Model::ExactPlain,
@@ -224,7 +224,7 @@ fn render_honours_clip() {
         Model::Float64,
     ] {
         assert_eq!(
-            differing_pixels(&exact, &render(model, &scene.primitives(), &target).unwrap()),
+            differing_pixels(&exact, &render(&scene.primitives(), &target, model).unwrap()),
             vec![],
             "{model}"
         );
@@ -408,13 +408,13 @@ proptest! {
         scene.polygons.push(Polygon { fill_rule: FillRule::NonZero, ..poly });
         scene.clip = Some(window);
         let target = scene.target().unwrap();
-        let Ok(fixed) = render(Model::Fixed, &scene.primitives(), &target) else {
+        let Ok(fixed) = render(&scene.primitives(), &target, Model::Fixed) else {
             return Err(TestCaseError::reject("outside the envelope or not triangulable"));
         };
-        let exact = render(Model::ExactSnappedPlain, &scene.primitives(), &target).unwrap();
+        let exact = render(&scene.primitives(), &target, Model::ExactSnappedPlain).unwrap();
         prop_assert_eq!(differing_pixels(&exact, &fixed), vec![]);
-        prop_assert_eq!(differing_pixels(&exact, &render(Model::ExactSnapped, &scene.primitives(), &target).unwrap()), vec![]);
-        prop_assert_eq!(differing_pixels(&exact, &render(Model::Scanline, &scene.primitives(), &target).unwrap()), vec![]);
+        prop_assert_eq!(differing_pixels(&exact, &render(&scene.primitives(), &target, Model::ExactSnapped).unwrap()), vec![]);
+        prop_assert_eq!(differing_pixels(&exact, &render(&scene.primitives(), &target, Model::Scanline).unwrap()), vec![]);
     }
 
     /// Cyrus-Beck on a rectangle's half-planes keeps exactly what Cohen-Sutherland keeps.

@@ -48,7 +48,7 @@ fn float_models_fill_the_pentagram_as_derived_by_hand() {
     let star = pts(&[(50, 0), (79, 90), (2, 35), (98, 35), (21, 90)]);
     let target = Target::new(100, 100, Preset::D3d11.convention()).unwrap();
     for model in [Model::Float32, Model::Float64, Model::Float32Naive, Model::Float64Naive] {
-        let fill = |rule| render(model, &polygons(vec![Polygon::new(star.clone(), rule)]), &target).unwrap();
+        let fill = |rule| render(&polygons(vec![Polygon::new(star.clone(), rule)]), &target, model).unwrap();
         let (nonzero, even_odd) = (fill(FillRule::NonZero), fill(FillRule::EvenOdd));
         assert_eq!(row(&nonzero, 10), (47..=52).collect::<Vec<_>>(), "{model}");
         assert_eq!(row(&even_odd, 10), (47..=52).collect::<Vec<_>>(), "{model}");
@@ -79,13 +79,13 @@ fn samples_on_polygon_edges_follow_each_rule() {
             (1..=4).collect()
         };
         for model in [Model::Exact, Model::Float32, Model::Float64] {
-            let c = render(model, &polygons(vec![sq.clone()]), &target).unwrap();
+            let c = render(&polygons(vec![sq.clone()]), &target, model).unwrap();
             for y in 0..8 {
                 let expected: Vec<u32> = if rows.contains(&y) { (1..=4).collect() } else { vec![] };
                 assert_eq!(row(&c, y), expected, "{model} {preset:?} row {y}");
             }
         }
-        let naive = render(Model::Float64Naive, &polygons(vec![sq.clone()]), &target).unwrap();
+        let naive = render(&polygons(vec![sq.clone()]), &target, Model::Float64Naive).unwrap();
         assert_eq!(naive.covered_pixels(), 16);
         assert_eq!(row(&naive, 1), (1..=4).collect::<Vec<_>>(), "naive keeps the top row");
         assert!(row(&naive, 5).is_empty(), "naive drops the bottom row");
@@ -103,8 +103,8 @@ proptest! {
         preset in prop::sample::select(vec![Preset::D3d11, Preset::Gl]),
     ) {
         let target = Target::new(32, 32, preset.convention()).unwrap();
-        let exact = render(Model::ExactPlain, &polygons(vec![poly.clone()]), &target).unwrap();
-        let float = render(Model::Float64, &polygons(vec![poly]), &target).unwrap();
+        let exact = render(&polygons(vec![poly.clone()]), &target, Model::ExactPlain).unwrap();
+        let float = render(&polygons(vec![poly]), &target, Model::Float64).unwrap();
         prop_assert_eq!(differing_pixels(&exact, &float), vec![]);
     }
 
@@ -119,8 +119,8 @@ proptest! {
         let mut poly = Polygon::new(pts(&v), rule);
         poly.holes.push(pts(&hole));
         let target = Target::new(32, 32, preset.convention()).unwrap();
-        let exact = render(Model::ExactPlain, &polygons(vec![poly.clone()]), &target).unwrap();
-        let float = render(Model::Float32, &polygons(vec![poly]), &target).unwrap();
+        let exact = render(&polygons(vec![poly.clone()]), &target, Model::ExactPlain).unwrap();
+        let float = render(&polygons(vec![poly]), &target, Model::Float32).unwrap();
         prop_assert_eq!(differing_pixels(&exact, &float), vec![]);
     }
 
@@ -142,9 +142,9 @@ proptest! {
             rule: LineRule::Diamond,
         };
         let target = Target::new(32, 32, Preset::D3d11.convention()).unwrap();
-        let exact = render(Model::ExactPlain, &lines(vec![line.clone()]), &target).unwrap();
+        let exact = render(&lines(vec![line.clone()]), &target, Model::ExactPlain).unwrap();
         for model in [Model::Float32, Model::Float64] {
-            let float = render(model, &lines(vec![line.clone()]), &target).unwrap();
+            let float = render(&lines(vec![line.clone()]), &target, model).unwrap();
             prop_assert_eq!(differing_pixels(&exact, &float), vec![], "{}", model);
         }
     }
@@ -163,7 +163,7 @@ fn a_diamond_line_through_pixel_centres_by_hand() {
     };
     let target = Target::new(8, 8, Preset::D3d11.convention()).unwrap();
     for model in Model::ALL {
-        let c = render(model, &lines(vec![line.clone()]), &target).unwrap();
+        let c = render(&lines(vec![line.clone()]), &target, model).unwrap();
         assert_eq!(row(&c, 0), vec![0, 1, 2, 3], "{model}");
         assert_eq!(c.covered_pixels(), 4, "{model}");
     }
@@ -183,7 +183,7 @@ fn a_diamond_line_ending_on_a_top_corner_by_hand() {
     };
     let target = Target::new(4, 4, Preset::D3d11.convention()).unwrap();
     for model in Model::ALL {
-        let c = render(model, &lines(vec![line.clone()]), &target).unwrap();
+        let c = render(&lines(vec![line.clone()]), &target, model).unwrap();
         let got: Vec<(u32, u32)> = c.iter().map(|(x, y, _)| (x, y)).collect();
         assert_eq!(got, vec![(0, 0), (0, 1), (0, 2)], "{model}");
     }
@@ -217,9 +217,9 @@ fn every_model_renders_a_mixed_scene() {
         ..Primitives::default()
     };
     let target = Target::new(32, 32, Preset::D3d11.convention()).unwrap();
-    let exact = render(Model::Exact, &scene, &target).unwrap();
+    let exact = render(&scene, &target, Model::Exact).unwrap();
     for model in Model::ALL {
-        let c = render(model, &scene, &target).unwrap();
+        let c = render(&scene, &target, model).unwrap();
         assert_eq!(c.owners(1, 1), &[0], "{model}");
         assert_eq!(c.owners(5, 12), &[1], "{model}");
         assert_eq!(c.owners(5, 14), &[2], "{model}");
@@ -250,7 +250,7 @@ fn float_range_errors_name_the_coordinate_and_value() {
         Point::from_ints(4, 0),
         Point::new(BigRational::from_integer(4.into()), big(400)),
     );
-    let err = render(Model::Float64, &Primitives::from_triangles(&[tri]), &target)
+    let err = render(&Primitives::from_triangles(&[tri]), &target, Model::Float64)
         .unwrap_err()
         .to_string();
     assert!(
@@ -264,7 +264,7 @@ fn float_range_errors_name_the_coordinate_and_value() {
         to: Point::new(big(39), BigRational::from_integer(1.into())),
         rule: LineRule::Diamond,
     };
-    let err = render(Model::Float32, &lines(vec![line.clone()]), &target)
+    let err = render(&lines(vec![line.clone()]), &target, Model::Float32)
         .unwrap_err()
         .to_string();
     assert!(
@@ -273,14 +273,14 @@ fn float_range_errors_name_the_coordinate_and_value() {
         ),
         "{err}"
     );
-    assert!(render(Model::Float64, &lines(vec![line]), &target).is_ok());
+    assert!(render(&lines(vec![line]), &target, Model::Float64).is_ok());
     let mut poly = Polygon::new(pts(&[(0, 0), (8, 0), (8, 8)]), FillRule::NonZero);
     poly.holes.push(vec![
         Point::from_ints(1, 1),
         Point::new(big(39), BigRational::from_integer(1.into())),
         Point::from_ints(2, 2),
     ]);
-    let err = render(Model::Float32Naive, &polygons(vec![poly]), &target)
+    let err = render(&polygons(vec![poly]), &target, Model::Float32Naive)
         .unwrap_err()
         .to_string();
     assert!(err.starts_with("polygons[0].holes[0][1].x: "), "{err}");

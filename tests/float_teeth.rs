@@ -21,11 +21,11 @@ fn count_violations(meshes: &[Mesh], side: u32, model: Model, reference: Model) 
     let target = Target::new(side, side, Preset::D3d11.convention()).unwrap();
     let (mut watertight, mut agreement) = (0, 0);
     for m in meshes {
-        let cov = render_triangles(model, &m.triangles, &target).unwrap();
+        let cov = render_triangles(&m.triangles, &target, model).unwrap();
         if check_watertight(&m.triangles, &m.outline, &cov, &target).is_err() {
             watertight += 1;
         }
-        let r = render_triangles(reference, &m.triangles, &target).unwrap();
+        let r = render_triangles(&m.triangles, &target, reference).unwrap();
         if check_agreement(reference.name(), &r, model.name(), &cov, &m.triangles, &target).is_err() {
             agreement += 1;
         }

@@ -27,9 +27,9 @@ fn fuzz_case_02_float_verdict_on_a_coordinate_beyond_f32() {
     )
     .unwrap();
     let (primitives, target) = (scene.primitives(), scene.target().unwrap());
-    let plan = plan_scene(Model::Exact, &primitives, &target).unwrap();
+    let plan = plan_scene(&primitives, &target, Model::Exact).unwrap();
     for v in &plan.fixed_width {
-        let refused = render(v.model, &primitives, &target).err();
+        let refused = render(&primitives, &target, v.model).err();
         assert_eq!(v.exact, refused.is_none(), "{}: {:?}", v.model, v.broken_by);
         if let Some(e) = refused {
             assert_eq!(v.broken_by.as_deref(), Some(e.to_string().as_str()), "{}", v.model);
@@ -46,8 +46,8 @@ fn fuzz_case_02_float_verdict_on_a_coordinate_beyond_f32() {
     let float64 = plan.fixed_width.iter().find(|v| v.model == Model::Float64).unwrap();
     assert!(float64.exact, "{:?}", float64.broken_by);
     assert_eq!(
-        render(Model::Float64, &primitives, &target).unwrap(),
-        render(Model::Exact, &primitives, &target).unwrap()
+        render(&primitives, &target, Model::Float64).unwrap(),
+        render(&primitives, &target, Model::Exact).unwrap()
     );
 }
 

@@ -13,7 +13,7 @@ use std::collections::BTreeSet;
 use std::fs;
 use std::path::Path;
 
-use rasterproof::harness::suite::Report;
+use rasterproof::harness::suite::SuiteReport;
 use rasterproof::scene::parse_scene_bytes;
 
 fn targets() -> BTreeSet<String> {
@@ -107,7 +107,7 @@ fn scene_seeds_are_scenes_and_report_seeds_are_reports() {
     }
     for (path, bytes) in seeds("check_report") {
         let text = String::from_utf8(bytes).expect("UTF-8");
-        Report::from_json(&text, &path).unwrap_or_else(|e| panic!("{e}"));
+        SuiteReport::from_json(&text, &path).unwrap_or_else(|e| panic!("{e}"));
     }
     for (path, bytes) in seeds("flood_fill").iter().chain(&seeds("theirs_read")) {
         if path.ends_with(".png") {

@@ -49,7 +49,7 @@ fn count_by_columns(l: &BigRational, t: &BigRational, r: &BigRational, b: &BigRa
 fn seed003_exact_matches_a_column_count() {
     let scene = parse_scene(SEED003, "seed003.json").unwrap();
     let target = scene.target().unwrap();
-    let cov = render_triangles(Model::Exact, &scene.triangles(), &target).unwrap();
+    let cov = render_triangles(&scene.triangles(), &target, Model::Exact).unwrap();
     let expected = count_by_columns(
         &q(148_593, 1000),
         &q(685_928, 10_000),
@@ -71,7 +71,7 @@ fn seed003_snapped_matches_the_hand_count() {
     let scene = parse_scene(SEED003, "seed003.json").unwrap();
     let target = scene.target().unwrap();
     for model in [Model::ExactSnapped, Model::Fixed] {
-        let cov = render_triangles(model, &scene.triangles(), &target).unwrap();
+        let cov = render_triangles(&scene.triangles(), &target, model).unwrap();
         assert_eq!(cov.covered_pixels(), 341 * 342 / 2, "{model}");
         assert_eq!(cov.owners(149, 70), &[0], "{model}: first pixel of column 149");
         assert!(
@@ -94,7 +94,7 @@ fn seed003_snapped_matches_the_hand_count() {
 fn seed003_colours_sum_to_255() {
     let scene = parse_scene(SEED003, "seed003.json").unwrap();
     let target = scene.target().unwrap();
-    let prepared = prepare(Model::Exact, &scene.primitives(), &target).unwrap();
+    let prepared = prepare(&scene.primitives(), &target, Model::Exact).unwrap();
     let colours = scene.triangles[0].colours.unwrap();
     for (x, y) in [(149, 410), (300, 300), (489, 409), (150, 72)] {
         let c = prepared.shade(0, &colours, x, y, &target);
@@ -116,8 +116,8 @@ fn seed003_float32_differs_only_near_edges() {
     let scene = parse_scene(SEED003, "seed003.json").unwrap();
     let target = scene.target().unwrap();
     let tris = scene.triangles();
-    let exact = render_triangles(Model::Exact, &tris, &target).unwrap();
-    let float = render_triangles(Model::Float32, &tris, &target).unwrap();
+    let exact = render_triangles(&tris, &target, Model::Exact).unwrap();
+    let float = render_triangles(&tris, &target, Model::Float32).unwrap();
     let diffs = rasterproof::check::differing_pixels(&exact, &float);
     let t = &tris[0];
     for d in &diffs {
@@ -131,8 +131,8 @@ fn seed003_float32_differs_only_near_edges() {
         });
         assert!(near, "float32 differs at ({}, {}) far from every edge", d.x, d.y);
     }
-    let prepared_e = prepare(Model::Exact, &Primitives::from_triangles(&tris), &target).unwrap();
-    let prepared_f = prepare(Model::Float32, &Primitives::from_triangles(&tris), &target).unwrap();
+    let prepared_e = prepare(&Primitives::from_triangles(&tris), &target, Model::Exact).unwrap();
+    let prepared_f = prepare(&Primitives::from_triangles(&tris), &target, Model::Float32).unwrap();
     let colours = scene.triangles[0].colours.unwrap();
     let mut colour_diffs = 0;
     for (x, y, _) in exact.iter() {
@@ -179,7 +179,7 @@ fn square_diagonal_owned_once_by_hand() {
     for preset in [Preset::D3d11, Preset::Gl, Preset::Vulkan, Preset::Cts] {
         let target = Target::new(4, 4, preset.convention()).unwrap();
         for model in [Model::Exact, Model::ExactSnapped, Model::Fixed] {
-            let cov = render_triangles(model, &square(), &target).unwrap();
+            let cov = render_triangles(&square(), &target, model).unwrap();
             for (y, row) in SQUARE_OWNERS.iter().enumerate() {
                 for (x, owner) in row.iter().enumerate() {
                     assert_eq!(
@@ -208,7 +208,7 @@ fn square_anti_diagonal_by_hand() {
     for preset in [Preset::D3d11, Preset::Gl] {
         let target = Target::new(4, 4, preset.convention()).unwrap();
         for model in [Model::ExactSnapped, Model::Fixed] {
-            let cov = render_triangles(model, &mesh, &target).unwrap();
+            let cov = render_triangles(&mesh, &target, model).unwrap();
             for y in 0..4u32 {
                 for x in 0..4u32 {
                     let expected = if x + y >= 3 { 1 } else { 0 };
@@ -231,7 +231,7 @@ fn horizontal_shared_edge_follows_the_eps_squared_term() {
     for (preset, owner) in [(Preset::D3d11, 1u32), (Preset::Gl, 0u32)] {
         let target = Target::new(4, 4, preset.convention()).unwrap();
         for model in [Model::ExactSnapped, Model::Fixed] {
-            let cov = render_triangles(model, &[upper.clone(), lower.clone()], &target).unwrap();
+            let cov = render_triangles(&[upper.clone(), lower.clone()], &target, model).unwrap();
             // (1,1) and (2,1): well inside both apex spans; their samples (1.5,1.5), (2.5,1.5) are on the edge.
             for x in [1u32, 2] {
                 assert_eq!(cov.owners(x, 1), &[owner], "{model} {}", preset.name());
@@ -256,12 +256,12 @@ fn review_case_01_exact_diamond_line_at_i64_limits() {
         let s = parse_scene(&text, "s.json").unwrap();
         let target = s.target().unwrap();
         let c = render(
-            Model::Exact,
             &Primitives {
                 lines: s.lines.clone(),
                 ..Primitives::default()
             },
             &target,
+            Model::Exact,
         )
         .unwrap();
         // Only lines that cross the canvas cover anything; none of these is near row 0..3 of

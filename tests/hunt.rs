@@ -8,7 +8,7 @@ use assert_cmd::Command;
 use rasterproof::convention::AnyTieRule;
 use rasterproof::coverage::Coverage;
 use rasterproof::model::{render, Model};
-use rasterproof::oracle::hunt::{hunt, primitive_count, HuntConfig, Signature, Verdict};
+use rasterproof::oracle::hunt::{hunt, primitive_count, HuntConfig, HuntVerdict, Signature};
 use rasterproof::oracle::program::FailureKind;
 use rasterproof::oracle::{Format, PixelKind, ReasonClass, Theirs};
 use rasterproof::tri::planned::PlannedTriangle;
@@ -141,7 +141,7 @@ fn failing_programs_are_findings_and_bad_commands_exit_2() {
 
 /// The planned engine under the top-right tie rule for triangles (lines and polygons drawn
 /// honestly): a renderer wrong at ties only.
-fn top_right(s: &rasterproof::scene::Scene) -> Result<Theirs, rasterproof::oracle::program::Failure> {
+fn top_right(s: &rasterproof::scene::Scene) -> Result<Theirs, rasterproof::oracle::program::RenderFailure> {
     let target = s.target().unwrap();
     let mut c = Coverage::new(s.width, s.height);
     for (k, t) in s.triangles().iter().enumerate() {
@@ -156,7 +156,7 @@ fn top_right(s: &rasterproof::scene::Scene) -> Result<Theirs, rasterproof::oracl
         ..s.primitives()
     };
     let offset = u32::try_from(s.triangles.len()).unwrap();
-    for (x, y, ids) in render(Model::ExactSnapped, &rest, &target).unwrap().iter() {
+    for (x, y, ids) in render(&rest, &target, Model::ExactSnapped).unwrap().iter() {
         for id in ids {
             rasterproof::coverage::CoverageSink::cover(&mut c, x, y, id + offset);
         }
@@ -171,10 +171,10 @@ fn top_right(s: &rasterproof::scene::Scene) -> Result<Theirs, rasterproof::oracl
 fn a_closure_renderer_is_hunted_and_its_failures_shrunk() {
     let config = HuntConfig {
         cases: 32,
-        families: vec![rasterproof::oracle::hunt::Family::Mesh],
+        families: vec![rasterproof::oracle::hunt::SceneFamily::Mesh],
         ..HuntConfig::default()
     };
-    let report = hunt(&config, &top_right, 2, &|| {}).unwrap();
+    let report = hunt(&top_right, &config, 2, &|| {}).unwrap();
     assert!(report.differing > 0);
     assert!(!report.findings.is_empty());
     for f in &report.findings {
@@ -187,7 +187,7 @@ fn a_closure_renderer_is_hunted_and_its_failures_shrunk() {
             "{}",
             f.minimal.to_json()
         );
-        let Verdict::Differs(r) = &f.verdict else {
+        let HuntVerdict::Differs(r) = &f.verdict else {
             panic!("{:?}", f.verdict)
         };
         assert!(r.pixels.iter().any(|p| matches!(
@@ -640,22 +640,22 @@ fn bad_shard_time_and_output_options_exit_2() {
 #[test]
 fn a_time_limited_hunt_runs_the_first_cases_of_its_shard() {
     use rasterproof::harness::suite::Shard;
-    use rasterproof::oracle::hunt::{generate_scene, Family};
+    use rasterproof::oracle::hunt::{generate_scene, SceneFamily};
     let seen = std::sync::Mutex::new(Vec::new());
     let honest = |s: &rasterproof::scene::Scene| {
         seen.lock().unwrap().push(s.to_json());
         std::thread::sleep(std::time::Duration::from_millis(10));
-        let c = render(Model::ExactSnapped, &s.primitives(), &s.target().unwrap()).unwrap();
+        let c = render(&s.primitives(), &s.target().unwrap(), Model::ExactSnapped).unwrap();
         Ok(Theirs::from_coverage(&c, Format::Json))
     };
     let config = HuntConfig {
         cases: 600,
-        families: vec![Family::Mesh, Family::Delaunay],
+        families: vec![SceneFamily::Mesh, SceneFamily::Delaunay],
         shard: Shard::new(2, 3).unwrap(),
         budget: Some(std::time::Duration::from_millis(150)),
         ..HuntConfig::default()
     };
-    let report = hunt(&config, &honest, 2, &|| {}).unwrap();
+    let report = hunt(&honest, &config, 2, &|| {}).unwrap();
     assert_eq!(report.requested, 200);
     assert!(report.stopped_by_time && report.cases < 200, "{}", report.cases);
     assert_eq!(
@@ -683,15 +683,15 @@ fn a_time_limited_hunt_runs_the_first_cases_of_its_shard() {
 #[test]
 fn shards_of_a_closure_hunt_partition_it() {
     use rasterproof::harness::suite::Shard;
-    use rasterproof::oracle::hunt::Family;
+    use rasterproof::oracle::hunt::SceneFamily;
     let base = HuntConfig {
         cases: 30,
         seed: 11,
-        families: vec![Family::Mesh, Family::Delaunay, Family::Triangles],
+        families: vec![SceneFamily::Mesh, SceneFamily::Delaunay, SceneFamily::Triangles],
         shrink_runs: 100,
         ..HuntConfig::default()
     };
-    let whole = hunt(&base, &top_right, 1, &|| {}).unwrap();
+    let whole = hunt(&top_right, &base, 1, &|| {}).unwrap();
     assert!(!whole.findings.is_empty());
     let shards: Vec<_> = (1..=4)
         .map(|k| {
@@ -699,7 +699,7 @@ fn shards_of_a_closure_hunt_partition_it() {
                 shard: Shard::new(k, 4).unwrap(),
                 ..base.clone()
             };
-            hunt(&config, &top_right, usize::try_from(k).unwrap(), &|| {}).unwrap()
+            hunt(&top_right, &config, usize::try_from(k).unwrap(), &|| {}).unwrap()
         })
         .collect();
     assert_eq!(shards.iter().map(|r| r.cases).collect::<Vec<_>>(), [8, 8, 7, 7]);

@@ -49,7 +49,7 @@ fn ids_png_reads_back_as_the_coverage() {
 
     let parsed = parse_scene_bytes(SCENE.as_bytes(), "s.json").unwrap();
     let target = parsed.target().unwrap();
-    let coverage = render(Model::Fixed, &parsed.primitives(), &target).unwrap();
+    let coverage = render(&parsed.primitives(), &target, Model::Fixed).unwrap();
     let mut several = 0;
     for (x, y, p) in png.enumerate_pixels() {
         let [r, g, b, a] = p.0;
@@ -79,6 +79,6 @@ fn json_on_stdout_is_streamed_unchanged() {
         .unwrap();
     assert!(run.status.success());
     let parsed = parse_scene_bytes(SCENE.as_bytes(), "s.json").unwrap();
-    let coverage = render(Model::Fixed, &parsed.primitives(), &parsed.target().unwrap()).unwrap();
+    let coverage = render(&parsed.primitives(), &parsed.target().unwrap(), Model::Fixed).unwrap();
     assert_eq!(String::from_utf8(run.stdout).unwrap(), coverage.to_json() + "\n");
 }

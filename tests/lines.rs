@@ -124,12 +124,12 @@ fn zero_length_lines() {
     for model in [Model::Exact, Model::ExactSnapped, Model::Fixed] {
         assert_eq!(
             render(
-                model,
                 &Primitives {
                     lines: vec![point.clone()],
                     ..Primitives::default()
                 },
-                &target
+                &target,
+                model
             )
             .unwrap()
             .covered_pixels(),
@@ -147,21 +147,21 @@ fn diamond(a: (i64, i64, i64, i64), target: &Target) -> Vec<(u32, u32)> {
         rule: LineRule::Diamond,
     };
     let exact = render(
-        Model::Exact,
         &Primitives {
             lines: vec![line.clone()],
             ..Primitives::default()
         },
         target,
+        Model::Exact,
     )
     .unwrap();
     let fixed = render(
-        Model::Fixed,
         &Primitives {
             lines: vec![line],
             ..Primitives::default()
         },
         target,
+        Model::Fixed,
     )
     .unwrap();
     assert_eq!(exact, fixed);
@@ -243,8 +243,8 @@ proptest! {
         let tie = if stay { BresenhamTie::Stay } else { BresenhamTie::Step };
         let line = Line { from: Point::from_ints(a[0], a[1]), to: Point::from_ints(b[0], b[1]), rule: LineRule::Bresenham(tie) };
         let target = Target::new(24, 24, Preset::D3d11.convention()).unwrap();
-        let exact = render(Model::Exact, &Primitives { lines: vec![line.clone()], ..Primitives::default() }, &target).unwrap();
-        let fixed = render(Model::Fixed, &Primitives { lines: vec![line], ..Primitives::default() }, &target).unwrap();
+        let exact = render(&Primitives { lines: vec![line.clone()], ..Primitives::default() }, &target, Model::Exact).unwrap();
+        let fixed = render(&Primitives { lines: vec![line], ..Primitives::default() }, &target, Model::Fixed).unwrap();
         prop_assert_eq!(exact, fixed);
     }
 

@@ -11,7 +11,7 @@ use proptest::prelude::*;
 use rasterproof::convention::{AnyTieRule, Preset, Rounding, TieRule};
 use rasterproof::coverage::{Coverage, CoverageSink};
 use rasterproof::model::{prepare, render, Model, Primitives, Shape};
-use rasterproof::oracle::{compare, Format, PixelKind, Reason, ReasonClass, Relation, Report, Theirs};
+use rasterproof::oracle::{compare, CompareReport, Format, PixelKind, Reason, ReasonClass, Relation, Theirs};
 use rasterproof::scene::{parse_scene, Scene};
 use rasterproof::strategy::polygon::any_polygon;
 use rasterproof::strategy::{any_triangle, diamond_line, pixel_line, tie_heavy_mesh};
@@ -28,19 +28,19 @@ fn scene(text: &str) -> Scene {
 }
 
 /// `theirs` (a coverage of the scene's canvas) compared in `format` against `model`.
-fn report(s: &Scene, theirs: &Coverage, format: Format, model: Model) -> Report {
+fn report(s: &Scene, theirs: &Coverage, format: Format, model: Model) -> CompareReport {
     let target = s.target().unwrap();
-    compare(&s.primitives(), &target, model, &Theirs::from_coverage(theirs, format)).unwrap()
+    compare(&s.primitives(), &target, &Theirs::from_coverage(theirs, format), model).unwrap()
 }
 
 /// The scene rendered by `model` under the scene's convention changed by `change`.
 fn rendered_with(s: &Scene, model: Model, change: impl FnOnce(&mut Scene)) -> Coverage {
     let mut other = s.clone();
     change(&mut other);
-    render(model, &other.primitives(), &other.target().unwrap()).unwrap()
+    render(&other.primitives(), &other.target().unwrap(), model).unwrap()
 }
 
-fn classes(r: &Report) -> Vec<ReasonClass> {
+fn classes(r: &CompareReport) -> Vec<ReasonClass> {
     let mut v: Vec<ReasonClass> = r
         .pixels
         .iter()
@@ -69,7 +69,7 @@ fn identical_outputs_compare_equal_in_every_format() {
             Model::ExactPlain,
             Model::ExactSnappedPlain,
         ] {
-            let ours = render(model, &s.primitives(), &s.target().unwrap()).unwrap();
+            let ours = render(&s.primitives(), &s.target().unwrap(), model).unwrap();
             for format in [Format::Mask, Format::Ids, Format::Json] {
                 let r = report(&s, &ours, format, model);
                 assert!(r.identical(), "{model} {format:?}: {}", r.to_text("s", "t", 3));
@@ -79,7 +79,7 @@ fn identical_outputs_compare_equal_in_every_format() {
         // The integer models equal the snapped oracle, so they compare equal too.
         let target = s.target().unwrap();
         for model in [Model::Fixed, Model::Scanline] {
-            if let Ok(theirs) = render(model, &s.primitives(), &target) {
+            if let Ok(theirs) = render(&s.primitives(), &target, model) {
                 assert!(
                     report(&s, &theirs, Format::Json, Model::ExactSnapped).identical(),
                     "{model}"
@@ -198,7 +198,7 @@ fn far_pixels_are_gross_and_wrong_ids_are_wrong_owners() {
         r#"{"width": 32, "height": 8, "triangles": [{"v": [[0, 0], [6, 0], [0, 6]]}, {"v": [[26, 0], [32, 0], [32, 6]]}]}"#,
     );
     let target = s.target().unwrap();
-    let mut theirs = render(Model::ExactSnapped, &s.primitives(), &target).unwrap();
+    let mut theirs = render(&s.primitives(), &target, Model::ExactSnapped).unwrap();
     theirs.cover(15, 4, 0); // 9 px and more from both triangles
     let r = report(&s, &theirs, Format::Json, Model::ExactSnapped);
     assert_eq!(r.pixels.len(), 1);
@@ -214,7 +214,7 @@ fn far_pixels_are_gross_and_wrong_ids_are_wrong_owners() {
     // Pixel (1, 1) of triangle 0 drawn with id 1: wrong owner; 0 missing there (deep
     // inside it: gross), 1 extra (far from triangle 1: gross).
     let mut swapped = Coverage::new(32, 8);
-    for (x, y, ids) in render(Model::ExactSnapped, &s.primitives(), &target).unwrap().iter() {
+    for (x, y, ids) in render(&s.primitives(), &target, Model::ExactSnapped).unwrap().iter() {
         let id = if (x, y) == (1, 1) { 1 } else { ids[0] };
         swapped.cover(x, y, id);
     }
@@ -238,7 +238,7 @@ fn far_pixels_are_gross_and_wrong_ids_are_wrong_owners() {
         );
     }
     // An id the scene does not have.
-    let mut stranger = render(Model::ExactSnapped, &s.primitives(), &target).unwrap();
+    let mut stranger = render(&s.primitives(), &target, Model::ExactSnapped).unwrap();
     stranger.cover(20, 7, 9);
     let r = report(&s, &stranger, Format::Ids, Model::ExactSnapped);
     let f = &r.pixels[0].findings[0];
@@ -259,7 +259,7 @@ fn all_inclusive_edges_are_double_covers_and_ties() {
         r#"{"width": 8, "height": 8, "triangles": [{"v": [[0, 0], [8, 0], [0, 8]]}, {"v": [[8, 0], [8, 8], [0, 8]]}]}"#,
     );
     let target = s.target().unwrap();
-    let ours = render(Model::ExactSnapped, &s.primitives(), &target).unwrap();
+    let ours = render(&s.primitives(), &target, Model::ExactSnapped).unwrap();
     let mut theirs = ours.clone();
     for i in 0..8 {
         let owner = ours.owners(i, 7 - i)[0];
@@ -348,7 +348,7 @@ fn diamond_corners_mirrored_in_y_are_a_line_rule() {
         let s = scene(&format!(
             r#"{{"width": 1, "height": 1, "preset": "gl", "lines": [{{"from": {line}, "rule": "diamond"}}]}}"#
         ));
-        let ours = render(Model::ExactSnapped, &s.primitives(), &s.target().unwrap()).unwrap();
+        let ours = render(&s.primitives(), &s.target().unwrap(), Model::ExactSnapped).unwrap();
         assert_eq!(ours.covered_pixels() == 1, oracle_covers, "{line}");
         let mut theirs = Coverage::new(1, 1);
         if !oracle_covers {
@@ -399,7 +399,7 @@ fn float_differences_are_classified_and_never_gross() {
         for _ in 0..n {
             let mesh = strategy.new_tree(&mut runner).unwrap().current();
             let s = Scene::new(side, side, mesh.triangles);
-            let theirs = render(model, &s.primitives(), &s.target().unwrap()).unwrap();
+            let theirs = render(&s.primitives(), &s.target().unwrap(), model).unwrap();
             let r = report(&s, &theirs, Format::Json, oracle);
             for f in r.pixels.iter().flat_map(|p| &p.findings) {
                 assert_ne!(f.reason.class(), ReasonClass::Gross, "{model}: {f:?}");
@@ -428,7 +428,7 @@ fn shapes_are_what_the_exact_models_draw() {
         let s = scene(text);
         let target = s.target().unwrap();
         for model in [Model::Exact, Model::ExactSnapped] {
-            let prepared = prepare(model, &s.primitives(), &target).unwrap();
+            let prepared = prepare(&s.primitives(), &target, model).unwrap();
             let mut drawn = Coverage::new(target.width, target.height);
             for (k, shape) in prepared.shapes().unwrap().iter().enumerate() {
                 let id = u32::try_from(k).unwrap();
@@ -451,7 +451,7 @@ fn shapes_are_what_the_exact_models_draw() {
                 if matches!(shape, Shape::Bresenham { .. } | Shape::Diamond { .. }) {
                     one.clip = s.clip.clone();
                 }
-                for (x, y, ids) in render(Model::ExactPlain, &one, &target).unwrap().iter() {
+                for (x, y, ids) in render(&one, &target, Model::ExactPlain).unwrap().iter() {
                     for _ in ids {
                         drawn.cover(x, y, id);
                     }
@@ -461,9 +461,9 @@ fn shapes_are_what_the_exact_models_draw() {
         }
     }
     assert!(prepare(
-        Model::Fixed,
         &scene(HALF_PIXEL_SQUARES).primitives(),
-        &scene(HALF_PIXEL_SQUARES).target().unwrap()
+        &scene(HALF_PIXEL_SQUARES).target().unwrap(),
+        Model::Fixed
     )
     .unwrap()
     .shapes()
@@ -504,7 +504,7 @@ proptest! {
         s.polygons = polys;
         let target = s.target().unwrap();
         for model in [Model::Exact, Model::ExactSnapped] {
-            let ours = render(model, &s.primitives(), &target).unwrap();
+            let ours = render(&s.primitives(), &target, model).unwrap();
             for format in [Format::Mask, Format::Ids, Format::Json] {
                 prop_assert!(report(&s, &ours, format, model).identical());
             }
@@ -726,7 +726,7 @@ fn mirror_rule_image(s: &Scene, rule: TieRule) -> Coverage {
     conv.tie_rule = rule;
     let m = mirrored(s);
     let target = rasterproof::convention::Target::new(s.width, s.height, conv).unwrap();
-    let image = render(Model::Exact, &m.primitives(), &target).unwrap();
+    let image = render(&m.primitives(), &target, Model::Exact).unwrap();
     let mut back = Coverage::new(s.width, s.height);
     for (x, y, ids) in image.iter() {
         for &id in ids {
@@ -827,7 +827,7 @@ fn fit_names_the_convention_of_a_renderer_made_to_follow_it() {
         found.to_text()
     );
     // Their image with one stray pixel: nothing fits; the closest is one pixel away.
-    let mut stray = render(Model::ExactSnapped, &s.primitives(), &target).unwrap();
+    let mut stray = render(&s.primitives(), &target, Model::ExactSnapped).unwrap();
     stray.cover(11, 0, 0);
     let found = fit(&stray);
     assert!(found.exact.is_empty());

@@ -134,8 +134,8 @@ proptest! {
         let target = Target::new(CANVAS, CANVAS, conv).unwrap();
         for (planned, plain) in [(Model::Exact, Model::ExactPlain), (Model::ExactSnapped, Model::ExactSnappedPlain)] {
             prop_assert_eq!(
-                render_triangles(planned, &ts, &target).unwrap(),
-                render_triangles(plain, &ts, &target).unwrap()
+                render_triangles(&ts, &target, planned).unwrap(),
+                render_triangles(&ts, &target, plain).unwrap()
             );
         }
     }

@@ -20,7 +20,7 @@ use rasterproof::convention::{PixelCentre, Preset, Target};
 use rasterproof::coverage::Coverage;
 use rasterproof::fill::polygon::{rasterize_exact, PlannedPolygon};
 use rasterproof::geom::{FillRule, Point, Polygon};
-use rasterproof::line::exact::draw_diamond;
+use rasterproof::line::exact::rasterize_diamond;
 use rasterproof::line::planned::PlannedSegment;
 use rasterproof::num::plan::Width;
 use rasterproof::strategy::clip::any_window;
@@ -293,14 +293,14 @@ proptest! {
 
 fn oracle_line(a: &Point, b: &Point, target: &Target) -> Coverage {
     let mut c = Coverage::new(target.width, target.height);
-    draw_diamond(a, b, 0, target, &mut c);
+    rasterize_diamond(a, b, 0, target, &mut c);
     c
 }
 
 fn planned_line(p: Option<&PlannedSegment>, target: &Target) -> Coverage {
     let mut c = Coverage::new(target.width, target.height);
     if let Some(p) = p {
-        p.draw(0, &mut c);
+        p.rasterize(0, &mut c);
     }
     c
 }

@@ -24,12 +24,12 @@ fn pts(v: &[(i64, i64)]) -> Vec<Point> {
 
 fn fill(poly: &Polygon, target: &Target, model: Model) -> Coverage {
     render(
-        model,
         &Primitives {
             polygons: vec![poly.clone()],
             ..Primitives::default()
         },
         target,
+        model,
     )
     .unwrap()
 }
@@ -350,12 +350,12 @@ fn scanline_at_the_envelope_edge() {
         FillRule::NonZero,
     );
     let err = render(
-        Model::Scanline,
         &Primitives {
             polygons: vec![beyond],
             ..Primitives::default()
         },
         &target,
+        Model::Scanline,
     )
     .unwrap_err();
     assert!(err.to_string().starts_with("polygons[0].v[1].x: "), "{err}");
@@ -373,7 +373,6 @@ fn polygon_ids_follow_triangles_and_lines() {
     };
     let poly = Polygon::new(pts(&[(10, 10), (14, 10), (14, 14), (10, 14)]), FillRule::NonZero);
     let c = render(
-        Model::Scanline,
         &Primitives {
             triangles: vec![tri],
             lines: vec![line],
@@ -381,6 +380,7 @@ fn polygon_ids_follow_triangles_and_lines() {
             ..Primitives::default()
         },
         &target,
+        Model::Scanline,
     )
     .unwrap();
     assert_eq!(c.owners(0, 0), &[0]);
@@ -393,9 +393,9 @@ fn polygon_ids_follow_triangles_and_lines() {
         ..Primitives::default()
     };
     let big = Target::new(100, 100, Preset::D3d11.convention()).unwrap();
-    let float = render(Model::Float32, &star, &big).unwrap();
+    let float = render(&star, &big, Model::Float32).unwrap();
     assert_eq!(
-        differing_pixels(&render(Model::Exact, &star, &big).unwrap(), &float),
+        differing_pixels(&render(&star, &big, Model::Exact).unwrap(), &float),
         vec![]
     );
     assert!(float.covered_pixels() > 0);

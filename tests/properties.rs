@@ -27,8 +27,8 @@ fn target(side: u32, preset: Preset) -> Target {
 }
 
 fn agree(tris: &[Triangle], target: &Target) -> Result<(), TestCaseError> {
-    let exact = render_triangles(Model::ExactSnappedPlain, tris, target).unwrap();
-    let fixed = render_triangles(Model::Fixed, tris, target).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let exact = render_triangles(tris, target, Model::ExactSnappedPlain).unwrap();
+    let fixed = render_triangles(tris, target, Model::Fixed).map_err(|e| TestCaseError::fail(e.to_string()))?;
     check_agreement("exact-snapped-plain", &exact, "fixed", &fixed, tris, target)
         .map_err(|v| TestCaseError::fail(v.to_string()))
 }
@@ -58,9 +58,9 @@ proptest! {
         conv.rounding = rounding;
         conv.subpixel_bits = bits;
         let target = Target::new(CANVAS, CANVAS, conv).unwrap();
-        let exact = render_triangles(Model::ExactSnappedPlain, &ts, &target).unwrap();
+        let exact = render_triangles(&ts, &target, Model::ExactSnappedPlain).unwrap();
         for model in [Model::Fixed, Model::Scanline, Model::ExactSnapped] {
-            if let Ok(c) = render_triangles(model, &ts, &target) {
+            if let Ok(c) = render_triangles(&ts, &target, model) {
                 ok(check_agreement("exact-snapped-plain", &exact, model.name(), &c, &ts, &target))?;
             }
         }
@@ -86,7 +86,7 @@ proptest! {
         let raw: Vec<[[BigRational; 2]; 3]> = ts.iter().map(|t| t.v.clone().map(|p| [p.x, p.y])).collect();
         let expected = common::render(&raw, 12, 12, conv);
         for model in [Model::ExactSnapped, Model::Fixed] {
-            let got = coverage_map(&render_triangles(model, &ts, &target).unwrap());
+            let got = coverage_map(&render_triangles(&ts, &target, model).unwrap());
             prop_assert_eq!(&got, &expected, "{}", model);
         }
     }
@@ -97,7 +97,7 @@ proptest! {
     fn meshes_are_watertight(mesh in delaunay_mesh([-4, -4], 40, 8, 24), p in preset()) {
         let target = target(CANVAS, p);
         for model in [Model::ExactSnapped, Model::Fixed] {
-            let cov = render_triangles(model, &mesh.triangles, &target).unwrap();
+            let cov = render_triangles(&mesh.triangles, &target, model).unwrap();
             ok(check_no_double_cover(&cov))?;
             ok(check_watertight(&mesh.triangles, &mesh.outline, &cov, &target))?;
         }
@@ -109,7 +109,7 @@ proptest! {
     fn tie_heavy_meshes_are_watertight(mesh in tie_heavy_mesh(CANVAS, 24), p in preset()) {
         let target = target(CANVAS, p);
         for model in [Model::ExactSnapped, Model::Fixed] {
-            let cov = render_triangles(model, &mesh.triangles, &target).unwrap();
+            let cov = render_triangles(&mesh.triangles, &target, model).unwrap();
             ok(check_watertight(&mesh.triangles, &mesh.outline, &cov, &target))?;
         }
         agree(&mesh.triangles, &target)?;
@@ -134,7 +134,7 @@ proptest! {
     fn rotation_and_winding_change_nothing(t in any_triangle(CANVAS), p in preset()) {
         let target = target(CANVAS, p);
         for model in [Model::ExactSnapped, Model::Fixed] {
-            ok(check_rotation_and_winding(model, &t, &target))?;
+            ok(check_rotation_and_winding(&t, &target, model))?;
         }
     }
 
@@ -145,7 +145,7 @@ proptest! {
                                   p in prop::sample::select(vec![Preset::D3d11, Preset::Gl, Preset::Vulkan])) {
         let target = target(CANVAS, p);
         for model in [Model::Exact, Model::ExactSnapped, Model::Fixed] {
-            ok(check_translation(model, &t, dx, dy, &target))?;
+            ok(check_translation(&t, &target, dx, dy, model))?;
         }
     }
 
@@ -193,7 +193,7 @@ fn fixed_at_the_envelope_edge() {
     ];
     for t in &cases {
         agree(std::slice::from_ref(t), &target).unwrap();
-        let cov = render_triangles(Model::Fixed, std::slice::from_ref(t), &target).unwrap();
+        let cov = render_triangles(std::slice::from_ref(t), &target, Model::Fixed).unwrap();
         assert!(cov.covered_pixels() > 0, "the envelope triangles cross the canvas");
     }
     let beyond = Triangle::new(
@@ -201,7 +201,7 @@ fn fixed_at_the_envelope_edge() {
         Point::from_ints(3, 0),
         Point::from_fractions(edge * 256 + 1, 256, 5, 1),
     );
-    let err = render_triangles(Model::Fixed, &[beyond], &target)
+    let err = render_triangles(&[beyond], &target, Model::Fixed)
         .unwrap_err()
         .to_string();
     assert!(err.starts_with("triangles[0].v[2].x: "), "{err}");

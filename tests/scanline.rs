@@ -13,8 +13,8 @@ use rasterproof::model::{render_triangles, Model};
 use rasterproof::strategy::{any_triangle, delaunay_mesh, tie_heavy_mesh, triangle, Scale};
 
 fn agree(tris: &[Triangle], target: &Target) -> Result<(), TestCaseError> {
-    let exact = render_triangles(Model::ExactSnappedPlain, tris, target).unwrap();
-    let scan = render_triangles(Model::Scanline, tris, target).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let exact = render_triangles(tris, target, Model::ExactSnappedPlain).unwrap();
+    let scan = render_triangles(tris, target, Model::Scanline).map_err(|e| TestCaseError::fail(e.to_string()))?;
     check_agreement("exact-snapped-plain", &exact, "scanline", &scan, tris, target)
         .map_err(|v| TestCaseError::fail(v.to_string()))
 }
@@ -51,7 +51,7 @@ proptest! {
         for m in [&mesh, &tie_mesh] {
             for p in [Preset::D3d11, Preset::Gl] {
                 let target = Target::new(32, 32, p.convention()).unwrap();
-                let cov = render_triangles(Model::Scanline, &m.triangles, &target).unwrap();
+                let cov = render_triangles(&m.triangles, &target, Model::Scanline).unwrap();
                 check_watertight(&m.triangles, &m.outline, &cov, &target).map_err(|v| TestCaseError::fail(v.to_string()))?;
             }
         }

@@ -8,7 +8,7 @@ use num_rational::BigRational;
 use rasterproof::check::Violation;
 use rasterproof::geom::{FillRule, Point, Polygon, Triangle};
 use rasterproof::harness::suite::{legend, Row, Skip};
-use rasterproof::harness::{generate, must_hold, run_case, CaseRun, Outcome, Tally};
+use rasterproof::harness::{generate, must_hold, run_case, CaseRun, CheckOutcome, Tally};
 use rasterproof::model::Model;
 use rasterproof::scene::Scene;
 
@@ -203,8 +203,8 @@ fn generate_is_a_function_of_seed_and_case_number() {
     assert_ne!(generate(11, 4).unwrap(), generate(11, 5).unwrap());
 }
 
-fn outcome(model: Model, result: Result<(), Violation>) -> Outcome {
-    Outcome {
+fn outcome(model: Model, result: Result<(), Violation>) -> CheckOutcome {
+    CheckOutcome {
         invariant: "watertight",
         model,
         label: model.name(),
@@ -217,7 +217,7 @@ fn gap() -> Result<(), Violation> {
     Err(Violation::new("watertight", "sample (1, 2) covered by no triangle"))
 }
 
-fn run(mesh_family: &'static str, outcomes: Vec<Outcome>, ulps: Vec<f64>) -> CaseRun {
+fn run(mesh_family: &'static str, outcomes: Vec<CheckOutcome>, ulps: Vec<f64>) -> CaseRun {
     CaseRun {
         mesh_family,
         outcomes,

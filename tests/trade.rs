@@ -7,15 +7,15 @@
 use std::sync::OnceLock;
 
 use assert_cmd::Command;
-use rasterproof::trade::{run, Config, Magnitude, Outcome, Report};
+use rasterproof::trade::{run, Config, Magnitude, Outcome, TradeReport};
 use serde_json::Value;
 
 #[path = "common/tempdir.rs"]
 mod tempdir;
 
 /// One quick run, shared by the tests of this file.
-fn quick() -> &'static Report {
-    static REPORT: OnceLock<Report> = OnceLock::new();
+fn quick() -> &'static TradeReport {
+    static REPORT: OnceLock<TradeReport> = OnceLock::new();
     REPORT.get_or_init(|| run(&Config::quick(), &mut |_| {}))
 }
 

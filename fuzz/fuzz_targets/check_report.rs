@@ -1,4 +1,4 @@
-//! The check report reader (`harness::suite::Report::from_json`, what `check-merge`
+//! The check report reader (`harness::suite::SuiteReport::from_json`, what `check-merge`
 //! reads) on arbitrary bytes: `Ok` or an error that starts with the file's name, never a
 //! panic. A report it accepts is whole: it writes back (`to_json`) to a file that reads as
 //! the same report, its table (`lines`) and JUnit XML are written without panicking, it
@@ -11,13 +11,13 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use rasterproof::harness::suite::Report;
+use rasterproof::harness::suite::SuiteReport;
 
 fuzz_target!(|data: &[u8]| {
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };
-    let report = match Report::from_json(text, "report.json") {
+    let report = match SuiteReport::from_json(text, "report.json") {
         Ok(r) => r,
         Err(e) => {
             assert!(
@@ -28,13 +28,13 @@ fuzz_target!(|data: &[u8]| {
         }
     };
     let written = report.to_json();
-    let again = Report::from_json(&written, "written.json")
+    let again = SuiteReport::from_json(&written, "written.json")
         .unwrap_or_else(|e| panic!("a report it accepted writes a file it refuses: {e}\n{written}"));
     assert_eq!(again, report, "the written report reads back differently:\n{written}");
     let _ = report.lines();
     let _ = report.junit();
     let _ = report.findings();
-    let alone = Report::merge([("a.json".to_string(), report.clone())]).expect("one report merges");
+    let alone = SuiteReport::merge([("a.json".to_string(), report.clone())]).expect("one report merges");
     if report.is_complete() && report.shards().is_whole() {
         // Every case of every shard of N: merged, it is written as the whole run, 1/1.
         assert_eq!(alone.shards().count(), 1, "a whole run merged alone is not 1/1");
@@ -43,7 +43,7 @@ fuzz_target!(|data: &[u8]| {
         assert_eq!(alone, report, "a report merged alone changed");
     }
     assert!(
-        Report::merge([("a.json".to_string(), report.clone()), ("b.json".to_string(), report)]).is_err(),
+        SuiteReport::merge([("a.json".to_string(), report.clone()), ("b.json".to_string(), report)]).is_err(),
         "a report merged with itself"
     );
 });

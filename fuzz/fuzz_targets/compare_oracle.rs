@@ -175,7 +175,7 @@ fn own_output_is_identical(primitives: &Primitives, target: &Target, model: Mode
         assert_eq!(read, own, "the oracle's own {} file reads back differently", f.name());
     }
     let theirs = Theirs::from_coverage(ours, format);
-    let report = compare(primitives, target, model, &theirs).expect("an exact model and the same canvas");
+    let report = compare(primitives, target, &theirs, model).expect("an exact model and the same canvas");
     let name = format.name();
     assert!(
         report.identical(),
@@ -188,7 +188,7 @@ fn edited_output_is_reported(input: &Input, primitives: &Primitives, target: &Ta
     let (format, model) = (input.format(), input.model());
     let theirs = Theirs::from_coverage(&edited(ours, &input.edits()), format);
     let own = Theirs::from_coverage(ours, format);
-    let report = compare(primitives, target, model, &theirs).expect("an exact model and the same canvas");
+    let report = compare(primitives, target, &theirs, model).expect("an exact model and the same canvas");
     let mut expected = Vec::new();
     for y in 0..target.height {
         for x in 0..target.width {
@@ -223,7 +223,7 @@ fn explanation_agrees(primitives: &Primitives, target: &Target, x: u32, y: u32) 
     let _ = why.to_text();
     let _ = why.to_json().to_string();
     for m in why.models {
-        match (m.owners, render(m.model, primitives, target)) {
+        match (m.owners, render(primitives, target, m.model)) {
             (Ok(owners), Ok(c)) => assert_eq!(owners, c.owners(x, y), "explain and render of {} differ", m.model),
             (Err(a), Err(b)) => assert_eq!(a, b),
             (a, b) => panic!(
@@ -262,7 +262,7 @@ fuzz_target!(|input: Input| {
     let target = scene.target().expect("a bounded canvas");
     let primitives = scene.primitives();
     let model = input.model();
-    let ours = render(model, &primitives, &target).expect("the exact models take every scene");
+    let ours = render(&primitives, &target, model).expect("the exact models take every scene");
     own_output_is_identical(&primitives, &target, model, &ours, input.format());
     edited_output_is_reported(&input, &primitives, &target, &ours);
     if let Some(e) = input.edits().first() {

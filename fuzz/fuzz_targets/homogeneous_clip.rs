@@ -193,7 +193,7 @@ fn models(tri: &[ClipVertex; 3], vp: &Viewport) {
         (Model::Exact, Model::ExactPlain),
         (Model::ExactSnapped, Model::ExactSnappedPlain),
     ] {
-        let (ra, rb) = (render(a, &primitives, &target), render(b, &primitives, &target));
+        let (ra, rb) = (render(&primitives, &target, a), render(&primitives, &target, b));
         assert_eq!(
             ra.expect("exact takes clip space"),
             rb.expect("exact takes clip space"),
@@ -201,7 +201,7 @@ fn models(tri: &[ClipVertex; 3], vp: &Viewport) {
         );
     }
     for m in [Model::Fixed, Model::Float32] {
-        let _ = render(m, &primitives, &target);
+        let _ = render(&primitives, &target, m);
     }
 }
 

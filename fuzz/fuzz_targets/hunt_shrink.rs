@@ -24,10 +24,10 @@ use libfuzzer_sys::fuzz_target;
 use rasterproof::convention::{Preset, TieRule};
 use rasterproof::model::{render, Model};
 use rasterproof::oracle::hunt::{
-    generate_scene, hunt, judge, primitive_count, rust_test, shrink, signatures, Family, HuntConfig, HuntFinding,
-    Verdict,
+    generate_scene, hunt, judge, primitive_count, rust_test, shrink, signatures, SceneFamily, HuntConfig, HuntFinding,
+    HuntVerdict,
 };
-use rasterproof::oracle::program::{Failure, FailureKind};
+use rasterproof::oracle::program::{RenderFailure, FailureKind};
 use rasterproof::oracle::{Format, Theirs};
 use rasterproof::scene::{parse_scene, Scene};
 
@@ -58,17 +58,17 @@ struct Input {
     budget: u8,
 }
 
-fn honest(scene: &Scene) -> Result<Theirs, Failure> {
+fn honest(scene: &Scene) -> Result<Theirs, RenderFailure> {
     let target = scene.target().expect("a generated scene has a valid target");
-    let coverage = render(Model::ExactSnapped, &scene.primitives(), &target).map_err(|e| Failure {
+    let coverage = render(&scene.primitives(), &target, Model::ExactSnapped).map_err(|e| RenderFailure {
         kind: FailureKind::BadOutput,
         message: e.to_string(),
     })?;
     Ok(Theirs::from_coverage(&coverage, Format::Ids))
 }
 
-fn wrong_render(wrong: Wrong, scene: &Scene) -> Result<Theirs, Failure> {
-    let failed = |message: String| Failure {
+fn wrong_render(wrong: Wrong, scene: &Scene) -> Result<Theirs, RenderFailure> {
+    let failed = |message: String| RenderFailure {
         kind: FailureKind::Exit,
         message,
     };
@@ -84,7 +84,7 @@ fn wrong_render(wrong: Wrong, scene: &Scene) -> Result<Theirs, Failure> {
         }
         Wrong::Unsnapped => {
             let target = scene.target().expect("valid");
-            let coverage = render(Model::Exact, &scene.primitives(), &target).map_err(|e| failed(e.to_string()))?;
+            let coverage = render(&scene.primitives(), &target, Model::Exact).map_err(|e| failed(e.to_string()))?;
             Ok(Theirs::from_coverage(&coverage, Format::Ids))
         }
         Wrong::DropsTheLast => {
@@ -105,7 +105,7 @@ fn wrong_render(wrong: Wrong, scene: &Scene) -> Result<Theirs, Failure> {
 }
 
 fuzz_target!(|input: Input| {
-    let family = Family::ALL[usize::from(input.family) % Family::ALL.len()];
+    let family = SceneFamily::ALL[usize::from(input.family) % SceneFamily::ALL.len()];
     let config = HuntConfig {
         cases: 1,
         seed: input.seed,
@@ -132,7 +132,7 @@ fuzz_target!(|input: Input| {
     // 2. The oracle is not a finding.
     let verdict = judge(&scene, honest(&scene), config.model);
     assert!(
-        matches!(verdict, Verdict::Same | Verdict::Refused(_)),
+        matches!(verdict, HuntVerdict::Same | HuntVerdict::Refused(_)),
         "the oracle differs from itself:\n{text}"
     );
     assert!(signatures(&verdict).is_empty());
@@ -173,7 +173,7 @@ fuzz_target!(|input: Input| {
 
     // 4. A whole hunt of two cases.
     let render_with = |s: &Scene| wrong_render(input.wrong, s);
-    let report = hunt(&config, &render_with, 1, &|| {}).expect("hunt's generator draws every scene");
+    let report = hunt(&render_with, &config, 1, &|| {}).expect("hunt's generator draws every scene");
     assert_eq!(
         report.same + report.differing + report.failed + report.refused,
         report.cases

@@ -164,7 +164,7 @@ fn shades(t: &Triangle, input: &Input, target: &Target) {
     );
     let one = Primitives::from_triangles(std::slice::from_ref(t));
     let shade = |m: Model| {
-        prepare(m, &one, target)
+        prepare(&one, target, m)
             .ok()
             .map(|p| p.shade(0, &input.colours, x, y, target))
     };

@@ -207,21 +207,21 @@ fn check_diamond(input: &Input) -> (Line, Target) {
 
     let lines = std::slice::from_ref(&line);
     let exact = render(
-        Model::ExactSnapped,
         &Primitives {
             lines: lines.to_vec(),
             ..Primitives::default()
         },
         &target,
+        Model::ExactSnapped,
     )
     .expect("exact-snapped takes every diamond line");
     match render(
-        Model::Fixed,
         &Primitives {
             lines: lines.to_vec(),
             ..Primitives::default()
         },
         &target,
+        Model::Fixed,
     ) {
         Ok(fixed) => {
             assert_eq!(first_outside, None, "fixed accepted a coordinate beyond 2^29 subpixels");
@@ -283,12 +283,12 @@ fn float_lines(from: [i64; 2], to: [i64; 2], diamond: &Line, target: &Target) {
     let lines = vec![bresenham, diamond.clone()];
     for m in [Model::Float32, Model::Float64, Model::Float32Naive, Model::Float64Naive] {
         let _ = render(
-            m,
             &Primitives {
                 lines: lines.clone(),
                 ..Primitives::default()
             },
             target,
+            m,
         );
     }
 }

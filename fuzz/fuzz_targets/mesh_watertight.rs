@@ -113,7 +113,7 @@ fuzz_target!(|input: Input| {
     let target = Target::new(14, 14, conv).expect("valid");
     let (mesh, outline) = input.mesh();
     let exact_models = [Model::Exact, Model::ExactSnapped, Model::Fixed, Model::Scanline];
-    let render = |m: Model| render_triangles(m, &mesh, &target).expect("small coordinates are in every envelope");
+    let render = |m: Model| render_triangles(&mesh, &target, m).expect("small coordinates are in every envelope");
     // The two exact meshes (as written, snapped) checked sample by sample; the integer
     // models equal the snapped one, so they are watertight too.
     let snapped = render(Model::ExactSnapped);
@@ -136,9 +136,9 @@ fuzz_target!(|input: Input| {
         Rounding::NearestEven | Rounding::Floor | Rounding::Ceiling
     );
     for m in exact_models {
-        check_rotation_and_winding(m, t, &target).unwrap_or_else(|v| panic!("{v}"));
+        check_rotation_and_winding(t, &target, m).unwrap_or_else(|v| panic!("{v}"));
         if translation_holds {
-            check_translation(m, t, dx, dy, &target).unwrap_or_else(|v| panic!("{v}"));
+            check_translation(t, &target, dx, dy, m).unwrap_or_else(|v| panic!("{v}"));
         }
     }
     for m in [Model::Float32, Model::Float64, Model::Float32Naive, Model::Float64Naive] {

@@ -36,7 +36,7 @@ use rasterproof::tri::planned::PlannedTriangle;
 
 /// Renders with the planned and the plain model; they must agree. The plain coverage.
 fn same(planned: Model, plain: Model, primitives: &Primitives, target: &Target) -> Option<Coverage> {
-    match (render(planned, primitives, target), render(plain, primitives, target)) {
+    match (render(primitives, target, planned), render(primitives, target, plain)) {
         (Ok(a), Ok(b)) => {
             assert_eq!(a, b, "{planned} differs from {plain}");
             Some(b)
@@ -105,7 +105,7 @@ fn forced_widths(primitives: &Primitives, target: &Target, width: Width, written
         }
         let id = u32::try_from(primitives.triangles.len() + k).expect("few primitives");
         let forced = PlannedSegment::forced(&line.from, &line.to, target, width);
-        check_forced("diamond line", forced, width, &only(written, id), |p, c| p.draw(id, c));
+        check_forced("diamond line", forced, width, &only(written, id), |p, c| p.rasterize(id, c));
     }
     for (k, poly) in primitives.polygons.iter().enumerate() {
         let id = u32::try_from(first_polygon + k).expect("few primitives");
@@ -119,7 +119,7 @@ fn forced_widths(primitives: &Primitives, target: &Target, width: Width, written
 /// The plan's verdicts against the renders: `written` and `snapped` are the exact
 /// models' coverages (equal to the plain oracles'), rendered once above.
 fn verdicts(primitives: &Primitives, target: &Target, written: &Coverage, snapped: &Coverage) {
-    let Ok(plan) = plan_scene(Model::Exact, primitives, target) else {
+    let Ok(plan) = plan_scene(primitives, target, Model::Exact) else {
         return;
     };
     for v in plan.fixed_width.iter().filter(|v| v.exact) {
@@ -128,7 +128,7 @@ fn verdicts(primitives: &Primitives, target: &Target, written: &Coverage, snappe
         } else {
             (Model::Exact, written)
         };
-        match render(v.model, primitives, target) {
+        match render(primitives, target, v.model) {
             Ok(got) => assert_eq!(
                 &got, want,
                 "plan says {} is exact, but it differs from {reference}",

@@ -61,21 +61,21 @@ fuzz_target!(|input: Input| {
     let one = std::slice::from_ref(&poly);
 
     let reference = render(
-        Model::ExactSnapped,
         &Primitives {
             polygons: one.to_vec(),
             ..Primitives::default()
         },
         &target,
+        Model::ExactSnapped,
     )
     .expect("the oracle takes any polygon");
     let scan = render(
-        Model::Scanline,
         &Primitives {
             polygons: one.to_vec(),
             ..Primitives::default()
         },
         &target,
+        Model::Scanline,
     )
     .expect("small coordinates are in the envelope");
     if let Err(v) = check_agreement("exact-snapped", &reference, "scanline", &scan, &[], &target) {

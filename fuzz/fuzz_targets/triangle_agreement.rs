@@ -99,9 +99,9 @@ fuzz_target!(|input: Input| {
         s > &hi || s < &lo
     });
 
-    let exact = render_triangles(Model::ExactSnapped, std::slice::from_ref(&triangle), &target)
+    let exact = render_triangles(std::slice::from_ref(&triangle), &target, Model::ExactSnapped)
         .expect("the exact-snapped model takes every triangle");
-    match render_triangles(Model::Fixed, std::slice::from_ref(&triangle), &target) {
+    match render_triangles(std::slice::from_ref(&triangle), &target, Model::Fixed) {
         Ok(fixed) => {
             assert_eq!(first_outside, None, "fixed accepted a coordinate beyond 2^29 subpixels");
             assert_eq!(fixed, exact, "fixed and exact-snapped disagree on {triangle:?}");

@@ -7,12 +7,12 @@ use crate::geom::Triangle;
 use crate::model::{render_triangles, Model, ModelError};
 
 fn rendered(model: Model, t: &Triangle, target: &Target) -> Result<crate::coverage::Coverage, Violation> {
-    render_triangles(model, std::slice::from_ref(t), target)
+    render_triangles(std::slice::from_ref(t), target, model)
         .map_err(|e: ModelError| Violation::new("invariance", format!("{model} refused the triangle: {e}")))
 }
 
 /// `model` covers the same pixels for (v0,v1,v2), (v1,v2,v0), (v2,v0,v1) and (v0,v2,v1).
-pub fn check_rotation_and_winding(model: Model, t: &Triangle, target: &Target) -> Result<(), Violation> {
+pub fn check_rotation_and_winding(t: &Triangle, target: &Target, model: Model) -> Result<(), Violation> {
     let base = rendered(model, t, target)?;
     let variants = [
         ("rotated once", t.rotated()),
@@ -46,9 +46,9 @@ pub fn check_rotation_and_winding(model: Model, t: &Triangle, target: &Target) -
 /// rounding. A translated triangle the model refuses (moved out of its envelope) is no
 /// violation: there is nothing to compare, and the result is Ok. Under half-away-from-zero (`cts`) a snapping tie that changes sign is rounded
 /// the other way, so a translation across the origin can legitimately move an edge.
-pub fn check_translation(model: Model, t: &Triangle, dx: i64, dy: i64, target: &Target) -> Result<(), Violation> {
+pub fn check_translation(t: &Triangle, target: &Target, dx: i64, dy: i64, model: Model) -> Result<(), Violation> {
     let base = rendered(model, t, target)?;
-    let Ok(moved) = render_triangles(model, std::slice::from_ref(&t.translated(dx, dy)), target) else {
+    let Ok(moved) = render_triangles(std::slice::from_ref(&t.translated(dx, dy)), target, model) else {
         return Ok(());
     };
     let (w, h) = (i64::from(target.width), i64::from(target.height));

@@ -174,7 +174,7 @@ pub fn check_diamond_agreement(line: &Line, model: Model, target: &Target) -> Re
         lines: vec![line.clone()],
         ..Primitives::default()
     };
-    let render = |m| render(m, &primitives, target).map_err(|e| Violation::new("diamond agreement", e.to_string()));
+    let render = |m| render(&primitives, target, m).map_err(|e| Violation::new("diamond agreement", e.to_string()));
     let reference = model.reference();
     let (exact, theirs) = (render(reference)?, render(model)?);
     match differing_pixels(&exact, &theirs).first() {

@@ -13,7 +13,7 @@ use std::time::Duration;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use rasterproof::check::Violation;
-use rasterproof::harness::suite::{Hooks, Plan, Report, SceneFiles, Shard, MAX_JOBS};
+use rasterproof::harness::suite::{Hooks, SceneFiles, Shard, SuiteConfig, SuiteReport, MAX_JOBS};
 use rasterproof::harness::CaseRun;
 use rasterproof::scene::Scene;
 
@@ -89,7 +89,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     if let Some(dir) = &o.out {
         std::fs::create_dir_all(dir).map_err(|e| format!("--out {}: cannot create: {e}", dir.display()))?;
     }
-    let plan = Plan {
+    let plan = SuiteConfig {
         seed: o.seed,
         cases: o.cases,
         shard: o.shard.unwrap_or(Shard::WHOLE),
@@ -155,14 +155,14 @@ pub fn merge(o: &MergeOptions) -> Result<ExitCode, String> {
         let name = path.display().to_string();
         let bytes = std::fs::read(path).map_err(|e| format!("{name}: cannot read: {e}"))?;
         let text = String::from_utf8(bytes).map_err(|_| format!("{name}: not a check report: not UTF-8 text"))?;
-        reports.push((name.clone(), Report::from_json(&text, &name)?));
+        reports.push((name.clone(), SuiteReport::from_json(&text, &name)?));
     }
-    let merged = Report::merge(reports)?;
+    let merged = SuiteReport::merge(reports)?;
     finish(&merged, o.report.as_deref(), o.junit.as_deref())
 }
 
 /// Writes the report's files (all or none), prints it, and gives the exit code.
-fn finish(report: &Report, json: Option<&Path>, junit: Option<&Path>) -> Result<ExitCode, String> {
+fn finish(report: &SuiteReport, json: Option<&Path>, junit: Option<&Path>) -> Result<ExitCode, String> {
     let mut outputs = Outputs::new();
     if let Some(path) = json {
         outputs.stage_text(path, &report.to_json())?;

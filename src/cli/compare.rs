@@ -128,7 +128,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             ExitCode::SUCCESS
         });
     }
-    let report = compare(&scene.primitives(), &target, model, &theirs).map_err(|e| match e {
+    let report = compare(&scene.primitives(), &target, &theirs, model).map_err(|e| match e {
         rasterproof::oracle::CompareError::Size(_) => format!("{theirs_name}: {e} ({name})"),
         other => format!("{name}: {other} (model {model})"),
     })?;

@@ -10,7 +10,7 @@ use std::time::Duration;
 use indicatif::{ProgressBar, ProgressStyle};
 use rasterproof::convention::Preset;
 use rasterproof::harness::suite::Shard;
-use rasterproof::oracle::hunt::{fit_convention, hunt, rust_test, Family, HuntConfig, Verdict};
+use rasterproof::oracle::hunt::{fit_convention, hunt, rust_test, HuntConfig, HuntVerdict, SceneFamily};
 use rasterproof::oracle::program::Program;
 use rasterproof::oracle::{Background, Format};
 
@@ -110,13 +110,13 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         return Err("--jobs: 0 (at least 1)".to_string());
     }
     let families = if o.families.is_empty() {
-        Family::ALL.to_vec()
+        SceneFamily::ALL.to_vec()
     } else {
         o.families
             .iter()
             .map(|f| {
-                Family::from_name(f.trim()).ok_or_else(|| {
-                    let all: Vec<&str> = Family::ALL.iter().map(|f| f.name()).collect();
+                SceneFamily::from_name(f.trim()).ok_or_else(|| {
+                    let all: Vec<&str> = SceneFamily::ALL.iter().map(|f| f.name()).collect();
                     format!("--family: unknown family {f:?} (expected {})", all.join(", "))
                 })
             })
@@ -175,7 +175,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     bar.set_style(
         ProgressStyle::with_template("{bar:40} {pos}/{len} scenes, {elapsed} ({eta} left)").expect("static template"),
     );
-    let report = hunt(&config, &render_with, o.jobs, &|| bar.inc(1))?;
+    let report = hunt(&render_with, &config, o.jobs, &|| bar.inc(1))?;
     bar.finish_and_clear();
 
     let mut outputs = Outputs::new();
@@ -265,10 +265,10 @@ fn explanation(f: &rasterproof::oracle::hunt::HuntFinding, n: usize) -> String {
         f.runs
     );
     match &f.verdict {
-        Verdict::Differs(r) => s.push_str(&r.to_text(&format!("finding-{n:02}.json"), "their output", 50)),
-        Verdict::Failed(failure) => s.push_str(&format!("their renderer: {failure}\n")),
-        Verdict::Same => s.push_str("(the minimal scene no longer fails: the renderer is not deterministic)\n"),
-        Verdict::Refused(e) => s.push_str(&format!("the oracle refused the minimal scene: {e}\n")),
+        HuntVerdict::Differs(r) => s.push_str(&r.to_text(&format!("finding-{n:02}.json"), "their output", 50)),
+        HuntVerdict::Failed(failure) => s.push_str(&format!("their renderer: {failure}\n")),
+        HuntVerdict::Same => s.push_str("(the minimal scene no longer fails: the renderer is not deterministic)\n"),
+        HuntVerdict::Refused(e) => s.push_str(&format!("the oracle refused the minimal scene: {e}\n")),
     }
     s.push_str("\nthe original scene:\n");
     s.push_str(&f.original.to_json());

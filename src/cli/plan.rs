@@ -46,7 +46,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         ));
     }
     let (name, scene, target) = super::load_scene(&o.scene, o.preset.as_deref())?;
-    let plan = plan_scene(model, &scene.primitives(), &target).map_err(|e| format!("{name}: {e} (model {model})"))?;
+    let plan = plan_scene(&scene.primitives(), &target, model).map_err(|e| format!("{name}: {e} (model {model})"))?;
     match o.format {
         OutputFormat::Text => super::print_stdout(&plan.to_text(&name, &target.convention.to_string()))?,
         OutputFormat::Json => super::print_stdout(&plan.to_json(&name, &target.convention.to_string()))?,

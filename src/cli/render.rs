@@ -73,7 +73,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     };
     let fail = |e: rasterproof::model::ModelError| format!("{name}: {e} (model {model})");
     let primitives = scene.primitives();
-    let prepared = prepare(model, &primitives, &target).map_err(fail)?;
+    let prepared = prepare(&primitives, &target, model).map_err(fail)?;
     let coverage = draw_with_progress(&prepared, &target);
 
     let mut outputs = Outputs::new();
@@ -140,7 +140,7 @@ fn draw_with_progress(prepared: &PreparedScene, target: &Target) -> Coverage {
     );
     let mut shown = false;
     let mut coverage = Coverage::new(target.width, target.height);
-    prepared.draw_observed(target, &mut coverage, &mut || {
+    prepared.render_observed(target, &mut coverage, &mut || {
         bar.inc(1);
         if !shown && start.elapsed() > Duration::from_secs(1) {
             bar.set_draw_target(ProgressDrawTarget::stderr());

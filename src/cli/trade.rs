@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use rasterproof::trade::{run as run_trade, Config, Family, Magnitude, Report};
+use rasterproof::trade::{run as run_trade, Config, Family, Magnitude, TradeReport};
 
 use super::OutputFormat;
 
@@ -77,7 +77,7 @@ fn check_out(dir: &Path) -> Result<(), String> {
 
 /// Writes the report's files into `dir`, all or nothing (a folder this call created is
 /// removed again when writing fails).
-fn write_files(dir: &Path, report: &Report, json: &str, markdown: &str) -> Result<(), String> {
+fn write_files(dir: &Path, report: &TradeReport, json: &str, markdown: &str) -> Result<(), String> {
     let pictures = report.pictures()?;
     let created = !dir.exists();
     if created {

@@ -1,6 +1,6 @@
 //! JUnit XML, the format CI systems display: a small model ([`TestSuites`] of
 //! [`TestSuite`]s of [`TestCase`]s) and its one writer ([`TestSuites::to_xml`]), behind
-//! both `check --junit` ([`crate::harness::suite::Report::junit`]) and `hunt --junit`
+//! both `check --junit` ([`crate::harness::suite::SuiteReport::junit`]) and `hunt --junit`
 //! ([`crate::oracle::hunt::HuntReport::junit`]); [`xml_escape`] escapes every text.
 
 use std::fmt::Write as _;
@@ -25,7 +25,7 @@ pub struct TestSuite {
     pub cases: Vec<TestCase>,
 }
 
-/// A `<testcase>`: passed unless it holds a [`Failure`] or a skip.
+/// A `<testcase>`: passed unless it holds a [`JunitFailure`] or a skip.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct TestCase {
     /// Its `classname`.
@@ -33,7 +33,7 @@ pub struct TestCase {
     /// Its `name`.
     pub name: String,
     /// Why it failed: a `<failure>`, counted in `failures`.
-    pub failure: Option<Failure>,
+    pub failure: Option<JunitFailure>,
     /// Why it was skipped (the message of a `<skipped>`), counted in `skipped`. A case
     /// that failed too is written with its `<failure>` only (a test case holds one of
     /// them) but counted in both.
@@ -44,7 +44,7 @@ pub struct TestCase {
 
 /// A `<failure>`: its `type` and `message` attributes and its text.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Failure {
+pub struct JunitFailure {
     /// Its `type`, e.g. `violation`.
     pub kind: String,
     /// Its `message`, one line.
@@ -89,7 +89,7 @@ impl TestSuites {
     /// indent, ending in a newline. Every text is escaped for XML ([`xml_escape`]).
     ///
     /// ```
-    /// use rasterproof::harness::junit::{Failure, TestCase, TestSuite, TestSuites};
+    /// use rasterproof::harness::junit::{JunitFailure, TestCase, TestSuite, TestSuites};
     /// let case = |name: &str, failure| TestCase {
     ///     classname: "x".into(),
     ///     name: name.into(),
@@ -97,7 +97,7 @@ impl TestSuites {
     ///     skipped: None,
     ///     system_out: None,
     /// };
-    /// let failure = Failure { kind: "t".into(), message: "a < b".into(), text: "why".into() };
+    /// let failure = JunitFailure { kind: "t".into(), message: "a < b".into(), text: "why".into() };
     /// let xml = TestSuites {
     ///     name: "all".into(),
     ///     suites: vec![TestSuite {

@@ -6,10 +6,10 @@
 //!   oracle, the first disagreement shrunk to a minimal scene.
 //! - [`suite`]: the invariant suite behind `rasterproof check` — seeded random cases
 //!   ([`generate`]), every checker on each ([`run_case`]) and the table of outcomes
-//!   ([`Tally`]); at scale, a [`Plan`] (shard, threads, time budget) run into a
-//!   [`Report`] (JSON, JUnit XML, merged across shards).
+//!   ([`Tally`]); at scale, a [`SuiteConfig`] (shard, threads, time budget) run into a
+//!   [`SuiteReport`] (JSON, JUnit XML, merged across shards).
 //! - [`runner`]: numbered cases on scoped threads, their results in index order, a stop
-//!   predicate before each case (what a [`Plan`] runs on; meant for every case loop).
+//!   predicate before each case (what a [`SuiteConfig`] runs on; meant for every case loop).
 
 pub mod junit;
 pub mod runner;
@@ -17,4 +17,6 @@ pub mod search;
 pub mod suite;
 
 pub use search::{find_counterexample, Counterexample, HarnessConfig};
-pub use suite::{generate, must_hold, run_case, Case, CaseRun, Outcome, Plan, Report, Row, Shard, Skip, Tally};
+pub use suite::{
+    generate, must_hold, run_case, Case, CaseRun, CheckOutcome, Row, Shard, Skip, SuiteConfig, SuiteReport, Tally,
+};

@@ -5,7 +5,7 @@
 //! collected, [`Runner::collect`]). No thread pool outlives the call, and the result does
 //! not depend on the number of threads.
 //!
-//! The suite's [`Plan`](super::suite::Plan) runs its cases this way (`check --jobs N`).
+//! The suite's [`SuiteConfig`](super::suite::SuiteConfig) runs its cases this way (`check --jobs N`).
 //! A caller with its own work queue moves to it in three steps, as `oracle::hunt` can:
 //!
 //! 1. its queue of case numbers becomes `count` (a shard's cases are its positions

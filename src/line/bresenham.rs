@@ -67,7 +67,7 @@ pub fn pixels(from: [i64; 2], to: [i64; 2], tie: BresenhamTie) -> Vec<[i64; 2]> 
 /// starts at `k0` from the closed form. Inside ±[`super::MAX_BRESENHAM_COORD`] every
 /// product is below `2^53`.
 #[inline]
-pub fn draw<S: CoverageSink + ?Sized>(
+pub fn rasterize<S: CoverageSink + ?Sized>(
     from: [i64; 2],
     to: [i64; 2],
     tie: BresenhamTie,
@@ -261,7 +261,7 @@ mod tests {
     use crate::convention::Convention;
     use crate::coverage::Coverage;
 
-    /// `draw` covers exactly `walk`'s pixels that lie on the canvas, for lines in every
+    /// `rasterize` covers exactly `walk`'s pixels that lie on the canvas, for lines in every
     /// octant, partly or wholly off a 12x9 canvas, both ties.
     #[test]
     fn draw_is_walk_on_the_canvas() {
@@ -274,7 +274,7 @@ mod tests {
             for &b in &ends {
                 for tie in [BresenhamTie::Stay, BresenhamTie::Step] {
                     let mut drawn = Coverage::new(12, 9);
-                    draw(a, b, tie, 0, &target, &mut drawn);
+                    rasterize(a, b, tie, 0, &target, &mut drawn);
                     let mut walked = Coverage::new(12, 9);
                     for [x, y] in pixels(a, b, tie) {
                         if (0..12).contains(&x) && (0..9).contains(&y) {
@@ -306,7 +306,7 @@ mod tests {
             for &b in &ends {
                 for tie in [BresenhamTie::Stay, BresenhamTie::Step] {
                     let mut drawn = Coverage::new(5, 4);
-                    draw(a, b, tie, 0, &target, &mut drawn);
+                    rasterize(a, b, tie, 0, &target, &mut drawn);
                     assert_eq!(drawn, walked(a, b, tie, &target), "{a:?} -> {b:?} {tie:?}");
                 }
             }
@@ -332,7 +332,7 @@ mod tests {
         for (a, b) in lines {
             for tie in [BresenhamTie::Stay, BresenhamTie::Step] {
                 let mut drawn = Coverage::new(64, 48);
-                draw(a, b, tie, 0, &target, &mut drawn);
+                rasterize(a, b, tie, 0, &target, &mut drawn);
                 let walked = walked(a, b, tie, &target);
                 assert!(walked.covered_pixels() > 0, "{a:?} -> {b:?} crosses the canvas");
                 assert_eq!(drawn, walked, "{a:?} -> {b:?} {tie:?}");

@@ -62,7 +62,7 @@ pub enum DdaFloat {
 }
 
 /// Draws the DDA line into `sink`, skipping pixels off the canvas (no allocation).
-pub fn draw<S: CoverageSink + ?Sized>(
+pub fn rasterize<S: CoverageSink + ?Sized>(
     from: [i64; 2],
     to: [i64; 2],
     float: DdaFloat,

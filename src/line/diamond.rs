@@ -10,10 +10,10 @@
 //! 2^30): `|ua| < 2^31`, `|d| <= 2^30`, clip parameters `n/m` with `|n| < 2^34`,
 //! `0 < m < 2^32`; their midpoint has `|n| < 2^67`, `m < 2^65`, so every product stays
 //! below 2^99, far inside i128. Only candidate pixels are tested: per step of the major
-//! axis, the two pixels whose centres bracket the line (see [`draw`] for why no other
+//! axis, the two pixels whose centres bracket the line (see [`rasterize`] for why no other
 //! can be drawn).
 //!
-//! The width is planned per segment ([`draw`]): in terms of `D = max(|dx|, |dy|, 1)` and
+//! The width is planned per segment ([`rasterize`]): in terms of `D = max(|dx|, |dy|, 1)` and
 //! `U`, the largest `|ua|`, `|va|` (or of `b`) over the candidate pixels, every value of the
 //! test is at most `32 U D^2 + 8 r D^2` (derived at `fits_i64`). When that is below
 //! `2^63` the test runs in i64 (lines up to about 2500 px at 8 subpixel bits), else in
@@ -166,7 +166,7 @@ impl<T: Wide> Prepared<T> {
     }
 }
 
-/// Whether [`draw`]'s per-pixel test of `seg` fits i64.
+/// Whether [`rasterize`]'s per-pixel test of `seg` fits i64.
 ///
 /// The bound, with `D = max(|dx|, |dy|, 1)`, `U` at least every `|ua|`, `|va|`, `|ub|`,
 /// `|vb|` (a candidate pixel's centre to an endpoint, per axis) and `r` the radius:
@@ -176,7 +176,7 @@ impl<T: Wide> Prepared<T> {
 /// = 16 U D^2 + 4 r D^2`, and the sum of two such in `contains` at most
 /// `32 U D^2 + 8 r D^2`, which bounds every value (`r m <= 8 r D^2` too).
 ///
-/// `U`: [`draw`] tests major steps from one before the first endpoint's to one after the
+/// `U`: [`rasterize`] tests major steps from one before the first endpoint's to one after the
 /// last's (samples within `|d| + 2` pixels of `a` on the major axis) and, on the minor
 /// axis, the pixels within two of the line's (at most two pixels past the endpoints,
 /// the slope being at most 1), centres within `|d| + 5` pixels of `a`; likewise for `b`.
@@ -213,7 +213,7 @@ pub fn exits(seg: &FixedSegment, i: i64, j: i64, target: &Target) -> bool {
 ///
 /// # Panics
 /// When `seg` was snapped to another grid than `target`'s subpixel bits.
-pub fn draw<S: CoverageSink + ?Sized>(seg: &FixedSegment, id: u32, target: &Target, sink: &mut S) {
+pub fn rasterize<S: CoverageSink + ?Sized>(seg: &FixedSegment, id: u32, target: &Target, sink: &mut S) {
     if fits_i64(seg, target) {
         draw_in::<i64, S>(seg, id, target, sink);
     } else {
@@ -221,7 +221,7 @@ pub fn draw<S: CoverageSink + ?Sized>(seg: &FixedSegment, id: u32, target: &Targ
     }
 }
 
-/// [`draw`] with the per-pixel test in `T`.
+/// [`rasterize`] with the per-pixel test in `T`.
 fn draw_in<T: Wide, S: CoverageSink + ?Sized>(seg: &FixedSegment, id: u32, target: &Target, sink: &mut S) {
     let prepared = Prepared::<T>::new(seg, target);
     let conv = &target.convention;
@@ -338,7 +338,7 @@ mod tests {
             assert_eq!(drawn_in::<i128>(&seg, &target), exact, "i128 at {d}");
             assert_eq!(drawn_in::<i64>(&seg, &target), exact, "i64 at {d}");
             let mut planned = Coverage::new(48, 40);
-            draw(&seg, 0, &target, &mut planned);
+            rasterize(&seg, 0, &target, &mut planned);
             assert_eq!(planned, exact, "planned at {d}");
         }
     }

@@ -115,7 +115,7 @@ pub fn resolve(line: &IdealLine, tie: BresenhamTie) -> Vec<[i64; 2]> {
 
 /// Draws the reference pixels of a Bresenham line, computing only the steps whose major
 /// coordinate lies on the canvas.
-pub fn draw_bresenham<S: CoverageSink + ?Sized>(
+pub fn rasterize_bresenham<S: CoverageSink + ?Sized>(
     from: [i64; 2],
     to: [i64; 2],
     tie: BresenhamTie,
@@ -210,7 +210,7 @@ pub fn diamond_exits(a: &Point, b: &Point, i: i64, j: i64, target: &Target) -> b
 
 /// Draws a diamond-exit line with the plain exact reading: every pixel of the segment's
 /// bounding box (grown by one) on the canvas is tested.
-pub fn draw_diamond<S: CoverageSink + ?Sized>(a: &Point, b: &Point, id: u32, target: &Target, sink: &mut S) {
+pub fn rasterize_diamond<S: CoverageSink + ?Sized>(a: &Point, b: &Point, id: u32, target: &Target, sink: &mut S) {
     let lo = |u: &BigRational, v: &BigRational| saturating_index(u.min(v).floor().to_integer()).saturating_sub(1);
     let hi = |u: &BigRational, v: &BigRational| saturating_index(u.max(v).ceil().to_integer()).saturating_add(1);
     let Some(range) = PixelRange::clamped(

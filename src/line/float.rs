@@ -92,7 +92,7 @@ macro_rules! float_diamond {
 float_diamond!(
     diamond_contains_f32,
     diamond_exits_f32,
-    draw_diamond_f32,
+    rasterize_diamond_f32,
     Vec2,
     f32,
     "f32"
@@ -100,7 +100,7 @@ float_diamond!(
 float_diamond!(
     diamond_contains_f64,
     diamond_exits_f64,
-    draw_diamond_f64,
+    rasterize_diamond_f64,
     DVec2,
     f64,
     "f64"

@@ -1,10 +1,10 @@
 //! The planned exact engine for diamond-exit lines (the Direct3D 11.3 functional
 //! specification, §3.4.3, aliased line rasterization; Vulkan's and GL's diamond-exit
-//! lines): the decisions of [`draw_diamond`](super::exact::draw_diamond), the rule read
+//! lines): the decisions of [`rasterize_diamond`](super::exact::rasterize_diamond), the rule read
 //! plainly in rationals, for any rational endpoints, computed in the narrowest arithmetic
 //! that provably holds every value the test reaches ([`crate::num::plan`]).
 //!
-//! **Setup**, once per segment, in exact integers. The scale `L` is the least common
+//! **LineSetup**, once per segment, in exact integers. The scale `L` is the least common
 //! multiple of the denominators of the endpoints, of the pixel centre `c` and of the
 //! diamond's radius `1/2`, so the radius is the integer `r = L/2`. The candidate pixels
 //! are those a drawn pixel can be: if the segment meets pixel `(i, j)`'s closed diamond at
@@ -159,14 +159,14 @@ pub struct PlannedSegment {
 }
 
 /// The exact setup.
-struct Setup {
+struct LineSetup {
     walk: Walk,
     scale: BigInt,
     seg: Seg<BigInt>,
     bound: Bound,
 }
 
-fn setup(a: &Point, b: &Point, target: &Target) -> Option<Setup> {
+fn setup(a: &Point, b: &Point, target: &Target) -> Option<LineSetup> {
     if a == b {
         return None; // a point never leaves a diamond
     }
@@ -277,7 +277,7 @@ fn setup(a: &Point, b: &Point, target: &Target) -> Option<Setup> {
         dd,
         step_r,
     };
-    Some(Setup {
+    Some(LineSetup {
         walk,
         scale: seg.l.clone(),
         seg,
@@ -367,14 +367,14 @@ impl PlannedSegment {
     }
 
     /// Draws every pixel the segment leaves the diamond of: equal, pixel for pixel, to
-    /// [`draw_diamond`](super::exact::draw_diamond) on the same endpoints and target (the
+    /// [`rasterize_diamond`](super::exact::rasterize_diamond) on the same endpoints and target (the
     /// property tests of `tests/planned_polygons_lines.rs` are the proof).
     ///
     /// ```
     /// use rasterproof::convention::{Convention, Target};
     /// use rasterproof::coverage::Coverage;
     /// use rasterproof::geom::Point;
-    /// use rasterproof::line::exact::draw_diamond;
+    /// use rasterproof::line::exact::rasterize_diamond;
     /// use rasterproof::line::planned::PlannedSegment;
     /// use rasterproof::num::plan::Width;
     /// let (a, b) = (Point::from_fractions(1, 3, 1, 2), Point::from_fractions(13, 2, 7, 2));
@@ -383,21 +383,21 @@ impl PlannedSegment {
     /// assert_eq!(planned.plan().scale, 6.into()); // lcm(3, 2)
     /// assert_eq!(planned.plan().width, Width::I32);
     /// let (mut p, mut q) = (Coverage::new(8, 8), Coverage::new(8, 8));
-    /// planned.draw(0, &mut p);
-    /// draw_diamond(&a, &b, 0, &target, &mut q);
+    /// planned.rasterize(0, &mut p);
+    /// rasterize_diamond(&a, &b, 0, &target, &mut q);
     /// assert_eq!(p, q);
     /// assert_eq!(p.covered_pixels(), 6); // one per column 0..=5; the end's pixel is not left
     /// ```
-    pub fn draw<S: CoverageSink + ?Sized>(&self, id: u32, sink: &mut S) {
+    pub fn rasterize<S: CoverageSink + ?Sized>(&self, id: u32, sink: &mut S) {
         let walk = &self.walk;
         self.planned.run(Draw { walk, id, sink });
     }
 }
 
 /// Plans and draws the diamond-exit segment `a -> b` in one call (see [`PlannedSegment`]).
-pub fn draw<S: CoverageSink + ?Sized>(a: &Point, b: &Point, id: u32, target: &Target, sink: &mut S) {
+pub fn rasterize<S: CoverageSink + ?Sized>(a: &Point, b: &Point, id: u32, target: &Target, sink: &mut S) {
     if let Some(p) = PlannedSegment::new(a, b, target) {
-        p.draw(id, sink);
+        p.rasterize(id, sink);
     }
 }
 
@@ -562,11 +562,11 @@ mod tests {
     use super::*;
     use crate::convention::{Convention, PixelCentre, Preset};
     use crate::coverage::Coverage;
-    use crate::line::exact::draw_diamond;
+    use crate::line::exact::rasterize_diamond;
 
     fn oracle(a: &Point, b: &Point, target: &Target) -> Coverage {
         let mut c = Coverage::new(target.width, target.height);
-        draw_diamond(a, b, 0, target, &mut c);
+        rasterize_diamond(a, b, 0, target, &mut c);
         c
     }
 
@@ -577,7 +577,7 @@ mod tests {
             Some(w) => PlannedSegment::forced(a, b, target, w).expect("width holds the bound"),
         };
         if let Some(p) = p {
-            p.draw(0, &mut c);
+            p.rasterize(0, &mut c);
         }
         c
     }

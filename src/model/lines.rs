@@ -141,21 +141,21 @@ impl PreparedLine {
     }
 
     /// Draws the line with id `id`.
-    pub(crate) fn draw<S: CoverageSink + ?Sized>(&self, id: u32, target: &Target, sink: &mut S) {
+    pub(crate) fn rasterize<S: CoverageSink + ?Sized>(&self, id: u32, target: &Target, sink: &mut S) {
         match self {
-            PreparedLine::IdealBresenham(a, b, tie) => line::exact::draw_bresenham(*a, *b, *tie, id, target, sink),
-            PreparedLine::Bresenham(a, b, tie) => line::bresenham::draw(*a, *b, *tie, id, target, sink),
-            PreparedLine::Dda32(a, b) => line::dda::draw(*a, *b, line::dda::DdaFloat::F32, id, target, sink),
-            PreparedLine::Dda64(a, b) => line::dda::draw(*a, *b, line::dda::DdaFloat::F64, id, target, sink),
-            PreparedLine::DiamondExact(ends) => line::exact::draw_diamond(&ends.0, &ends.1, id, target, sink),
+            PreparedLine::IdealBresenham(a, b, tie) => line::exact::rasterize_bresenham(*a, *b, *tie, id, target, sink),
+            PreparedLine::Bresenham(a, b, tie) => line::bresenham::rasterize(*a, *b, *tie, id, target, sink),
+            PreparedLine::Dda32(a, b) => line::dda::rasterize(*a, *b, line::dda::DdaFloat::F32, id, target, sink),
+            PreparedLine::Dda64(a, b) => line::dda::rasterize(*a, *b, line::dda::DdaFloat::F64, id, target, sink),
+            PreparedLine::DiamondExact(ends) => line::exact::rasterize_diamond(&ends.0, &ends.1, id, target, sink),
             PreparedLine::DiamondPlanned(_, seg) => {
                 if let Some(seg) = seg {
-                    seg.draw(id, sink);
+                    seg.rasterize(id, sink);
                 }
             }
-            PreparedLine::DiamondFixed(seg) => line::diamond::draw(seg, id, target, sink),
-            PreparedLine::DiamondF32(a, b) => line::float::draw_diamond_f32(*a, *b, id, target, sink),
-            PreparedLine::DiamondF64(a, b) => line::float::draw_diamond_f64(*a, *b, id, target, sink),
+            PreparedLine::DiamondFixed(seg) => line::diamond::rasterize(seg, id, target, sink),
+            PreparedLine::DiamondF32(a, b) => line::float::rasterize_diamond_f32(*a, *b, id, target, sink),
+            PreparedLine::DiamondF64(a, b) => line::float::rasterize_diamond_f64(*a, *b, id, target, sink),
         }
     }
 }

@@ -4,7 +4,7 @@
 //!
 //! A scene is rendered in two steps: [`prepare`] converts every primitive into the model's
 //! input form (snapping, the integer envelope, float conversion, triangulation, clipping:
-//! this is where errors happen), and [`PreparedScene::draw`] rasterizes (it cannot fail).
+//! this is where errors happen), and [`PreparedScene::render`] rasterizes (it cannot fail).
 //! [`render`] does both; [`render_triangles`] is the same for a plain list of triangles.
 //!
 //! How each model family clips against the window (`raster(clip(P, W)) == raster(P) ∩

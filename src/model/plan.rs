@@ -164,7 +164,7 @@ pub fn by_width(plans: &[PrimitivePlan]) -> BTreeMap<Width, usize> {
 /// let t = Triangle::new(Point::from_ints(0, 0), Point::from_ints(4, 0), Point::from_ints(0, 4));
 /// let off = Triangle::new(Point::from_ints(50, 50), Point::from_ints(54, 50), Point::from_ints(50, 54));
 /// let target = Target::new(4, 4, Convention::default()).unwrap();
-/// let prepared = prepare(Model::ExactSnapped, &Primitives::from_triangles(&[t, off]), &target).unwrap();
+/// let prepared = prepare(&Primitives::from_triangles(&[t, off]), &target, Model::ExactSnapped).unwrap();
 /// assert_eq!(summary(&prepared.plans()), "2 primitives: 1 i32; 1 not planned (covers nothing, or a Bresenham line)");
 /// ```
 pub fn summary(plans: &[PrimitivePlan]) -> String {
@@ -186,8 +186,8 @@ pub fn summary(plans: &[PrimitivePlan]) -> String {
 ///
 /// # Errors
 /// What [`prepare`] refuses for `model`.
-pub fn plan_scene(model: Model, primitives: &Primitives, target: &Target) -> Result<ScenePlan, super::ModelError> {
-    let prepared = prepare(model, primitives, target)?;
+pub fn plan_scene(primitives: &Primitives, target: &Target, model: Model) -> Result<ScenePlan, super::ModelError> {
+    let prepared = prepare(primitives, target, model)?;
     let fixed_width = [Model::Fixed, Model::Scanline, Model::Float32, Model::Float64]
         .into_iter()
         .map(|m| verdict(m, primitives, target))
@@ -203,7 +203,7 @@ fn verdict(model: Model, primitives: &Primitives, target: &Target) -> Verdict {
     // A model that refuses the scene is not exact for it, whether or not the refused
     // primitive reaches a sample (the float models refuse a coordinate beyond their type
     // even on a primitive that covers nothing, which the float analysis skips).
-    let refused = prepare(model, primitives, target).err().map(|e| e.to_string());
+    let refused = prepare(primitives, target, model).err().map(|e| e.to_string());
     let broken_by = match model {
         Model::Fixed | Model::Scanline => refused,
         Model::Float32 => refused.or_else(|| float_breaker(primitives, target, 24)),

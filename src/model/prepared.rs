@@ -97,7 +97,7 @@ pub enum Shape {
 }
 
 /// A scene converted for one model: every conversion done, nothing left that can fail.
-/// Built by [`prepare`]; [`PreparedScene::draw`] rasterizes it into any sink.
+/// Built by [`prepare`]; [`PreparedScene::render`] rasterizes it into any sink.
 #[derive(Debug, Clone)]
 pub struct PreparedScene {
     model: Model,
@@ -131,7 +131,7 @@ fn id(k: usize) -> u32 {
 /// The first primitive the model cannot take: a coordinate outside the integer envelope
 /// or the float type, a polygon the `fixed` model cannot triangulate, clip-space
 /// triangles without a viewport. Lines are checked first, then the areas.
-pub fn prepare(model: Model, primitives: &Primitives, target: &Target) -> Result<PreparedScene, ModelError> {
+pub fn prepare(primitives: &Primitives, target: &Target, model: Model) -> Result<PreparedScene, ModelError> {
     let lines = prepare_lines(model, &primitives.lines, target)?;
     let viewport = || primitives.viewport.as_ref().ok_or(ModelError::NoViewport);
     let [first_line, first_polygon, _] = primitives.first_ids();
@@ -281,35 +281,35 @@ impl PreparedScene {
     }
 
     /// Rasterizes every primitive into `sink` with its id.
-    pub fn draw<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S) {
-        self.draw_observed(target, sink, || {});
+    pub fn render<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S) {
+        self.render_observed(target, sink, || {});
     }
 
-    /// How many primitives [`PreparedScene::draw_observed`] draws (the clipped triangles
+    /// How many primitives [`PreparedScene::render_observed`] draws (the clipped triangles
     /// count as their triangles).
     pub fn primitive_count(&self) -> usize {
         let triangles = self.clipped_triangles.as_ref().map_or(self.triangles.len(), Vec::len);
         self.lines.len() + triangles + self.polygons.len()
     }
 
-    /// [`PreparedScene::draw`], calling `after` once each primitive is drawn (a progress
+    /// [`PreparedScene::render`], calling `after` once each primitive is drawn (a progress
     /// bar's tick: `render` shows one when a run goes on for more than a second).
-    pub fn draw_observed<S: CoverageSink + ?Sized, F: FnMut()>(&self, target: &Target, sink: &mut S, mut after: F) {
+    pub fn render_observed<S: CoverageSink + ?Sized, F: FnMut()>(&self, target: &Target, sink: &mut S, mut after: F) {
         for (k, l) in self.lines.iter().enumerate() {
             let k = id(self.first_line + k);
             match &self.point_mask {
-                None => l.draw(k, target, sink),
-                Some(m) => l.draw(k, target, &mut m.scissor(sink)),
+                None => l.rasterize(k, target, sink),
+                Some(m) => l.rasterize(k, target, &mut m.scissor(sink)),
             }
             after();
         }
         match &self.area_mask {
-            None => self.draw_areas(target, sink, &mut after),
-            Some(m) => self.draw_areas(target, &mut m.scissor(sink), &mut after),
+            None => self.render_areas(target, sink, &mut after),
+            Some(m) => self.render_areas(target, &mut m.scissor(sink), &mut after),
         }
     }
 
-    fn draw_areas<S: CoverageSink + ?Sized, F: FnMut()>(&self, target: &Target, sink: &mut S, after: &mut F) {
+    fn render_areas<S: CoverageSink + ?Sized, F: FnMut()>(&self, target: &Target, sink: &mut S, after: &mut F) {
         match &self.clipped_triangles {
             None => self.triangles.rasterize_each(target, sink, &mut *after),
             Some(polygons) => {
@@ -402,7 +402,7 @@ impl PreparedScene {
     /// A fresh [`Coverage`] of `target` with everything drawn.
     pub fn coverage(&self, target: &Target) -> Coverage {
         let mut coverage = Coverage::new(target.width, target.height);
-        self.draw(target, &mut coverage);
+        self.render(target, &mut coverage);
         coverage
     }
 
@@ -424,7 +424,7 @@ impl PreparedScene {
     }
 }
 
-/// Renders `primitives` with `model` on `target`: [`prepare`], then [`PreparedScene::draw`]
+/// Renders `primitives` with `model` on `target`: [`prepare`], then [`PreparedScene::render`]
 /// into a fresh [`Coverage`]. The entry point for a whole scene.
 ///
 /// ```
@@ -439,17 +439,17 @@ impl PreparedScene {
 /// )
 /// .unwrap();
 /// let target = scene.target().unwrap();
-/// let coverage = render(Model::Fixed, &scene.primitives(), &target).unwrap();
+/// let coverage = render(&scene.primitives(), &target, Model::Fixed).unwrap();
 /// // The line (id 1) keeps its pixels with samples inside the window: x = 0..=3.
 /// assert_eq!(coverage.owners(3, 7), &[1]);
 /// assert!(coverage.owners(4, 7).is_empty());
-/// assert_eq!(coverage, render(Model::ExactSnapped, &scene.primitives(), &target).unwrap());
+/// assert_eq!(coverage, render(&scene.primitives(), &target, Model::ExactSnapped).unwrap());
 /// ```
 ///
 /// # Errors
 /// As [`prepare`].
-pub fn render(model: Model, primitives: &Primitives, target: &Target) -> Result<Coverage, ModelError> {
-    Ok(prepare(model, primitives, target)?.coverage(target))
+pub fn render(primitives: &Primitives, target: &Target, model: Model) -> Result<Coverage, ModelError> {
+    Ok(prepare(primitives, target, model)?.coverage(target))
 }
 
 /// Renders `triangles` (ids `0..`) with `model` into a fresh [`Coverage`].
@@ -460,13 +460,13 @@ pub fn render(model: Model, primitives: &Primitives, target: &Target) -> Result<
 /// use rasterproof::model::{render_triangles, Model};
 /// let t = Triangle::new(Point::from_ints(0, 0), Point::from_ints(8, 0), Point::from_ints(0, 8));
 /// let target = Target::new(8, 8, Convention::default()).unwrap();
-/// let exact = render_triangles(Model::ExactSnapped, &[t.clone()], &target).unwrap();
-/// assert_eq!(render_triangles(Model::Fixed, &[t], &target).unwrap(), exact);
+/// let exact = render_triangles(&[t.clone()], &target, Model::ExactSnapped).unwrap();
+/// assert_eq!(render_triangles(&[t], &target, Model::Fixed).unwrap(), exact);
 /// ```
 ///
 /// # Errors
 /// The first triangle the model cannot take (envelope, float range).
-pub fn render_triangles(model: Model, triangles: &[Triangle], target: &Target) -> Result<Coverage, ModelError> {
+pub fn render_triangles(triangles: &[Triangle], target: &Target, model: Model) -> Result<Coverage, ModelError> {
     let prepared = prepare_triangles(model, triangles, target)?;
     let mut coverage = Coverage::new(target.width, target.height);
     prepared.rasterize_into(target, &mut coverage);

@@ -93,7 +93,7 @@ pub fn explain_pixel(primitives: &Primitives, target: &Target, x: u32, y: u32) -
     if x >= target.width || y >= target.height {
         return None;
     }
-    let shapes = |model: Model| prepare(model, primitives, target).ok().and_then(|p| p.shapes());
+    let shapes = |model: Model| prepare(primitives, target, model).ok().and_then(|p| p.shapes());
     let written = shapes(Model::ExactPlain);
     let snapped = shapes(Model::ExactSnappedPlain);
     let p = sample_exact(x, y, target);
@@ -120,9 +120,9 @@ pub fn explain_pixel(primitives: &Primitives, target: &Target, x: u32, y: u32) -
         .filter(|m| !matches!(m, Model::ExactPlain | Model::ExactSnappedPlain))
         .map(|model| ModelAt {
             model,
-            owners: prepare(model, primitives, target).map(|prepared| {
+            owners: prepare(primitives, target, model).map(|prepared| {
                 let mut probe = Probe { x, y, ids: Vec::new() };
-                prepared.draw(target, &mut probe);
+                prepared.render(target, &mut probe);
                 probe.ids.sort_unstable();
                 probe.ids
             }),

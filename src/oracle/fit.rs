@@ -211,7 +211,7 @@ fn image(primitives: &Primitives, target: &Target, candidate: &Candidate) -> Res
         ..*target
     };
     if directional.is_some() {
-        return Ok(Some(prepare(Model::Exact, primitives, &t)?.coverage(&t)));
+        return Ok(Some(prepare(primitives, &t, Model::Exact)?.coverage(&t)));
     }
     if !primitives.polygons.is_empty() || primitives.clip.is_some() {
         return Ok(None);
@@ -228,7 +228,7 @@ fn image(primitives: &Primitives, target: &Target, candidate: &Candidate) -> Res
             ..Primitives::default()
         };
         let offset = u32::try_from(primitives.triangles.len()).expect("ids fit u32");
-        prepare(Model::Exact, &lines, &t)?.draw(&t, &mut Offset(&mut coverage, offset));
+        prepare(&lines, &t, Model::Exact)?.render(&t, &mut Offset(&mut coverage, offset));
     }
     Ok(Some(coverage))
 }
@@ -244,7 +244,7 @@ fn image(primitives: &Primitives, target: &Target, candidate: &Candidate) -> Res
 /// let scene = parse_scene(r#"{"width": 4, "height": 2, "triangles": [{"v": [[0, "0.5"], [4, "0.5"], [0, "-3.5"]]}]}"#, "s.json").unwrap();
 /// let mut gl = scene.clone();
 /// gl.preset = rasterproof::convention::Preset::Gl;
-/// let theirs = render(Model::ExactSnapped, &gl.primitives(), &gl.target().unwrap()).unwrap();
+/// let theirs = render(&gl.primitives(), &gl.target().unwrap(), Model::ExactSnapped).unwrap();
 /// let found = fit(&scene.primitives(), &scene.target().unwrap(), &Theirs::from_coverage(&theirs, Format::Ids)).unwrap();
 /// use rasterproof::convention::{AnyTieRule, PixelCentre};
 /// // At 8 bits with centred samples the tie rule alone decides row 0: a bottom rule.

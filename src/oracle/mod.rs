@@ -17,7 +17,7 @@ pub mod program;
 pub mod reason;
 pub mod theirs;
 
-pub use compare::{compare, CompareError, DiffPixel, Finding, PixelKind, Relation, Report, SizeMismatch};
+pub use compare::{compare, CompareError, CompareReport, DiffPixel, PixelFinding, PixelKind, Relation, SizeMismatch};
 pub use explain::{explain_pixel, ModelAt, PixelExplanation, PrimitiveAt};
 pub use fit::{fit, Candidate, Fit, FitError, FitReport};
 pub use reason::{Reason, ReasonClass, Snapping};

@@ -1,6 +1,6 @@
 //! Another renderer as an external program (the `hunt` protocol): the scene written to a
 //! file, the program run with a timeout, its output file read as [`Theirs`]. A non-zero
-//! exit, a crash, a timeout, no output or unreadable output is a [`Failure`], a finding in
+//! exit, a crash, a timeout, no output or unreadable output is a [`RenderFailure`], a finding in
 //! its own right.
 
 use std::fmt;
@@ -43,14 +43,14 @@ impl FailureKind {
 
 /// A failure, with what the program said.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Failure {
+pub struct RenderFailure {
     /// What happened.
     pub kind: FailureKind,
     /// The details: exit status, the end of its stderr, the reader's error.
     pub message: String,
 }
 
-impl fmt::Display for Failure {
+impl fmt::Display for RenderFailure {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}: {}", self.kind.name(), self.message)
     }
@@ -131,8 +131,8 @@ impl Program {
     /// Runs the program on `scene` and reads its output. Its files are removed afterwards.
     ///
     /// # Errors
-    /// A [`Failure`]: the program failed, or its output is unreadable.
-    pub fn render(&self, scene: &Scene) -> Result<Theirs, Failure> {
+    /// A [`RenderFailure`]: the program failed, or its output is unreadable.
+    pub fn render(&self, scene: &Scene) -> Result<Theirs, RenderFailure> {
         let n = self.count.fetch_add(1, Ordering::Relaxed);
         let scene_path = self.dir.0.join(format!("scene-{n}.json"));
         let ext = if self.format == Format::Json { "json" } else { "png" };
@@ -145,8 +145,8 @@ impl Program {
         result
     }
 
-    fn run(&self, scene: &Scene, scene_path: &Path, out_path: &Path, err_path: &Path) -> Result<Theirs, Failure> {
-        let fail = |kind, message: String| Failure { kind, message };
+    fn run(&self, scene: &Scene, scene_path: &Path, out_path: &Path, err_path: &Path) -> Result<Theirs, RenderFailure> {
+        let fail = |kind, message: String| RenderFailure { kind, message };
         std::fs::write(scene_path, scene.to_json())
             .map_err(|e| fail(FailureKind::BadOutput, format!("cannot write the scene: {e}")))?;
         let fill = |a: &String| {

@@ -49,9 +49,9 @@ fn plain(model: Model) -> bool {
 }
 
 fn pairs(model: Model, prims: &Primitives, target: &Target) -> Result<Pairs, String> {
-    let prepared = prepare(model, prims, target).map_err(|e| e.to_string())?;
+    let prepared = prepare(prims, target, model).map_err(|e| e.to_string())?;
     let mut p = Pairs::default();
-    prepared.draw(target, &mut p);
+    prepared.render(target, &mut p);
     Ok(p.sorted())
 }
 
@@ -92,7 +92,7 @@ pub(crate) fn measure(spec: &Spec<'_>, config: &Config, sizes: &Sizes) -> Worklo
         .into_iter()
         .filter(|m| spec.models.iter().any(|&(_, c)| reference(c) == *m))
         .filter_map(|m| {
-            let p = plan_scene(m, &all, &target).ok()?;
+            let p = plan_scene(&all, &target, m).ok()?;
             Some(PlanSummary {
                 model: m.name(),
                 by_width: p.by_width().into_iter().map(|(w, n)| (w.name(), n)).collect(),

@@ -54,7 +54,7 @@ mod tests {
         let window = FarWindow { origin: m, side };
         let window_target = Target::new(side, side, conv).unwrap();
         for model in [Model::Float32, Model::Float64, Model::Float32Naive, Model::Float64Naive] {
-            let theirs = render_triangles(model, &placed, &target).unwrap();
+            let theirs = render_triangles(&placed, &target, model).unwrap();
             let mu = u32::try_from(m).unwrap();
             let expected = theirs.restricted(mu, mu, big, big).translated(-m, -m);
             let mut ours = Coverage::new(big, big);

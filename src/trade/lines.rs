@@ -140,7 +140,7 @@ fn bresenham_lines(config: &Config, sizes: &Sizes) -> WorkloadReport {
                 lines: placed.iter().map(|&e| as_line(e, tie)).collect(),
                 ..Primitives::default()
             };
-            let outcome = match prepare(model, &prims, &target) {
+            let outcome = match prepare(&prims, &target, model) {
                 Err(e) => Outcome::Refused(e.to_string()),
                 Ok(_) => Outcome::Measured {
                     placement: if m == 0 {

@@ -1,6 +1,6 @@
 //! The trade (feature `trade`): every model's speed and error side by side, on one
 //! seeded set of workloads, at coordinate magnitudes from 0 to 2^30 px. What `rasterproof
-//! trade` prints and draws; [`run`] is the whole computation, [`Report`] its result
+//! trade` prints and draws; [`run`] is the whole computation, [`TradeReport`] its result
 //! (JSON, Markdown, pictures).
 //!
 //! - **Workloads** ([`Family`]): triangles (pixel-sized, medium, huge, sliver; a tie-heavy
@@ -60,7 +60,7 @@ use std::fmt;
 pub use metric::Metric;
 pub use plot::Picture;
 pub use predicate_map::{Decision, MapPanel, PredicateMap};
-pub use report::{Cell, Onset, Outcome, Placement, PlanSummary, Report, SpeedEntry, SpeedOutcome, WorkloadReport};
+pub use report::{Cell, Onset, Outcome, Placement, PlanSummary, SpeedEntry, SpeedOutcome, TradeReport, WorkloadReport};
 
 /// The arithmetic facts the trade needs about a model, read from the model's own
 /// [`crate::model::Arithmetic`] (the one per-model choice; the trade runs the float
@@ -313,7 +313,7 @@ pub(crate) struct Sizes {
 /// let report = run(&Config::quick(), &mut |line| eprintln!("{line}"));
 /// println!("{}", report.to_markdown());
 /// ```
-pub fn run(config: &Config, progress: &mut dyn FnMut(&str)) -> Report {
+pub fn run(config: &Config, progress: &mut dyn FnMut(&str)) -> TradeReport {
     let sizes = config.sizes();
     let mut workloads = Vec::new();
     for &family in &config.families {
@@ -327,7 +327,7 @@ pub fn run(config: &Config, progress: &mut dyn FnMut(&str)) -> Report {
     }
     progress("predicate map");
     let map = PredicateMap::compute(predicate_map::MAP_MAGNITUDE);
-    Report {
+    TradeReport {
         config: config.clone(),
         canvas: sizes.canvas,
         repetitions: sizes.repetitions,

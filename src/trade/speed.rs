@@ -81,17 +81,17 @@ pub(crate) fn model_jobs<'a>(
     prims: &'a Primitives,
     target: &'a Target,
 ) -> Result<(Job<'a>, Option<Job<'a>>), String> {
-    let prepared = prepare(model, prims, target).map_err(|e| e.to_string())?;
+    let prepared = prepare(prims, target, model).map_err(|e| e.to_string())?;
     let mut sink = CountBuffer::new(target.width, target.height);
     let mut sink2 = CountBuffer::new(target.width, target.height);
     let draw: Job<'a> = Box::new(move || {
-        prepared.draw(target, &mut sink);
+        prepared.render(target, &mut sink);
         std::hint::black_box(&sink);
         0
     });
     let full: Job<'a> = Box::new(move || {
-        let p = prepare(model, prims, target).expect("prepared once already");
-        p.draw(target, &mut sink2);
+        let p = prepare(prims, target, model).expect("prepared once already");
+        p.render(target, &mut sink2);
         std::hint::black_box(&sink2);
         0
     });
@@ -104,7 +104,7 @@ pub(crate) fn refusal(model: Model, prims: &Primitives, target: &Target) -> Resu
     if super::arith::is_unbounded(model) {
         return Ok(());
     }
-    prepare(model, prims, target).map(|_| ()).map_err(|e| e.to_string())
+    prepare(prims, target, model).map(|_| ()).map_err(|e| e.to_string())
 }
 
 /// Times every contender round-robin and reports its speeds.

@@ -142,9 +142,9 @@ fn reference(model: Model) -> Model {
 
 /// A model's covered pairs on `target`.
 fn pairs(model: Model, triangles: &[Triangle], target: &Target) -> Result<Pairs, String> {
-    let prepared = prepare(model, &Primitives::from_triangles(triangles), target).map_err(|e| e.to_string())?;
+    let prepared = prepare(&Primitives::from_triangles(triangles), target, model).map_err(|e| e.to_string())?;
     let mut p = Pairs::default();
-    prepared.draw(target, &mut p);
+    prepared.render(target, &mut p);
     Ok(p.sorted())
 }
 
@@ -226,7 +226,7 @@ fn measure(w: &Workload, config: &Config, sizes: &Sizes) -> WorkloadReport {
     let plans = [Model::Exact, Model::ExactSnapped]
         .into_iter()
         .filter_map(|m| {
-            let p = plan_scene(m, &prims, &target).ok()?;
+            let p = plan_scene(&prims, &target, m).ok()?;
             Some(PlanSummary {
                 model: m.name(),
                 by_width: p.by_width().into_iter().map(|(w, n)| (w.name(), n)).collect(),
@@ -332,9 +332,9 @@ fn origin_metrics(
     n: usize,
 ) -> Result<Vec<Metric>, String> {
     let prims = Primitives::from_triangles(triangles);
-    let prepared = prepare(model, &prims, target).map_err(|e| e.to_string())?;
+    let prepared = prepare(&prims, target, model).map_err(|e| e.to_string())?;
     let mut p = Pairs::default();
-    prepared.draw(target, &mut p);
+    prepared.render(target, &mut p);
     let d = departures(&r.pairs, &p.sorted(), r.mask());
     let mut metrics = area_metrics(&d, r.mask.is_some());
     let picks = samples(r, n);

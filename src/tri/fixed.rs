@@ -171,7 +171,7 @@ fn edges_at_first_sample(tri: &FixedTriangle, target: &Target) -> Option<(Edges<
 }
 
 /// The per-triangle setup shared by the integer rasterizers.
-pub(crate) struct Setup {
+pub(crate) struct FixedSetup {
     /// The oriented edges with their tie-rule biases.
     pub edges: [FixedEdge; 3],
     /// The sample grid in subpixels.
@@ -186,7 +186,7 @@ pub(crate) struct Setup {
 /// # Panics
 /// When `tri` was snapped to another grid than `target`'s subpixel bits.
 #[inline]
-pub(crate) fn setup(tri: &FixedTriangle, target: &Target) -> Option<Setup> {
+pub(crate) fn setup(tri: &FixedTriangle, target: &Target) -> Option<FixedSetup> {
     let conv = &target.convention;
     assert_eq!(
         tri.bits, conv.subpixel_bits,
@@ -194,7 +194,7 @@ pub(crate) fn setup(tri: &FixedTriangle, target: &Target) -> Option<Setup> {
     );
     let edges = triangle_edges(tri, conv.tie_rule)?;
     let range = fixed_sample_range(tri.coords().into_iter(), target)?;
-    Some(Setup {
+    Some(FixedSetup {
         edges,
         grid: FixedGrid::of(conv),
         range,

@@ -1,7 +1,7 @@
 //! The planned exact engine for triangles: the oracle's decisions, computed incrementally
 //! in the narrowest arithmetic that provably holds them ([`crate::num::plan`]).
 //!
-//! Setup, once per triangle, in exact integers: the scale `L` that makes every vertex
+//! TriangleSetup, once per triangle, in exact integers: the scale `L` that makes every vertex
 //! coordinate and the pixel centre integers, the vertices taken relative to the first
 //! sample of the triangle's pixel range, and per edge (oriented so the interior is
 //! `E > 0`) the value `E - bias` at that sample and its steps, `L dY` one pixel right and
@@ -67,14 +67,14 @@ pub struct PlannedTriangle {
 }
 
 /// The exact setup: range, scale, edges and the bound.
-struct Setup {
+struct TriangleSetup {
     range: PixelRange,
     scale: BigInt,
     edges: Edges<BigInt>,
     bound: Bound,
 }
 
-fn setup(tri: &Triangle, target: &Target, rule: AnyTieRule) -> Option<Setup> {
+fn setup(tri: &Triangle, target: &Target, rule: AnyTieRule) -> Option<TriangleSetup> {
     let range = exact_sample_range(tri.v.iter(), target)?;
     let centre = target.convention.pixel_centre.offset();
     let scale = scale_of(tri.v.iter().flat_map(|p| [&p.x, &p.y]).chain([&centre]));
@@ -120,7 +120,7 @@ fn setup(tri: &Triangle, target: &Target, rule: AnyTieRule) -> Option<Setup> {
         }
     }
     let bound = bound_of(&edges, &range);
-    Some(Setup {
+    Some(TriangleSetup {
         range,
         scale,
         edges,

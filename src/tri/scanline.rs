@@ -22,7 +22,7 @@ use crate::edge::fixed::FixedEdge;
 use crate::geom::FixedTriangle;
 use crate::num::dda::CeilDda64;
 use crate::raster::FixedGrid;
-use crate::tri::fixed::{setup, Setup};
+use crate::tri::fixed::{setup, FixedSetup};
 
 /// The magnitude every value of a walk stays below: [`CeilDda64`]'s envelope.
 const WALK_LIMIT: u64 = 1 << 62;
@@ -99,7 +99,7 @@ fn walk_value(v: i64) -> i64 {
 /// # Panics
 /// When `tri` was snapped to another grid than `target`'s subpixel bits.
 pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target: &Target, sink: &mut S) {
-    let Some(Setup { edges, grid, range }) = setup(tri, target) else {
+    let Some(FixedSetup { edges, grid, range }) = setup(tri, target) else {
         return;
     };
     // A horizontal edge: inside iff -(sy - ay) dx - bias >= 0, the same for the whole row.

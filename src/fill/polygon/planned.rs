@@ -4,7 +4,7 @@
 //! 2nd ed., §3.6, scan-converting polygons) in the narrowest arithmetic that provably holds
 //! every value it adds ([`crate::num::plan`]).
 //!
-//! **Setup**, once per polygon, in exact integers. The scale `L` is the least common
+//! **PolygonSetup**, once per polygon, in exact integers. The scale `L` is the least common
 //! multiple of the denominators of every vertex and of the pixel centre; coordinates are
 //! taken relative to the first sample of the outline's pixel range (columns `0..=w`, rows
 //! `0..=h` locally), so local pixel `(i, j)` has its sample at `(i L, j L)`. Only the
@@ -138,7 +138,7 @@ pub struct PlannedPolygon {
 }
 
 /// The exact setup.
-struct Setup {
+struct PolygonSetup {
     range: PixelRange,
     scale: BigInt,
     edges: Vec<TableEdge>,
@@ -257,7 +257,7 @@ fn table_edge(
     Some((edge, Some(remainders)))
 }
 
-fn setup(poly: &Polygon, target: &Target) -> Option<Setup> {
+fn setup(poly: &Polygon, target: &Target) -> Option<PolygonSetup> {
     let range = exact_sample_range(poly.outline.iter(), target)?;
     let centre = target.convention.pixel_centre.offset();
     let scale = scale_of(poly.contours().flatten().flat_map(|p| [&p.x, &p.y]).chain([&centre]));
@@ -301,7 +301,7 @@ fn setup(poly: &Polygon, target: &Target) -> Option<Setup> {
         }
     }
     edges.sort_by_key(|e| e.first);
-    Some(Setup {
+    Some(PolygonSetup {
         range,
         scale: frame.scale,
         edges,

@@ -2,7 +2,7 @@
 
 use num_rational::BigRational;
 
-use super::{models, Case, CaseRun, Outcome, Skip, CANVAS};
+use super::{models, Case, CaseRun, CheckOutcome, Skip, CANVAS};
 use crate::check::{
     check_agreement, check_barycentric_exact, check_barycentric_fixed, check_clip_raster, check_diamond_agreement,
     check_inside, check_line_pixels, check_line_reference, check_line_symmetry, check_rotation_and_winding,
@@ -72,11 +72,11 @@ fn skip(invariant: &'static str, model: Model, reason: &'static str) -> Skip {
 /// the invariance invariant on the case's triangle and meshes; returns the float32
 /// barycentric sum errors (ulps of 1) and the number of samples where none could be
 /// measured.
-fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) -> (Vec<f64>, u64) {
+fn triangle_checks(c: &Case, out: &mut Vec<CheckOutcome>, skipped: &mut Vec<Skip>) -> (Vec<f64>, u64) {
     let tri_target = target(CANVAS, c.preset);
     let tri = std::slice::from_ref(&c.triangle);
     let mut push = |invariant, model: Model, result, triangles: &[Triangle], canvas| {
-        out.push(Outcome {
+        out.push(CheckOutcome {
             invariant,
             model,
             label: model.name(),
@@ -135,10 +135,10 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
     ];
     for (mesh, side, (w_name, a_name), models) in meshes {
         let mesh_target = target(side, c.preset);
-        let reference_exact = render_triangles(Model::ExactPlain, &mesh.triangles, &mesh_target);
-        let reference_snapped = render_triangles(Model::ExactSnappedPlain, &mesh.triangles, &mesh_target);
+        let reference_exact = render_triangles(&mesh.triangles, &mesh_target, Model::ExactPlain);
+        let reference_snapped = render_triangles(&mesh.triangles, &mesh_target, Model::ExactSnappedPlain);
         for model in models {
-            let (watertight, agreement) = match render_triangles(model, &mesh.triangles, &mesh_target) {
+            let (watertight, agreement) = match render_triangles(&mesh.triangles, &mesh_target, model) {
                 Err(e) => {
                     let v = Violation::new("watertight", e.to_string());
                     (Err(v.clone()), Err(v))
@@ -169,9 +169,9 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
     // plain oracle.
     for model in models::must_hold() {
         let reference = model.reference();
-        match render_triangles(reference, tri, &tri_target) {
+        match render_triangles(tri, &tri_target, reference) {
             Ok(expected) => {
-                let result = render_triangles(model, tri, &tri_target)
+                let result = render_triangles(tri, &tri_target, model)
                     .map_err(|e| Violation::new("agreement", e.to_string()))
                     .and_then(|cov| check_agreement(reference.name(), &expected, model.name(), &cov, tri, &tri_target));
                 push("agreement (triangle)", model, result, tri, CANVAS);
@@ -189,7 +189,7 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
         push(
             "rotation/winding",
             model,
-            check_rotation_and_winding(model, &c.triangle, &tri_target),
+            check_rotation_and_winding(&c.triangle, &tri_target, model),
             tri,
             CANVAS,
         );
@@ -199,7 +199,7 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
         push(
             "translation",
             model,
-            check_translation(model, &c.triangle, dx, dy, &tri_target),
+            check_translation(&c.triangle, &tri_target, dx, dy, model),
             tri,
             CANVAS,
         );
@@ -210,7 +210,7 @@ fn triangle_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) ->
 /// The clipping invariant: exact Sutherland-Hodgman output inside the window and
 /// rasterizing to raster(P) ∩ raster(W); exact Cohen-Sutherland keeping exactly the part
 /// inside; the float forms' outputs outside the window counted (the measured trade).
-fn clip_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
+fn clip_checks(c: &Case, out: &mut Vec<CheckOutcome>, skipped: &mut Vec<Skip>) {
     let target = target(CANVAS, c.preset);
     let polygon_case = || Scene {
         polygons: vec![c.polygon.clone()],
@@ -218,7 +218,7 @@ fn clip_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
         ..scene(c, CANVAS, &[])
     };
     let mut push = |invariant, model: Model, label, result, scene| {
-        out.push(Outcome {
+        out.push(CheckOutcome {
             invariant,
             model,
             label,
@@ -250,7 +250,7 @@ fn clip_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
         let reference = model.reference();
         let scene = polygon_case();
         let drawn =
-            |m| render(m, &scene.primitives(), &target).map_err(|e| Violation::new("clip agreement", e.to_string()));
+            |m| render(&scene.primitives(), &target, m).map_err(|e| Violation::new("clip agreement", e.to_string()));
         let result = drawn(reference)
             .and_then(|expected| Ok((expected, drawn(model)?)))
             .and_then(|(expected, theirs)| {
@@ -337,10 +337,10 @@ fn clip_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
 
 /// The polygon invariant: the scanline filler equals the oracle on any polygon; a simple
 /// polygon's triangulation covers exactly its fill, once (the `fixed` model's route).
-fn polygon_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
+fn polygon_checks(c: &Case, out: &mut Vec<CheckOutcome>, skipped: &mut Vec<Skip>) {
     let target = target(CANVAS, c.preset);
     let mut push = |invariant, model: Model, result, polygon: &Polygon| {
-        out.push(Outcome {
+        out.push(CheckOutcome {
             invariant,
             model,
             label: model.name(),
@@ -353,12 +353,12 @@ fn polygon_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
     };
     let fill = |model, p: &Polygon| {
         render(
-            model,
             &Primitives {
                 polygons: vec![p.clone()],
                 ..Primitives::default()
             },
             &target,
+            model,
         )
         .map_err(|e| Violation::new("polygon agreement", e.to_string()))
     };
@@ -398,14 +398,14 @@ fn polygon_checks(c: &Case, out: &mut Vec<Outcome>, skipped: &mut Vec<Skip>) {
 
 /// The line invariant: Bresenham (both ties), its reversal, diamond-exit agreement, and
 /// the DDA's departures (the float trade for lines).
-fn line_checks(c: &Case, out: &mut Vec<Outcome>) {
+fn line_checks(c: &Case, out: &mut Vec<CheckOutcome>) {
     let as_line = |(a, b): ([i64; 2], [i64; 2]), tie| Line {
         from: Point::from_ints(a[0], a[1]),
         to: Point::from_ints(b[0], b[1]),
         rule: LineRule::Bresenham(tie),
     };
     let mut push = |invariant, model: Model, label, result, line: Line| {
-        out.push(Outcome {
+        out.push(CheckOutcome {
             invariant,
             model,
             label,

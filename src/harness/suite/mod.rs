@@ -26,10 +26,10 @@
 //! accumulates the outcomes and renders the table, its legend ([`legend`]: one line per
 //! invariant, model and column) and the summary `rasterproof check` prints.
 //!
-//! At scale ([`Plan`]): the cases of one [`Shard`] of the run (a partition by case index,
+//! At scale ([`SuiteConfig`]): the cases of one [`Shard`] of the run (a partition by case index,
 //! so that N machines run disjoint cases), on several threads, within a time budget, into
-//! a [`Report`] (the table, the findings and every failing case's scene) that is written
-//! as JSON or JUnit XML, and that [merges](Report::merge) with the other shards' into the
+//! a [`SuiteReport`] (the table, the findings and every failing case's scene) that is written
+//! as JSON or JUnit XML, and that [merges](SuiteReport::merge) with the other shards' into the
 //! report of the whole run.
 //!
 //! ```
@@ -54,8 +54,8 @@ mod tally;
 
 pub use cases::{generate, Case, CANVAS};
 pub use checks::run_case;
-pub use report::{Failure, Finding, Report};
-pub use run::{Hooks, OnCase, Plan, SceneFiles, MAX_JOBS};
+pub use report::{CaseFailure, FailureGroup, SuiteReport};
+pub use run::{Hooks, OnCase, SceneFiles, SuiteConfig, MAX_JOBS};
 pub use shard::{Shard, Shards};
 pub use tally::{Row, Tally};
 
@@ -65,7 +65,7 @@ use crate::scene::Scene;
 
 /// One checker's verdict on one case.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Outcome {
+pub struct CheckOutcome {
     /// The invariant, as the table names it (`"watertight"`, `"clip inside"`, ...).
     pub invariant: &'static str,
     /// The model checked.
@@ -80,7 +80,7 @@ pub struct Outcome {
     pub scene: Scene,
 }
 
-impl Outcome {
+impl CheckOutcome {
     /// When this outcome failed: the scene that reproduces it (what `check --out` writes)
     /// and the violation; `None` when it held.
     pub fn repro(&self) -> Option<(&Scene, &Violation)> {
@@ -100,7 +100,7 @@ pub struct Skip {
     pub invariant: &'static str,
     /// The model it would have checked.
     pub model: Model,
-    /// The model's name in the table (see [`Outcome::label`]).
+    /// The model's name in the table (see [`CheckOutcome::label`]).
     pub label: &'static str,
     /// Why it could not run, e.g. `"snapping folded the polygon"`.
     pub reason: &'static str,
@@ -112,7 +112,7 @@ pub struct CaseRun {
     /// The case's mesh family ([`Case::mesh_family`]), for the by-family count.
     pub mesh_family: &'static str,
     /// One outcome per checker run, in the order they ran.
-    pub outcomes: Vec<Outcome>,
+    pub outcomes: Vec<CheckOutcome>,
     /// The checks that could not run on this case, with their reasons: with
     /// [`CaseRun::outcomes`], one entry per row of the table.
     pub skipped: Vec<Skip>,

@@ -1,5 +1,5 @@
-//! Running the suite at scale: a [`Plan`] (seed, cases, shard, threads, time budget) run
-//! by the harness's [`Runner`] into a [`Report`]. The shard's cases run on `jobs`
+//! Running the suite at scale: a [`SuiteConfig`] (seed, cases, shard, threads, time budget) run
+//! by the harness's [`Runner`] into a [`SuiteReport`]. The shard's cases run on `jobs`
 //! threads; their results come back in case order and are folded into the report one by
 //! one as they come, so the report does not depend on the number of threads.
 
@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
-use super::{generate, run_case, CaseRun, Outcome, Report, Shard};
+use super::{generate, run_case, CaseRun, CheckOutcome, Shard, SuiteReport};
 use crate::harness::runner::{RunError, Runner, DEFAULT_STACK};
 
 /// At most this many threads.
@@ -37,7 +37,7 @@ impl SceneFiles {
     /// assert!(path.starts_with("out") && path.to_str().unwrap().ends_with(".json"));
     /// assert!(files.path_for(0, &run.outcomes[0]).is_none() || run.outcomes[0].result.is_err());
     /// ```
-    pub fn path_for(&self, k: u64, o: &Outcome) -> Option<PathBuf> {
+    pub fn path_for(&self, k: u64, o: &CheckOutcome) -> Option<PathBuf> {
         if o.result.is_ok() || !(o.is_fatal() || self.float) {
             return None;
         }
@@ -46,7 +46,7 @@ impl SceneFiles {
 }
 
 /// `dir/case-K-INVARIANT-MODEL.json` for outcome `o` of case `k`.
-fn scene_path(dir: &Path, k: u64, o: &Outcome) -> PathBuf {
+fn scene_path(dir: &Path, k: u64, o: &CheckOutcome) -> PathBuf {
     let slug: String = o
         .invariant
         .chars()
@@ -60,13 +60,13 @@ fn scene_path(dir: &Path, k: u64, o: &Outcome) -> PathBuf {
 /// on `jobs` threads, stopping when `budget` has passed.
 ///
 /// ```
-/// use rasterproof::harness::suite::{Plan, Shard};
-/// let report = Plan { shard: Shard::new(2, 3).unwrap(), jobs: 2, ..Plan::new(7, 6) }.run().unwrap();
+/// use rasterproof::harness::suite::{SuiteConfig, Shard};
+/// let report = SuiteConfig { shard: Shard::new(2, 3).unwrap(), jobs: 2, ..SuiteConfig::new(7, 6) }.run().unwrap();
 /// assert_eq!(report.cases_run(), 2); // cases 1 and 4
 /// assert!(report.is_complete() && report.passed());
 /// ```
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Plan {
+pub struct SuiteConfig {
     /// The seed of the case generator.
     pub seed: u64,
     /// The whole run's cases, `0..cases`, whatever the shard.
@@ -85,7 +85,7 @@ pub struct Plan {
 /// What [`Hooks::on_case`] is called with: a case's index and outcomes.
 pub type OnCase<'a> = &'a mut dyn FnMut(u64, &CaseRun) -> Result<(), String>;
 
-/// What the caller sees while a [`Plan`] runs.
+/// What the caller sees while a [`SuiteConfig`] runs.
 #[derive(Default)]
 pub struct Hooks<'a> {
     /// When set, no further case starts; the report says the run was interrupted.
@@ -97,10 +97,10 @@ pub struct Hooks<'a> {
     pub on_case: Option<OnCase<'a>>,
 }
 
-impl Plan {
+impl SuiteConfig {
     /// Every case of `0..cases` seeded `seed`, one thread, no budget, no files.
-    pub fn new(seed: u64, cases: u64) -> Plan {
-        Plan {
+    pub fn new(seed: u64, cases: u64) -> SuiteConfig {
+        SuiteConfig {
             seed,
             cases,
             shard: Shard::WHOLE,
@@ -115,11 +115,11 @@ impl Plan {
         self.shard.case_count(self.cases)
     }
 
-    /// Runs the plan with no hooks (see [`Plan::run_with`]).
+    /// Runs the plan with no hooks (see [`SuiteConfig::run_with`]).
     ///
     /// # Errors
-    /// As [`Plan::run_with`].
-    pub fn run(&self) -> Result<Report, String> {
+    /// As [`SuiteConfig::run_with`].
+    pub fn run(&self) -> Result<SuiteReport, String> {
         self.run_with(Hooks::default())
     }
 
@@ -130,7 +130,7 @@ impl Plan {
     /// # Errors
     /// `jobs` outside `1..=MAX_JOBS`, the threads cannot start, a case cannot be
     /// generated, or `hooks.on_case` fails: its message.
-    pub fn run_with(&self, mut hooks: Hooks<'_>) -> Result<Report, String> {
+    pub fn run_with(&self, mut hooks: Hooks<'_>) -> Result<SuiteReport, String> {
         if !(1..=MAX_JOBS).contains(&self.jobs) {
             return Err(format!("jobs {}: expected 1..={MAX_JOBS} threads", self.jobs));
         }
@@ -154,8 +154,9 @@ impl Plan {
             run
         };
         let files = self.scene_files.as_ref();
-        let path_of = |k: u64| move |o: &Outcome| files.and_then(|f| f.path_for(k, o)).map(|p| p.display().to_string());
-        let mut report = Report::new(self.seed, self.cases, self.shard);
+        let path_of =
+            |k: u64| move |o: &CheckOutcome| files.and_then(|f| f.path_for(k, o)).map(|p| p.display().to_string());
+        let mut report = SuiteReport::new(self.seed, self.cases, self.shard);
         let mut fold = |j: u64, run: Result<CaseRun, String>| -> Result<(), String> {
             let k = case_of(j);
             let run = run?;
@@ -178,7 +179,7 @@ impl Plan {
     }
 
     /// Why the run ended after `report`'s cases: interrupted, or the budget.
-    fn stopped_why(&self, report: &Report, interrupted: bool) -> String {
+    fn stopped_why(&self, report: &SuiteReport, interrupted: bool) -> String {
         let shard = if self.shard == Shard::WHOLE {
             String::new()
         } else {
@@ -204,10 +205,10 @@ mod tests {
     /// says so; a zero budget stops at once too; jobs 0 is refused.
     #[test]
     fn threads_budget_and_stop() {
-        let one = Plan::new(3, 3).run().unwrap();
-        let two = Plan {
+        let one = SuiteConfig::new(3, 3).run().unwrap();
+        let two = SuiteConfig {
             jobs: 2,
-            ..Plan::new(3, 3)
+            ..SuiteConfig::new(3, 3)
         }
         .run()
         .unwrap();
@@ -215,7 +216,7 @@ mod tests {
         assert_eq!(one.to_json(), two.to_json());
 
         let stop = AtomicBool::new(true);
-        let stopped = Plan::new(3, 6)
+        let stopped = SuiteConfig::new(3, 6)
             .run_with(Hooks {
                 stop: Some(&stop),
                 ..Hooks::default()
@@ -225,10 +226,10 @@ mod tests {
         assert!(!stopped.is_complete());
         assert_eq!(stopped.stopped(), ["interrupted after 0 of 6 cases"]);
 
-        let none = Plan {
+        let none = SuiteConfig {
             budget: Some(Duration::ZERO),
             shard: Shard::new(1, 2).unwrap(),
-            ..Plan::new(3, 6)
+            ..SuiteConfig::new(3, 6)
         }
         .run()
         .unwrap();
@@ -237,9 +238,9 @@ mod tests {
             ["shard 1/2: the time budget (0ns) ran out after 0 of 3 cases"]
         );
 
-        let e = Plan {
+        let e = SuiteConfig {
             jobs: 0,
-            ..Plan::new(3, 6)
+            ..SuiteConfig::new(3, 6)
         }
         .run()
         .unwrap_err();
@@ -254,10 +255,10 @@ mod tests {
             seen.push(k);
             Ok(())
         };
-        Plan {
+        SuiteConfig {
             jobs: 2,
             shard: Shard::new(2, 2).unwrap(),
-            ..Plan::new(1, 7)
+            ..SuiteConfig::new(1, 7)
         }
         .run_with(Hooks {
             on_case: Some(&mut on_case),

@@ -136,7 +136,7 @@ impl Tally {
     }
 
     /// Adds `other`'s counts to this tally's: the tally of both runs' cases (which must
-    /// be disjoint for the result to mean anything; [`super::Report::merge`] checks that).
+    /// be disjoint for the result to mean anything; [`super::SuiteReport::merge`] checks that).
     /// The seed stays this tally's.
     pub fn merge(&mut self, other: &Tally) {
         self.cases += other.cases;
@@ -261,7 +261,7 @@ impl Tally {
 
     /// The table as text, one string per line (no newlines): the [header](Tally::header),
     /// the [table](Tally::body), the [legend](Tally::legend) and the
-    /// [verdict](Tally::verdict). `rasterproof check` prints [`super::Report::lines`]: these
+    /// [verdict](Tally::verdict). `rasterproof check` prints [`super::SuiteReport::lines`]: these
     /// with the shard, how many cases ran and the findings.
     pub fn lines(&self) -> Vec<String> {
         let mut lines = vec![self.header()];

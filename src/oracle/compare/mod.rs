@@ -1,10 +1,10 @@
 //! Comparing another renderer's output with the oracle's, pixel by pixel, and explaining
-//! every difference ([`compare`], [`Report`]).
+//! every difference ([`compare`], [`CompareReport`]).
 //!
 //! This module holds the diffing: how a pixel differs ([`PixelKind`], [`Relation`]), why
 //! a comparison cannot be made ([`CompareError`]) and [`compare`] itself. Its parts, each
 //! re-exported here: the evidence at one differing pixel and the spatial index of the
-//! shapes that may explain it (`pixel`), and the [`Report`] with its text, JSON and
+//! shapes that may explain it (`pixel`), and the [`CompareReport`] with its text, JSON and
 //! difference picture (`report`).
 
 mod pixel;
@@ -14,8 +14,8 @@ use std::collections::BTreeMap;
 use std::fmt;
 
 pub(crate) use pixel::{evidence, pixel_box_holds};
-pub use pixel::{DiffPixel, Finding};
-pub use report::{reason_text, Report, EMPTY_COLOUR, MATCHED_COLOUR, REPORT_VERSION};
+pub use pixel::{DiffPixel, PixelFinding};
+pub use report::{reason_text, CompareReport, EMPTY_COLOUR, MATCHED_COLOUR, REPORT_VERSION};
 
 use super::reason::Classifier;
 use super::theirs::{Format, TheirPixel, Theirs};
@@ -161,9 +161,9 @@ impl std::error::Error for CompareError {}
 /// use rasterproof::scene::parse_scene;
 /// let scene = parse_scene(r#"{"width": 4, "height": 4, "triangles": [{"v": [[0, 0], [4, 0], [0, 4]]}]}"#, "s.json").unwrap();
 /// let target = scene.target().unwrap();
-/// let ours = render(Model::ExactSnapped, &scene.primitives(), &target).unwrap();
+/// let ours = render(&scene.primitives(), &target, Model::ExactSnapped).unwrap();
 /// let theirs = Theirs::from_coverage(&ours, Format::Ids);
-/// let report = compare(&scene.primitives(), &target, Model::ExactSnapped, &theirs).unwrap();
+/// let report = compare(&scene.primitives(), &target, &theirs, Model::ExactSnapped).unwrap();
 /// assert!(report.pixels.is_empty());
 /// ```
 ///
@@ -172,14 +172,14 @@ impl std::error::Error for CompareError {}
 pub fn compare(
     primitives: &Primitives,
     target: &Target,
-    model: Model,
     theirs: &Theirs,
-) -> Result<Report, CompareError> {
+    model: Model,
+) -> Result<CompareReport, CompareError> {
     SizeMismatch::check(theirs, target).map_err(CompareError::Size)?;
     if !model.is_exact() {
         return Err(CompareError::NotExact(model));
     }
-    let prepared = prepare(model, primitives, target).map_err(CompareError::Model)?;
+    let prepared = prepare(primitives, target, model).map_err(CompareError::Model)?;
     let ours = prepared.coverage(target);
     let shapes = prepared.shapes().ok_or(CompareError::NotExact(model))?;
     let mut classifier = Classifier::new(primitives, target, model, &shapes);
@@ -221,7 +221,7 @@ pub fn compare(
             });
         }
     }
-    Ok(Report {
+    Ok(CompareReport {
         model,
         convention: target.convention,
         format: theirs.format(),

@@ -1,4 +1,4 @@
-//! The evidence at one differing pixel: a primitive's [`Finding`] (named by their output,
+//! The evidence at one differing pixel: a primitive's [`PixelFinding`] (named by their output,
 //! or guessed as the primitive that explains the pixel best), the oracle's exact evidence
 //! for a shape at a sample, one line ([`evidence`]), and the coarse spatial index of the
 //! shapes' boxes that proposes the candidates (`Candidates`).
@@ -15,7 +15,7 @@ use crate::raster::sample_exact;
 
 /// One primitive's difference at one pixel, explained.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Finding {
+pub struct PixelFinding {
     /// The primitive (`None`: their output names an owner no primitive explains).
     pub id: Option<u32>,
     /// Its scene field and index (`triangles[3]`); `None` with `id`, or for an id their
@@ -47,7 +47,7 @@ pub struct DiffPixel {
     /// Theirs.
     pub theirs: TheirPixel,
     /// Per primitive, why.
-    pub findings: Vec<Finding>,
+    pub findings: Vec<PixelFinding>,
 }
 
 /// The finding for a primitive their output (or the oracle) names.
@@ -59,10 +59,10 @@ pub(super) fn named(
     x: u32,
     y: u32,
     target: &Target,
-) -> Finding {
+) -> PixelFinding {
     let k = usize::try_from(id).ok().filter(|&k| k < classifier.shapes().len());
     let Some(k) = k else {
-        return Finding {
+        return PixelFinding {
             id: Some(id),
             primitive: None,
             relation,
@@ -72,7 +72,7 @@ pub(super) fn named(
         };
     };
     let reason = classifier.reason(k, x, y, relation == Relation::Extra);
-    Finding {
+    PixelFinding {
         id: Some(id),
         primitive: primitive_name(primitives, id),
         relation,
@@ -91,11 +91,11 @@ pub(super) fn guessed(
     x: u32,
     y: u32,
     target: &Target,
-) -> Finding {
+) -> PixelFinding {
     match classifier.best_extra(candidates, x, y) {
         Some((k, reason)) if reason.class() != ReasonClass::Gross => {
             let id = u32::try_from(k).expect("ids fit u32");
-            Finding {
+            PixelFinding {
                 id: Some(id),
                 primitive: primitive_name(primitives, id),
                 relation: Relation::Extra,
@@ -104,7 +104,7 @@ pub(super) fn guessed(
                 evidence: evidence(&classifier.shapes()[k], x, y, target),
             }
         }
-        best => Finding {
+        best => PixelFinding {
             id: None,
             primitive: None,
             relation: Relation::Extra,

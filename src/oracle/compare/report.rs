@@ -1,4 +1,4 @@
-//! The [`Report`] of a comparison: its summary, text, JSON and difference picture, and a
+//! The [`CompareReport`] of a comparison: its summary, text, JSON and difference picture, and a
 //! reason in words ([`reason_text`]).
 
 use std::collections::BTreeMap;
@@ -18,7 +18,7 @@ use crate::oracle::evidence::{distance_f64, distance_text, exact_distance};
 use crate::oracle::reason::{Reason, ReasonClass};
 use crate::oracle::theirs::{Format, TheirPixel};
 
-/// The version of the JSON report's schema ([`Report::to_json`]).
+/// The version of the JSON report's schema ([`CompareReport::to_json`]).
 pub const REPORT_VERSION: u32 = 1;
 
 /// The colour of a pixel both cover with the same owners, in the difference picture.
@@ -28,7 +28,7 @@ pub const EMPTY_COLOUR: [u8; 3] = [0, 0, 0];
 
 /// The comparison of their output with the oracle's.
 #[derive(Debug, Clone)]
-pub struct Report {
+pub struct CompareReport {
     /// The oracle model.
     pub model: Model,
     /// The convention.
@@ -48,7 +48,7 @@ pub struct Report {
     pub(super) ours: Coverage,
 }
 
-impl Report {
+impl CompareReport {
     /// True when their output equals the oracle's (as far as the format tells).
     pub fn identical(&self) -> bool {
         self.pixels.is_empty()
@@ -247,7 +247,7 @@ impl Report {
         img
     }
 
-    /// [`Report::diff_image`] scaled by `scale`.
+    /// [`CompareReport::diff_image`] scaled by `scale`.
     pub fn diff_picture(&self, scale: Scale) -> RgbImage {
         upscale(&self.diff_image(), scale)
     }

@@ -2,11 +2,11 @@
 //! output ([`hunt_convention`], [`preferred`]), and the fit made before a hunt
 //! ([`fit_convention`], `hunt --fit-first`).
 
-use super::{generate_scene, Family, HuntConfig};
+use super::{generate_scene, HuntConfig, SceneFamily};
 use crate::convention::{AnyTieRule, PixelCentre, TieRule};
 use crate::model::Model;
 use crate::oracle::fit::{fit, Candidate};
-use crate::oracle::program::Failure;
+use crate::oracle::program::RenderFailure;
 use crate::oracle::Theirs;
 use crate::scene::{Overrides, Scene};
 
@@ -26,10 +26,10 @@ pub const FIT_PROBES: u64 = 6;
 /// fit).
 pub fn fit_convention(
     config: &HuntConfig,
-    render: &dyn Fn(&Scene) -> Result<Theirs, Failure>,
+    render: &dyn Fn(&Scene) -> Result<Theirs, RenderFailure>,
 ) -> Result<(Candidate, Overrides, Model), String> {
     let probe = HuntConfig {
-        families: vec![Family::Mesh],
+        families: vec![SceneFamily::Mesh],
         ..config.clone()
     };
     let mut exact: Option<Vec<Candidate>> = None;

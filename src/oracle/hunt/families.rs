@@ -1,4 +1,4 @@
-//! The scenes a hunt draws: the scene [`Family`]s, the scene of one case
+//! The scenes a hunt draws: the scene [`SceneFamily`]s, the scene of one case
 //! ([`generate_scene`]), and the coordinates of a scene (every one, mutably; rounded to
 //! f32 by [`float32_exact`]).
 
@@ -15,7 +15,7 @@ use crate::strategy::{delaunay_mesh, diamond_line, pixel_line, tie_heavy_mesh, t
 
 /// A family of generated scenes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Family {
+pub enum SceneFamily {
     /// A tie-heavy mesh: vertices on pixel centres, corners and snapping ties.
     Mesh,
     /// A Delaunay mesh of random points on the 1/256 px grid.
@@ -34,36 +34,36 @@ pub enum Family {
     Polygons,
 }
 
-impl Family {
+impl SceneFamily {
     /// Every family.
-    pub const ALL: [Family; 8] = [
-        Family::Mesh,
-        Family::Delaunay,
-        Family::Triangles,
-        Family::Slivers,
-        Family::Huge,
-        Family::Fine,
-        Family::Lines,
-        Family::Polygons,
+    pub const ALL: [SceneFamily; 8] = [
+        SceneFamily::Mesh,
+        SceneFamily::Delaunay,
+        SceneFamily::Triangles,
+        SceneFamily::Slivers,
+        SceneFamily::Huge,
+        SceneFamily::Fine,
+        SceneFamily::Lines,
+        SceneFamily::Polygons,
     ];
 
     /// Its name on the command line.
     pub fn name(self) -> &'static str {
         match self {
-            Family::Mesh => "mesh",
-            Family::Delaunay => "delaunay",
-            Family::Triangles => "triangles",
-            Family::Slivers => "slivers",
-            Family::Huge => "huge",
-            Family::Fine => "fine",
-            Family::Lines => "lines",
-            Family::Polygons => "polygons",
+            SceneFamily::Mesh => "mesh",
+            SceneFamily::Delaunay => "delaunay",
+            SceneFamily::Triangles => "triangles",
+            SceneFamily::Slivers => "slivers",
+            SceneFamily::Huge => "huge",
+            SceneFamily::Fine => "fine",
+            SceneFamily::Lines => "lines",
+            SceneFamily::Polygons => "polygons",
         }
     }
 
-    /// Parses a name written by [`Family::name`].
-    pub fn from_name(name: &str) -> Option<Family> {
-        Family::ALL.into_iter().find(|f| f.name() == name)
+    /// Parses a name written by [`SceneFamily::name`].
+    pub fn from_name(name: &str) -> Option<SceneFamily> {
+        SceneFamily::ALL.into_iter().find(|f| f.name() == name)
     }
 
     /// Triangles, lines and polygons of this family on a `canvas` x `canvas` target.
@@ -77,13 +77,13 @@ impl Family {
         let mesh =
             |s: BoxedStrategy<crate::strategy::Mesh>| s.prop_map(|m| (m.triangles, Vec::new(), Vec::new())).boxed();
         match self {
-            Family::Mesh => mesh(tie_heavy_mesh(canvas, 12)),
-            Family::Delaunay => mesh(delaunay_mesh([0, 0], side, 8, 12)),
-            Family::Triangles => tris(crate::strategy::any_triangle(canvas)),
-            Family::Slivers => tris(triangle(Scale::Sliver, canvas)),
-            Family::Huge => tris(triangle(Scale::Huge, canvas)),
-            Family::Fine => mesh(delaunay_mesh([0, 0], side, 16, 12)),
-            Family::Lines => (
+            SceneFamily::Mesh => mesh(tie_heavy_mesh(canvas, 12)),
+            SceneFamily::Delaunay => mesh(delaunay_mesh([0, 0], side, 8, 12)),
+            SceneFamily::Triangles => tris(crate::strategy::any_triangle(canvas)),
+            SceneFamily::Slivers => tris(triangle(Scale::Sliver, canvas)),
+            SceneFamily::Huge => tris(triangle(Scale::Huge, canvas)),
+            SceneFamily::Fine => mesh(delaunay_mesh([0, 0], side, 16, 12)),
+            SceneFamily::Lines => (
                 proptest::collection::vec(pixel_line(side, 2), 0..3),
                 proptest::collection::vec(diamond_line(canvas), 0..3),
             )
@@ -96,7 +96,7 @@ impl Family {
                     (Vec::new(), bresenham.chain(d).collect(), Vec::new())
                 })
                 .boxed(),
-            Family::Polygons => proptest::collection::vec(any_polygon(canvas, 8), 1..3)
+            SceneFamily::Polygons => proptest::collection::vec(any_polygon(canvas, 8), 1..3)
                 .prop_map(|p| (Vec::new(), Vec::new(), p))
                 .boxed(),
         }

@@ -3,7 +3,7 @@
 //! distinct failure shrunk with their renderer in the loop to a minimal scene, with its
 //! explanation and a ready-to-paste Rust test.
 //!
-//! Their renderer is any `Fn(&Scene) -> Result<Theirs, Failure>`: an external program
+//! Their renderer is any `Fn(&Scene) -> Result<Theirs, RenderFailure>`: an external program
 //! ([`crate::oracle::program::Program`]) or a Rust closure.
 //!
 //! At scale, as `check` runs: one [`Shard`] of the cases (N machines run disjoint cases
@@ -28,19 +28,19 @@ use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 
 pub use convention::{fit_convention, hunt_convention, preferred, FIT_PROBES};
-pub use families::{float32_exact, generate_scene, Family};
+pub use families::{float32_exact, generate_scene, SceneFamily};
 pub use report::{HuntFinding, HuntReport, REPORT_FORMAT, REPORT_VERSION};
 pub use shrink::{primitive_count, shrink};
 pub use test_text::rust_test;
-pub use verdict::{judge, signatures, Signature, Verdict};
+pub use verdict::{judge, signatures, HuntVerdict, Signature};
 
-use verdict::Outcome;
+use verdict::CaseOutcome;
 
 use crate::convention::Preset;
 use crate::harness::runner::{RunError, Runner};
 use crate::harness::suite::Shard;
 use crate::model::Model;
-use crate::oracle::program::Failure;
+use crate::oracle::program::RenderFailure;
 use crate::oracle::theirs::Theirs;
 use crate::scene::{Overrides, Scene};
 
@@ -52,7 +52,7 @@ pub struct HuntConfig {
     /// Seed of the scene generator (same seed, same scenes).
     pub seed: u64,
     /// The families, case `k` drawing from `families[k % len]`.
-    pub families: Vec<Family>,
+    pub families: Vec<SceneFamily>,
     /// Canvas side of every scene.
     pub canvas: u32,
     /// The convention every scene states: a preset and overrides.
@@ -78,7 +78,7 @@ impl Default for HuntConfig {
         HuntConfig {
             cases: 200,
             seed: 0,
-            families: Family::ALL.to_vec(),
+            families: SceneFamily::ALL.to_vec(),
             canvas: 16,
             preset: Preset::D3d11,
             overrides: Overrides::default(),
@@ -92,7 +92,7 @@ impl Default for HuntConfig {
 }
 
 /// One case's scene, signatures and outcome.
-type CaseResult = (u64, Scene, Vec<Signature>, Outcome);
+type CaseResult = (u64, Scene, Vec<Signature>, CaseOutcome);
 
 /// Runs the hunt: the scenes of `config.shard`'s cases among `0..config.cases` rendered by
 /// `render` on `jobs` threads, each compared with the oracle; every distinct signature's
@@ -111,26 +111,26 @@ type CaseResult = (u64, Scene, Vec<Signature>, Outcome);
 /// use rasterproof::oracle::{Format, Theirs};
 /// // A renderer that is the oracle itself finds nothing.
 /// let honest = |s: &rasterproof::scene::Scene| {
-///     let c = render(Model::ExactSnapped, &s.primitives(), &s.target().unwrap()).unwrap();
+///     let c = render(&s.primitives(), &s.target().unwrap(), Model::ExactSnapped).unwrap();
 ///     Ok(Theirs::from_coverage(&c, Format::Json))
 /// };
 /// let config = HuntConfig { cases: 16, ..HuntConfig::default() };
-/// let report = hunt(&config, &honest, 1, &|| {}).unwrap();
+/// let report = hunt(&honest, &config, 1, &|| {}).unwrap();
 /// assert!(report.findings.is_empty());
 /// assert_eq!(report.same + report.refused, 16);
 /// // Shard 2 of 3: cases 1, 4, 7, 10, 13; a zero budget runs none of them.
 /// let shard = HuntConfig { shard: Shard::new(2, 3).unwrap(), ..config.clone() };
-/// assert_eq!(hunt(&shard, &honest, 2, &|| {}).unwrap().cases, 5);
+/// assert_eq!(hunt(&honest, &shard, 2, &|| {}).unwrap().cases, 5);
 /// let none = HuntConfig { budget: Some(std::time::Duration::ZERO), ..shard };
-/// let report = hunt(&none, &honest, 1, &|| {}).unwrap();
+/// let report = hunt(&honest, &none, 1, &|| {}).unwrap();
 /// assert_eq!((report.requested, report.cases, report.stopped_by_time), (5, 0, true));
 /// ```
 ///
 /// # Errors
 /// A scene could not be generated.
-pub fn hunt<R>(config: &HuntConfig, render: &R, jobs: usize, tick: &(dyn Fn() + Sync)) -> Result<HuntReport, String>
+pub fn hunt<R>(render: &R, config: &HuntConfig, jobs: usize, tick: &(dyn Fn() + Sync)) -> Result<HuntReport, String>
 where
-    R: Fn(&Scene) -> Result<Theirs, Failure> + Sync,
+    R: Fn(&Scene) -> Result<Theirs, RenderFailure> + Sync,
 {
     let requested = config.shard.case_count(config.cases);
     let deadline = config.budget.and_then(|b| Instant::now().checked_add(b));
@@ -144,7 +144,7 @@ where
             .ok_or_else(|| format!("the shard has no case at position {i}"))?;
         let scene = generate_scene(config, k)?;
         let verdict = judge(&scene, render(&scene), config.model);
-        let (sigs, outcome) = (signatures(&verdict), Outcome::of(&verdict));
+        let (sigs, outcome) = (signatures(&verdict), CaseOutcome::of(&verdict));
         tick();
         Ok((k, scene, sigs, outcome))
     };
@@ -165,10 +165,10 @@ where
     let mut first: BTreeMap<Signature, (u64, Scene, u64)> = BTreeMap::new();
     for (k, scene, sigs, outcome) in results {
         *match outcome {
-            Outcome::Same => &mut same,
-            Outcome::Differs => &mut differing,
-            Outcome::Failed => &mut failed,
-            Outcome::Refused => &mut refused,
+            CaseOutcome::Same => &mut same,
+            CaseOutcome::Differs => &mut differing,
+            CaseOutcome::Failed => &mut failed,
+            CaseOutcome::Refused => &mut refused,
         } += 1;
         for sig in sigs {
             first.entry(sig).or_insert_with(|| (k, scene.clone(), 0)).2 += 1;

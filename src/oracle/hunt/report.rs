@@ -5,9 +5,9 @@
 use std::fmt::Write as _;
 
 use super::shrink::primitive_count;
-use super::verdict::{Outcome, Signature, Verdict};
+use super::verdict::{CaseOutcome, HuntVerdict, Signature};
 use super::HuntConfig;
-use crate::harness::junit::{Failure, TestCase, TestSuite, TestSuites};
+use crate::harness::junit::{JunitFailure, TestCase, TestSuite, TestSuites};
 use crate::harness::suite::report::{json_object as object, json_value as j};
 use crate::scene::Scene;
 
@@ -25,7 +25,7 @@ pub struct HuntFinding {
     /// The scene after shrinking: no step of the shrinker keeps the failure.
     pub minimal: Scene,
     /// Their verdict on the minimal scene.
-    pub verdict: Verdict,
+    pub verdict: HuntVerdict,
     /// Runs of their renderer the shrink took.
     pub runs: usize,
 }
@@ -99,13 +99,13 @@ impl HuntReport {
     ///
     /// ```
     /// use rasterproof::oracle::hunt::{hunt, HuntConfig};
-    /// use rasterproof::oracle::program::{Failure, FailureKind};
+    /// use rasterproof::oracle::program::{RenderFailure, FailureKind};
     /// // A renderer that always fails: one finding.
     /// let broken = |_: &rasterproof::scene::Scene| {
-    ///     Err(Failure { kind: FailureKind::Exit, message: "exit status 3".to_string() })
+    ///     Err(RenderFailure { kind: FailureKind::Exit, message: "exit status 3".to_string() })
     /// };
     /// let config = HuntConfig { cases: 3, shrink_runs: 4, ..HuntConfig::default() };
-    /// let report = hunt(&config, &broken, 1, &|| {}).unwrap();
+    /// let report = hunt(&broken, &config, 1, &|| {}).unwrap();
     /// let v: serde_json::Value = serde_json::from_str(&report.to_json("broken")).unwrap();
     /// assert_eq!(v["format"], "rasterproof hunt report");
     /// assert_eq!(v["counts"]["failed"], 3);
@@ -128,7 +128,7 @@ impl HuntReport {
                     ("primitives", j(&primitive_count(&f.minimal))),
                     ("scene", scene),
                     ("shrink_runs", j(&f.runs)),
-                    ("minimal_verdict", j(Outcome::of(&f.verdict).name())),
+                    ("minimal_verdict", j(CaseOutcome::of(&f.verdict).name())),
                 ])
             })
             .collect();
@@ -188,12 +188,12 @@ impl HuntReport {
     ///
     /// ```
     /// use rasterproof::oracle::hunt::{hunt, HuntConfig};
-    /// use rasterproof::oracle::program::{Failure, FailureKind};
+    /// use rasterproof::oracle::program::{RenderFailure, FailureKind};
     /// let broken = |_: &rasterproof::scene::Scene| {
-    ///     Err(Failure { kind: FailureKind::Exit, message: "exit <3> & more".to_string() })
+    ///     Err(RenderFailure { kind: FailureKind::Exit, message: "exit <3> & more".to_string() })
     /// };
     /// let config = HuntConfig { cases: 2, shrink_runs: 4, ..HuntConfig::default() };
-    /// let xml = hunt(&config, &broken, 1, &|| {}).unwrap().junit("a < b");
+    /// let xml = hunt(&broken, &config, 1, &|| {}).unwrap().junit("a < b");
     /// assert!(xml.contains("<testsuite name=\"rasterproof hunt\" tests=\"2\" failures=\"1\""));
     /// assert!(xml.contains("value=\"a &lt; b\""));
     /// assert!(xml.contains("exit &lt;3&gt; &amp; more"));
@@ -256,13 +256,13 @@ fn finding_case(f: &HuntFinding) -> TestCase {
         f.runs,
         f.minimal.to_json()
     );
-    if let Verdict::Failed(failure) = &f.verdict {
+    if let HuntVerdict::Failed(failure) = &f.verdict {
         let _ = write!(text, "\ntheir renderer on the minimal scene: {failure}");
     }
     TestCase {
         classname: "rasterproof.hunt".to_string(),
         name: description,
-        failure: Some(Failure {
+        failure: Some(JunitFailure {
             kind: "finding".to_string(),
             message,
             text,
@@ -279,7 +279,7 @@ mod tests {
     use super::*;
     use crate::harness::suite::Shard;
     use crate::oracle::hunt::hunt;
-    use crate::oracle::program::Failure;
+    use crate::oracle::program::RenderFailure;
     use crate::oracle::theirs::Theirs;
 
     /// A report of no case is still a whole document: every field, empty findings.
@@ -291,13 +291,13 @@ mod tests {
             budget: Some(Duration::from_millis(1500)),
             ..HuntConfig::default()
         };
-        let never = |_: &Scene| -> Result<Theirs, Failure> { unreachable!("no case runs") };
+        let never = |_: &Scene| -> Result<Theirs, RenderFailure> { unreachable!("no case runs") };
         let report = hunt(
+            &never,
             &HuntConfig {
                 budget: Some(Duration::ZERO),
                 ..config.clone()
             },
-            &never,
             1,
             &|| {},
         )

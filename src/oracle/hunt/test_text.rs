@@ -3,7 +3,7 @@
 use std::fmt::Write as _;
 
 use super::report::HuntFinding;
-use super::verdict::Verdict;
+use super::verdict::HuntVerdict;
 use crate::model::Model;
 
 /// A Rust `#[test]` that pastes into a project's tests: the minimal scene, the oracle's
@@ -28,10 +28,10 @@ pub fn rust_test(f: &HuntFinding, n: usize, model: Model) -> String {
     s.push_str("    let target = scene.target().unwrap();\n");
     let _ = writeln!(
         s,
-        "    let oracle = rasterproof::model::render(rasterproof::model::Model::{model_path}, &scene.primitives(), &target).unwrap();"
+        "    let oracle = rasterproof::model::render(&scene.primitives(), &target, rasterproof::model::Model::{model_path}).unwrap();"
     );
     match &f.verdict {
-        Verdict::Differs(r) => {
+        HuntVerdict::Differs(r) => {
             s.push_str("    // The oracle's owners where their renderer differed:\n");
             for p in &r.pixels {
                 let ids: Vec<String> = p.ours.iter().map(u32::to_string).collect();
@@ -52,11 +52,11 @@ pub fn rust_test(f: &HuntFinding, n: usize, model: Model) -> String {
                 );
             }
         }
-        Verdict::Failed(failure) => {
+        HuntVerdict::Failed(failure) => {
             let _ = writeln!(s, "    // Their renderer failed on this scene: {failure}");
             s.push_str("    let _ = oracle;\n");
         }
-        Verdict::Same | Verdict::Refused(_) => s.push_str("    let _ = oracle;\n"),
+        HuntVerdict::Same | HuntVerdict::Refused(_) => s.push_str("    let _ = oracle;\n"),
     }
     s.push_str("    // Render `scene` with your renderer here and assert it equals `oracle`.\n}\n");
     s

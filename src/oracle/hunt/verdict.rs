@@ -1,46 +1,46 @@
-//! What their renderer did with one scene: the [`Verdict`] ([`judge`]), the case's
-//! [`Outcome`] that hunt counts, and the [`Signature`]s hunt deduplicates failures by
+//! What their renderer did with one scene: the [`HuntVerdict`] ([`judge`]), the case's
+//! [`CaseOutcome`] that hunt counts, and the [`Signature`]s hunt deduplicates failures by
 //! ([`signatures`]).
 
 use crate::model::Model;
-use crate::oracle::compare::{compare, PixelKind, Report};
-use crate::oracle::program::{Failure, FailureKind};
+use crate::oracle::compare::{compare, CompareReport, PixelKind};
+use crate::oracle::program::{FailureKind, RenderFailure};
 use crate::oracle::reason::ReasonClass;
 use crate::oracle::theirs::Theirs;
 use crate::scene::Scene;
 
 /// What their renderer did with one scene.
 #[derive(Debug, Clone)]
-pub enum Verdict {
+pub enum HuntVerdict {
     /// Identical to the oracle.
     Same,
     /// Different: the comparison.
-    Differs(Box<Report>),
+    Differs(Box<CompareReport>),
     /// Their renderer failed.
-    Failed(Failure),
+    Failed(RenderFailure),
     /// The oracle refused the scene (it is outside the model's envelope): not their fault.
     Refused(String),
 }
 
 /// Compares their output (or failure) on `scene` with `model`'s.
-pub fn judge(scene: &Scene, theirs: Result<Theirs, Failure>, model: Model) -> Verdict {
+pub fn judge(scene: &Scene, theirs: Result<Theirs, RenderFailure>, model: Model) -> HuntVerdict {
     let theirs = match theirs {
         Ok(t) => t,
-        Err(f) => return Verdict::Failed(f),
+        Err(f) => return HuntVerdict::Failed(f),
     };
     let Some(target) = scene.target() else {
-        return Verdict::Refused("invalid canvas or convention".to_string());
+        return HuntVerdict::Refused("invalid canvas or convention".to_string());
     };
-    match compare(&scene.primitives(), &target, model, &theirs) {
-        Ok(r) if r.identical() => Verdict::Same,
-        Ok(r) => Verdict::Differs(Box::new(r)),
-        Err(e) => Verdict::Refused(e.to_string()),
+    match compare(&scene.primitives(), &target, &theirs, model) {
+        Ok(r) if r.identical() => HuntVerdict::Same,
+        Ok(r) => HuntVerdict::Differs(Box::new(r)),
+        Err(e) => HuntVerdict::Refused(e.to_string()),
     }
 }
 
-/// How one case ended, as hunt counts it: its [`Verdict`] without the evidence.
+/// How one case ended, as hunt counts it: its [`HuntVerdict`] without the evidence.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(super) enum Outcome {
+pub(super) enum CaseOutcome {
     /// Identical to the oracle.
     Same,
     /// Different.
@@ -51,24 +51,24 @@ pub(super) enum Outcome {
     Refused,
 }
 
-impl Outcome {
+impl CaseOutcome {
     /// The outcome of `verdict`.
-    pub(super) fn of(verdict: &Verdict) -> Outcome {
+    pub(super) fn of(verdict: &HuntVerdict) -> CaseOutcome {
         match verdict {
-            Verdict::Same => Outcome::Same,
-            Verdict::Differs(_) => Outcome::Differs,
-            Verdict::Failed(_) => Outcome::Failed,
-            Verdict::Refused(_) => Outcome::Refused,
+            HuntVerdict::Same => CaseOutcome::Same,
+            HuntVerdict::Differs(_) => CaseOutcome::Differs,
+            HuntVerdict::Failed(_) => CaseOutcome::Failed,
+            HuntVerdict::Refused(_) => CaseOutcome::Refused,
         }
     }
 
     /// In one word: `same`, `differs`, `failed` or `refused`.
     pub(super) fn name(self) -> &'static str {
         match self {
-            Outcome::Same => "same",
-            Outcome::Differs => "differs",
-            Outcome::Failed => "failed",
-            Outcome::Refused => "refused",
+            CaseOutcome::Same => "same",
+            CaseOutcome::Differs => "differs",
+            CaseOutcome::Failed => "failed",
+            CaseOutcome::Refused => "refused",
         }
     }
 }
@@ -112,10 +112,10 @@ impl Signature {
 }
 
 /// Every signature a verdict shows (none for `Same` and `Refused`).
-pub fn signatures(verdict: &Verdict) -> Vec<Signature> {
+pub fn signatures(verdict: &HuntVerdict) -> Vec<Signature> {
     let mut out = Vec::new();
     match verdict {
-        Verdict::Differs(r) => {
+        HuntVerdict::Differs(r) => {
             for p in &r.pixels {
                 for f in &p.findings {
                     let kind = f
@@ -128,8 +128,8 @@ pub fn signatures(verdict: &Verdict) -> Vec<Signature> {
                 }
             }
         }
-        Verdict::Failed(f) => out.push(Signature::Failure(f.kind)),
-        Verdict::Same | Verdict::Refused(_) => {}
+        HuntVerdict::Failed(f) => out.push(Signature::Failure(f.kind)),
+        HuntVerdict::Same | HuntVerdict::Refused(_) => {}
     }
     out.sort();
     out.dedup();

@@ -218,7 +218,7 @@ impl<'a> Classifier<'a> {
         if let Some(s) = self.unclipped_shapes.get(&id) {
             return s.clone();
         }
-        let prepared = prepare(self.model, &single(self.primitives, id, true), self.target).ok();
+        let prepared = prepare(&single(self.primitives, id, true), self.target, self.model).ok();
         let shape = prepared.and_then(|p| p.shapes()).and_then(|s| s.into_iter().next());
         self.unclipped_shapes.insert(id, shape.clone());
         shape
@@ -302,7 +302,7 @@ impl<'a> Classifier<'a> {
             let m = BigRational::from_integer((i64::from(target.height) - 1).into())
                 + target.convention.pixel_centre.offset() * BigRational::from_integer(2.into());
             let mirror = |p: &Point| Point::new(p.x.clone(), &m - &p.y);
-            line::exact::draw_diamond(&mirror(from), &mirror(to), 0, target, &mut set);
+            line::exact::rasterize_diamond(&mirror(from), &mirror(to), 0, target, &mut set);
             let height = i64::from(target.height);
             return set.0.into_iter().map(|[i, j]| [i, height - 1 - j]).collect();
         }
@@ -325,10 +325,10 @@ impl<'a> Classifier<'a> {
             _ => return set.0,
         };
         match name {
-            "bresenham (stay)" => line::exact::draw_bresenham(from, to, BresenhamTie::Stay, 0, target, &mut set),
-            "bresenham (step)" => line::exact::draw_bresenham(from, to, BresenhamTie::Step, 0, target, &mut set),
-            "dda (f32)" => line::dda::draw(from, to, line::dda::DdaFloat::F32, 0, target, &mut set),
-            "dda (f64)" => line::dda::draw(from, to, line::dda::DdaFloat::F64, 0, target, &mut set),
+            "bresenham (stay)" => line::exact::rasterize_bresenham(from, to, BresenhamTie::Stay, 0, target, &mut set),
+            "bresenham (step)" => line::exact::rasterize_bresenham(from, to, BresenhamTie::Step, 0, target, &mut set),
+            "dda (f32)" => line::dda::rasterize(from, to, line::dda::DdaFloat::F32, 0, target, &mut set),
+            "dda (f64)" => line::dda::rasterize(from, to, line::dda::DdaFloat::F64, 0, target, &mut set),
             _ => {
                 // diamond-exit between the endpoint pixels' samples
                 let c = target.convention.pixel_centre.offset();
@@ -338,7 +338,7 @@ impl<'a> Classifier<'a> {
                         BigRational::from_integer(a[1].into()) + &c,
                     )
                 };
-                line::exact::draw_diamond(&at(from), &at(to), 0, target, &mut set);
+                line::exact::rasterize_diamond(&at(from), &at(to), 0, target, &mut set);
             }
         }
         set.0
@@ -387,7 +387,7 @@ impl<'a> Classifier<'a> {
             } else {
                 Model::ExactPlain
             };
-            let prepared = prepare(model, &single(self.primitives, id, false), &target).ok();
+            let prepared = prepare(&single(self.primitives, id, false), &target, model).ok();
             let shape = prepared.and_then(|p| p.shapes()).and_then(|v| v.into_iter().next());
             self.snapped_shapes.insert((id, s), shape);
         }

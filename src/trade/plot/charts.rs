@@ -4,7 +4,7 @@
 use plotters::prelude::*;
 
 use super::{colour, err, legend, legend_entries, Area, SANS};
-use crate::trade::report::{Outcome, Report, SpeedOutcome, WorkloadReport};
+use crate::trade::report::{Outcome, SpeedOutcome, TradeReport, WorkloadReport};
 use crate::trade::Magnitude;
 
 /// A rate of 0 is drawn here, on the tick labelled `0`.
@@ -54,7 +54,7 @@ fn headline(w: &WorkloadReport, contender: &str, m: Magnitude) -> Option<f64> {
 
 /// The magnitude picture (a) shows: the largest run at or below 2^20 px (fixed's
 /// envelope), else the smallest run.
-pub(crate) fn speed_error_magnitude(r: &Report) -> Magnitude {
+pub(crate) fn speed_error_magnitude(r: &TradeReport) -> Magnitude {
     let limit = 1u64 << 20;
     r.config
         .magnitudes
@@ -72,7 +72,7 @@ fn grid_shape(n: usize) -> (usize, usize) {
 }
 
 /// Picture (a).
-pub(super) fn speed_error<DB: DrawingBackend>(root: &Area<DB>, r: &Report) -> Result<(), String> {
+pub(super) fn speed_error<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport) -> Result<(), String> {
     root.fill(&WHITE).map_err(err)?;
     let m = speed_error_magnitude(r);
     let (_, h) = root.dim_in_pixel();
@@ -194,7 +194,7 @@ pub(super) fn speed_error<DB: DrawingBackend>(root: &Area<DB>, r: &Report) -> Re
 }
 
 /// Picture (b).
-pub(super) fn error_magnitude<DB: DrawingBackend>(root: &Area<DB>, r: &Report) -> Result<(), String> {
+pub(super) fn error_magnitude<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport) -> Result<(), String> {
     root.fill(&WHITE).map_err(err)?;
     let (_, h) = root.dim_in_pixel();
     let (top, rest) = root.split_vertically(56);

@@ -2,7 +2,7 @@
 //! workload with the Pareto front, (b) error against coordinate magnitude, one line per
 //! contender (both in `charts`), (c) the predicate map (`map`). Text is drawn with DejaVu
 //! Sans, compiled in from `assets/fonts/` (its licence beside it), so no system font
-//! library is needed. [`Report::pictures`] draws them all.
+//! library is needed. [`TradeReport::pictures`] draws them all.
 
 mod charts;
 mod map;
@@ -12,7 +12,7 @@ use std::sync::OnceLock;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::report::Report;
+use super::report::TradeReport;
 
 /// DejaVu Sans 2.37 (Debian's fonts-dejavu-core; licence: assets/fonts/LICENSE-DejaVu.txt).
 static FONT: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
@@ -92,7 +92,7 @@ fn colour(name: &str) -> RGBColor {
 }
 
 /// Every contender of the report, in first-seen order, with whether it is exact.
-fn contenders(r: &Report) -> Vec<(String, bool)> {
+fn contenders(r: &TradeReport) -> Vec<(String, bool)> {
     let mut out: Vec<(String, bool)> = Vec::new();
     for w in &r.workloads {
         for s in &w.speed {
@@ -135,14 +135,14 @@ fn legend<DB: DrawingBackend>(
     Ok(())
 }
 
-fn legend_entries(r: &Report) -> Vec<(String, RGBColor, bool)> {
+fn legend_entries(r: &TradeReport) -> Vec<(String, RGBColor, bool)> {
     contenders(r)
         .into_iter()
         .map(|(n, e)| (n.clone(), colour(&n), e))
         .collect()
 }
 
-impl Report {
+impl TradeReport {
     /// The pictures, PNG and SVG: `speed-vs-error`, `error-vs-magnitude`,
     /// `predicate-map` (see the module docs of [`crate::trade`]).
     ///

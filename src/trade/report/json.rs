@@ -1,15 +1,15 @@
-//! The trade report as JSON: [`Report::to_json`], schema version [`SCHEMA_VERSION`].
+//! The trade report as JSON: [`TradeReport::to_json`], schema version [`SCHEMA_VERSION`].
 
 use serde_json::{json, Value};
 
-use super::{Outcome, Report, SpeedOutcome, WorkloadReport};
+use super::{Outcome, SpeedOutcome, TradeReport, WorkloadReport};
 use crate::trade::metric::Metric;
 use crate::trade::Config;
 
 /// The JSON schema version.
 pub const SCHEMA_VERSION: u64 = 1;
 
-impl Report {
+impl TradeReport {
     /// The report as one JSON object, schema version 1:
     ///
     /// ```text

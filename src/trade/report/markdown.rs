@@ -1,13 +1,13 @@
-//! The trade report as Markdown: [`Report::to_markdown`], per workload its speed and
+//! The trade report as Markdown: [`TradeReport::to_markdown`], per workload its speed and
 //! error tables, then where the inexact contenders start to fail.
 
 use std::fmt::Write as _;
 
-use super::{Onset, Outcome, Report, SpeedOutcome, WorkloadReport};
+use super::{Onset, Outcome, SpeedOutcome, TradeReport, WorkloadReport};
 use crate::trade::metric::{short, Metric};
 use crate::trade::Magnitude;
 
-impl Report {
+impl TradeReport {
     /// The tables in Markdown: per workload the speed (median, min-max, ratio to the
     /// baseline, the plan), the headline error by magnitude (`refused` with the reason
     /// below), the other metrics at each magnitude; then where the floats start to fail,

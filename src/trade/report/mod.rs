@@ -1,7 +1,7 @@
 //! A trade run's result: per workload its contenders' speed, its plan and its errors at
-//! every magnitude; written as JSON ([`Report::to_json`], the documented schema: `json`),
-//! as Markdown tables ([`Report::to_markdown`]: `markdown`) and as pictures
-//! ([`Report::pictures`], drawn beside the plotting code in `trade::plot`).
+//! every magnitude; written as JSON ([`TradeReport::to_json`], the documented schema: `json`),
+//! as Markdown tables ([`TradeReport::to_markdown`]: `markdown`) and as pictures
+//! ([`TradeReport::pictures`], drawn beside the plotting code in `trade::plot`).
 
 mod json;
 mod markdown;
@@ -187,7 +187,7 @@ impl WorkloadReport {
 
 /// A whole run.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Report {
+pub struct TradeReport {
     /// What was run.
     pub config: Config,
     /// The canvas (and window) side, px.
@@ -200,7 +200,7 @@ pub struct Report {
     pub predicate_map: PredicateMap,
 }
 
-impl Report {
+impl TradeReport {
     /// Every exact or integer contender's non-zero error: `workload / contender at M:
     /// metric count of N`. Empty when the exact models kept every promise.
     pub fn exact_errors(&self) -> Vec<String> {

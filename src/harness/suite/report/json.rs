@@ -7,9 +7,9 @@ use serde_json::Value;
 
 use super::super::tally::{ulps_from_key, ulps_key, Counts, Tally};
 use super::super::Shards;
-use super::{Failure, Report, FORMAT, VERSION};
+use super::{CaseFailure, SuiteReport, FORMAT, VERSION};
 
-impl Report {
+impl SuiteReport {
     /// The report as a JSON document: one field a line, in the documented order, each
     /// array item (row, finding, failure) on a line of its own, compact; ending in a
     /// newline.
@@ -82,7 +82,7 @@ impl Report {
         format!("{{\n{}\n}}\n", body.join(",\n"))
     }
 
-    /// Reads a report written by [`Report::to_json`]; `name` (the file's path) starts
+    /// Reads a report written by [`SuiteReport::to_json`]; `name` (the file's path) starts
     /// every error. `findings`, `complete` and `passed` are derived from the other fields
     /// and not read.
     ///
@@ -90,7 +90,7 @@ impl Report {
     /// Not JSON (a truncated file included), not a check report, a report of another
     /// schema version, or a field missing or of the wrong type or value: one line naming
     /// `name`, the field and the value.
-    pub fn from_json(text: &str, name: &str) -> Result<Report, String> {
+    pub fn from_json(text: &str, name: &str) -> Result<SuiteReport, String> {
         let value: Value = serde_json::from_str(text)
             .map_err(|e| format!("{name}: not a JSON check report (truncated or damaged?): {e}"))?;
         read_report(&value).map_err(|e| format!("{name}: {e}"))
@@ -110,7 +110,7 @@ fn ulps_value(u: f64) -> String {
 }
 
 /// A failure as compact JSON, its fields in the documented order.
-fn failure_json(f: &Failure) -> String {
+fn failure_json(f: &CaseFailure) -> String {
     let mut fields = vec![
         ("case", j(&f.case)),
         ("invariant", j(&f.invariant)),
@@ -222,7 +222,7 @@ impl<'a> Field<'a> {
     }
 }
 
-fn read_report(value: &Value) -> Result<Report, String> {
+fn read_report(value: &Value) -> Result<SuiteReport, String> {
     let top = Field {
         value,
         path: String::new(),
@@ -254,7 +254,7 @@ fn read_report(value: &Value) -> Result<Report, String> {
         .map(Field::u64)
         .collect::<Result<Vec<u64>, String>>()?;
     let shards = Shards::new(shard.get("count")?.u64()?, indices).map_err(|e| format!("{}: {e}", shard.path))?;
-    let mut report = Report::new(seed, cases, shards);
+    let mut report = SuiteReport::new(seed, cases, shards);
     report.rasterproof = top.get("rasterproof")?.str()?.to_string();
     for s in top.get("stopped")?.items()? {
         report.stopped.push(s.str()?.to_string());
@@ -351,12 +351,12 @@ fn read_tally(top: &Field<'_>, seed: u64) -> Result<Tally, String> {
     Ok(t)
 }
 
-fn read_failure(f: &Field<'_>) -> Result<Failure, String> {
+fn read_failure(f: &Field<'_>) -> Result<CaseFailure, String> {
     let scene_path = match f.value.get("scene_path") {
         None => None,
         Some(_) => Some(f.get("scene_path")?.str()?.to_string()),
     };
-    Ok(Failure {
+    Ok(CaseFailure {
         case: f.get("case")?.u64()?,
         invariant: f.get("invariant")?.str()?.to_string(),
         model: f.get("model")?.str()?.to_string(),

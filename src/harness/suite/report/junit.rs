@@ -4,13 +4,13 @@
 
 use std::fmt::Write as _;
 
-use super::Report;
-use crate::harness::junit::{Failure, TestCase, TestSuite, TestSuites};
+use super::SuiteReport;
+use crate::harness::junit::{JunitFailure, TestCase, TestSuite, TestSuites};
 
 /// How many failing cases a test case's `<failure>` lists before "and N more".
 const LISTED: usize = 10;
 
-impl Report {
+impl SuiteReport {
     /// The report as JUnit XML: one `<testsuite>` in a `<testsuites>`, with the seed,
     /// cases, shard and version as properties, and one `<testcase classname="rasterproof.check"
     /// name="INVARIANT / MODEL">` per row of the table, in its order. A row whose model
@@ -21,8 +21,8 @@ impl Report {
     /// XML cannot hold become U+FFFD.
     ///
     /// ```
-    /// use rasterproof::harness::suite::Plan;
-    /// let xml = Plan::new(7, 1).run().unwrap().junit();
+    /// use rasterproof::harness::suite::SuiteConfig;
+    /// let xml = SuiteConfig::new(7, 1).run().unwrap().junit();
     /// assert!(xml.starts_with("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites "));
     /// assert!(xml.contains("name=\"watertight / fixed\""));
     /// ```
@@ -36,7 +36,7 @@ impl Report {
                 TestCase {
                     classname: "rasterproof.check".to_string(),
                     name: format!("{} / {}", r.invariant, r.label),
-                    failure: failed.then(|| Failure {
+                    failure: failed.then(|| JunitFailure {
                         kind: "violation".to_string(),
                         message: format!("{of} violate {} on {}", r.invariant, r.label),
                         text: self.failure_text(r.invariant, r.label),

@@ -1,11 +1,11 @@
 //! Merging the reports of disjoint shards of one run into the report of their cases
-//! together ([`Report::merge`]): the report of the whole run once every shard is in.
+//! together ([`SuiteReport::merge`]): the report of the whole run once every shard is in.
 
 use std::collections::BTreeMap;
 
-use super::Report;
+use super::SuiteReport;
 
-impl Report {
+impl SuiteReport {
     /// Merges the reports of disjoint shards of one run (each with the name of its file,
     /// for the errors) into the report of their cases together: the report of the whole
     /// run once every shard is in. The order of the reports does not matter.
@@ -13,8 +13,8 @@ impl Report {
     /// # Errors
     /// No report; two reports of different versions of rasterproof, seeds, case counts or
     /// shard counts; two reports holding the same shard: one line naming both files.
-    pub fn merge(reports: impl IntoIterator<Item = (String, Report)>) -> Result<Report, String> {
-        let mut parts: Vec<(String, Report)> = reports.into_iter().collect();
+    pub fn merge(reports: impl IntoIterator<Item = (String, SuiteReport)>) -> Result<SuiteReport, String> {
+        let mut parts: Vec<(String, SuiteReport)> = reports.into_iter().collect();
         parts.sort_by_key(|(_, r)| r.shards.indices().next());
         let mut parts = parts.into_iter();
         let (first_name, mut merged) = parts.next().ok_or("no report to merge")?;
@@ -62,7 +62,7 @@ impl Report {
     }
 
     /// Adds `other`'s cases (disjoint shards of the same run) to this report's.
-    fn absorb(&mut self, other: Report) {
+    fn absorb(&mut self, other: SuiteReport) {
         self.shards = self.shards.union(&other.shards);
         self.stopped.extend(other.stopped);
         for (family, n) in other.families {

@@ -1,9 +1,9 @@
 //! The report of a run of the suite: the table ([`Tally`]) with what produced it (seed,
 //! cases, shard, how many ran) and every failing case with its scene and explanation.
-//! `check --report FILE.json` writes it ([`Report::to_json`]), `check-merge` reads shard
-//! reports back ([`Report::from_json`]) and merges them into the report of the whole run
-//! ([`Report::merge`]), and `check --junit FILE.xml` writes it as JUnit XML
-//! ([`Report::junit`]).
+//! `check --report FILE.json` writes it ([`SuiteReport::to_json`]), `check-merge` reads shard
+//! reports back ([`SuiteReport::from_json`]) and merges them into the report of the whole run
+//! ([`SuiteReport::merge`]), and `check --junit FILE.xml` writes it as JUnit XML
+//! ([`SuiteReport::junit`]).
 //!
 //! # The JSON schema, version 1
 //!
@@ -53,7 +53,7 @@ pub use reason::reason_of;
 use std::collections::BTreeMap;
 
 use super::tally::Tally;
-use super::{CaseRun, Outcome, Shards};
+use super::{CaseRun, CheckOutcome, Shards};
 
 /// `format` of a report file.
 pub const FORMAT: &str = "rasterproof check report";
@@ -63,12 +63,12 @@ pub const VERSION: u64 = 1;
 
 /// One failing outcome of one case.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Failure {
+pub struct CaseFailure {
     /// The case's index in the run.
     pub case: u64,
     /// The invariant, as the table names it.
     pub invariant: String,
-    /// The model's label in the table ([`Outcome::label`]).
+    /// The model's label in the table ([`CheckOutcome::label`]).
     pub model: String,
     /// Whether it fails the run (a model that [must hold](super::must_hold)).
     pub fatal: bool,
@@ -84,7 +84,7 @@ pub struct Failure {
 
 /// The failures of one kind: one (invariant, model, reason), how many, and the first.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Finding<'a> {
+pub struct FailureGroup<'a> {
     /// The invariant.
     pub invariant: &'a str,
     /// The model's label.
@@ -96,24 +96,24 @@ pub struct Finding<'a> {
     /// How many failing outcomes.
     pub count: u64,
     /// The one of the lowest case.
-    pub first: &'a Failure,
+    pub first: &'a CaseFailure,
 }
 
 /// The report of a run (or of some shards of it) of the suite: see the [module
 /// documentation](self) for its JSON.
 ///
 /// ```
-/// use rasterproof::harness::suite::{Plan, Report, Shard};
-/// let whole = Plan::new(7, 2).run().unwrap();
-/// let shards: Vec<Report> = (1..=2)
-///     .map(|k| Plan { shard: Shard::new(k, 2).unwrap(), ..Plan::new(7, 2) }.run().unwrap())
+/// use rasterproof::harness::suite::{SuiteConfig, SuiteReport, Shard};
+/// let whole = SuiteConfig::new(7, 2).run().unwrap();
+/// let shards: Vec<SuiteReport> = (1..=2)
+///     .map(|k| SuiteConfig { shard: Shard::new(k, 2).unwrap(), ..SuiteConfig::new(7, 2) }.run().unwrap())
 ///     .collect();
-/// let merged = Report::merge(shards.into_iter().map(|r| ("a shard".to_string(), r))).unwrap();
+/// let merged = SuiteReport::merge(shards.into_iter().map(|r| ("a shard".to_string(), r))).unwrap();
 /// assert_eq!(merged, whole);
-/// assert_eq!(Report::from_json(&whole.to_json(), "whole.json").unwrap(), whole);
+/// assert_eq!(SuiteReport::from_json(&whole.to_json(), "whole.json").unwrap(), whole);
 /// ```
 #[derive(Debug, Clone, PartialEq)]
-pub struct Report {
+pub struct SuiteReport {
     rasterproof: String,
     seed: u64,
     cases: u64,
@@ -121,14 +121,14 @@ pub struct Report {
     stopped: Vec<String>,
     families: BTreeMap<String, u64>,
     tally: Tally,
-    failures: Vec<Failure>,
+    failures: Vec<CaseFailure>,
 }
 
-impl Report {
+impl SuiteReport {
     /// An empty report of the run seeded `seed` of `cases` cases, for the cases of
     /// `shards`, by this version of rasterproof.
-    pub fn new(seed: u64, cases: u64, shards: impl Into<Shards>) -> Report {
-        Report {
+    pub fn new(seed: u64, cases: u64, shards: impl Into<Shards>) -> SuiteReport {
+        SuiteReport {
             rasterproof: env!("CARGO_PKG_VERSION").to_string(),
             seed,
             cases,
@@ -142,14 +142,14 @@ impl Report {
 
     /// Counts case `k`'s outcomes and records each failing one; `scene_path` says where
     /// a failing outcome's scene was written, if it was.
-    pub fn add(&mut self, k: u64, run: &CaseRun, scene_path: &dyn Fn(&Outcome) -> Option<String>) {
+    pub fn add(&mut self, k: u64, run: &CaseRun, scene_path: &dyn Fn(&CheckOutcome) -> Option<String>) {
         self.tally.add(run);
         *self.families.entry(run.mesh_family.to_string()).or_default() += 1;
         let mut at = self.failures.partition_point(|f| f.case <= k);
         for o in &run.outcomes {
             let Some((scene, v)) = o.repro() else { continue };
             let text = scene.to_json();
-            let failure = Failure {
+            let failure = CaseFailure {
                 case: k,
                 invariant: o.invariant.to_string(),
                 model: o.label.to_string(),
@@ -216,7 +216,7 @@ impl Report {
     }
 
     /// Every failing outcome, by case (in the order the checks ran within a case).
-    pub fn failures(&self) -> &[Failure] {
+    pub fn failures(&self) -> &[CaseFailure] {
         &self.failures
     }
 
@@ -227,13 +227,13 @@ impl Report {
 
     /// The failures grouped by (invariant, model, reason), in that order, each with its
     /// count and the failure of the lowest case.
-    pub fn findings(&self) -> Vec<Finding<'_>> {
-        let mut groups: BTreeMap<(&str, &str, &str), Finding<'_>> = BTreeMap::new();
+    pub fn findings(&self) -> Vec<FailureGroup<'_>> {
+        let mut groups: BTreeMap<(&str, &str, &str), FailureGroup<'_>> = BTreeMap::new();
         for f in &self.failures {
             groups
                 .entry((&f.invariant, &f.model, &f.reason))
                 .and_modify(|g| g.count += 1)
-                .or_insert(Finding {
+                .or_insert(FailureGroup {
                     invariant: &f.invariant,
                     model: &f.model,
                     reason: &f.reason,

@@ -7,8 +7,8 @@ use crate::harness::suite::{Shard, Skip};
 use crate::model::Model;
 use crate::scene::Scene;
 
-fn outcome(invariant: &'static str, model: Model, result: Result<(), Violation>) -> Outcome {
-    Outcome {
+fn outcome(invariant: &'static str, model: Model, result: Result<(), Violation>) -> CheckOutcome {
+    CheckOutcome {
         invariant,
         model,
         label: model.name(),
@@ -46,10 +46,10 @@ fn case(fixed_fails: bool, n: u32) -> CaseRun {
 
 /// Cases 0..4 of seed 5 as shards of 2: case k in shard k % 2 + 1; `fixed` fails on
 /// case 3.
-fn report(shard: Shard) -> Report {
-    let mut r = Report::new(5, 4, shard);
+fn report(shard: Shard) -> SuiteReport {
+    let mut r = SuiteReport::new(5, 4, shard);
     for k in shard.cases(4) {
-        let path = move |o: &Outcome| o.is_fatal().then(|| format!("out/case-{k}.json"));
+        let path = move |o: &CheckOutcome| o.is_fatal().then(|| format!("out/case-{k}.json"));
         r.add(k, &case(k == 3, u32::try_from(k).unwrap()), &path);
     }
     r
@@ -90,14 +90,14 @@ fn findings_group_failures_by_invariant_model_and_reason() {
 fn json_reads_back_to_the_same_report() {
     for r in [report(Shard::WHOLE), report(Shard::new(2, 2).unwrap())] {
         let text = r.to_json();
-        let back = Report::from_json(&text, "r.json").unwrap();
+        let back = SuiteReport::from_json(&text, "r.json").unwrap();
         assert_eq!(back, r);
         assert_eq!(back.to_json(), text);
         assert_eq!(back.lines(), r.lines());
     }
     let mut stopped = report(Shard::WHOLE);
     stopped.stop("interrupted after 4 of 4 cases");
-    assert_eq!(Report::from_json(&stopped.to_json(), "s").unwrap(), stopped);
+    assert_eq!(SuiteReport::from_json(&stopped.to_json(), "s").unwrap(), stopped);
 }
 
 #[test]
@@ -110,7 +110,7 @@ fn shards_merge_into_the_whole_run_in_any_order() {
         "shard 1/2: the cases k of 0..4 with k mod 2 + 1 = 1 (2 cases)"
     );
     for parts in [[a.clone(), b.clone()], [b.clone(), a.clone()]] {
-        let merged = Report::merge(parts.into_iter().map(|r| ("x".to_string(), r))).unwrap();
+        let merged = SuiteReport::merge(parts.into_iter().map(|r| ("x".to_string(), r))).unwrap();
         assert_eq!(merged, whole);
         assert_eq!(merged.to_json(), whole.to_json());
     }
@@ -120,7 +120,8 @@ fn shards_merge_into_the_whole_run_in_any_order() {
 fn merge_refuses_other_runs_and_overlaps_naming_the_files() {
     let a = report(Shard::new(1, 2).unwrap());
     let b = report(Shard::new(2, 2).unwrap());
-    let named = |x: &Report, y: &Report| [("a.json".to_string(), x.clone()), ("b.json".to_string(), y.clone())];
+    let named =
+        |x: &SuiteReport, y: &SuiteReport| [("a.json".to_string(), x.clone()), ("b.json".to_string(), y.clone())];
     let mut other_seed = b.clone();
     other_seed.seed = 6;
     let mut other_version = b.clone();
@@ -135,10 +136,10 @@ fn merge_refuses_other_runs_and_overlaps_naming_the_files() {
         (&thirds, "shards of different counts (1/2 and 2/3)"),
         (&a, "both hold shard 1/2"),
     ] {
-        let e = Report::merge(named(&a, y)).unwrap_err();
+        let e = SuiteReport::merge(named(&a, y)).unwrap_err();
         assert!(e.starts_with("a.json and b.json: ") && e.contains(words), "{e}");
     }
-    assert!(Report::merge(Vec::new()).is_err());
+    assert!(SuiteReport::merge(Vec::new()).is_err());
 }
 
 #[test]
@@ -160,7 +161,7 @@ fn junit_has_a_test_case_per_row_and_fails_the_fatal_one() {
     assert_eq!(xml.matches("</failure>").count(), 1);
     assert!(!xml.contains('\u{1}'));
     // A report without failures fails no test case.
-    let passing = Report::new(5, 0, Shard::WHOLE).junit();
+    let passing = SuiteReport::new(5, 0, Shard::WHOLE).junit();
     assert!(passing.contains("tests=\"0\" failures=\"0\""), "{passing}");
 }
 
@@ -206,7 +207,7 @@ fn bad_report_files_are_refused_naming_the_field() {
     ];
     for (text, expected) in cases {
         assert_ne!(text, good, "{expected}");
-        let e = Report::from_json(&text, "r.json").unwrap_err();
+        let e = SuiteReport::from_json(&text, "r.json").unwrap_err();
         assert!(e.starts_with(expected), "{expected}\n{e}");
     }
 }
