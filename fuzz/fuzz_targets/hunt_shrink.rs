@@ -142,7 +142,7 @@ fuzz_target!(|input: Input| {
     for signature in signatures(&verdict) {
         let mut keeps =
             |s: &Scene| signatures(&judge(s, wrong_render(input.wrong, s), config.model)).contains(&signature);
-        let (minimal, runs) = shrink(&scene, &mut keeps, config.shrink_runs);
+        let (minimal, runs) = shrink(&scene, &mut keeps, config.shrink_runs, None);
         assert!(
             keeps(&minimal),
             "the minimal scene lost {}:\n{}",

@@ -1,23 +1,38 @@
 //! The counterexample search for your own triangle rasterizer: random triangles of
 //! every family (tie-heavy ones included) are rendered by your rasterizer and by the
-//! oracle; the first disagreement is shrunk by proptest, then further towards zero
-//! coordinate by coordinate, and reported as a minimal scene file with the exact
-//! explanation of the first differing pixel.
+//! oracle; the first disagreement is shrunk by proptest, then as a one-triangle scene by
+//! the crate's one shrinker ([`crate::harness::shrink`], with one subpixel as its smallest
+//! step, every candidate kept on the preset's subpixel grid and inside the integer
+//! envelope), and reported as a minimal scene file with the exact explanation of the
+//! first differing pixel.
 //!
 //! "Minimal" is checkable: in the reported scene no vertex coordinate can move one
-//! subpixel towards zero (or to zero, or half way there) with the disagreement staying,
-//! and the canvas is cropped to the differing pixel when that keeps it.
+//! subpixel towards zero (nor to zero, half way there, to the integer towards zero or to
+//! a coarser grid towards zero, nor one pixel towards zero) with the disagreement
+//! staying, and no crop of the canvas (to either half, or one pixel off a side, the
+//! scene moved by whole pixels with it) keeps it. The shrink has [`SHRINK_RUNS`] runs of
+//! the rasterizer; every step it accepts shrinks the canvas or lowers a coordinate's
+//! magnitude on a fixed grid, so it ends at such a scene unless it spends them all.
 
 use proptest::strategy::Strategy;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};
 
-use crate::check::{check_agreement, differing_pixels, Violation};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::One;
+
+use super::shrink::shrink;
+use crate::check::{check_agreement, Violation};
 use crate::convention::{Preset, Target};
 use crate::coverage::{Coverage, CoverageSink};
 use crate::geom::FixedTriangle;
-use crate::num::SubPixel;
 use crate::scene::Scene;
 use crate::strategy::any_triangle;
+
+/// Runs of the rasterizer (each against the oracle) the shrink after proptest's may take:
+/// a backstop far above what a shrink takes on the default 16x16 canvas (tens of runs),
+/// against a rasterizer that keeps disagreeing along a very long path.
+pub const SHRINK_RUNS: usize = 100_000;
 
 /// How the harness searches.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -92,17 +107,43 @@ where
     let Err(TestError::Fail(_, shrunk)) = result else {
         return None;
     };
-    let triangle = towards_zero(&rasterizer, shrunk, &target);
-    let target = cropped(&rasterizer, &triangle, target);
-    let triangle = towards_zero(&rasterizer, triangle, &target);
-    let violation = disagreement(&rasterizer, &triangle, &target).expect("the minimised triangle still disagrees");
-    let mut scene = Scene::new(target.width, target.height, vec![triangle.to_exact()]);
+    let mut scene = Scene::new(target.width, target.height, vec![shrunk.to_exact()]);
     scene.preset = config.preset;
+    let mut keeps = |s: &Scene| match (s.target(), on_the_grid(s)) {
+        (Some(target), Some(t)) => disagreement(&rasterizer, &t, &target).is_some(),
+        _ => false,
+    };
+    let step = BigRational::new(BigInt::one(), BigInt::one() << conv.subpixel_bits);
+    let (scene, _) = shrink(&scene, &mut keeps, SHRINK_RUNS, Some(&step));
+    let triangle = on_the_grid(&scene).expect("the shrunk scene is one triangle on the grid");
+    let target = scene.target().expect("the shrunk canvas is no larger");
+    let violation = disagreement(&rasterizer, &triangle, &target).expect("the shrunk triangle still disagrees");
     Some(Counterexample {
         triangle,
         scene,
         violation,
     })
+}
+
+/// The scene's one triangle in subpixels of its convention's grid: `None` unless the scene
+/// is exactly one triangle (no clip window) whose coordinates all lie on the grid and
+/// inside the integer models' envelope.
+fn on_the_grid(scene: &Scene) -> Option<FixedTriangle> {
+    let [t] = scene.triangles.as_slice() else {
+        return None;
+    };
+    if !(scene.lines.is_empty()
+        && scene.polygons.is_empty()
+        && scene.clip_space_triangles.is_empty()
+        && scene.clip.is_none())
+    {
+        return None;
+    }
+    let snapped = t.triangle.snapped(&scene.convention());
+    if snapped.to_exact() != t.triangle {
+        return None;
+    }
+    snapped.to_fixed().ok()
 }
 
 /// The oracle's and the rasterizer's coverage of `t`, each with id 0.
@@ -124,50 +165,4 @@ where
 {
     let (reference, candidate) = render_both(rasterizer, t, target);
     check_agreement("oracle", &reference, "candidate", &candidate, &[t.to_exact()], target).err()
-}
-
-/// Moves coordinates towards zero (to zero, half way, one subpixel) while the
-/// disagreement stays, until no single move keeps it. Terminates: every accepted move
-/// lowers the sum of the coordinates' magnitudes.
-fn towards_zero<F>(rasterizer: &F, mut t: FixedTriangle, target: &Target) -> FixedTriangle
-where
-    F: Fn(&FixedTriangle, u32, &Target, &mut dyn CoverageSink),
-{
-    loop {
-        let mut moved = false;
-        for k in 0..6 {
-            let c = t.v[k / 2][k % 2].get();
-            for candidate in [0, c / 2, c - c.signum()] {
-                if candidate == c {
-                    continue;
-                }
-                let mut next = t;
-                next.v[k / 2][k % 2] = SubPixel::new(candidate).expect("closer to zero: inside the envelope");
-                if disagreement(rasterizer, &next, target).is_some() {
-                    t = next;
-                    moved = true;
-                    break;
-                }
-            }
-        }
-        if !moved {
-            return t;
-        }
-    }
-}
-
-/// The canvas cropped to just include the first differing pixel, when the disagreement
-/// survives the crop.
-fn cropped<F>(rasterizer: &F, t: &FixedTriangle, target: Target) -> Target
-where
-    F: Fn(&FixedTriangle, u32, &Target, &mut dyn CoverageSink),
-{
-    let (reference, candidate) = render_both(rasterizer, t, &target);
-    let Some(first) = differing_pixels(&reference, &candidate).into_iter().next() else {
-        return target;
-    };
-    match Target::new(first.x + 1, first.y + 1, target.convention) {
-        Some(small) if disagreement(rasterizer, t, &small).is_some() => small,
-        _ => target,
-    }
 }

@@ -156,6 +156,32 @@ impl Scene {
         self.triangles.iter().map(|t| t.colours).collect()
     }
 
+    /// Every window-space coordinate, mutably, `x` then `y` of each vertex: the
+    /// triangles', the lines' ends, the polygons' outlines then holes (not the clip-space
+    /// triangles', which are in clip space).
+    pub fn coordinates_mut(&mut self) -> Vec<&mut BigRational> {
+        let mut out: Vec<&mut BigRational> = Vec::new();
+        for t in &mut self.triangles {
+            for v in &mut t.triangle.v {
+                out.push(&mut v.x);
+                out.push(&mut v.y);
+            }
+        }
+        for l in &mut self.lines {
+            for v in [&mut l.from, &mut l.to] {
+                out.push(&mut v.x);
+                out.push(&mut v.y);
+            }
+        }
+        for p in &mut self.polygons {
+            for v in p.outline.iter_mut().chain(p.holes.iter_mut().flatten()) {
+                out.push(&mut v.x);
+                out.push(&mut v.y);
+            }
+        }
+        out
+    }
+
     /// The scene as a scene file, every coordinate an exact string (`"7/3"`), so that
     /// parsing it again gives the same scene.
     pub fn to_json(&self) -> String {

@@ -1,6 +1,5 @@
 //! The scenes a hunt draws: the scene [`SceneFamily`]s, the scene of one case
-//! ([`generate_scene`]), and the coordinates of a scene (every one, mutably; rounded to
-//! f32 by [`float32_exact`]).
+//! ([`generate_scene`]), and a scene's coordinates rounded to f32 ([`float32_exact`]).
 
 use num_rational::BigRational;
 use proptest::strategy::{BoxedStrategy, Strategy, ValueTree};
@@ -130,34 +129,10 @@ pub fn generate_scene(config: &HuntConfig, k: u64) -> Result<Scene, String> {
     Ok(scene)
 }
 
-/// Every window-space coordinate of `scene`, mutably (triangles, line ends, polygons).
-pub(super) fn coordinates(scene: &mut Scene) -> Vec<&mut BigRational> {
-    let mut out: Vec<&mut BigRational> = Vec::new();
-    for t in &mut scene.triangles {
-        for v in &mut t.triangle.v {
-            out.push(&mut v.x);
-            out.push(&mut v.y);
-        }
-    }
-    for l in &mut scene.lines {
-        for v in [&mut l.from, &mut l.to] {
-            out.push(&mut v.x);
-            out.push(&mut v.y);
-        }
-    }
-    for p in &mut scene.polygons {
-        for v in p.outline.iter_mut().chain(p.holes.iter_mut().flatten()) {
-            out.push(&mut v.x);
-            out.push(&mut v.y);
-        }
-    }
-    out
-}
-
 /// Rounds every coordinate to the nearest f32, exactly (so a program reading f32 sees the
 /// scene the oracle sees).
 pub fn float32_exact(scene: &mut Scene) {
-    for v in coordinates(scene) {
+    for v in scene.coordinates_mut() {
         if let Some(f) = crate::num::exact::nearest_f32(v) {
             if let Some(exact) = BigRational::from_float(f) {
                 *v = exact;

@@ -13,24 +13,24 @@
 //!
 //! This module holds the configuration ([`HuntConfig`]) and the run loop ([`hunt`]); its
 //! parts, each re-exported here: the scene families (`families`), the verdict on one
-//! scene and the signatures of a failure (`verdict`), the shrinker (`shrink`), the report
-//! (`report`), a finding as a Rust test (`test_text`) and the convention a fit names
-//! (`convention`).
+//! scene and the signatures of a failure (`verdict`), the report (`report`), a finding as
+//! a Rust test (`test_text`) and the convention a fit names (`convention`). The shrinker
+//! is the harness's ([`crate::harness::shrink`], re-exported here as [`shrink`]), run
+//! with no grid step.
 
 mod convention;
 mod families;
 mod report;
-mod shrink;
 mod test_text;
 mod verdict;
 
 use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 
+pub use crate::harness::shrink::{primitive_count, shrink};
 pub use convention::{fit_convention, hunt_convention, preferred, FIT_PROBES};
 pub use families::{float32_exact, generate_scene, SceneFamily};
 pub use report::{HuntFinding, HuntReport, REPORT_FORMAT, REPORT_VERSION};
-pub use shrink::{primitive_count, shrink};
 pub use test_text::rust_test;
 pub use verdict::{judge, signatures, HuntVerdict, Signature};
 
@@ -177,7 +177,7 @@ where
     let mut findings = Vec::new();
     for (signature, (case, original, cases)) in first {
         let mut keeps = |s: &Scene| signatures(&judge(s, render(s), config.model)).contains(&signature);
-        let (minimal, runs) = shrink(&original, &mut keeps, config.shrink_runs);
+        let (minimal, runs) = shrink(&original, &mut keeps, config.shrink_runs, None);
         let verdict = judge(&minimal, render(&minimal), config.model);
         findings.push(HuntFinding {
             signature,

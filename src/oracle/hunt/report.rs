@@ -4,10 +4,10 @@
 
 use std::fmt::Write as _;
 
-use super::shrink::primitive_count;
 use super::verdict::{CaseOutcome, HuntVerdict, Signature};
 use super::HuntConfig;
 use crate::harness::junit::{JunitFailure, TestCase, TestSuite, TestSuites};
+use crate::harness::shrink::primitive_count;
 use crate::harness::suite::report::{json_object as object, json_value as j};
 use crate::scene::Scene;
 

@@ -1,11 +1,13 @@
-//! The shrinker: a failing scene made minimal with their renderer in the loop
-//! ([`shrink`]), by dropping primitives, cropping the canvas and simplifying coordinates.
+//! The one shrinker: a failing scene made minimal with the renderer under test in the
+//! loop ([`shrink`]), by dropping primitives and the clip window, cropping the canvas and
+//! simplifying coordinates. The hunt ([`crate::oracle::hunt`]) shrinks their renderer's
+//! failures with it, and [`crate::harness::find_counterexample`] a rasterizer's
+//! disagreement with the oracle (one subpixel its smallest step).
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
-use super::families::coordinates;
 use crate::scene::Scene;
 
 /// How many primitives a scene has.
@@ -15,8 +17,8 @@ pub fn primitive_count(s: &Scene) -> usize {
 
 /// Simpler values for a coordinate, simplest first: 0, the integer towards zero, the
 /// value rounded towards zero to coarser grids (1/2 .. 1/256 px), one pixel nearer zero,
-/// half of it.
-fn simpler(v: &BigRational) -> Vec<BigRational> {
+/// half of it, and with a `step`, one step nearer zero (when `|v| >= step`).
+fn simpler(v: &BigRational, step: Option<&BigRational>) -> Vec<BigRational> {
     let mut out = vec![BigRational::zero(), v.trunc()];
     for bits in 1..=8u32 {
         let k = BigRational::from_integer(BigInt::from(1u32 << bits));
@@ -26,6 +28,11 @@ fn simpler(v: &BigRational) -> Vec<BigRational> {
         out.push(v - BigRational::from_integer(if v.is_positive() { 1 } else { -1 }.into()));
     }
     out.push(v / BigRational::from_integer(2.into()));
+    if let Some(step) = step {
+        if v.abs() >= *step {
+            out.push(if v.is_positive() { v - step } else { v + step });
+        }
+    }
     let mut seen = Vec::new();
     out.retain(|c| {
         let fresh = c != v && !seen.contains(c);
@@ -44,19 +51,55 @@ fn moved(s: &Scene, dx: i64, dy: i64, width: u32, height: u32) -> Scene {
         BigRational::from_integer(dx.into()),
         BigRational::from_integer(dy.into()),
     );
-    let mut cs = coordinates(&mut out);
+    let mut cs = out.coordinates_mut();
     for (k, c) in cs.iter_mut().enumerate() {
         **c -= if k % 2 == 0 { &fx } else { &fy };
     }
     out
 }
 
-/// Shrinks `scene` while `keeps` holds: drops primitives (and the clip window), crops the
-/// canvas (to the differing pixels' box when `keeps` accepts it, then halves, then one
-/// pixel at a time from each side), and moves each coordinate to simpler values; repeats
-/// until no step keeps the failure or `budget` runs are spent. Returns the smallest scene
-/// and the runs used.
-pub fn shrink(scene: &Scene, keeps: &mut dyn FnMut(&Scene) -> bool, budget: usize) -> (Scene, usize) {
+/// Shrinks `scene` while `keeps` holds: drops triangles, lines and polygons (never the
+/// last primitive) and the clip window, crops the canvas (halves, then one pixel from a
+/// side; a crop from the left or the top moves the scene by whole pixels), and moves each
+/// coordinate ([`Scene::coordinates_mut`]) to simpler values (0, the integer towards zero,
+/// the value rounded towards zero to the grids of 1/2 .. 1/256 px, one pixel nearer zero,
+/// half of it and, with `step`, one `step` nearer zero when its magnitude is at least
+/// `step`); repeats until no step keeps the failure or `budget` runs of `keeps` are
+/// spent. Returns the smallest scene and the runs used.
+///
+/// When fewer than `budget` runs were used, the scene is minimal in this sense: no single
+/// step above keeps the failure (in particular, with `step`, no coordinate can move one
+/// `step` towards zero). Even with `usize::MAX` runs it ends when `keeps` accepts only
+/// scenes whose coordinates lie on one fixed grid: every accepted step lowers the number
+/// of primitives, or removes the clip window, or shrinks the canvas, or lowers one
+/// coordinate's magnitude leaving the rest as they were.
+///
+/// ```
+/// use num_rational::BigRational;
+/// use rasterproof::geom::{Point, Triangle};
+/// use rasterproof::harness::shrink::shrink;
+/// use rasterproof::scene::Scene;
+/// let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+/// let p = |x, y| Point::new(r(x, 4), r(y, 4));
+/// let scene = Scene::new(8, 8, vec![Triangle { v: [p(9, 5), p(22, 7), p(13, 19)] }]);
+/// // Fails while some vertex lies at x >= 1 px, on the quarter-pixel grid.
+/// let mut keeps = |s: &Scene| {
+///     let v = &s.triangles[0].triangle.v;
+///     v.iter().all(|p| (&p.x * r(4, 1)).is_integer() && (&p.y * r(4, 1)).is_integer())
+///         && v.iter().any(|p| p.x >= r(1, 1))
+/// };
+/// let (minimal, runs) = shrink(&scene, &mut keeps, 10_000, Some(&r(1, 4)));
+/// assert!(runs < 10_000);
+/// assert_eq!((minimal.width, minimal.height), (1, 1));
+/// let xs: Vec<_> = minimal.triangles[0].triangle.v.iter().map(|p| p.x.clone()).collect();
+/// assert_eq!(xs.iter().filter(|x| **x == r(1, 1)).count(), 1);
+/// ```
+pub fn shrink(
+    scene: &Scene,
+    keeps: &mut dyn FnMut(&Scene) -> bool,
+    budget: usize,
+    step: Option<&BigRational>,
+) -> (Scene, usize) {
     let mut best = scene.clone();
     let mut runs = 0;
     let mut attempt = |candidate: &Scene, runs: &mut usize| -> bool {
@@ -122,12 +165,12 @@ pub fn shrink(scene: &Scene, keeps: &mut dyn FnMut(&Scene) -> bool, budget: usiz
             }
         }
         // Simpler coordinates.
-        let n = coordinates(&mut best.clone()).len();
+        let n = best.clone().coordinates_mut().len();
         for k in 0..n {
-            let value = coordinates(&mut best.clone())[k].clone();
-            for v in simpler(&value) {
+            let value = best.clone().coordinates_mut()[k].clone();
+            for v in simpler(&value, step) {
                 let mut c = best.clone();
-                *coordinates(&mut c)[k] = v;
+                *c.coordinates_mut()[k] = v;
                 if attempt(&c, &mut runs) {
                     best = c;
                     changed = true;
