@@ -165,10 +165,10 @@ pub fn shrink(
             }
         }
         // Simpler coordinates.
-        let n = best.clone().coordinates_mut().len();
-        for k in 0..n {
-            let value = best.clone().coordinates_mut()[k].clone();
-            for v in simpler(&value, step) {
+        // A move changes one coordinate only: the others' values, read once, stay true.
+        let values: Vec<BigRational> = best.clone().coordinates_mut().into_iter().map(|c| c.clone()).collect();
+        for (k, value) in values.iter().enumerate() {
+            for v in simpler(value, step) {
                 let mut c = best.clone();
                 *c.coordinates_mut()[k] = v;
                 if attempt(&c, &mut runs) {
