@@ -23,6 +23,7 @@ use super::homogeneous::{
 };
 use super::{area_or_empty, cohen_sutherland, sutherland_hodgman, Window};
 use crate::geom::Point;
+use crate::num::exact::json_pair;
 
 /// The arithmetic a [`Clipper`] runs in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -44,6 +45,15 @@ impl Arithmetic {
             "float64" => Some(Arithmetic::F64),
             "float32" => Some(Arithmetic::F32),
             _ => None,
+        }
+    }
+
+    /// Its name: `exact`, `float64` or `float32` (what [`Arithmetic::from_name`] reads).
+    pub fn name(self) -> &'static str {
+        match self {
+            Arithmetic::Exact => "exact",
+            Arithmetic::F64 => "float64",
+            Arithmetic::F32 => "float32",
         }
     }
 }
@@ -334,6 +344,85 @@ impl Clipper {
             return Ok(window_space);
         }
         self.contour(&window_space, what)
+    }
+}
+
+/// Every primitive of a scene clipped by one [`Clipper`], in input order: what
+/// `rasterproof clip` prints ([`Clipped::to_json`], [`Clipped::to_text`]).
+/// [`crate::scene::Scene::clipped`] builds it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Clipped {
+    /// The arithmetic it was clipped in.
+    pub arithmetic: Arithmetic,
+    /// Each triangle's contour ([`Clipper::contour`]; empty: no area left).
+    pub triangles: Vec<Vec<Point>>,
+    /// Each line's kept segment ([`Clipper::segment`]; `None`: nothing inside).
+    pub lines: Vec<Option<(Point, Point)>>,
+    /// Each polygon's outline, then its holes, each a [`Clipper::contour`]; no contour at
+    /// all when the outline keeps no area (its holes are not clipped then).
+    pub polygons: Vec<Vec<Vec<Point>>>,
+    /// Each clip-space triangle's window-space contour ([`Clipper::clip_space`]).
+    pub clip_space_triangles: Vec<Vec<Point>>,
+}
+
+/// A point as `["x","y"]`, exact text.
+fn json_point(p: &Point) -> String {
+    json_pair(&p.x, &p.y)
+}
+
+/// A contour as `[["x","y"],...]`.
+fn json_contour(points: &[Point]) -> String {
+    format!("[{}]", points.iter().map(json_point).collect::<Vec<_>>().join(","))
+}
+
+impl Clipped {
+    /// One line of JSON (no newline):
+    /// `{"triangles":[...],"lines":[...],"polygons":[...],"clip_space_triangles":[...]}`,
+    /// every coordinate an exact string: a triangle and a clip-space triangle as a list of
+    /// points `["x","y"]`, a line as its two ends, a polygon as its contours (outline
+    /// first); `[]` for one that covers nothing.
+    pub fn to_json(&self) -> String {
+        let lines = self.lines.iter().map(|l| {
+            l.as_ref().map_or("[]".to_string(), |(a, b)| {
+                format!("[{},{}]", json_point(a), json_point(b))
+            })
+        });
+        let polygons = self.polygons.iter().map(|contours| {
+            if contours.is_empty() {
+                return "[]".to_string();
+            }
+            format!(
+                "[{}]",
+                contours.iter().map(|c| json_contour(c)).collect::<Vec<_>>().join(",")
+            )
+        });
+        let triangles: Vec<String> = self.triangles.iter().map(|t| json_contour(t)).collect();
+        let clip_space: Vec<String> = self.clip_space_triangles.iter().map(|t| json_contour(t)).collect();
+        format!(
+            "{{\"triangles\":[{}],\"lines\":[{}],\"polygons\":[{}],\"clip_space_triangles\":[{}]}}",
+            triangles.join(","),
+            lines.collect::<Vec<_>>().join(","),
+            polygons.collect::<Vec<_>>().join(","),
+            clip_space.join(",")
+        )
+    }
+
+    /// The one-line summary (no newline): per kind, how many keep something, for the
+    /// scene named `name`.
+    pub fn to_text(&self, name: &str) -> String {
+        let kept = |v: &[Vec<Point>]| v.iter().filter(|c| !c.is_empty()).count();
+        format!(
+            "{name}: {} clipping: {}/{} triangles, {}/{} lines, {}/{} polygons, {}/{} clip-space triangles keep something",
+            self.arithmetic.name(),
+            kept(&self.triangles),
+            self.triangles.len(),
+            self.lines.iter().filter(|l| l.is_some()).count(),
+            self.lines.len(),
+            self.polygons.iter().filter(|p| !p.is_empty()).count(),
+            self.polygons.len(),
+            kept(&self.clip_space_triangles),
+            self.clip_space_triangles.len()
+        )
     }
 }
 
