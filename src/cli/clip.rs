@@ -1,15 +1,14 @@
 //! `rasterproof clip`: the scene's primitives clipped against its `clip` window (and its
 //! clip-space triangles clipped against the view volume, divided and mapped), printed
-//! with every coordinate as an exact string. An area primitive whose result encloses no
+//! with every coordinate as an exact string ([`rasterproof::scene::Scene::clipped`], laid
+//! out by its `to_json` / `to_text`). An area primitive whose result encloses no
 //! area (a point or a segment) prints as `[]`; a line's result may be a single point
 //! (see [`rasterproof::clip::area_or_empty`]).
 
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use rasterproof::clip::arithmetic::{Arithmetic, Clipper};
-use rasterproof::geom::Point;
-use rasterproof::num::exact::json_pair;
+use rasterproof::clip::arithmetic::Arithmetic;
 use rasterproof::scene::parse_scene_bytes;
 
 use super::OutputFormat;
@@ -44,15 +43,6 @@ const FORMATS: [(OutputFormat, &str); 2] = [
     (OutputFormat::Text, "A one-line summary"),
 ];
 
-/// A point as `["x","y"]`, exact text.
-fn pt(p: &Point) -> String {
-    json_pair(&p.x, &p.y)
-}
-
-fn list(points: &[Point]) -> String {
-    format!("[{}]", points.iter().map(pt).collect::<Vec<_>>().join(","))
-}
-
 /// Clips the scene's primitives as `o` asks and prints them (or the summary); exit 0.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
     let name = o.scene.display().to_string();
@@ -67,74 +57,12 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     }
     let bytes = std::fs::read(&o.scene).map_err(|e| format!("{name}: cannot read: {e}"))?;
     let scene = parse_scene_bytes(&bytes, &name).map_err(|e| e.to_string())?;
-    let in_file = |e: String| format!("{name}: {e}");
-    let clipper = Clipper::new(arith, scene.clip.as_ref()).map_err(in_file)?;
-
-    let mut triangles = Vec::new();
-    for (k, t) in scene.triangles.iter().enumerate() {
-        triangles.push(list(
-            &clipper
-                .contour(&t.triangle.v, &format!("triangles[{k}]"))
-                .map_err(in_file)?,
-        ));
-    }
-    let mut lines = Vec::new();
-    for (k, l) in scene.lines.iter().enumerate() {
-        let kept = clipper
-            .segment(&l.from, &l.to, &format!("lines[{k}]"))
-            .map_err(in_file)?;
-        lines.push(kept.map_or("[]".to_string(), |(a, b)| format!("[{},{}]", pt(&a), pt(&b))));
-    }
-    let mut polygons = Vec::new();
-    for (k, p) in scene.polygons.iter().enumerate() {
-        let what = format!("polygons[{k}]");
-        let outline = clipper.contour(&p.outline, &what).map_err(in_file)?;
-        if outline.is_empty() {
-            polygons.push("[]".to_string());
-            continue;
-        }
-        let mut contours = vec![list(&outline)];
-        for h in &p.holes {
-            contours.push(list(&clipper.contour(h, &what).map_err(in_file)?));
-        }
-        polygons.push(format!("[{}]", contours.join(",")));
-    }
-    let mut clip_space = Vec::new();
-    let viewport = scene.viewport();
-    for (k, t) in scene.clip_space_triangles.iter().enumerate() {
-        let what = format!("clip_space_triangles[{k}]");
-        clip_space.push(list(
-            &clipper
-                .clip_space(t, &viewport, o.divide_first, &what)
-                .map_err(in_file)?,
-        ));
-    }
+    let clipped = scene
+        .clipped(arith, o.divide_first)
+        .map_err(|e| format!("{name}: {e}"))?;
     match o.format {
-        OutputFormat::Json => {
-            let json = format!(
-                "{{\"triangles\":[{}],\"lines\":[{}],\"polygons\":[{}],\"clip_space_triangles\":[{}]}}",
-                triangles.join(","),
-                lines.join(","),
-                polygons.join(","),
-                clip_space.join(",")
-            );
-            crate::cli::print_stdout(&json)?;
-        }
-        OutputFormat::Text => {
-            let kept = |v: &[String]| v.iter().filter(|s| s.as_str() != "[]").count();
-            crate::cli::print_stdout(&format!(
-                "{name}: {} clipping: {}/{} triangles, {}/{} lines, {}/{} polygons, {}/{} clip-space triangles keep something",
-                o.model,
-                kept(&triangles),
-                triangles.len(),
-                kept(&lines),
-                lines.len(),
-                kept(&polygons),
-                polygons.len(),
-                kept(&clip_space),
-                clip_space.len()
-            ))?;
-        }
+        OutputFormat::Json => crate::cli::print_stdout(&clipped.to_json())?,
+        OutputFormat::Text => crate::cli::print_stdout(&clipped.to_text(&name))?,
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -31,14 +31,9 @@ const FORMATS: [(OutputFormat, &str); 2] = [
     (OutputFormat::Json, "The same as one JSON object"),
 ];
 
-/// `X,Y`.
+/// The pixel `X,Y` ([`super::parse_pixel`]).
 fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
-    let bad = || format!("pixel: {text:?} is not X,Y (two non-negative integers)");
-    let (x, y) = text.split_once(',').ok_or_else(bad)?;
-    Ok((
-        x.trim().parse().map_err(|_| bad())?,
-        y.trim().parse().map_err(|_| bad())?,
-    ))
+    super::parse_pixel(text).ok_or_else(|| format!("pixel: {text:?} is not X,Y (two non-negative integers)"))
 }
 
 /// Explains the pixel `o` names and prints it; exit 0.

@@ -4,7 +4,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use image::Rgba;
-use rasterproof::fill::flood::{load_png, paint, span_region, Connectivity, Region, MAX_IMAGE_SIDE};
+use rasterproof::fill::flood::{
+    load_png, paint, region_summary, span_region, write_region_json, Connectivity, MAX_IMAGE_SIDE,
+};
 
 use super::OutputFormat;
 
@@ -65,26 +67,17 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         )
     })?;
 
-    let mut summary = format!(
-        "{name}: {} pixel{} in the {connectivity} region of ({}, {}) ({}x{} image)",
-        region.len(),
-        if region.len() == 1 { "" } else { "s" },
-        at.0,
-        at.1,
-        image.width(),
-        image.height()
-    );
     if let Some(path) = &o.out {
         paint(&mut image, &region, colour);
         let mut outputs = crate::cli::Outputs::new();
         outputs.stage_png(path, &image)?;
         outputs.commit()?;
-        let [r, g, b, a] = colour.0;
-        summary.push_str(&format!(", recoloured {r},{g},{b},{a} into {}", path.display()));
     }
+    let recoloured = o.out.as_deref().map(|path| (colour, path));
+    let summary = region_summary(&name, &region, at, connectivity, recoloured);
     match o.format {
         OutputFormat::Json => {
-            crate::cli::write_stdout(|out| write_json(out, &region, at, connectivity))?;
+            crate::cli::write_stdout(|out| write_region_json(out, &region, at, connectivity))?;
             eprintln!("{summary}");
         }
         OutputFormat::Text => crate::cli::print_stdout(&summary)?,
@@ -92,22 +85,14 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// `X,Y` as two non-negative integers.
+/// `--at X,Y` ([`super::parse_pixel`]).
 fn parse_at(text: &str) -> Result<(u32, u32), String> {
-    let bad = || {
+    super::parse_pixel(text).ok_or_else(|| {
         format!(
             "--at: {text:?} is not X,Y (two integers from 0 to {}, e.g. 3,4)",
             MAX_IMAGE_SIDE - 1
         )
-    };
-    let parts = integers(text).ok_or_else(bad)?;
-    match parts[..] {
-        [x, y] => Ok((
-            u32::try_from(x).map_err(|_| bad())?,
-            u32::try_from(y).map_err(|_| bad())?,
-        )),
-        _ => Err(bad()),
-    }
+    })
 }
 
 fn parse_connectivity(text: &str) -> Result<Connectivity, String> {
@@ -134,28 +119,4 @@ fn parse_colour(text: &str) -> Result<Rgba<u8>, String> {
 /// is not one.
 fn integers(text: &str) -> Option<Vec<u64>> {
     text.split(',').map(|part| part.trim().parse::<u64>().ok()).collect()
-}
-
-fn write_json(
-    out: &mut dyn std::io::Write,
-    region: &Region,
-    at: (u32, u32),
-    connectivity: Connectivity,
-) -> std::io::Result<()> {
-    write!(
-        out,
-        "{{\"width\":{},\"height\":{},\"at\":[{},{}],\"connectivity\":{},\"pixels\":[",
-        region.width(),
-        region.height(),
-        at.0,
-        at.1,
-        connectivity.number()
-    )?;
-    for (k, (x, y)) in region.iter().enumerate() {
-        if k > 0 {
-            out.write_all(b",")?;
-        }
-        write!(out, "[{x},{y}]")?;
-    }
-    out.write_all(b"]}\n")
 }

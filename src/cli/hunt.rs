@@ -10,7 +10,7 @@ use std::time::Duration;
 use indicatif::{ProgressBar, ProgressStyle};
 use rasterproof::convention::Preset;
 use rasterproof::harness::suite::Shard;
-use rasterproof::oracle::hunt::{fit_convention, hunt, rust_test, HuntConfig, HuntVerdict, SceneFamily};
+use rasterproof::oracle::hunt::{fit_convention, hunt, rust_test, HuntConfig, SceneFamily};
 use rasterproof::oracle::program::Program;
 use rasterproof::oracle::{Background, Format};
 
@@ -185,7 +185,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             let n = n + 1;
             let path = |ext: &str| dir.join(format!("finding-{n:02}.{ext}"));
             outputs.stage_text(&path("json"), &f.minimal.to_json())?;
-            outputs.stage_text(&path("txt"), &explanation(f, n))?;
+            outputs.stage_text(&path("txt"), &f.to_text(n))?;
             outputs.stage_text(&path("rs"), &rust_test(f, n, config.model))?;
         }
     }
@@ -196,81 +196,10 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         outputs.stage_text(path, &report.junit(&o.cmd))?;
     }
     outputs.commit()?;
-    let convention = config.overrides.apply(config.preset);
-    let shard = if config.shard == Shard::WHOLE {
-        String::new()
-    } else {
-        format!("shard {} of {} cases, ", config.shard, config.cases)
-    };
-    let mut lines = vec![format!(
-        "hunt: {} scenes ({shard}{} px canvas, {}, oracle {}): {} identical, {} differ, {} failed, {} refused by the oracle",
-        report.cases,
-        o.canvas,
-        convention,
-        config.model.name(),
-        report.same,
-        report.differing,
-        report.failed,
-        report.refused
-    )];
-    if report.stopped_by_time {
-        lines.push(format!(
-            "stopped: the time budget ({:?}) ran out after {} of {} cases",
-            config.budget.unwrap_or_default(),
-            report.cases,
-            report.requested
-        ));
-    }
-    if !report.findings.is_empty() {
-        lines.push(format!(
-            "{:<4} {:<44} {:>6} {:>6} {:>10} {:>7}",
-            "", "finding", "cases", "first", "primitives", "canvas"
-        ));
-    }
-    for (n, f) in report.findings.iter().enumerate() {
-        lines.push(format!(
-            "{:<4} {:<44} {:>6} {:>6} {:>10} {:>7}",
-            format!("{:02}", n + 1),
-            f.signature.describe(),
-            f.cases,
-            f.case,
-            rasterproof::oracle::hunt::primitive_count(&f.minimal),
-            format!("{}x{}", f.minimal.width, f.minimal.height)
-        ));
-    }
-    if let (Some(dir), false) = (&o.out, report.findings.is_empty()) {
-        lines.push(format!(
-            "wrote finding-NN.json / .txt / .rs for each into {}",
-            dir.display()
-        ));
-    }
-    for line in lines {
-        super::print_stdout(&line)?;
-    }
+    super::write_stdout(|out| out.write_all(report.to_text(o.out.as_deref()).as_bytes()))?;
     Ok(if report.findings.is_empty() {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
     })
-}
-
-/// The `.txt` of a finding: what it is, its minimal scene's comparison (or failure), and
-/// the first scene that showed it.
-fn explanation(f: &rasterproof::oracle::hunt::HuntFinding, n: usize) -> String {
-    let mut s = format!(
-        "finding {n:02}: {} (first in case {}, {} cases; shrunk with {} renderer runs)\n\n",
-        f.signature.describe(),
-        f.case,
-        f.cases,
-        f.runs
-    );
-    match &f.verdict {
-        HuntVerdict::Differs(r) => s.push_str(&r.to_text(&format!("finding-{n:02}.json"), "their output", 50)),
-        HuntVerdict::Failed(failure) => s.push_str(&format!("their renderer: {failure}\n")),
-        HuntVerdict::Same => s.push_str("(the minimal scene no longer fails: the renderer is not deterministic)\n"),
-        HuntVerdict::Refused(e) => s.push_str(&format!("the oracle refused the minimal scene: {e}\n")),
-    }
-    s.push_str("\nthe original scene:\n");
-    s.push_str(&f.original.to_json());
-    s
 }

@@ -207,6 +207,14 @@ pub fn load_scene_with(
     Ok((name, scene, target))
 }
 
+/// A pixel as `X,Y` (`explain`'s pixel, `flood --at`): two integers in `0..=u32::MAX`,
+/// spaces around each allowed; `None` for anything else (each command words its own
+/// error).
+pub fn parse_pixel(text: &str) -> Option<(u32, u32)> {
+    let (x, y) = text.split_once(',')?;
+    Some((x.trim().parse().ok()?, y.trim().parse().ok()?))
+}
+
 /// `--shard K/N` (`check`, `hunt`): shard K of N, `1 <= K <= N`.
 pub fn parse_shard(s: &str) -> Result<rasterproof::harness::suite::Shard, String> {
     s.parse()

@@ -385,6 +385,89 @@ pub fn flood_fill(
     Ok(region.len())
 }
 
+/// `rasterproof flood`'s one-line summary of the `connectivity` region of `seed` in the
+/// image named `file` (no newline): its pixel count, the seed and the image size (the
+/// region's), then, when it was `recoloured` into an image file, the colour and the path.
+///
+/// ```
+/// use image::Rgba;
+/// use rasterproof::fill::flood::{region_summary, Connectivity, Region};
+/// let region = Region::from_fn(3, 2, |x, _| x > 0);
+/// assert_eq!(
+///     region_summary("in.png", &region, (1, 0), Connectivity::Four, None),
+///     "in.png: 4 pixels in the 4-connected region of (1, 0) (3x2 image)"
+/// );
+/// let out = std::path::Path::new("out.png");
+/// assert_eq!(
+///     region_summary("in.png", &region, (1, 0), Connectivity::Eight, Some((Rgba([255, 0, 0, 255]), out))),
+///     "in.png: 4 pixels in the 8-connected region of (1, 0) (3x2 image), recoloured 255,0,0,255 into out.png"
+/// );
+/// ```
+pub fn region_summary(
+    file: &str,
+    region: &Region,
+    seed: (u32, u32),
+    connectivity: Connectivity,
+    recoloured: Option<(Rgba<u8>, &std::path::Path)>,
+) -> String {
+    let mut summary = format!(
+        "{file}: {} pixel{} in the {connectivity} region of ({}, {}) ({}x{} image)",
+        region.len(),
+        if region.len() == 1 { "" } else { "s" },
+        seed.0,
+        seed.1,
+        region.width(),
+        region.height()
+    );
+    if let Some((colour, path)) = recoloured {
+        let [r, g, b, a] = colour.0;
+        summary.push_str(&format!(", recoloured {r},{g},{b},{a} into {}", path.display()));
+    }
+    summary
+}
+
+/// `rasterproof flood --format json`: the `connectivity` region of `seed` as one line of
+/// JSON with its newline,
+/// `{"width":W,"height":H,"at":[x,y],"connectivity":4,"pixels":[[x,y],...]}`, the pixels
+/// row-major (by y, then x), streamed to `out`.
+///
+/// ```
+/// use rasterproof::fill::flood::{write_region_json, Connectivity, Region};
+/// let region = Region::from_fn(3, 2, |x, y| x == y);
+/// let mut out = Vec::new();
+/// write_region_json(&mut out, &region, (0, 0), Connectivity::Eight).unwrap();
+/// assert_eq!(
+///     String::from_utf8(out).unwrap(),
+///     "{\"width\":3,\"height\":2,\"at\":[0,0],\"connectivity\":8,\"pixels\":[[0,0],[1,1]]}\n"
+/// );
+/// ```
+///
+/// # Errors
+/// Writing to `out` fails.
+pub fn write_region_json(
+    out: &mut dyn std::io::Write,
+    region: &Region,
+    seed: (u32, u32),
+    connectivity: Connectivity,
+) -> std::io::Result<()> {
+    write!(
+        out,
+        "{{\"width\":{},\"height\":{},\"at\":[{},{}],\"connectivity\":{},\"pixels\":[",
+        region.width(),
+        region.height(),
+        seed.0,
+        seed.1,
+        connectivity.number()
+    )?;
+    for (k, (x, y)) in region.iter().enumerate() {
+        if k > 0 {
+            out.write_all(b",")?;
+        }
+        write!(out, "[{x},{y}]")?;
+    }
+    out.write_all(b"]}\n")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

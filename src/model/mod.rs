@@ -17,7 +17,8 @@
 //!   the same coverage without re-snapping anything.
 //! - float models: Sutherland-Hodgman in the model's float type, then the clipped polygon
 //!   as a fan of float triangles; clip-space triangles clipped, divided and mapped in that
-//!   type. Their departures from the exact result are the measured trade.
+//!   type (both by [`crate::clip::arithmetic::Clipper`]'s float forms). Their departures
+//!   from the exact result are the measured trade.
 //! - lines, in every model: the whole line is drawn and its pixels kept when their sample
 //!   lies in the closed window (point clipping against the window's half-planes; a
 //!   clipped Bresenham line would need its error term restarted, which changes no pixel

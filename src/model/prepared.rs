@@ -2,10 +2,10 @@
 
 use image::RgbImage;
 
-use crate::clip::halfplane::{HalfPlaneF32, HalfPlaneF64};
-use crate::clip::homogeneous::{self, ClipVertex, Viewport};
+use crate::clip::arithmetic::{Arithmetic as ClipArithmetic, Clipper};
+use crate::clip::homogeneous::{ClipVertex, Viewport};
 use crate::clip::mask::ClipMask;
-use crate::clip::sutherland_hodgman::{self, clip_polygon};
+use crate::clip::sutherland_hodgman::clip_polygon;
 use crate::clip::Window;
 use crate::convention::Target;
 use crate::coverage::{Coverage, CoverageSink, IdRun};
@@ -189,12 +189,13 @@ pub fn prepare(primitives: &Primitives, target: &Target, model: Model) -> Result
     Ok(scene)
 }
 
-/// The float models' areas in one float type: the window's half-planes, the triangles,
-/// polygons and clip-space triangles converted to it and clipped in it (Sutherland-Hodgman
-/// on every contour), triangles and clip-space pieces kept as fans. Written once for
-/// f32 and f64 (the crate's float forms are concrete types).
+/// The float models' areas in one float type: the window's [`Clipper`] in that type, the
+/// triangles, polygons and clip-space triangles converted to it and clipped in it
+/// (Sutherland-Hodgman on every contour, [`Clipper::contour_f32`] / `_f64`), triangles and
+/// clip-space pieces kept as fans. Written once for f32 and f64 (the crate's float forms
+/// are concrete types).
 macro_rules! prepare_float_in {
-    ($name:ident, $plane:ty, $to_float:ident, $clip:path, $clip_to_window:path, $triangles:ident, $fan:ident, $polygon:ident) => {
+    ($name:ident, $arithmetic:expr, $to_float:ident, $contour:ident, $clip_space:ident, $triangles:ident, $fan:ident, $polygon:ident) => {
         fn $name<'a>(
             scene: &mut PreparedScene,
             primitives: &'a Primitives,
@@ -204,33 +205,22 @@ macro_rules! prepare_float_in {
         ) -> Result<(), ModelError> {
             let model = scene.model;
             let range = |what: String| ModelError::FloatScene { what, model };
-            let planes: Option<Vec<$plane>> = match &primitives.clip {
-                None => None,
-                Some(w) => Some(
-                    w.half_planes()
-                        .iter()
-                        .map(|h| h.$to_float())
-                        .collect::<Option<Vec<_>>>()
-                        .ok_or_else(|| range("clip (a window edge's line coefficient)".into()))?,
-                ),
-            };
+            let clipper = Clipper::new($arithmetic, primitives.clip.as_ref())
+                .map_err(|_| range("clip (a window edge's line coefficient)".into()))?;
+            let window = primitives.clip.is_some();
             scene.triangles = prepare_triangles(model, &primitives.triangles, target)?;
-            let clipped = |poly: Vec<_>| match &planes {
-                Some(planes) => $clip(&poly, planes),
-                None => poly,
-            };
-            if let (Some(_), PreparedTriangles::$triangles(ts, _)) = (&planes, &scene.triangles) {
+            if let (true, PreparedTriangles::$triangles(ts, _)) = (window, &scene.triangles) {
                 let fans = ts
                     .iter()
-                    .map(|t| PreparedPolygon::$fan(clipped(t.to_vec()), rule));
+                    .map(|t| PreparedPolygon::$fan(clipper.$contour(t), rule));
                 scene.clipped_triangles = Some(fans.collect());
             }
             for (k, p) in primitives.polygons.iter().enumerate() {
                 let mut prepared = prepare_polygon(model, k, p, target)?;
-                if let (Some(planes), PreparedPolygon::$polygon(poly, _)) = (&planes, &mut prepared) {
-                    poly.outline = $clip(&poly.outline, planes);
+                if let (true, PreparedPolygon::$polygon(poly, _)) = (window, &mut prepared) {
+                    poly.outline = clipper.$contour(&poly.outline);
                     for hole in &mut poly.holes {
-                        *hole = $clip(hole, planes);
+                        *hole = clipper.$contour(hole);
                     }
                 }
                 scene.polygons.push(prepared);
@@ -243,9 +233,8 @@ macro_rules! prepare_float_in {
                         .map(|v| v.$to_float())
                         .collect::<Option<Vec<_>>>()
                         .ok_or_else(|| range(format!("clip_space_triangles[{k}]")))?;
-                    let window = $clip_to_window(&vertices, &viewport);
-                    let points = window.into_iter().map(|v| v.point).collect();
-                    scene.polygons.push(PreparedPolygon::$fan(clipped(points), rule));
+                    let window_space = clipper.$clip_space(&vertices, &viewport);
+                    scene.polygons.push(PreparedPolygon::$fan(window_space, rule));
                 }
             }
             Ok(())
@@ -255,20 +244,20 @@ macro_rules! prepare_float_in {
 
 prepare_float_in!(
     prepare_float_f32,
-    HalfPlaneF32,
+    ClipArithmetic::F32,
     to_f32,
-    sutherland_hodgman::clip_f32,
-    homogeneous::clip_to_window_f32,
+    contour_f32,
+    clip_space_f32,
     F32,
     Fan32,
     Float32
 );
 prepare_float_in!(
     prepare_float_f64,
-    HalfPlaneF64,
+    ClipArithmetic::F64,
     to_f64,
-    sutherland_hodgman::clip_f64,
-    homogeneous::clip_to_window_f64,
+    contour_f64,
+    clip_space_f64,
     F64,
     Fan64,
     Float64

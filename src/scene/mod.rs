@@ -8,6 +8,7 @@ use std::fmt::Write as _;
 
 use num_rational::BigRational;
 
+use crate::clip::arithmetic::{Arithmetic, Clipped, Clipper};
 use crate::clip::homogeneous::{ClipVertex, DepthRange, NdcY, Viewport};
 use crate::clip::Window;
 use crate::convention::{Convention, PixelCentre, Preset, Rounding, Target, TieRule};
@@ -149,6 +150,70 @@ impl Scene {
             viewport: Some(self.viewport()),
             clip: self.clip.clone(),
         }
+    }
+
+    /// Every primitive clipped against the scene's window in `arithmetic` (nothing is
+    /// clipped without one) by one [`Clipper`], in input order: triangles and polygon
+    /// contours by [`Clipper::contour`], lines by [`Clipper::segment`], clip-space
+    /// triangles through [`Scene::viewport`] by [`Clipper::clip_space`] (`divide_first`:
+    /// divided first and clipped in 2D, exact only). What `rasterproof clip` prints.
+    ///
+    /// # Errors
+    /// The first primitive that cannot be clipped in `arithmetic` (a coordinate beyond the
+    /// float type, a float result that is not finite, `divide_first` outside exact
+    /// arithmetic or with `w <= 0`) or a window line beyond the float type: one sentence
+    /// naming the field (`triangles[2]`) or the window edge.
+    ///
+    /// ```
+    /// use rasterproof::clip::arithmetic::Arithmetic;
+    /// use rasterproof::scene::parse_scene;
+    /// let scene = parse_scene(
+    ///     r#"{"width": 8, "height": 8, "triangles": [{"v": [[0, 0], [8, 0], [0, 8]]}],
+    ///         "clip": {"rect": [0, 0, 4, 4]}}"#,
+    ///     "example.json",
+    /// )
+    /// .unwrap();
+    /// let clipped = scene.clipped(Arithmetic::Exact, false).unwrap();
+    /// assert_eq!(clipped.to_json(), r#"{"triangles":[[["0","4"],["0","0"],["4","0"],["4","4"]]],"lines":[],"polygons":[],"clip_space_triangles":[]}"#);
+    /// assert_eq!(clipped.to_text("example.json"), "example.json: exact clipping: 1/1 triangles, 0/0 lines, 0/0 polygons, 0/0 clip-space triangles keep something");
+    /// ```
+    pub fn clipped(&self, arithmetic: Arithmetic, divide_first: bool) -> Result<Clipped, String> {
+        let clipper = Clipper::new(arithmetic, self.clip.as_ref())?;
+        let mut triangles = Vec::new();
+        for (k, t) in self.triangles.iter().enumerate() {
+            triangles.push(clipper.contour(&t.triangle.v, &format!("triangles[{k}]"))?);
+        }
+        let mut lines = Vec::new();
+        for (k, l) in self.lines.iter().enumerate() {
+            lines.push(clipper.segment(&l.from, &l.to, &format!("lines[{k}]"))?);
+        }
+        let mut polygons = Vec::new();
+        for (k, p) in self.polygons.iter().enumerate() {
+            let what = format!("polygons[{k}]");
+            let outline = clipper.contour(&p.outline, &what)?;
+            if outline.is_empty() {
+                polygons.push(Vec::new());
+                continue;
+            }
+            let mut contours = vec![outline];
+            for h in &p.holes {
+                contours.push(clipper.contour(h, &what)?);
+            }
+            polygons.push(contours);
+        }
+        let mut clip_space_triangles = Vec::new();
+        let viewport = self.viewport();
+        for (k, t) in self.clip_space_triangles.iter().enumerate() {
+            let what = format!("clip_space_triangles[{k}]");
+            clip_space_triangles.push(clipper.clip_space(t, &viewport, divide_first, &what)?);
+        }
+        Ok(Clipped {
+            arithmetic,
+            triangles,
+            lines,
+            polygons,
+            clip_space_triangles,
+        })
     }
 
     /// The vertex colours, in id order.

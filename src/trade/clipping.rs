@@ -1,14 +1,17 @@
 //! The clipping workloads: segments against rectangles (Cohen-Sutherland) and polygon
 //! outlines against convex windows (Sutherland-Hodgman), each exact, in f64 and in f32.
-//! Every clipper runs on the placed inputs at every magnitude (clipping needs no canvas);
-//! each output vertex is read back exactly and checked against the exact window
-//! ([`crate::check::check_inside`]).
+//! Every clipper runs on the placed inputs at every magnitude (clipping needs no canvas),
+//! through [`Clipper`] (which converts the inputs and reads each output vertex back
+//! exactly); each vertex is checked against the exact window
+//! ([`crate::check::check_inside`]). The speed passes time the algorithms themselves on
+//! inputs converted beforehand.
 
 use glam::{DVec2, Vec2};
 use num_rational::BigRational;
 use proptest::prelude::{prop_oneof, BoxedStrategy, Strategy};
 
 use crate::check::check_inside;
+use crate::clip::arithmetic::{Arithmetic, Clipper};
 use crate::clip::halfplane::{HalfPlane, HalfPlaneF32, HalfPlaneF64};
 use crate::clip::{cohen_sutherland, sutherland_hodgman, Rect, Window};
 use crate::geom::Point;
@@ -23,15 +26,8 @@ use super::speed::{entries, Contender, Job};
 use super::workloads::{draw, place_point, place_window, runner};
 use super::{Config, Family, Magnitude, Sizes};
 
-/// Which arithmetic a clipper runs in.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Arith {
-    Exact,
-    F64,
-    F32,
-}
-
-const ARITHS: [Arith; 3] = [Arith::Exact, Arith::F64, Arith::F32];
+/// The arithmetics of each workload's three contenders, in the order of their names.
+const ARITHMETICS: [Arithmetic; 3] = [Arithmetic::Exact, Arithmetic::F64, Arithmetic::F32];
 
 /// Measures the clipping workloads.
 pub(crate) fn run(config: &Config, sizes: &Sizes, progress: &mut dyn FnMut(&str)) -> Vec<WorkloadReport> {
@@ -44,12 +40,23 @@ pub(crate) fn run(config: &Config, sizes: &Sizes, progress: &mut dyn FnMut(&str)
 /// The output vertices of one clip, read back exactly (`None`: not finite).
 type Out = Vec<Option<Point>>;
 
-fn exact_f64(p: DVec2) -> Option<Point> {
-    Some(Point::new(BigRational::from_float(p.x)?, BigRational::from_float(p.y)?))
-}
-
-fn exact_f32(p: Vec2) -> Option<Point> {
-    exact_f64(p.as_dvec2())
+/// Each case's output vertices in `arithmetic` through [`Clipper`] (one per case's
+/// window), by `clip`; `None` when an input (a coordinate, a bound, a window line) does
+/// not fit the float type.
+fn clip_outputs<C>(
+    cases: &[C],
+    window: impl Fn(&C) -> &Window,
+    arithmetic: Arithmetic,
+    clip: impl Fn(&Clipper, &C) -> Result<Vec<Result<Point, String>>, String>,
+) -> Option<Vec<Out>> {
+    cases
+        .iter()
+        .map(|c| {
+            let clipper = Clipper::new(arithmetic, Some(window(c))).ok()?;
+            let out = clip(&clipper, c).ok()?;
+            Some(out.into_iter().map(Result::ok).collect())
+        })
+        .collect()
 }
 
 /// Counts the outputs outside `window` (a non-finite one counts), and all outputs.
@@ -68,15 +75,15 @@ fn outside(outputs: &[Out], windows: &[Window]) -> (u64, u64) {
 }
 
 /// A workload's speed entries from one round-robin run of `jobs` (one per arithmetic, in
-/// [`ARITHS`] order, `None` where refused).
+/// [`ARITHMETICS`] order, `None` where refused).
 fn speed_entries(names: [&'static str; 3], jobs: Vec<Option<Job<'_>>>, count: u64, sizes: &Sizes) -> Vec<SpeedEntry> {
     let contenders = names
         .iter()
-        .zip(ARITHS)
+        .zip(ARITHMETICS)
         .zip(jobs)
         .map(|((&name, a), job)| Contender {
             name: name.into(),
-            exact: a == Arith::Exact,
+            exact: a == Arithmetic::Exact,
             reference: "the exact check",
             elements: count,
             subset: false,
@@ -150,7 +157,9 @@ fn segments(config: &Config, sizes: &Sizes) -> WorkloadReport {
         .collect();
     let names = ["cohen-sutherland", "cs-f64", "cs-f32"];
 
-    // Speed at the origin, inputs converted once.
+    // Speed at the origin, inputs converted once: the jobs call each arithmetic's
+    // Cohen-Sutherland directly, since going through `Clipper` would time its conversions
+    // and read-back too.
     let c64: Option<Vec<(DVec2, DVec2, cohen_sutherland::RectF64)>> = cases
         .iter()
         .map(|(a, b, w)| Some((a.to_f64()?, b.to_f64()?, rect_of(w).to_f64()?)))
@@ -191,24 +200,16 @@ fn segments(config: &Config, sizes: &Sizes) -> WorkloadReport {
             .map(|(a, b, w)| (place_point(a, m), place_point(b, m), place_window(w, m)))
             .collect();
         let windows: Vec<Window> = placed.iter().map(|(_, _, w)| w.clone()).collect();
-        for (name, arith) in names.iter().zip(ARITHS) {
-            let outputs: Option<Vec<Out>> = placed
-                .iter()
-                .map(|(a, b, w)| {
-                    let r = rect_of(w);
-                    Some(match arith {
-                        Arith::Exact => cohen_sutherland::clip_exact(a, b, r)
-                            .map(|(p, q)| vec![Some(p), Some(q)])
-                            .unwrap_or_default(),
-                        Arith::F64 => cohen_sutherland::clip_f64(a.to_f64()?, b.to_f64()?, &r.to_f64()?)
-                            .map(|(p, q)| vec![exact_f64(p), exact_f64(q)])
-                            .unwrap_or_default(),
-                        Arith::F32 => cohen_sutherland::clip_f32(a.to_f32()?, b.to_f32()?, &r.to_f32()?)
-                            .map(|(p, q)| vec![exact_f32(p), exact_f32(q)])
-                            .unwrap_or_default(),
-                    })
-                })
-                .collect();
+        for (name, arithmetic) in names.iter().zip(ARITHMETICS) {
+            let outputs = clip_outputs(
+                &placed,
+                |(_, _, w)| w,
+                arithmetic,
+                |clipper, (a, b, _)| {
+                    let ends = clipper.segment_ends(a, b, "a segment")?;
+                    Ok(ends.map(Vec::from).unwrap_or_default())
+                },
+            );
             let outcome = match outputs {
                 None => Outcome::Refused("a coordinate does not fit the float type".into()),
                 Some(o) => measured(mag, outside(&o, &windows)),
@@ -234,38 +235,6 @@ fn segments(config: &Config, sizes: &Sizes) -> WorkloadReport {
     }
 }
 
-/// Sutherland-Hodgman in one arithmetic on every case (`None`: an input does not fit).
-fn sh_outputs(cases: &[(Vec<Point>, Window)], arith: Arith) -> Option<Vec<Out>> {
-    cases
-        .iter()
-        .map(|(subject, w)| {
-            let planes = w.half_planes();
-            Some(match arith {
-                Arith::Exact => sutherland_hodgman::clip_exact(subject, &planes)
-                    .into_iter()
-                    .map(Some)
-                    .collect(),
-                Arith::F64 => {
-                    let s: Vec<DVec2> = subject.iter().map(Point::to_f64).collect::<Option<_>>()?;
-                    let p: Vec<HalfPlaneF64> = planes.iter().map(HalfPlane::to_f64).collect::<Option<_>>()?;
-                    sutherland_hodgman::clip_f64(&s, &p)
-                        .into_iter()
-                        .map(exact_f64)
-                        .collect()
-                }
-                Arith::F32 => {
-                    let s: Vec<Vec2> = subject.iter().map(Point::to_f32).collect::<Option<_>>()?;
-                    let p: Vec<HalfPlaneF32> = planes.iter().map(HalfPlane::to_f32).collect::<Option<_>>()?;
-                    sutherland_hodgman::clip_f32(&s, &p)
-                        .into_iter()
-                        .map(exact_f32)
-                        .collect()
-                }
-            })
-        })
-        .collect()
-}
-
 fn polygons(config: &Config, sizes: &Sizes) -> WorkloadReport {
     let name = "polygons vs convex windows";
     let count = 100 * sizes.count;
@@ -277,6 +246,9 @@ fn polygons(config: &Config, sizes: &Sizes) -> WorkloadReport {
         .collect();
     let names = ["sutherland-hodgman", "sh-f64", "sh-f32"];
 
+    // Speed at the origin, inputs converted once: the jobs call each arithmetic's
+    // Sutherland-Hodgman directly, since going through `Clipper` would time its conversions
+    // and read-back too.
     type F64Case = (Vec<DVec2>, Vec<HalfPlaneF64>);
     type F32Case = (Vec<Vec2>, Vec<HalfPlaneF32>);
     let planes: Vec<Vec<HalfPlane>> = cases.iter().map(|(_, w)| w.half_planes()).collect();
@@ -333,8 +305,14 @@ fn polygons(config: &Config, sizes: &Sizes) -> WorkloadReport {
             .map(|(s, w)| (s.iter().map(|p| place_point(p, m)).collect(), place_window(w, m)))
             .collect();
         let windows: Vec<Window> = placed.iter().map(|(_, w)| w.clone()).collect();
-        for (name, arith) in names.iter().zip(ARITHS) {
-            let outcome = match sh_outputs(&placed, arith) {
+        for (name, arithmetic) in names.iter().zip(ARITHMETICS) {
+            let outputs = clip_outputs(
+                &placed,
+                |(_, w)| w,
+                arithmetic,
+                |clipper, (subject, _)| clipper.contour_vertices(subject, "a polygon"),
+            );
+            let outcome = match outputs {
                 None => Outcome::Refused("a coordinate or window line does not fit the float type".into()),
                 Some(o) => measured(mag, outside(&o, &windows)),
             };

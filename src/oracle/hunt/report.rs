@@ -3,12 +3,14 @@
 //! XML ([`HuntReport::junit`]).
 
 use std::fmt::Write as _;
+use std::path::Path;
 
 use super::verdict::{CaseOutcome, HuntVerdict, Signature};
 use super::HuntConfig;
 use crate::harness::junit::{JunitFailure, TestCase, TestSuite, TestSuites};
 use crate::harness::shrink::primitive_count;
 use crate::harness::suite::report::{json_object as object, json_value as j};
+use crate::harness::suite::Shard;
 use crate::scene::Scene;
 
 /// A distinct failure, shrunk.
@@ -60,7 +62,89 @@ pub const REPORT_FORMAT: &str = "rasterproof hunt report";
 /// The schema version of a hunt report ([`HuntReport::to_json`]).
 pub const REPORT_VERSION: u64 = 1;
 
+impl HuntFinding {
+    /// The finding's `finding-NN.txt` (`n`: its number, from 1): what it is, its minimal
+    /// scene's comparison (as `finding-NN.json`, the first 50 pixels) or failure, and the
+    /// first scene that showed it.
+    pub fn to_text(&self, n: usize) -> String {
+        let mut s = format!(
+            "finding {n:02}: {} (first in case {}, {} cases; shrunk with {} renderer runs)\n\n",
+            self.signature.describe(),
+            self.case,
+            self.cases,
+            self.runs
+        );
+        match &self.verdict {
+            HuntVerdict::Differs(r) => s.push_str(&r.to_text(&format!("finding-{n:02}.json"), "their output", 50)),
+            HuntVerdict::Failed(failure) => s.push_str(&format!("their renderer: {failure}\n")),
+            HuntVerdict::Same => s.push_str("(the minimal scene no longer fails: the renderer is not deterministic)\n"),
+            HuntVerdict::Refused(e) => s.push_str(&format!("the oracle refused the minimal scene: {e}\n")),
+        }
+        s.push_str("\nthe original scene:\n");
+        s.push_str(&self.original.to_json());
+        s
+    }
+}
+
 impl HuntReport {
+    /// The summary `rasterproof hunt` prints, a newline after each line: the counts with
+    /// the canvas, convention and oracle (and the shard, when not the whole run), a line
+    /// when the time budget stopped the hunt, a table of the findings (number, signature,
+    /// cases, first case, primitives and canvas of the minimal scene), and, when there
+    /// are findings and `out` names the folder their files went to, where.
+    pub fn to_text(&self, out: Option<&Path>) -> String {
+        let config = &self.config;
+        let convention = config.overrides.apply(config.preset);
+        let shard = if config.shard == Shard::WHOLE {
+            String::new()
+        } else {
+            format!("shard {} of {} cases, ", config.shard, config.cases)
+        };
+        let mut lines = vec![format!(
+            "hunt: {} scenes ({shard}{} px canvas, {}, oracle {}): {} identical, {} differ, {} failed, {} refused by the oracle",
+            self.cases,
+            config.canvas,
+            convention,
+            config.model.name(),
+            self.same,
+            self.differing,
+            self.failed,
+            self.refused
+        )];
+        if self.stopped_by_time {
+            lines.push(format!(
+                "stopped: the time budget ({:?}) ran out after {} of {} cases",
+                config.budget.unwrap_or_default(),
+                self.cases,
+                self.requested
+            ));
+        }
+        if !self.findings.is_empty() {
+            lines.push(format!(
+                "{:<4} {:<44} {:>6} {:>6} {:>10} {:>7}",
+                "", "finding", "cases", "first", "primitives", "canvas"
+            ));
+        }
+        for (n, f) in self.findings.iter().enumerate() {
+            lines.push(format!(
+                "{:<4} {:<44} {:>6} {:>6} {:>10} {:>7}",
+                format!("{:02}", n + 1),
+                f.signature.describe(),
+                f.cases,
+                f.case,
+                primitive_count(&f.minimal),
+                format!("{}x{}", f.minimal.width, f.minimal.height)
+            ));
+        }
+        if let (Some(dir), false) = (out, self.findings.is_empty()) {
+            lines.push(format!(
+                "wrote finding-NN.json / .txt / .rs for each into {}",
+                dir.display()
+            ));
+        }
+        lines.iter().map(|l| format!("{l}\n")).collect()
+    }
+
     /// The convention every scene stated, as a JSON object: `{"preset", "tie_rule",
     /// "pixel_centre", "subpixel_bits", "rounding"}`.
     fn convention_json(&self) -> String {
