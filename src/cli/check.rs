@@ -9,15 +9,14 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::time::Duration;
 
-use indicatif::{ProgressBar, ProgressStyle};
 use rasterproof::check::Violation;
-use rasterproof::harness::suite::{Hooks, SceneFiles, Shard, SuiteConfig, SuiteReport, MAX_JOBS};
+use rasterproof::harness::suite::{Hooks, SceneFiles, SuiteConfig, SuiteReport};
 use rasterproof::harness::CaseRun;
 use rasterproof::scene::Scene;
 
-use super::{parse_duration, parse_shard, print_stdout, writable_outputs, Outputs, ProgressArgs};
+use super::run_args::{ReportArgs, RunArgs};
+use super::{print_stdout, Outputs};
 
 /// What `check` was asked to do.
 #[derive(clap::Args)]
@@ -36,28 +35,9 @@ pub struct Options {
     /// files).
     #[arg(long, requires = "out")]
     out_float: bool,
+    /// Threads, shard, time budget, progress bar, reports.
     #[command(flatten)]
-    progress: ProgressArgs,
-    /// Run the cases on N threads (1..=1024); the results do not depend on N.
-    #[arg(long, value_name = "N", default_value_t = 1, value_parser = parse_jobs)]
-    jobs: usize,
-    /// Run shard K of N only: the cases k with k mod N = K - 1 (1 <= K <= N). The N
-    /// shards' reports merge (check-merge) into the report of the whole run.
-    #[arg(long, value_name = "K/N", value_parser = parse_shard)]
-    shard: Option<Shard>,
-    /// Start no case after this much time (90s, 5m, 1h, 1h30m; units ms, s, m, h) and
-    /// report the cases that ran (the first of the shard's, in order).
-    #[arg(long, value_name = "DURATION", value_parser = parse_duration)]
-    time: Option<Duration>,
-    /// Write the report as JSON: seed, shard, cases, every row, the findings and every
-    /// failing case with its scene and explanation (schema: README, `check` section).
-    /// Ctrl-C stops the run at the next case and still writes the report of those done.
-    #[arg(long, value_name = "FILE.json")]
-    report: Option<PathBuf>,
-    /// Write the result as JUnit XML: one test case per invariant and model, failed when an
-    /// exact or integer model violated it.
-    #[arg(long, value_name = "FILE.xml")]
-    junit: Option<PathBuf>,
+    run: RunArgs,
 }
 
 /// What `check-merge` was asked to do.
@@ -66,48 +46,30 @@ pub struct MergeOptions {
     /// The reports of the shards (`check --shard K/N --report FILE.json`) of one run.
     #[arg(required = true, value_name = "REPORT.json")]
     reports: Vec<PathBuf>,
-    /// Write the merged report as JSON.
-    #[arg(long, value_name = "FILE.json")]
-    report: Option<PathBuf>,
-    /// Write the merged result as JUnit XML.
-    #[arg(long, value_name = "FILE.xml")]
-    junit: Option<PathBuf>,
-}
-
-/// `--jobs N`: 1..=[`MAX_JOBS`].
-fn parse_jobs(s: &str) -> Result<usize, String> {
-    match s.parse::<usize>() {
-        Ok(n) if (1..=MAX_JOBS).contains(&n) => Ok(n),
-        _ => Err(format!("expected a number of threads in 1..={MAX_JOBS}")),
-    }
+    /// The merged report's outputs.
+    #[command(flatten)]
+    outputs: ReportArgs,
 }
 
 /// Runs the suite as `o` asks, writes the failures `--out` asks for, prints the report
 /// and writes `--report` and `--junit`; exit 1 when an exact or integer model failed.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
-    writable_outputs(o.report.as_deref(), o.junit.as_deref())?;
+    o.run.outputs.check_writable()?;
     if let Some(dir) = &o.out {
         std::fs::create_dir_all(dir).map_err(|e| format!("--out {}: cannot create: {e}", dir.display()))?;
     }
     let plan = SuiteConfig {
         seed: o.seed,
         cases: o.cases,
-        shard: o.shard.unwrap_or(Shard::WHOLE),
-        jobs: o.jobs,
-        budget: o.time,
+        shard: o.run.shard(),
+        jobs: o.run.jobs,
+        budget: o.run.time,
         scene_files: o.out.as_ref().map(|dir| SceneFiles {
             dir: dir.clone(),
             float: o.out_float,
         }),
     };
-    let bar = if o.progress.quiet {
-        ProgressBar::hidden()
-    } else {
-        ProgressBar::new(plan.case_count())
-    };
-    bar.set_style(
-        ProgressStyle::with_template("{bar:40} {pos}/{len} cases, {elapsed} ({eta} left)").expect("static template"),
-    );
+    let bar = o.run.progress_bar(plan.case_count(), "cases");
     let tick = || bar.inc(1);
     let files = plan.scene_files.as_ref();
     let mut on_case = |k: u64, run: &CaseRun| -> Result<(), String> {
@@ -128,7 +90,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         on_case: Some(&mut on_case),
     })?;
     bar.finish_and_clear();
-    finish(&report, o.report.as_deref(), o.junit.as_deref())
+    finish(&report, &o.run.outputs)
 }
 
 /// Set by Ctrl-C (SIGINT): the run starts no further case, and `check` writes and prints
@@ -149,7 +111,7 @@ fn interrupt_flag() -> &'static AtomicBool {
 /// Reads the shard reports, merges them, prints the merged report and writes `--report`
 /// and `--junit`; exit 1 when an exact or integer model failed.
 pub fn merge(o: &MergeOptions) -> Result<ExitCode, String> {
-    writable_outputs(o.report.as_deref(), o.junit.as_deref())?;
+    o.outputs.check_writable()?;
     let mut reports = Vec::new();
     for path in &o.reports {
         let name = path.display().to_string();
@@ -158,16 +120,16 @@ pub fn merge(o: &MergeOptions) -> Result<ExitCode, String> {
         reports.push((name.clone(), SuiteReport::from_json(&text, &name)?));
     }
     let merged = SuiteReport::merge(reports)?;
-    finish(&merged, o.report.as_deref(), o.junit.as_deref())
+    finish(&merged, &o.outputs)
 }
 
 /// Writes the report's files (all or none), prints it, and gives the exit code.
-fn finish(report: &SuiteReport, json: Option<&Path>, junit: Option<&Path>) -> Result<ExitCode, String> {
+fn finish(report: &SuiteReport, outputs_asked: &ReportArgs) -> Result<ExitCode, String> {
     let mut outputs = Outputs::new();
-    if let Some(path) = json {
+    if let Some(path) = &outputs_asked.report {
         outputs.stage_text(path, &report.to_json())?;
     }
-    if let Some(path) = junit {
+    if let Some(path) = &outputs_asked.junit {
         outputs.stage_text(path, &report.junit())?;
     }
     outputs.commit()?;
@@ -187,23 +149,4 @@ fn write_case(path: &Path, scene: &Scene, v: &Violation) -> Result<(), String> {
     std::fs::write(path, scene.to_json()).map_err(|e| format!("{}: cannot write: {e}", path.display()))?;
     let txt = path.with_extension("txt");
     std::fs::write(&txt, format!("{v}\n")).map_err(|e| format!("{}: cannot write: {e}", txt.display()))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn durations_parse_with_units_and_refuse_the_rest() {
-        assert_eq!(parse_duration("90s"), Ok(Duration::from_secs(90)));
-        assert_eq!(parse_duration("5m"), Ok(Duration::from_secs(300)));
-        assert_eq!(parse_duration("1h30m"), Ok(Duration::from_secs(5400)));
-        assert_eq!(parse_duration("250ms"), Ok(Duration::from_millis(250)));
-        for bad in ["", "90", "s", "1x", "1.5s", "-1s", "1 s"] {
-            assert!(parse_duration(bad).is_err(), "{bad}");
-        }
-        assert!(parse_duration("99999999999999999999h").is_err());
-        assert_eq!(parse_jobs("2"), Ok(2));
-        assert!(parse_jobs("0").is_err() && parse_jobs("x").is_err() && parse_jobs("1025").is_err());
-    }
 }

@@ -7,16 +7,15 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;
 
-use indicatif::{ProgressBar, ProgressStyle};
 use rasterproof::convention::Preset;
-use rasterproof::harness::suite::Shard;
 use rasterproof::oracle::hunt::{fit_convention, hunt, rust_test, HuntConfig, SceneFamily};
 use rasterproof::oracle::program::Program;
 use rasterproof::oracle::{Background, Format};
 
 use rasterproof::model::Model;
 
-use super::{parse_duration, parse_shard, writable_outputs, ConventionArgs, Outputs, ProgressArgs};
+use super::run_args::RunArgs;
+use super::{ConventionArgs, Outputs};
 
 /// What `hunt` was asked to do.
 #[derive(clap::Args)]
@@ -60,40 +59,21 @@ pub struct Options {
     /// Kill the renderer after this many seconds (a timeout is a finding).
     #[arg(long, default_value_t = 10.0)]
     timeout: f64,
-    /// Run this many renderers at once.
-    #[arg(long, default_value_t = 1)]
-    jobs: usize,
     /// Only coordinates that f32 holds exactly (for programs that read floats).
     #[arg(long)]
     float32_exact: bool,
     /// Runs of the renderer allowed per shrink.
     #[arg(long, default_value_t = 400)]
     shrink_runs: usize,
+    /// Renderers run at once (--jobs), shard, time budget, progress bar, reports.
     #[command(flatten)]
-    progress: ProgressArgs,
-    /// Run shard K of N only: the cases k of 0..cases with k mod N = K - 1 (1 <= K <= N);
-    /// the N shards together run exactly the unsharded hunt's cases.
-    #[arg(long, value_name = "K/N", value_parser = parse_shard)]
-    shard: Option<Shard>,
-    /// Start no case after this much time (90s, 5m, 1h, 1h30m; units ms, s, m, h): the
-    /// running ones finish, what was found is shrunk, and the cases that ran are the first
-    /// of the shard's, in order.
-    #[arg(long, value_name = "DURATION", value_parser = parse_duration)]
-    time: Option<Duration>,
-    /// Write the report as JSON: seed, shard, cases requested and run, the convention, the
-    /// counts and every finding with its minimal scene (schema: docs/oracle.md, `hunt`).
-    #[arg(long, value_name = "FILE.json")]
-    report: Option<PathBuf>,
-    /// Write the result as JUnit XML: one failed test case per finding, one passing
-    /// "identical to the oracle" with the counts.
-    #[arg(long, value_name = "FILE.xml")]
-    junit: Option<PathBuf>,
+    run: RunArgs,
 }
 
 /// Runs the hunt as `o` asks, writes `--out`, `--report` and `--junit` (all or none) and
 /// prints the summary; exit 1 when something was found.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
-    writable_outputs(o.report.as_deref(), o.junit.as_deref())?;
+    o.run.outputs.check_writable()?;
     let format = Format::from_name(&o.theirs_as)
         .ok_or_else(|| format!("--as: unknown format {:?} (expected ids, mask or json)", o.theirs_as))?;
     if !(o.timeout > 0.0 && o.timeout.is_finite()) {
@@ -105,9 +85,6 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             o.canvas,
             rasterproof::convention::MAX_CANVAS
         ));
-    }
-    if o.jobs == 0 {
-        return Err("--jobs: 0 (at least 1)".to_string());
     }
     let families = if o.families.is_empty() {
         SceneFamily::ALL.to_vec()
@@ -143,8 +120,8 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         canvas: o.canvas,
         float32_exact: o.float32_exact,
         shrink_runs: o.shrink_runs,
-        shard: o.shard.unwrap_or(Shard::WHOLE),
-        budget: o.time,
+        shard: o.run.shard(),
+        budget: o.run.time,
         ..HuntConfig::default()
     };
     if let Some(p) = &o.convention.preset {
@@ -167,15 +144,8 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         config.overrides = overrides;
         config.model = model;
     }
-    let bar = if o.progress.quiet {
-        ProgressBar::hidden()
-    } else {
-        ProgressBar::new(config.shard.case_count(config.cases))
-    };
-    bar.set_style(
-        ProgressStyle::with_template("{bar:40} {pos}/{len} scenes, {elapsed} ({eta} left)").expect("static template"),
-    );
-    let report = hunt(&render_with, &config, o.jobs, &|| bar.inc(1))?;
+    let bar = o.run.progress_bar(config.shard.case_count(config.cases), "scenes");
+    let report = hunt(&render_with, &config, o.run.jobs, &|| bar.inc(1))?;
     bar.finish_and_clear();
 
     let mut outputs = Outputs::new();
@@ -189,10 +159,10 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             outputs.stage_text(&path("rs"), &rust_test(f, n, config.model))?;
         }
     }
-    if let Some(path) = &o.report {
+    if let Some(path) = &o.run.outputs.report {
         outputs.stage_text(path, &report.to_json(&o.cmd))?;
     }
-    if let Some(path) = &o.junit {
+    if let Some(path) = &o.run.outputs.junit {
         outputs.stage_text(path, &report.junit(&o.cmd))?;
     }
     outputs.commit()?;

@@ -9,6 +9,7 @@ pub mod flood;
 pub mod hunt;
 pub mod plan;
 pub mod render;
+pub mod run_args;
 pub mod trade;
 
 use std::ffi::OsString;
@@ -61,14 +62,6 @@ impl Display for OutputFormat {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(self.name())
     }
-}
-
-/// The progress options that `check` and `hunt` share (flattened into each).
-#[derive(clap::Args, Debug, Clone, Copy, Default)]
-pub struct ProgressArgs {
-    /// Hide the progress bar.
-    #[arg(long)]
-    pub quiet: bool,
 }
 
 /// The exit codes, at the end of every command's `--help`.
@@ -213,65 +206,6 @@ pub fn load_scene_with(
 pub fn parse_pixel(text: &str) -> Option<(u32, u32)> {
     let (x, y) = text.split_once(',')?;
     Some((x.trim().parse().ok()?, y.trim().parse().ok()?))
-}
-
-/// `--shard K/N` (`check`, `hunt`): shard K of N, `1 <= K <= N`.
-pub fn parse_shard(s: &str) -> Result<rasterproof::harness::suite::Shard, String> {
-    s.parse()
-}
-
-/// `--time DURATION` (`check`, `hunt`): one or more `<integer><unit>`, unit `ms`, `s`, `m` or `h`.
-pub fn parse_duration(s: &str) -> Result<std::time::Duration, String> {
-    use std::time::Duration;
-    let bad = || "expected a duration such as 90s, 5m, 1h or 1h30m (units ms, s, m, h)".to_string();
-    let mut total = Duration::ZERO;
-    let mut rest = s.trim();
-    if rest.is_empty() {
-        return Err(bad());
-    }
-    while !rest.is_empty() {
-        let digits = rest.find(|c: char| !c.is_ascii_digit()).ok_or_else(bad)?;
-        let n: u64 = rest[..digits].parse().map_err(|_| bad())?;
-        rest = &rest[digits..];
-        let unit_len = rest.find(|c: char| c.is_ascii_digit()).unwrap_or(rest.len());
-        let part = match &rest[..unit_len] {
-            "ms" => Some(Duration::from_millis(n)),
-            "s" => Some(Duration::from_secs(n)),
-            "m" => n.checked_mul(60).map(Duration::from_secs),
-            "h" => n.checked_mul(3600).map(Duration::from_secs),
-            _ => return Err(bad()),
-        };
-        total = part
-            .and_then(|p| total.checked_add(p))
-            .ok_or_else(|| "too long a duration".to_string())?;
-        rest = &rest[unit_len..];
-    }
-    Ok(total)
-}
-
-/// Fails early, before a long run (`check`, `check-merge`, `hunt`), when an output cannot be written: `--report` and
-/// `--junit` name one file, or one is a folder or in a folder that does not exist.
-/// [`Outputs`] still checks everything when it writes.
-pub fn writable_outputs(json: Option<&Path>, junit: Option<&Path>) -> Result<(), String> {
-    if let (Some(a), Some(b)) = (json, junit) {
-        if a == b {
-            return Err(format!("--report and --junit: both name {}", a.display()));
-        }
-    }
-    json.into_iter().chain(junit).try_for_each(writable)
-}
-
-/// See [`writable_outputs`].
-fn writable(path: &Path) -> Result<(), String> {
-    if path.is_dir() {
-        return Err(format!("{}: cannot write: it is a folder", path.display()));
-    }
-    match path.parent() {
-        Some(dir) if !dir.as_os_str().is_empty() && !dir.is_dir() => {
-            Err(format!("{}: cannot write: no folder {}", path.display(), dir.display()))
-        }
-        _ => Ok(()),
-    }
 }
 
 /// The files one command run writes, all or none. [`Outputs::stage`] writes each file
