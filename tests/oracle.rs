@@ -1151,3 +1151,45 @@ fn defective_renderers_are_classified_as_what_they_are() {
     println!("16.16 edge walk: {walk:?}");
     assert_eq!(walk, [("near-edge", 34)].into(), "{walk:?}");
 }
+
+/// Every finding, whatever its class, carries the exact distance from the sample to the
+/// primitive's nearest edge: in the text report with a decimal beside the fraction, in
+/// JSON as the finding's `distance`.
+#[test]
+fn every_finding_prints_its_exact_distance() {
+    // Ties: the samples lie on the edges, distance 0.
+    let s = scene(HALF_PIXEL_SQUARES);
+    let theirs = rendered_with(&s, Model::ExactSnapped, |s| s.preset = Preset::Gl);
+    let r = report(&s, &theirs, Format::Json, Model::ExactSnapped);
+    let text = r.to_text("s", "t", 100);
+    assert_eq!(text.matches("nearest edge: 0 px").count(), 16, "{text}");
+    // The pixel-corner renderer: sample-position, each with its distance.
+    let s = random_scene(11, [32, 32], 3, [-2, -2], [34, 34], 256);
+    let theirs = drawn_per_pixel(&s, |t, x, y| exact_at(t, x, y, [0, 0], AnyTieRule::TopLeft));
+    let r = report(&s, &theirs, Format::Json, Model::ExactSnapped);
+    let findings: usize = r.pixels.iter().map(|p| p.findings.len()).sum();
+    assert!(findings > 0);
+    let text = r.to_text("s", "t", usize::MAX);
+    assert_eq!(text.matches("\n    nearest edge: ").count(), findings, "{text}");
+    assert!(
+        text.contains("sample-position: their answer is the exact answer at the sample (i, j)"),
+        "{text}"
+    );
+    let v = r.to_json("s", "t");
+    for f in v["pixels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|p| p["findings"].as_array().unwrap())
+    {
+        assert_eq!(f["class"], "sample-position", "{f}");
+        let offsets = f["reason"]["offsets"].as_array().unwrap();
+        assert!(offsets.contains(&serde_json::json!([0, 0])), "{f}");
+        let d = &f["distance"];
+        assert!(
+            d["squared"].is_string() && d["exact"].is_string() && d["approx"].is_number(),
+            "{f}"
+        );
+        assert!(d["approx"].as_f64().unwrap() <= 1.0, "{f}");
+    }
+}

@@ -241,7 +241,9 @@ impl<'a> Classifier<'a> {
         best.map(|(id, found, _)| (id, found))
     }
 
-    /// Whether primitive `id` sampled at `offset` (half pixels) gives their answer.
+    /// Whether primitive `id` sampled at `offset` (half pixels) gives their answer
+    /// (triangles and polygons: a line's pixels follow its own rule, the line-rule
+    /// search's).
     fn offset_gives(&mut self, id: usize, [ox, oy]: [u8; 2], x: u32, y: u32, theirs_covers: bool) -> bool {
         let half = |v: u32, o: u8| BigRational::new((2 * i64::from(v) + i64::from(o)).into(), 2.into());
         let p = Point::new(half(x, ox), half(y, oy));
@@ -249,21 +251,6 @@ impl<'a> Classifier<'a> {
         let covers = match &self.shapes[id] {
             Shape::Triangle(t) => triangle_at(t, &p, rule.into()).is_some_and(|at| at.inside),
             Shape::Polygon(poly) => polygon_inside(poly, &p, rule),
-            Shape::Diamond { from, to } if ox == oy => {
-                let target = Target {
-                    convention: Convention {
-                        pixel_centre: if ox == 0 {
-                            PixelCentre::Corner
-                        } else {
-                            PixelCentre::Half
-                        },
-                        ..self.target.convention
-                    },
-                    ..*self.target
-                };
-                let kept = self.primitives.clip.as_ref().map_or(true, |w| in_closed_window(w, &p));
-                kept && line::exact::diamond_exits(from, to, i64::from(x), i64::from(y), &target)
-            }
             _ => return false,
         };
         covers == theirs_covers

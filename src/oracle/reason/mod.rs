@@ -21,9 +21,10 @@
 //! Otherwise the exact searches collect every alternative that gives their answer
 //! ([`Alternative`]): the primitive snapped with another rounding at the oracle's own
 //! subpixel bits (a snapping model only), with 1..=16 bits and any rounding, not snapped
-//! at all (a snapping model only), and the sample at another offset in the pixel
-//! (`sample-position`: (i, j), (i + 1/2, j), (i, j + 1/2) or (i + 1/2, j + 1/2), the
-//! oracle's own left out). Then, in this order:
+//! at all (a snapping model only), and for triangles and polygons the sample at another
+//! offset in the pixel (`sample-position`: (i, j), (i + 1/2, j), (i, j + 1/2) or
+//! (i + 1/2, j + 1/2), the oracle's own left out; a line's pixels follow its own rule,
+//! which `line-rule` searches). Then, in this order:
 //! 4. `snapping` at the oracle's own bits with another rounding, when one gives their
 //!    answer: the grid the user said their renderer uses, rounding aside.
 //! 5. `near-edge` when the exact distance `d` from the sample to the nearest edge is
