@@ -880,3 +880,316 @@ fn fit_command() {
         "{stderr}"
     );
 }
+
+// ---- renderers with known defects, each classified as what it is ----
+
+#[path = "common/rng.rs"]
+mod rng;
+
+/// Findings by class name (a pixel with two primitives' findings counts twice).
+fn class_counts(r: &CompareReport) -> std::collections::BTreeMap<&'static str, usize> {
+    let mut out = std::collections::BTreeMap::new();
+    for f in r.pixels.iter().flat_map(|p| &p.findings) {
+        *out.entry(f.reason.class().name()).or_insert(0) += 1;
+    }
+    out
+}
+
+/// `n` non-degenerate triangles with vertices `k / denom` inside `[lo, hi]` on each axis,
+/// drawn by the seeded generator, on a `width x height` canvas (the `d3d11` preset: 8
+/// subpixel bits, top-left, centre 1/2).
+fn random_scene(seed: u64, [width, height]: [u32; 2], n: usize, lo: [i64; 2], hi: [i64; 2], denom: i64) -> Scene {
+    use rasterproof::geom::{Point, Triangle};
+    let mut g = rng::Rng(seed);
+    let mut ts = Vec::new();
+    while ts.len() < n {
+        let v: Vec<[i64; 2]> = (0..3)
+            .map(|_| {
+                [
+                    g.range(lo[0] * denom, hi[0] * denom),
+                    g.range(lo[1] * denom, hi[1] * denom),
+                ]
+            })
+            .collect();
+        let area = (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[2][0] - v[0][0]) * (v[1][1] - v[0][1]);
+        if area.abs() < 40 * denom * denom {
+            continue;
+        }
+        let p = |a: [i64; 2]| {
+            let q = |c: i64| num_rational::BigRational::new(c.into(), denom.into());
+            Point::new(q(a[0]), q(a[1]))
+        };
+        ts.push(Triangle::new(p(v[0]), p(v[1]), p(v[2])));
+    }
+    Scene::new(width, height, ts)
+}
+
+/// A renderer that decides each pixel of each triangle's box (grown by 2 px) with
+/// `covers(triangle, x, y)`, drawing triangle k with id k.
+fn drawn_per_pixel(s: &Scene, covers: impl Fn(&rasterproof::geom::Triangle, u32, u32) -> bool) -> Coverage {
+    use num_traits::ToPrimitive;
+    let mut out = Coverage::new(s.width, s.height);
+    for (k, t) in s.triangles().iter().enumerate() {
+        let axis = |a: usize, side: u32| {
+            let vs: Vec<f64> =
+                t.v.iter()
+                    .map(|p| if a == 0 { &p.x } else { &p.y }.to_f64().unwrap())
+                    .collect();
+            let lo = vs.iter().copied().fold(f64::INFINITY, f64::min) - 2.0;
+            let hi = vs.iter().copied().fold(f64::NEG_INFINITY, f64::max) + 2.0;
+            let c = |v: f64| v.floor().clamp(0.0, f64::from(side - 1)) as u32;
+            c(lo)..=c(hi)
+        };
+        for y in axis(1, s.height) {
+            for x in axis(0, s.width) {
+                if covers(t, x, y) {
+                    out.cover(x, y, u32::try_from(k).unwrap());
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Exact coverage of `t` at the sample `(x + ox, y + oy)` under `rule`.
+fn exact_at(t: &rasterproof::geom::Triangle, x: u32, y: u32, [ox, oy]: [i64; 2], rule: AnyTieRule) -> bool {
+    let q = |v: u32, o: i64| num_rational::BigRational::new((2 * i64::from(v) + o).into(), 2.into());
+    let p = rasterproof::geom::Point::new(q(x, ox), q(y, oy));
+    rasterproof::oracle::evidence::triangle_at(t, &p, rule).is_some_and(|a| a.inside)
+}
+
+/// Edge functions in f32, in the `A x + B y + C` form with `C = x0 y1 - x1 y0` (the
+/// vertices rounded to f32 once), no snapping, no tie rule (`E > 0` on every edge).
+fn f32_edge_functions(t: &rasterproof::geom::Triangle, x: u32, y: u32) -> bool {
+    use num_traits::ToPrimitive;
+    let v: Vec<[f32; 2]> =
+        t.v.iter()
+            .map(|p| [p.x.to_f32().unwrap(), p.y.to_f32().unwrap()])
+            .collect();
+    let (px, py) = (x as f32 + 0.5, y as f32 + 0.5);
+    let e = |a: [f32; 2], b: [f32; 2]| (a[1] - b[1]) * px + (b[0] - a[0]) * py + (a[0] * b[1] - b[0] * a[1]);
+    let es = [e(v[0], v[1]), e(v[1], v[2]), e(v[2], v[0])];
+    es.iter().all(|&e| e > 0.0) || es.iter().all(|&e| e < 0.0)
+}
+
+/// Vertices snapped to 4 subpixel bits (nearest, ties up), then decided exactly at the
+/// pixel centre under top-left.
+fn snapped_to_4_bits(t: &rasterproof::geom::Triangle, x: u32, y: u32) -> bool {
+    use num_rational::BigRational;
+    let snap = |v: &BigRational| {
+        let sixteen = BigRational::from_integer(16.into());
+        ((v * &sixteen) + BigRational::new(1.into(), 2.into())).floor() / sixteen
+    };
+    let s = rasterproof::geom::Triangle::new(
+        rasterproof::geom::Point::new(snap(&t.v[0].x), snap(&t.v[0].y)),
+        rasterproof::geom::Point::new(snap(&t.v[1].x), snap(&t.v[1].y)),
+        rasterproof::geom::Point::new(snap(&t.v[2].x), snap(&t.v[2].y)),
+    );
+    exact_at(&s, x, y, [1, 1], AnyTieRule::TopLeft)
+}
+
+/// A scanline renderer whose edges are walked in 16.16 fixed point: vertices rounded to
+/// 2^-16, each edge's slope dx/dy truncated to 16.16, its x at the first row's sample
+/// computed once and then stepped by the slope row by row; a row covers the samples in
+/// `[left x, right x)` of the rows whose sample y lies in `[top y, bottom y)`.
+fn walked_16_16(s: &Scene) -> Coverage {
+    use num_rational::BigRational;
+    let mut out = Coverage::new(s.width, s.height);
+    let one = 1i64 << 16;
+    let fx = |v: &BigRational| {
+        (v * BigRational::from_integer(one.into()) + BigRational::new(1.into(), 2.into()))
+            .floor()
+            .to_integer()
+            .try_into()
+            .unwrap()
+    };
+    for (k, t) in s.triangles().iter().enumerate() {
+        let v: Vec<[i64; 2]> = t.v.iter().map(|p| [fx(&p.x), fx(&p.y)]).collect();
+        let ys = |j: i64| j * one + one / 2;
+        let ymin = v.iter().map(|p| p[1]).min().unwrap();
+        let ymax = v.iter().map(|p| p[1]).max().unwrap();
+        // Per edge (not horizontal): its rows and its walked x on each.
+        let mut edges: Vec<(i64, i64, Vec<i64>)> = Vec::new();
+        for e in 0..3 {
+            let (mut a, mut b) = (v[e], v[(e + 1) % 3]);
+            if a[1] == b[1] {
+                continue;
+            }
+            if a[1] > b[1] {
+                std::mem::swap(&mut a, &mut b);
+            }
+            let slope = ((b[0] - a[0]) << 16) / (b[1] - a[1]);
+            let first = (a[1] - one / 2 + one - 1).div_euclid(one); // first j with ys(j) >= a.y
+            let last = (b[1] - one / 2 + one - 1).div_euclid(one) - 1; // last j with ys(j) < b.y
+            let mut x = a[0] + (((ys(first) - a[1]) * slope) >> 16);
+            let mut xs = Vec::new();
+            for _ in first..=last {
+                xs.push(x);
+                x += slope;
+            }
+            edges.push((first, last, xs));
+        }
+        let top = (ymin - one / 2 + one - 1).div_euclid(one).max(0);
+        let bottom = ((ymax - one / 2 + one - 1).div_euclid(one) - 1).min(i64::from(s.height) - 1);
+        for j in top..=bottom {
+            let xs: Vec<i64> = edges
+                .iter()
+                .filter(|(f, l, _)| (*f..=*l).contains(&j))
+                .map(|(f, _, xs)| xs[usize::try_from(j - f).unwrap()])
+                .collect();
+            if xs.len() != 2 {
+                continue;
+            }
+            let (l, r) = (xs[0].min(xs[1]), xs[0].max(xs[1]));
+            for i in 0..i64::from(s.width) {
+                let sx = i * one + one / 2;
+                if l <= sx && sx < r {
+                    out.cover(
+                        u32::try_from(i).unwrap(),
+                        u32::try_from(j).unwrap(),
+                        u32::try_from(k).unwrap(),
+                    );
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Five renderers of known, different defects, each compared on several scenes with the
+/// model its author would choose, and each classified as what it is: the class counts
+/// over all the scenes are asserted (a near-edge at a tiny exact distance must not be
+/// named snapping or sample position, and a sample-position defect must not be named
+/// snapping).
+#[test]
+fn defective_renderers_are_classified_as_what_they_are() {
+    // f32 edge functions, no snapping, compared with `--model exact`: far from the
+    // origin every difference is float error at a tiny distance from an edge.
+    let mut f32_counts = std::collections::BTreeMap::new();
+    for seed in 1..=6 {
+        let s = random_scene(seed, [4096, 4096], 6, [3900, 3900], [4090, 4090], 1000);
+        let r = report(&s, &drawn_per_pixel(&s, f32_edge_functions), Format::Json, Model::Exact);
+        for (c, n) in class_counts(&r) {
+            *f32_counts.entry(c).or_insert(0) += n;
+        }
+    }
+    println!("f32 edge functions: {f32_counts:?}");
+    assert_eq!(f32_counts, [("near-edge", 38)].into(), "{f32_counts:?}");
+
+    // Sampling at the pixel corner (i, j): every difference is the sample position.
+    let mut corner = std::collections::BTreeMap::new();
+    for seed in 11..=14 {
+        let s = random_scene(seed, [32, 32], 3, [-2, -2], [34, 34], 256);
+        let theirs = drawn_per_pixel(&s, |t, x, y| exact_at(t, x, y, [0, 0], AnyTieRule::TopLeft));
+        let r = report(&s, &theirs, Format::Json, Model::ExactSnapped);
+        for (c, n) in class_counts(&r) {
+            *corner.entry(c).or_insert(0) += n;
+        }
+    }
+    println!("pixel corner: {corner:?}");
+    assert_eq!(corner, [("sample-position", 281)].into(), "{corner:?}");
+
+    // Snapping to 4 subpixel bits: every difference is snapping.
+    let mut four = std::collections::BTreeMap::new();
+    for seed in 21..=26 {
+        let s = random_scene(seed, [32, 32], 6, [0, 0], [32, 32], 256);
+        let r = report(
+            &s,
+            &drawn_per_pixel(&s, snapped_to_4_bits),
+            Format::Json,
+            Model::ExactSnapped,
+        );
+        for (c, n) in class_counts(&r) {
+            *four.entry(c).or_insert(0) += n;
+        }
+        for f in r.pixels.iter().flat_map(|p| &p.findings) {
+            if let Reason::Snapping { bits, roundings } = &f.reason {
+                assert_eq!(*bits, Some(4), "{f:?}");
+                assert!(roundings.contains(&Rounding::HalfAwayFromZero), "{f:?}");
+            }
+        }
+    }
+    println!("4 subpixel bits: {four:?}");
+    assert_eq!(four, [("snapping", 24)].into(), "{four:?}");
+
+    // Bottom-right ties on vertices at pixel centres: every difference is a tie.
+    let mut ties = std::collections::BTreeMap::new();
+    for seed in 31..=34 {
+        let s = random_scene(seed, [24, 24], 4, [0, 0], [23, 23], 1);
+        let s = {
+            let mut m = s.clone();
+            for t in &mut m.triangles {
+                let half = num_rational::BigRational::new(1.into(), 2.into());
+                t.triangle = rasterproof::geom::Triangle {
+                    v: t.triangle
+                        .v
+                        .clone()
+                        .map(|p| rasterproof::geom::Point::new(p.x + &half, p.y + &half)),
+                };
+            }
+            m
+        };
+        let theirs = drawn_per_pixel(&s, |t, x, y| exact_at(t, x, y, [1, 1], AnyTieRule::BottomRight));
+        let r = report(&s, &theirs, Format::Json, Model::ExactSnapped);
+        for (c, n) in class_counts(&r) {
+            *ties.entry(c).or_insert(0) += n;
+        }
+    }
+    println!("bottom-right ties: {ties:?}");
+    assert_eq!(ties, [("tie", 107)].into(), "{ties:?}");
+
+    // A 16.16 edge walk compared with `--model exact`: its error grows along each edge
+    // (the truncated slope, 2^-16 a row), a tiny distance from it: near-edge.
+    let mut walk = std::collections::BTreeMap::new();
+    for seed in 41..=43 {
+        let s = random_scene(seed, [256, 2048], 2, [0, 0], [256, 2048], 256);
+        let r = report(&s, &walked_16_16(&s), Format::Json, Model::Exact);
+        for (c, n) in class_counts(&r) {
+            *walk.entry(c).or_insert(0) += n;
+        }
+    }
+    println!("16.16 edge walk: {walk:?}");
+    assert_eq!(walk, [("near-edge", 34)].into(), "{walk:?}");
+}
+
+/// Every finding, whatever its class, carries the exact distance from the sample to the
+/// primitive's nearest edge: in the text report with a decimal beside the fraction, in
+/// JSON as the finding's `distance`.
+#[test]
+fn every_finding_prints_its_exact_distance() {
+    // Ties: the samples lie on the edges, distance 0.
+    let s = scene(HALF_PIXEL_SQUARES);
+    let theirs = rendered_with(&s, Model::ExactSnapped, |s| s.preset = Preset::Gl);
+    let r = report(&s, &theirs, Format::Json, Model::ExactSnapped);
+    let text = r.to_text("s", "t", 100);
+    assert_eq!(text.matches("nearest edge: 0 px").count(), 16, "{text}");
+    // The pixel-corner renderer: sample-position, each with its distance.
+    let s = random_scene(11, [32, 32], 3, [-2, -2], [34, 34], 256);
+    let theirs = drawn_per_pixel(&s, |t, x, y| exact_at(t, x, y, [0, 0], AnyTieRule::TopLeft));
+    let r = report(&s, &theirs, Format::Json, Model::ExactSnapped);
+    let findings: usize = r.pixels.iter().map(|p| p.findings.len()).sum();
+    assert!(findings > 0);
+    let text = r.to_text("s", "t", usize::MAX);
+    assert_eq!(text.matches("\n    nearest edge: ").count(), findings, "{text}");
+    assert!(
+        text.contains("sample-position: their answer is the exact answer at the sample (i, j)"),
+        "{text}"
+    );
+    let v = r.to_json("s", "t");
+    for f in v["pixels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|p| p["findings"].as_array().unwrap())
+    {
+        assert_eq!(f["class"], "sample-position", "{f}");
+        let offsets = f["reason"]["offsets"].as_array().unwrap();
+        assert!(offsets.contains(&serde_json::json!([0, 0])), "{f}");
+        let d = &f["distance"];
+        assert!(
+            d["squared"].is_string() && d["exact"].is_string() && d["approx"].is_number(),
+            "{f}"
+        );
+        assert!(d["approx"].as_f64().unwrap() <= 1.0, "{f}");
+    }
+}

@@ -7,7 +7,7 @@ use std::fmt::{self, Write as _};
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::Zero;
+use num_traits::{One, Signed, Zero};
 
 pub use crate::check::{segment_distance2, triangle_at, EdgeAt, Side, TriangleAt};
 use crate::convention::TieRule;
@@ -99,12 +99,106 @@ pub fn shape_distance2(shape: &Shape, p: &Point, address: [i64; 2]) -> BigRation
     }
 }
 
+/// The edges of a shape as segments (a Bresenham line between its pixel addresses), and
+/// the point a sample is measured from (for Bresenham lines the pixel's address).
+fn segments(shape: &Shape, p: &Point, address: [i64; 2]) -> (Vec<(Point, Point)>, Point) {
+    match shape {
+        Shape::Triangle(t) => (
+            (0..3).map(|k| (t.v[k].clone(), t.v[(k + 1) % 3].clone())).collect(),
+            p.clone(),
+        ),
+        Shape::Polygon(poly) => (
+            poly.contours()
+                .flat_map(|c| (0..c.len()).map(move |k| (c[k].clone(), c[(k + 1) % c.len()].clone())))
+                .collect(),
+            p.clone(),
+        ),
+        Shape::Diamond { from, to } => (vec![(from.clone(), to.clone())], p.clone()),
+        Shape::Bresenham { from, to, .. } => {
+            let pt = |c: [i64; 2]| Point::from_ints(c[0], c[1]);
+            (vec![(pt(*from), pt(*to))], pt(address))
+        }
+    }
+}
+
+/// Whether the sample `p` (pixel `address`) lies within float32's error of the shape's
+/// nearest edge: at distance `d <= 2^-20 M^2 / L`, `M` the largest coordinate magnitude of
+/// that edge's endpoints and the sample (at least 1 px), `L` the edge's length (a
+/// zero-length edge: `d == 0`). `2^-20 M^2` is 8 units in the last place of a float32 at
+/// `M^2` (24 significant bits: an ulp at `v` is at most `2^-23 v`), the error of a few
+/// roundings of an edge function `A x + B y + C` whose terms reach `M^2`; divided by `L`
+/// it is how far that moves the edge. Decided exactly: `d^2 L^2 2^40 <= M^4`.
+pub fn within_float_error(shape: &Shape, p: &Point, address: [i64; 2]) -> bool {
+    let (edges, q) = segments(shape, p, address);
+    let Some((d2, (a, b))) = edges
+        .into_iter()
+        .map(|(a, b)| (segment_distance2(&q, &a, &b), (a, b)))
+        .min_by(|x, y| x.0.cmp(&y.0))
+    else {
+        return false;
+    };
+    let (dx, dy) = (&b.x - &a.x, &b.y - &a.y);
+    let l2 = &dx * &dx + &dy * &dy;
+    if l2.is_zero() {
+        return d2.is_zero();
+    }
+    let mut m = BigRational::one();
+    for v in [&a.x, &a.y, &b.x, &b.y, &q.x, &q.y] {
+        let v = v.abs();
+        if v > m {
+            m = v;
+        }
+    }
+    let m2 = &m * &m;
+    d2 * l2 * BigRational::from_integer(BigInt::from(1u64 << 40)) <= &m2 * &m2
+}
+
 /// A distance whose square is `d2`, for people: the exact value (`1/2`, or `√(1/8)` when
 /// it is not rational) and a decimal.
 pub fn distance_text(d2: &BigRational) -> String {
     let mut s = exact_distance(d2);
     let _ = write!(s, " ≈ {:.4} px", distance_f64(d2));
     s
+}
+
+/// A distance whose square is `d2` with a decimal beside it: `15725/32 (491.40625) px`
+/// (the decimal exact when the distance is a fraction whose decimal ends within 20
+/// places), `√(1/8) (≈ 0.353553) px` otherwise.
+pub fn distance_decimal_text(d2: &BigRational) -> String {
+    let exact = exact_distance(d2);
+    let root = |n: &BigInt| {
+        let r = n.sqrt();
+        (&r * &r == *n).then_some(r)
+    };
+    let decimal = match (root(d2.numer()), root(d2.denom())) {
+        (Some(n), Some(d)) => terminating_decimal(&BigRational::new(n, d)),
+        _ => None,
+    };
+    match decimal {
+        Some(dec) if dec == exact => format!("{exact} px"),
+        Some(dec) => format!("{exact} ({dec}) px"),
+        None => format!("{exact} (≈ {:.6}) px", distance_f64(d2)),
+    }
+}
+
+/// The decimal of a non-negative `q` when it ends within 20 places (its denominator has
+/// no prime factor but 2 and 5), else `None`.
+fn terminating_decimal(q: &BigRational) -> Option<String> {
+    let ten = BigInt::from(10);
+    let mut scaled = q.clone();
+    for places in 0..=20usize {
+        if scaled.is_integer() {
+            let digits = scaled.to_integer().to_string();
+            if places == 0 {
+                return Some(digits);
+            }
+            let digits = format!("{digits:0>width$}", width = places + 1);
+            let (int, frac) = digits.split_at(digits.len() - places);
+            return Some(format!("{int}.{frac}"));
+        }
+        scaled *= BigRational::from_integer(ten.clone());
+    }
+    None
 }
 
 /// The exact distance whose square is `d2`: a fraction when `d2` is a rational square,
@@ -146,6 +240,14 @@ mod tests {
         assert_eq!(exact_distance(&d), "√(1/2)");
         assert_eq!(exact_distance(&q(9, 4)), "3/2");
         assert_eq!(distance_text(&q(1, 4)), "1/2 ≈ 0.5000 px");
+        assert_eq!(
+            distance_decimal_text(&q(15725 * 15725, 32 * 32)),
+            "15725/32 (491.40625) px"
+        );
+        assert_eq!(distance_decimal_text(&q(1, 400)), "1/20 (0.05) px");
+        assert_eq!(distance_decimal_text(&q(9, 1)), "3 px");
+        assert_eq!(distance_decimal_text(&q(1, 9)), "1/3 (≈ 0.333333) px");
+        assert_eq!(distance_decimal_text(&q(1, 8)), "√(1/8) (≈ 0.353553) px");
         // A degenerate segment is its point.
         assert_eq!(segment_distance2(&Point::from_ints(3, 4), &a, &a), q(25, 1));
     }

@@ -17,7 +17,7 @@ pub(crate) use pixel::{evidence, pixel_box_holds};
 pub use pixel::{DiffPixel, PixelFinding};
 pub use report::{reason_text, CompareReport, EMPTY_COLOUR, MATCHED_COLOUR, REPORT_VERSION};
 
-use super::reason::Classifier;
+use super::reason::{decide, Classifier, Support};
 use super::theirs::{Format, TheirPixel, Theirs};
 use crate::convention::Target;
 use crate::coverage::Coverage;
@@ -188,7 +188,11 @@ pub fn compare(
     keys.extend(theirs.covered().into_iter().map(|(x, y)| (y, x)));
     keys.sort_unstable();
     keys.dedup();
+    // Pass one: every finding with what the searches found; pass two decides each with
+    // the support of the whole comparison (`reason::decide`).
     let mut pixels = Vec::new();
+    let mut found = Vec::new();
+    let mut support = Support::default();
     for (y, x) in keys {
         {
             let o = ours.owners(x, y);
@@ -197,11 +201,16 @@ pub fn compare(
                 continue;
             };
             let mut findings = Vec::new();
+            let mut push = |(finding, f)| {
+                support.add(&f);
+                found.push(f);
+                findings.push(finding);
+            };
             for id in missing {
-                findings.push(named(&mut classifier, primitives, id, Relation::Missing, x, y, target));
+                push(named(&mut classifier, primitives, id, Relation::Missing, x, y, target));
             }
             for id in extra {
-                findings.push(named(&mut classifier, primitives, id, Relation::Extra, x, y, target));
+                push(named(&mut classifier, primitives, id, Relation::Extra, x, y, target));
             }
             if unnamed {
                 let candidates: Vec<usize> = index
@@ -209,7 +218,7 @@ pub fn compare(
                     .into_iter()
                     .filter(|&k| !o.iter().any(|&id| usize::try_from(id).ok() == Some(k)))
                     .collect();
-                findings.push(guessed(&mut classifier, primitives, &candidates, x, y, target));
+                push(guessed(&mut classifier, primitives, &candidates, x, y, target));
             }
             pixels.push(DiffPixel {
                 x,
@@ -220,6 +229,10 @@ pub fn compare(
                 findings,
             });
         }
+    }
+    let mut found = found.into_iter();
+    for f in pixels.iter_mut().flat_map(|p: &mut DiffPixel| p.findings.iter_mut()) {
+        f.reason = decide(found.next().expect("one found per finding"), &support);
     }
     Ok(CompareReport {
         model,

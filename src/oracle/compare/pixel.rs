@@ -3,13 +3,15 @@
 //! for a shape at a sample, one line ([`evidence`]), and the coarse spatial index of the
 //! shapes' boxes that proposes the candidates (`Candidates`).
 
+use num_rational::BigRational;
+
 use super::{PixelKind, Relation};
 use crate::convention::{PixelCentre, Target};
 use crate::geom::Point;
 use crate::model::{Primitives, Shape};
 use crate::num::exact::pair_text;
-use crate::oracle::evidence::{polygon_at, triangle_at};
-use crate::oracle::reason::{primitive_name, Classifier, Reason, ReasonClass};
+use crate::oracle::evidence::{polygon_at, shape_distance2, triangle_at};
+use crate::oracle::reason::{decide, primitive_name, Classifier, Found, Reason, ReasonClass, Support};
 use crate::oracle::theirs::TheirPixel;
 use crate::raster::sample_exact;
 
@@ -28,6 +30,9 @@ pub struct PixelFinding {
     pub guessed: bool,
     /// Why.
     pub reason: Reason,
+    /// The squared distance from the sample to the primitive's nearest edge, exactly
+    /// (whatever the class; `None` when no primitive is named or guessed).
+    pub distance2: Option<BigRational>,
     /// The oracle's exact evidence for this primitive at the sample (edge values and
     /// flags, winding numbers, the line test), one line.
     pub evidence: String,
@@ -50,7 +55,14 @@ pub struct DiffPixel {
     pub findings: Vec<PixelFinding>,
 }
 
-/// The finding for a primitive their output (or the oracle) names.
+/// The squared distance from pixel `(x, y)`'s sample to `shape`'s nearest edge.
+fn distance_at(shape: &Shape, x: u32, y: u32, target: &Target) -> BigRational {
+    shape_distance2(shape, &sample_exact(x, y, target), [i64::from(x), i64::from(y)])
+}
+
+/// The finding for a primitive their output (or the oracle) names, with what the searches
+/// found (its reason here is the one judged alone; [`super::compare`] decides it again
+/// with the whole comparison's support).
 pub(super) fn named(
     classifier: &mut Classifier<'_>,
     primitives: &Primitives,
@@ -59,31 +71,37 @@ pub(super) fn named(
     x: u32,
     y: u32,
     target: &Target,
-) -> PixelFinding {
+) -> (PixelFinding, Found) {
     let k = usize::try_from(id).ok().filter(|&k| k < classifier.shapes().len());
     let Some(k) = k else {
-        return PixelFinding {
+        let reason = Reason::Gross { distance2: None };
+        let finding = PixelFinding {
             id: Some(id),
             primitive: None,
             relation,
             guessed: false,
-            reason: Reason::Gross { distance2: None },
+            reason: reason.clone(),
+            distance2: None,
             evidence: format!("id {id} is not a primitive of the scene"),
         };
+        return (finding, Found::Decided(reason));
     };
-    let reason = classifier.reason(k, x, y, relation == Relation::Extra);
-    PixelFinding {
+    let found = classifier.found(k, x, y, relation == Relation::Extra);
+    let shape = &classifier.shapes()[k];
+    let finding = PixelFinding {
         id: Some(id),
         primitive: primitive_name(primitives, id),
         relation,
         guessed: false,
-        reason,
-        evidence: evidence(&classifier.shapes()[k], x, y, target),
-    }
+        reason: decide(found.clone(), &Support::of(&found)),
+        distance2: Some(distance_at(shape, x, y, target)),
+        evidence: evidence(shape, x, y, target),
+    };
+    (finding, found)
 }
 
 /// The finding for an extra owner their output does not name: the candidate primitive
-/// that explains it best, or none (gross) when none does.
+/// that explains it best, or none (gross) when none does; with what the searches found.
 pub(super) fn guessed(
     classifier: &mut Classifier<'_>,
     primitives: &Primitives,
@@ -91,35 +109,47 @@ pub(super) fn guessed(
     x: u32,
     y: u32,
     target: &Target,
-) -> PixelFinding {
-    match classifier.best_extra(candidates, x, y) {
-        Some((k, reason)) if reason.class() != ReasonClass::Gross => {
+) -> (PixelFinding, Found) {
+    let best = classifier
+        .best_extra(candidates, x, y)
+        .map(|(k, found)| (k, decide(found.clone(), &Support::of(&found)), found));
+    match best {
+        Some((k, reason, found)) if reason.class() != ReasonClass::Gross => {
             let id = u32::try_from(k).expect("ids fit u32");
-            PixelFinding {
+            let shape = &classifier.shapes()[k];
+            let finding = PixelFinding {
                 id: Some(id),
                 primitive: primitive_name(primitives, id),
                 relation: Relation::Extra,
                 guessed: true,
                 reason,
-                evidence: evidence(&classifier.shapes()[k], x, y, target),
-            }
+                distance2: Some(distance_at(shape, x, y, target)),
+                evidence: evidence(shape, x, y, target),
+            };
+            (finding, found)
         }
-        best => PixelFinding {
-            id: None,
-            primitive: None,
-            relation: Relation::Extra,
-            guessed: true,
-            reason: Reason::Gross {
-                distance2: best.and_then(|(_, r)| match r {
-                    Reason::Gross { distance2 } => distance2,
-                    _ => None,
-                }),
-            },
-            evidence: format!(
-                "no primitive has an edge within 1 px of the sample {}",
-                point_text(&sample_exact(x, y, target))
-            ),
-        },
+        best => {
+            let distance2 = best.and_then(|(_, r, _)| match r {
+                Reason::Gross { distance2 } => distance2,
+                _ => None,
+            });
+            let reason = Reason::Gross {
+                distance2: distance2.clone(),
+            };
+            let finding = PixelFinding {
+                id: None,
+                primitive: None,
+                relation: Relation::Extra,
+                guessed: true,
+                reason: reason.clone(),
+                distance2,
+                evidence: format!(
+                    "no primitive has an edge within 1 px of the sample {}",
+                    point_text(&sample_exact(x, y, target))
+                ),
+            };
+            (finding, Found::Decided(reason))
+        }
     }
 }
 

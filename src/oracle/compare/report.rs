@@ -14,8 +14,8 @@ use crate::coverage::picture::{upscale, Scale};
 use crate::coverage::Coverage;
 use crate::model::Model;
 use crate::num::exact::exact_text;
-use crate::oracle::evidence::{distance_f64, distance_text, exact_distance};
-use crate::oracle::reason::{Reason, ReasonClass};
+use crate::oracle::evidence::{distance_decimal_text, distance_f64, distance_text, exact_distance};
+use crate::oracle::reason::{offset_text, Reason, ReasonClass};
 use crate::oracle::theirs::{Format, TheirPixel};
 
 /// The version of the JSON report's schema ([`CompareReport::to_json`]).
@@ -155,6 +155,9 @@ impl CompareReport {
                     reason_text(&f.reason)
                 );
                 let _ = writeln!(s, "    {}", f.evidence);
+                if let Some(d2) = &f.distance2 {
+                    let _ = writeln!(s, "    nearest edge: {}", distance_decimal_text(d2));
+                }
             }
         }
         s
@@ -165,10 +168,13 @@ impl CompareReport {
     /// pixel_centre, subpixel_bits, rounding}, "width", "height", "ours_covered",
     /// "theirs_covered", "differing", "pixels_by_kind": {kind: n}, "summary": [{kind, class,
     /// count}], "pixels": [{x, y, kind, ours: [ids], theirs: {covered, ids, several},
-    /// findings: [{id, primitive, relation, guessed, class, reason: {...}, evidence}]}]}`.
+    /// findings: [{id, primitive, relation, guessed, class, reason: {...}, distance,
+    /// evidence}]}]}`; `distance` is the sample's distance to the primitive's nearest edge,
+    /// `{squared, exact, approx}` (null when no primitive is named or guessed).
     /// A reason holds, by class: `tie` `{edges: [{index, from, to, side, value,
     /// inclusive}], rules}`; `clip` `{unclipped_covers}`; `line-rule` `{rules}`;
-    /// `fill-rule` `{winding, fill_rule}`; `snapping` `{subpixel_bits (null: unsnapped),
+    /// `fill-rule` `{winding, fill_rule}`; `sample-position` `{offsets: [[x, y]]}` (half
+    /// pixels from the pixel's corner); `snapping` `{subpixel_bits (null: unsnapped),
     /// roundings}`; `near-edge` and `gross` `{distance: {squared, exact, approx} or null}`.
     /// Exact numbers are strings (`"7/2"`).
     pub fn to_json(&self, scene: &str, theirs: &str) -> Value {
@@ -198,6 +204,7 @@ impl CompareReport {
                             "guessed": f.guessed,
                             "class": f.reason.class().name(),
                             "reason": reason_json(&f.reason),
+                            "distance": f.distance2.as_ref().map(distance_json),
                             "evidence": f.evidence,
                         })
                     })
@@ -337,6 +344,13 @@ pub fn reason_text(r: &Reason) -> String {
                 fill_rule.name()
             )
         }
+        Reason::SamplePosition { offsets } => {
+            let names: Vec<String> = offsets.iter().map(|o| offset_text(*o)).collect();
+            format!(
+                "their answer is the exact answer at the sample {} (another pixel centre)",
+                names.join(" or ")
+            )
+        }
         Reason::Snapping {
             bits: Some(b),
             roundings,
@@ -382,6 +396,7 @@ fn reason_json(r: &Reason) -> Value {
         Reason::Clip { unclipped_covers } => json!({"unclipped_covers": unclipped_covers}),
         Reason::LineRule { rules } => json!({ "rules": rules }),
         Reason::FillRule { winding, fill_rule } => json!({"winding": winding, "fill_rule": fill_rule.name()}),
+        Reason::SamplePosition { offsets } => json!({ "offsets": offsets }),
         Reason::Snapping { bits, roundings } => {
             let names: Vec<&str> = roundings.iter().map(|r| r.name()).collect();
             json!({"subpixel_bits": bits, "roundings": names})

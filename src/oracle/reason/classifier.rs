@@ -1,5 +1,5 @@
-//! The [`Classifier`]: the exact search behind each reason class, in the order the classes
-//! are tried, over one comparison's shapes (and, computed when first needed, each
+//! The [`Classifier`]: the exact search behind each reason class (the ranking is
+//! [`super::decide`]'s), over one comparison's shapes (and, computed when first needed, each
 //! primitive's shape under other snappings and its line alternatives).
 
 use std::collections::{HashMap, HashSet};
@@ -7,22 +7,22 @@ use std::collections::{HashMap, HashSet};
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
-use super::{Reason, Snapping, DIAMOND_MIRRORED};
+use super::{decide, Alternative, Found, Reason, Snapping, Support, DIAMOND_MIRRORED};
 use crate::clip::Window;
-use crate::convention::{AnyTieRule, Convention, Target, TieRule};
+use crate::convention::{AnyTieRule, Convention, PixelCentre, Target, TieRule};
 use crate::coverage::CoverageSink;
 use crate::geom::{FillRule, Point};
 use crate::line::{self, BresenhamTie, MAX_BRESENHAM_COORD};
 use crate::model::{prepare, Model, Primitives, Shape};
 use crate::num::Rounding;
-use crate::oracle::evidence::{polygon_at, polygon_inside, shape_distance2, triangle_at, EdgeAt};
+use crate::oracle::evidence::{polygon_at, polygon_inside, shape_distance2, triangle_at, within_float_error, EdgeAt};
 use crate::raster::sample_exact;
 
-/// The alternatives the snapping search tries, in groups: the oracle's own subpixel bits
-/// with every other rounding (a renderer that differs in rounding alone), then for each of
-/// 1..=16 bits every rounding, then unsnapped. The first group with an alternative that
-/// gives their answer is the reason. The oracle's own snapping is left out.
-fn snapping_groups(own: Option<(u32, Rounding)>) -> Vec<Vec<Snapping>> {
+/// The snappings the search tries: the oracle's own subpixel bits with every other
+/// rounding (a renderer that differs in rounding alone), and the others: for each of
+/// 1..=16 bits every rounding, then unsnapped (for a snapping oracle). The oracle's own
+/// snapping is left out.
+fn snappings(own: Option<(u32, Rounding)>) -> (Vec<Snapping>, Vec<Snapping>) {
     let at = |bits: u32| -> Vec<Snapping> {
         Rounding::ALL
             .into_iter()
@@ -33,22 +33,31 @@ fn snapping_groups(own: Option<(u32, Rounding)>) -> Vec<Vec<Snapping>> {
             .filter(|s| own != s.bits.map(|b| (b, s.rounding)))
             .collect()
     };
-    let mut groups = Vec::new();
-    if let Some((bits, _)) = own {
-        groups.push(at(bits));
-    }
-    groups.extend(
-        (1..=crate::num::MAX_SUBPIXEL_BITS)
-            .filter(|&b| Some(b) != own.map(|o| o.0))
-            .map(at),
-    );
+    let own_group = own.map(|(bits, _)| at(bits)).unwrap_or_default();
+    let mut others: Vec<Snapping> = (1..=crate::num::MAX_SUBPIXEL_BITS)
+        .filter(|&b| Some(b) != own.map(|o| o.0))
+        .flat_map(at)
+        .collect();
     if own.is_some() {
-        groups.push(vec![Snapping {
+        others.push(Snapping {
             bits: None,
             rounding: Rounding::NearestEven,
-        }]);
+        });
     }
-    groups
+    (own_group, others)
+}
+
+/// The sample offsets the sample-position search tries, in half pixels: (i, j),
+/// (i + 1/2, j), (i, j + 1/2), (i + 1/2, j + 1/2), less the oracle's own.
+fn sample_offsets(own: PixelCentre) -> Vec<[u8; 2]> {
+    let own = match own {
+        PixelCentre::Half => [1, 1],
+        PixelCentre::Corner => [0, 0],
+    };
+    [[0, 0], [1, 0], [0, 1], [1, 1]]
+        .into_iter()
+        .filter(|o| *o != own)
+        .collect()
 }
 
 /// Collects pixels (a line's, for the line-rule search).
@@ -102,7 +111,9 @@ pub struct Classifier<'a> {
     target: &'a Target,
     model: Model,
     shapes: &'a [Shape],
-    snappings: Vec<Vec<Snapping>>,
+    own_grid: Vec<Snapping>,
+    other_snappings: Vec<Snapping>,
+    offsets: Vec<[u8; 2]>,
     snapped_shapes: HashMap<(usize, Snapping), Option<Shape>>,
     unclipped_shapes: HashMap<usize, Option<Shape>>,
     line_pixels: HashMap<(usize, &'static str), HashSet<[i64; 2]>>,
@@ -114,12 +125,15 @@ impl<'a> Classifier<'a> {
     pub fn new(primitives: &'a Primitives, target: &'a Target, model: Model, shapes: &'a [Shape]) -> Classifier<'a> {
         let conv = target.convention;
         let own = model.snaps().then_some((conv.subpixel_bits, conv.rounding));
+        let (own_grid, other_snappings) = snappings(own);
         Classifier {
             primitives,
             target,
             model,
             shapes,
-            snappings: snapping_groups(own),
+            own_grid,
+            other_snappings,
+            offsets: sample_offsets(conv.pixel_centre),
             snapped_shapes: HashMap::new(),
             unclipped_shapes: HashMap::new(),
             line_pixels: HashMap::new(),
@@ -132,49 +146,85 @@ impl<'a> Classifier<'a> {
     }
 
     /// Why their answer (`theirs_covers`) for primitive `id` at pixel `(x, y)` differs from
-    /// the oracle's. (`id` must be a primitive of the scene.)
+    /// the oracle's, judged alone (as if it were the comparison's only finding; see
+    /// [`super::decide`]). (`id` must be a primitive of the scene.)
     pub fn reason(&mut self, id: usize, x: u32, y: u32, theirs_covers: bool) -> Reason {
+        let found = self.found(id, x, y, theirs_covers);
+        let support = Support::of(&found);
+        decide(found, &support)
+    }
+
+    /// What the exact searches find for their answer (`theirs_covers`) for primitive `id`
+    /// at pixel `(x, y)`: a class that decides alone, or the distance and every
+    /// alternative that gives their answer. (`id` must be a primitive of the scene.)
+    pub fn found(&mut self, id: usize, x: u32, y: u32, theirs_covers: bool) -> Found {
         let p = sample_exact(x, y, self.target);
         let address = [i64::from(x), i64::from(y)];
         let shapes = self.shapes;
         let shape = &shapes[id];
         if let Some(r) = tie(shape, &p, self.target.convention.tie_rule, theirs_covers) {
-            return r;
+            return Found::Decided(r);
         }
         if self.primitives.clip.is_some() {
             if let Some(unclipped) = self.unclipped(id) {
                 let covers = self.covers(id, &unclipped, x, y, self.target, false);
                 if covers == theirs_covers {
-                    return Reason::Clip {
+                    return Found::Decided(Reason::Clip {
                         unclipped_covers: covers,
-                    };
+                    });
                 }
             }
         }
         if let Some(r) = self.rule(id, x, y, theirs_covers) {
-            return r;
+            return Found::Decided(r);
         }
-        if let Some(r) = self.snapping(id, x, y, theirs_covers) {
-            return r;
+        let distance2 = shape_distance2(shape, &p, address);
+        let near = distance2 <= BigRational::one();
+        let own_roundings: Vec<Rounding> = self
+            .own_grid
+            .clone()
+            .into_iter()
+            .filter(|s| self.snapping_gives(id, *s, x, y, theirs_covers))
+            .map(|s| s.rounding)
+            .collect();
+        let own_grid = (!own_roundings.is_empty()).then_some(Reason::Snapping {
+            bits: Some(self.target.convention.subpixel_bits),
+            roundings: own_roundings,
+        });
+        let mut alternatives: Vec<Alternative> = self
+            .offsets
+            .clone()
+            .into_iter()
+            .filter(|o| self.offset_gives(id, *o, x, y, theirs_covers))
+            .map(Alternative::SamplePosition)
+            .collect();
+        if own_grid.is_none() && (self.model.snaps() || !near) {
+            for s in self.other_snappings.clone() {
+                if self.snapping_gives(id, s, x, y, theirs_covers) {
+                    alternatives.push(Alternative::Snapping(s));
+                }
+            }
         }
-        let d2 = shape_distance2(shape, &p, address);
-        if d2 <= BigRational::one() {
-            Reason::NearEdge { distance2: d2 }
-        } else {
-            Reason::Gross { distance2: Some(d2) }
+        Found::Open {
+            tiny: within_float_error(shape, &p, address),
+            distance2,
+            own_grid,
+            alternatives,
         }
     }
 
-    /// The best reason among `candidates` for an extra pixel whose owner their output does
-    /// not name (a mask, or the second owner of an ids PNG's double cover): the first class
-    /// in order, the nearest within a class; `None` when there is no candidate.
-    pub fn best_extra(&mut self, candidates: &[usize], x: u32, y: u32) -> Option<(usize, Reason)> {
-        let mut best: Option<(usize, Reason)> = None;
+    /// The candidate among `candidates` that best explains an extra pixel whose owner
+    /// their output does not name (a mask, or the second owner of an ids PNG's double
+    /// cover), each judged alone: the first class in order, the nearest within a class;
+    /// `None` when there is no candidate.
+    pub fn best_extra(&mut self, candidates: &[usize], x: u32, y: u32) -> Option<(usize, Found)> {
+        let mut best: Option<(usize, Found, Reason)> = None;
         for &id in candidates {
-            let r = self.reason(id, x, y, true);
+            let found = self.found(id, x, y, true);
+            let r = decide(found.clone(), &Support::of(&found));
             let better = match &best {
                 None => true,
-                Some((_, b)) => match r.class().cmp(&b.class()) {
+                Some((_, _, b)) => match r.class().cmp(&b.class()) {
                     std::cmp::Ordering::Less => true,
                     std::cmp::Ordering::Greater => false,
                     std::cmp::Ordering::Equal => match (r.distance2(), b.distance2()) {
@@ -185,10 +235,36 @@ impl<'a> Classifier<'a> {
                 },
             };
             if better {
-                best = Some((id, r));
+                best = Some((id, found, r));
             }
         }
-        best
+        best.map(|(id, found, _)| (id, found))
+    }
+
+    /// Whether primitive `id` sampled at `offset` (half pixels) gives their answer
+    /// (triangles and polygons: a line's pixels follow its own rule, the line-rule
+    /// search's).
+    fn offset_gives(&mut self, id: usize, [ox, oy]: [u8; 2], x: u32, y: u32, theirs_covers: bool) -> bool {
+        let half = |v: u32, o: u8| BigRational::new((2 * i64::from(v) + i64::from(o)).into(), 2.into());
+        let p = Point::new(half(x, ox), half(y, oy));
+        let rule = self.target.convention.tie_rule;
+        let covers = match &self.shapes[id] {
+            Shape::Triangle(t) => triangle_at(t, &p, rule.into()).is_some_and(|at| at.inside),
+            Shape::Polygon(poly) => polygon_inside(poly, &p, rule),
+            _ => return false,
+        };
+        covers == theirs_covers
+    }
+
+    /// Whether primitive `id` under snapping `s` gives their answer.
+    fn snapping_gives(&mut self, id: usize, s: Snapping, x: u32, y: u32, theirs_covers: bool) -> bool {
+        if matches!(self.shapes[id], Shape::Bresenham { .. }) {
+            return false; // pixel addresses do not snap
+        }
+        let Some((shape, target)) = self.snapped(id, s) else {
+            return false;
+        };
+        self.covers(id, &shape, x, y, &target, true) == theirs_covers
     }
 
     /// Whether `shape` (primitive `id`'s, or an alternative of it) covers pixel `(x, y)`
@@ -342,33 +418,6 @@ impl<'a> Classifier<'a> {
             }
         }
         set.0
-    }
-
-    /// The snapping search.
-    fn snapping(&mut self, id: usize, x: u32, y: u32, theirs_covers: bool) -> Option<Reason> {
-        if matches!(self.shapes[id], Shape::Bresenham { .. }) {
-            return None; // pixel addresses do not snap
-        }
-        for g in 0..self.snappings.len() {
-            let mut roundings = Vec::new();
-            for k in 0..self.snappings[g].len() {
-                let s = self.snappings[g][k];
-                let Some((shape, target)) = self.snapped(id, s) else {
-                    continue;
-                };
-                if self.covers(id, &shape, x, y, &target, true) == theirs_covers {
-                    roundings.push(s.rounding);
-                }
-            }
-            if !roundings.is_empty() {
-                let bits = self.snappings[g][0].bits;
-                return Some(Reason::Snapping {
-                    bits,
-                    roundings: if bits.is_some() { roundings } else { Vec::new() },
-                });
-            }
-        }
-        None
     }
 
     /// Primitive `id` under snapping `s`, and the target it renders with.
