@@ -128,10 +128,14 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         Background::default(),
         Duration::from_secs_f64(o.timeout),
     )?;
-    // Interrupted (Ctrl-C, SIGTERM): no stray temporary files. The renderer's process
-    // gets the terminal's Ctrl-C too; its files go with the folder.
+    // Interrupted (Ctrl-C, SIGTERM): no stray temporary files and no renderer left
+    // running. The renderer runs in a process group of its own (it does not get the
+    // terminal's Ctrl-C): every running renderer's whole group is killed here; its files
+    // go with the folder.
     let temp = program.temp_dir().to_path_buf();
+    let groups = program.process_groups();
     let _ = ctrlc::set_handler(move || {
+        groups.kill_all();
         let _ = std::fs::remove_dir_all(&temp);
         eprintln!("hunt: interrupted; nothing written");
         std::process::exit(130);
