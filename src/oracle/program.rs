@@ -78,27 +78,39 @@ impl Drop for TempDir {
 /// flight), shared between a [`Program`] and whoever must stop them from outside, such as
 /// a Ctrl-C handler: [`ProcessGroups::kill_all`]. Cloning shares the set.
 #[derive(Debug, Clone, Default)]
-pub struct ProcessGroups(Arc<Mutex<Vec<u32>>>);
+pub struct ProcessGroups(Arc<Mutex<Groups>>);
+
+/// The set behind [`ProcessGroups`]: the live groups, and whether `kill_all` was called
+/// (a renderer started after it is killed at once: the process is ending).
+#[derive(Debug, Default)]
+struct Groups {
+    live: Vec<u32>,
+    closed: bool,
+}
 
 impl ProcessGroups {
-    /// Kills every process of every group in the set (SIGKILL); a no-op off unix. The
-    /// renderers' own [`Program::render`] calls then see them killed.
+    /// Kills every process of every group in the set (SIGKILL), and every renderer
+    /// started after it as soon as it starts (the caller is ending the process); a no-op
+    /// off unix. The renderers' own [`Program::render`] calls then see them killed.
     pub fn kill_all(&self) {
-        let live = self.0.lock().unwrap_or_else(PoisonError::into_inner);
-        for &group in live.iter() {
+        let mut groups = self.0.lock().unwrap_or_else(PoisonError::into_inner);
+        groups.closed = true;
+        for &group in &groups.live {
             kill_group(group);
         }
     }
 
     fn add(&self, group: u32) {
-        self.0.lock().unwrap_or_else(PoisonError::into_inner).push(group);
+        let mut groups = self.0.lock().unwrap_or_else(PoisonError::into_inner);
+        groups.live.push(group);
+        if groups.closed {
+            kill_group(group);
+        }
     }
 
     fn remove(&self, group: u32) {
-        self.0
-            .lock()
-            .unwrap_or_else(PoisonError::into_inner)
-            .retain(|&g| g != group);
+        let mut groups = self.0.lock().unwrap_or_else(PoisonError::into_inner);
+        groups.live.retain(|&g| g != group);
     }
 }
 
