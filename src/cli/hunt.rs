@@ -36,7 +36,8 @@ pub struct Options {
     #[arg(long, default_value_t = 0)]
     seed: u64,
     /// The families to draw from (repeat, or comma-separate): mesh, delaunay, triangles,
-    /// slivers, huge, fine, lines, polygons. Default: all.
+    /// slivers, huge, fine (triangles only), lines (needs lines), polygons (needs
+    /// polygons); all-triangles: the six triangle-only families. Default: all.
     #[arg(long = "family", value_name = "F", value_delimiter = ',')]
     families: Vec<String>,
     /// The convention every scene states: `--preset` (default d3d11) and the overrides.
@@ -112,15 +113,19 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let families = if o.families.is_empty() {
         SceneFamily::ALL.to_vec()
     } else {
-        o.families
-            .iter()
-            .map(|f| {
-                SceneFamily::from_name(f.trim()).ok_or_else(|| {
-                    let all: Vec<&str> = SceneFamily::ALL.iter().map(|f| f.name()).collect();
-                    format!("--family: unknown family {f:?} (expected {})", all.join(", "))
-                })
-            })
-            .collect::<Result<_, _>>()?
+        let mut families = Vec::new();
+        for f in &o.families {
+            let expanded = SceneFamily::expand(f.trim()).ok_or_else(|| {
+                let all: Vec<&str> = SceneFamily::ALL.iter().map(|f| f.name()).collect();
+                format!(
+                    "--family: unknown family {f:?} (expected {} or {})",
+                    all.join(", "),
+                    SceneFamily::TRIANGLES_ONLY_NAME
+                )
+            })?;
+            families.extend(expanded);
+        }
+        families
     };
     let program = Program::new(
         &o.cmd,
