@@ -35,7 +35,8 @@ pub struct Options {
     #[arg(long, default_value_t = 0)]
     seed: u64,
     /// The families to draw from (repeat, or comma-separate): mesh, delaunay, triangles,
-    /// slivers, huge, fine, lines, polygons. Default: all.
+    /// slivers, huge, fine (triangles only), lines (needs lines), polygons (needs
+    /// polygons); all-triangles: the six triangle-only families. Default: all.
     #[arg(long = "family", value_name = "F", value_delimiter = ',')]
     families: Vec<String>,
     /// The convention every scene states: `--preset` (default d3d11) and the overrides.
@@ -89,15 +90,19 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let families = if o.families.is_empty() {
         SceneFamily::ALL.to_vec()
     } else {
-        o.families
-            .iter()
-            .map(|f| {
-                SceneFamily::from_name(f.trim()).ok_or_else(|| {
-                    let all: Vec<&str> = SceneFamily::ALL.iter().map(|f| f.name()).collect();
-                    format!("--family: unknown family {f:?} (expected {})", all.join(", "))
-                })
-            })
-            .collect::<Result<_, _>>()?
+        let mut families = Vec::new();
+        for f in &o.families {
+            let expanded = SceneFamily::expand(f.trim()).ok_or_else(|| {
+                let all: Vec<&str> = SceneFamily::ALL.iter().map(|f| f.name()).collect();
+                format!(
+                    "--family: unknown family {f:?} (expected {} or {})",
+                    all.join(", "),
+                    SceneFamily::TRIANGLES_ONLY_NAME
+                )
+            })?;
+            families.extend(expanded);
+        }
+        families
     };
     let program = Program::new(
         &o.cmd,
@@ -105,10 +110,14 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         Background::default(),
         Duration::from_secs_f64(o.timeout),
     )?;
-    // Interrupted (Ctrl-C, SIGTERM): no stray temporary files. The renderer's process
-    // gets the terminal's Ctrl-C too; its files go with the folder.
+    // Interrupted (Ctrl-C, SIGTERM): no stray temporary files and no renderer left
+    // running. The renderer runs in a process group of its own (it does not get the
+    // terminal's Ctrl-C): every running renderer's whole group is killed here; its files
+    // go with the folder.
     let temp = program.temp_dir().to_path_buf();
+    let groups = program.process_groups();
     let _ = ctrlc::set_handler(move || {
+        groups.kill_all();
         let _ = std::fs::remove_dir_all(&temp);
         eprintln!("hunt: interrupted; nothing written");
         std::process::exit(130);

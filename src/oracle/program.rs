@@ -2,12 +2,20 @@
 //! file, the program run with a timeout, its output file read as [`Theirs`]. A non-zero
 //! exit, a crash, a timeout, no output or unreadable output is a [`RenderFailure`], a finding in
 //! its own right.
+//!
+//! On unix the program runs in a process group of its own (`setpgid(0, 0)`, std's
+//! `CommandExt::process_group`), and the whole group is killed (`killpg(2)`, SIGKILL) when
+//! it times out, when it has exited (whatever it left running in the background), and on
+//! [`ProcessGroups::kill_all`], which `rasterproof hunt`'s Ctrl-C handler calls: no child
+//! of the renderer outlives it. (Being in its own group, the renderer does not get the
+//! terminal's Ctrl-C itself.)
 
 use std::fmt;
 use std::io::Read as _;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Mutex, PoisonError};
 use std::time::{Duration, Instant};
 
 use super::theirs::{Background, Format, Theirs};
@@ -66,6 +74,87 @@ impl Drop for TempDir {
     }
 }
 
+/// The process groups of the renderers running now (one per [`Program::render`] in
+/// flight), shared between a [`Program`] and whoever must stop them from outside, such as
+/// a Ctrl-C handler: [`ProcessGroups::kill_all`]. Cloning shares the set.
+#[derive(Debug, Clone, Default)]
+pub struct ProcessGroups(Arc<Mutex<Groups>>);
+
+/// The set behind [`ProcessGroups`]: the live groups, and whether `kill_all` was called
+/// (a renderer started after it is killed at once: the process is ending).
+#[derive(Debug, Default)]
+struct Groups {
+    live: Vec<u32>,
+    closed: bool,
+}
+
+impl ProcessGroups {
+    /// Kills every process of every group in the set (SIGKILL), and every renderer
+    /// started after it as soon as it starts (the caller is ending the process); a no-op
+    /// off unix. The renderers' own [`Program::render`] calls then see them killed.
+    pub fn kill_all(&self) {
+        let mut groups = self.0.lock().unwrap_or_else(PoisonError::into_inner);
+        groups.closed = true;
+        for &group in &groups.live {
+            kill_group(group);
+        }
+    }
+
+    fn add(&self, group: u32) {
+        let mut groups = self.0.lock().unwrap_or_else(PoisonError::into_inner);
+        groups.live.push(group);
+        if groups.closed {
+            kill_group(group);
+        }
+    }
+
+    fn remove(&self, group: u32) {
+        let mut groups = self.0.lock().unwrap_or_else(PoisonError::into_inner);
+        groups.live.retain(|&g| g != group);
+    }
+}
+
+/// Sends SIGKILL to process group `group` (its leader's pid); errors (the group is gone
+/// already) are ignored. A no-op off unix, where only the program itself is killed.
+fn kill_group(group: u32) {
+    #[cfg(unix)]
+    {
+        use nix::sys::signal::{killpg, Signal};
+        use nix::unistd::Pid;
+        if let Ok(pid) = i32::try_from(group) {
+            if pid > 1 {
+                let _ = killpg(Pid::from_raw(pid), Signal::SIGKILL);
+            }
+        }
+    }
+    #[cfg(not(unix))]
+    let _ = group;
+}
+
+/// A started renderer and its process group: dropping it kills the group (if the leader
+/// is not reaped yet, the leader too), reaps the leader and forgets the group, whichever
+/// way `Program::run` leaves (a result, an error, a panic).
+struct Running<'a> {
+    child: std::process::Child,
+    groups: &'a ProcessGroups,
+    reaped: bool,
+}
+
+impl Drop for Running<'_> {
+    fn drop(&mut self) {
+        let group = self.child.id();
+        // While the leader is not reaped its pid, and so the group's id, cannot be reused:
+        // the kill reaches this group only. After a reap (a normal exit) the id is still
+        // held while any member of the group lives, which is when the kill matters.
+        kill_group(group);
+        if !self.reaped {
+            let _ = self.child.kill();
+            let _ = self.child.wait();
+        }
+        self.groups.remove(group);
+    }
+}
+
 /// An external renderer: `PROGRAM ARGS...` with `{scene}` and `{out}` replaced by paths.
 #[derive(Debug)]
 pub struct Program {
@@ -75,6 +164,7 @@ pub struct Program {
     timeout: Duration,
     dir: TempDir,
     count: AtomicU64,
+    groups: ProcessGroups,
 }
 
 /// How much of a failing program's stderr a failure keeps (its end).
@@ -114,6 +204,7 @@ impl Program {
             timeout,
             dir: TempDir(dir),
             count: AtomicU64::new(0),
+            groups: ProcessGroups::default(),
         })
     }
 
@@ -121,6 +212,12 @@ impl Program {
     /// dropped; a caller that ends the process on a signal removes it itself).
     pub fn temp_dir(&self) -> &std::path::Path {
         &self.dir.0
+    }
+
+    /// The process groups of its runs in flight: [`ProcessGroups::kill_all`] kills them
+    /// all (what a Ctrl-C handler calls before it ends the process).
+    pub fn process_groups(&self) -> ProcessGroups {
+        self.groups.clone()
     }
 
     /// The format its output is read as.
@@ -156,20 +253,32 @@ impl Program {
         let args: Vec<String> = self.argv[1..].iter().map(fill).collect();
         let stderr = std::fs::File::create(err_path)
             .map_err(|e| fail(FailureKind::BadOutput, format!("cannot capture stderr: {e}")))?;
-        let mut child = Command::new(&self.argv[0])
+        let mut command = Command::new(&self.argv[0]);
+        command
             .args(&args)
             .stdin(Stdio::null())
             .stdout(Stdio::null())
-            .stderr(stderr)
+            .stderr(stderr);
+        #[cfg(unix)]
+        std::os::unix::process::CommandExt::process_group(&mut command, 0);
+        let child = command
             .spawn()
             .map_err(|e| fail(FailureKind::Exit, format!("cannot start {:?}: {e}", self.argv[0])))?;
+        self.groups.add(child.id());
+        let mut running = Running {
+            child,
+            groups: &self.groups,
+            reaped: false,
+        };
         let deadline = Instant::now() + self.timeout;
         let status = loop {
-            match child.try_wait() {
-                Ok(Some(status)) => break status,
+            match running.child.try_wait() {
+                Ok(Some(status)) => {
+                    running.reaped = true;
+                    break status;
+                }
                 Ok(None) if Instant::now() >= deadline => {
-                    let _ = child.kill();
-                    let _ = child.wait();
+                    drop(running);
                     return Err(fail(
                         FailureKind::Timeout,
                         format!("killed after {} s", self.timeout.as_secs_f64()),
@@ -179,6 +288,8 @@ impl Program {
                 Err(e) => return Err(fail(FailureKind::Exit, format!("cannot wait for it: {e}"))),
             }
         };
+        // Kill what it left running in the background.
+        drop(running);
         let said = stderr_tail(err_path);
         if !status.success() {
             #[cfg(unix)]

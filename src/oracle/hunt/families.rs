@@ -46,6 +46,22 @@ impl SceneFamily {
         SceneFamily::Polygons,
     ];
 
+    /// The families whose scenes are triangles only (every family but `lines`, which
+    /// draws lines, and `polygons`, which draws polygons): what a renderer that draws
+    /// nothing but triangles is hunted with.
+    pub const TRIANGLES_ONLY: [SceneFamily; 6] = [
+        SceneFamily::Mesh,
+        SceneFamily::Delaunay,
+        SceneFamily::Triangles,
+        SceneFamily::Slivers,
+        SceneFamily::Huge,
+        SceneFamily::Fine,
+    ];
+
+    /// The name of the shorthand for [`SceneFamily::TRIANGLES_ONLY`] on the command line.
+    /// (`triangles` alone is the family of random triangles of every size.)
+    pub const TRIANGLES_ONLY_NAME: &'static str = "all-triangles";
+
     /// Its name on the command line.
     pub fn name(self) -> &'static str {
         match self {
@@ -63,6 +79,22 @@ impl SceneFamily {
     /// Parses a name written by [`SceneFamily::name`].
     pub fn from_name(name: &str) -> Option<SceneFamily> {
         SceneFamily::ALL.into_iter().find(|f| f.name() == name)
+    }
+
+    /// The families a command-line name stands for: one family by its name, or every
+    /// triangle-only family for [`SceneFamily::TRIANGLES_ONLY_NAME`] (`all-triangles`).
+    ///
+    /// ```
+    /// use rasterproof::oracle::hunt::SceneFamily;
+    /// assert_eq!(SceneFamily::expand("lines"), Some(vec![SceneFamily::Lines]));
+    /// assert_eq!(SceneFamily::expand("all-triangles").unwrap().len(), 6);
+    /// assert_eq!(SceneFamily::expand("cubes"), None);
+    /// ```
+    pub fn expand(name: &str) -> Option<Vec<SceneFamily>> {
+        if name == SceneFamily::TRIANGLES_ONLY_NAME {
+            return Some(SceneFamily::TRIANGLES_ONLY.to_vec());
+        }
+        SceneFamily::from_name(name).map(|f| vec![f])
     }
 
     /// Triangles, lines and polygons of this family on a `canvas` x `canvas` target.
