@@ -34,8 +34,7 @@ use rasterproof::raster::sample_exact;
 use rasterproof::scene::parse_scene;
 use serde_json::Value;
 
-#[path = "common/tempdir.rs"]
-mod tempdir;
+use crate::tempdir;
 
 /// The interpreter Debian's python3-* packages are installed for (another one:
 /// `RASTERPROOF_ADAPTER_PYTHON`).

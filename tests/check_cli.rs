@@ -5,8 +5,7 @@ use assert_cmd::Command;
 use rasterproof::fill::triangulate::validate;
 use rasterproof::harness::generate;
 
-#[path = "common/tempdir.rs"]
-mod tempdir;
+use crate::tempdir;
 
 fn bin() -> Command {
     Command::cargo_bin("rasterproof").unwrap()

@@ -3,8 +3,7 @@
 
 use assert_cmd::Command;
 
-#[path = "common/tempdir.rs"]
-mod tempdir;
+use crate::tempdir;
 
 fn bin() -> Command {
     Command::cargo_bin("rasterproof").unwrap()

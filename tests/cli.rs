@@ -1,7 +1,7 @@
 //! The command line: the JSON machine interface against the independent oracle, bad input
 //! (exit code 2, one clear line, no panic), and the check command.
 
-mod common;
+use crate::common;
 
 use assert_cmd::Command;
 use common::{parse_coverage_json, Conv, Rule};
@@ -21,8 +21,7 @@ fn write(dir: &tempdir::Dir, name: &str, text: &str) -> std::path::PathBuf {
     p
 }
 
-#[path = "common/tempdir.rs"]
-mod tempdir;
+use crate::tempdir;
 
 /// `render --format json` agrees with the independent oracle (tests/common) on seeded
 /// tie-heavy scenes, for d3d11 and gl, with exact-snapped and fixed alike.
@@ -540,10 +539,7 @@ fn plan_lists_primitives_in_id_order_in_text_and_json() {
     assert!(lines[0].ends_with("model exact-snapped, preset d3d11 (tie rule top-left, pixel centre 0.5, 8 subpixel bits, rounding nearest-even)"), "{text}");
     assert!(lines[1].starts_with("triangle 0 (id 0): "), "{text}");
     assert!(!lines[1].contains("not planned"), "{text}");
-    assert_eq!(
-        lines[2], "line 0 (id 1): not planned (covers nothing, or a Bresenham line)",
-        "{text}"
-    );
+    assert_eq!(lines[2], "line 0 (id 1): not planned: a Bresenham line", "{text}");
     assert!(lines[3].starts_with("summary: "), "{text}");
     assert_eq!(lines[4], "fixed-width models:", "{text}");
     let json: serde_json::Value = serde_json::from_str(&run("json")).unwrap();
@@ -558,6 +554,7 @@ fn plan_lists_primitives_in_id_order_in_text_and_json() {
         (prims[1]["kind"].as_str(), prims[1]["id"].as_u64()),
         (Some("line"), Some(1))
     );
+    assert_eq!(prims[1]["unplanned"].as_str(), Some("a Bresenham line"), "{json}");
     assert!(prims[1]["width"].is_null(), "{json}");
     assert_eq!(json["model"], "exact-snapped");
     let planned: u64 = json["by_width"]

@@ -3,10 +3,9 @@
 //! part inside (an independent t-interval computation), and
 //! raster(clip(P, W)) == raster(P) ∩ raster(W). Float: departures counted by magnitude.
 
-mod common;
+use crate::common;
 
-#[path = "common/rng.rs"]
-mod rng;
+use crate::rng;
 
 use common::config;
 use glam::DVec2;

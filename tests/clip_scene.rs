@@ -2,7 +2,7 @@
 //! clip-space triangles in scene files, `render` honouring them in every model, the
 //! `clip` command's exact output, bad input.
 
-mod common;
+use crate::common;
 
 use assert_cmd::Command;
 use common::config;
@@ -26,8 +26,7 @@ fn bin() -> Command {
     Command::cargo_bin("rasterproof").unwrap()
 }
 
-#[path = "common/tempdir.rs"]
-mod tempdir;
+use crate::tempdir;
 
 /// A scene file in a fresh temporary folder (removed when the folder is dropped).
 fn scene_file(tag: &str, text: &str) -> (tempdir::Dir, std::path::PathBuf) {

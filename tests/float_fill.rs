@@ -4,7 +4,7 @@
 //! tie rule must equal the oracle pixel for pixel: that is the proof the float code reads
 //! the same rule; elsewhere its departures are the measured trade.
 
-mod common;
+use crate::common;
 
 use common::config;
 use num_rational::BigRational;

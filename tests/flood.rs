@@ -3,11 +3,8 @@
 //! literally, and a union-find labelling), as properties on noise, mazes and thin
 //! diagonal lines; and the sizes recursion cannot reach (4096x4096).
 
-mod common;
-#[path = "common/raster.rs"]
-mod raster;
-#[path = "common/rng.rs"]
-mod rng;
+use crate::common;
+use crate::raster;
 
 use common::config;
 use image::{Rgba, RgbaImage};

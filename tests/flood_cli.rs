@@ -9,12 +9,10 @@ use assert_cmd::Command;
 use image::{ImageBuffer, Luma, Rgba, RgbaImage};
 use rasterproof::fill::flood::{bfs_region, span_region, Connectivity};
 
-#[path = "common/rng.rs"]
-mod rng;
+use crate::rng;
 use rng::Rng;
 
-#[path = "common/tempdir.rs"]
-mod tempdir;
+use crate::tempdir;
 
 const BLACK: Rgba<u8> = Rgba([0, 0, 0, 255]);
 const WHITE: Rgba<u8> = Rgba([255, 255, 255, 255]);

@@ -1,7 +1,7 @@
 //! Golden tests from independent sources: seed 003's triangle counted by a hand
 //! derivation, and a hand-derived square whose diagonal passes through pixel centres.
 
-mod common;
+use crate::common;
 
 use common::q;
 use num_bigint::BigInt;

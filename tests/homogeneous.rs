@@ -4,12 +4,10 @@
 //! geometry in front of the eye, nothing behind the eye drawn, perspective-correct
 //! interpolation exact. Float: departures counted by magnitude (`--nocapture`).
 
-mod common;
+use crate::common;
 
-#[path = "common/mat4.rs"]
-mod mat4;
-#[path = "common/rng.rs"]
-mod rng;
+use crate::mat4;
+use crate::rng;
 
 use common::{config, q};
 use glam::{DMat4, DVec2, DVec4};

@@ -13,8 +13,7 @@ use rasterproof::oracle::program::FailureKind;
 use rasterproof::oracle::{Format, PixelKind, ReasonClass, Theirs};
 use rasterproof::tri::planned::PlannedTriangle;
 
-#[path = "common/tempdir.rs"]
-mod tempdir;
+use crate::tempdir;
 
 /// A folder with a tag unique in this test binary.
 fn fresh_dir(what: &str) -> tempdir::Dir {
@@ -197,6 +196,19 @@ fn a_closure_renderer_is_hunted_and_its_failures_shrunk() {
     }
     assert_eq!(report.same + report.differing + report.failed + report.refused, 32);
     let _ = FailureKind::Exit;
+}
+
+/// `hunt --fit-first` on a renderer with top-right ties: the fit identifies the rule, and
+/// since a scene file cannot state it, that is the answer (what the renderer follows),
+/// not an error: the CLI prints it and exits 1, as `compare --fit` does for its findings.
+#[test]
+fn a_fit_first_that_finds_an_unstatable_rule_names_it() {
+    let found = rasterproof::oracle::hunt::fit_convention(&HuntConfig::default(), &top_right).unwrap();
+    let rasterproof::oracle::hunt::FitFirst::Unstatable(fits) = found else {
+        panic!("expected an unstatable fit, got {found:?}")
+    };
+    assert!(!fits.is_empty());
+    assert!(fits.iter().all(|c| c.tie_rule == AnyTieRule::TopRight), "{fits:?}");
 }
 
 /// The renderer that snaps to 1/16 px instead of 1/256 (wrong in every family), as a

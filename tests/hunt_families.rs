@@ -3,8 +3,7 @@
 
 use assert_cmd::Command;
 
-#[path = "common/tempdir.rs"]
-mod tempdir;
+use crate::tempdir;
 
 #[test]
 fn all_triangles_is_every_triangle_only_family() {

@@ -9,8 +9,7 @@ use assert_cmd::Command;
 use rasterproof::model::{render, Model};
 use rasterproof::scene::parse_scene_bytes;
 
-#[path = "common/tempdir.rs"]
-mod tempdir;
+use crate::tempdir;
 
 /// Triangle 0 covers the lower-left half, triangle 1 the upper-right half, triangle 2 a
 /// band across both (so some pixels have two owners), on an 8x6 canvas.

@@ -25,8 +25,7 @@ use num_traits::{Signed, ToPrimitive};
 use rasterproof::line::exact::{ideal, IdealLine};
 use rasterproof::line::{bresenham, Axes, BresenhamTie};
 
-#[path = "common/rng.rs"]
-mod rng;
+use crate::rng;
 use rng::Rng;
 
 /// `n` lines: a start within ±300, a major length in 0..200, a minor length in

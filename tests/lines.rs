@@ -1,7 +1,7 @@
 //! Lines: seed 001's worked examples and hand-derived diamond-exit cases (golden), and the
 //! line invariants as properties (256 cases each by default).
 
-mod common;
+use crate::common;
 
 use common::config;
 use proptest::prelude::*;

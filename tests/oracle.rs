@@ -4,8 +4,6 @@
 //! (the expected class derived from how it was made to differ); float models' differences
 //! are all classified and none is gross; bad input exits 2 and names the file.
 
-mod common;
-
 use assert_cmd::Command;
 use proptest::prelude::*;
 use rasterproof::convention::{AnyTieRule, Preset, Rounding, TieRule};
@@ -16,8 +14,7 @@ use rasterproof::scene::{parse_scene, Scene};
 use rasterproof::strategy::polygon::any_polygon;
 use rasterproof::strategy::{any_triangle, diamond_line, pixel_line, tie_heavy_mesh};
 
-#[path = "common/tempdir.rs"]
-mod tempdir;
+use crate::tempdir;
 
 fn bin() -> Command {
     Command::cargo_bin("rasterproof").unwrap()
@@ -883,8 +880,7 @@ fn fit_command() {
 
 // ---- renderers with known defects, each classified as what it is ----
 
-#[path = "common/rng.rs"]
-mod rng;
+use crate::rng;
 
 /// Findings by class name (a pixel with two primitives' findings counts twice).
 fn class_counts(r: &CompareReport) -> std::collections::BTreeMap<&'static str, usize> {

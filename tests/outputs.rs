@@ -5,8 +5,7 @@ use std::path::Path;
 
 use assert_cmd::Command;
 
-#[path = "common/tempdir.rs"]
-mod tempdir;
+use crate::tempdir;
 
 fn bin() -> Command {
     Command::cargo_bin("rasterproof").unwrap()

@@ -4,7 +4,7 @@
 //! and at each width's boundary (a hand-derived bound one coordinate unit below and above
 //! the limit). Regressions land in proptest-regressions/.
 
-mod common;
+use crate::common;
 
 use common::config;
 use num_bigint::BigInt;

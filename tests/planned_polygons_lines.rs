@@ -6,7 +6,7 @@
 //! centres; in every width that holds the bound; and at the boundaries of i32 and i64,
 //! where the plan must switch widths exactly there.
 
-mod common;
+use crate::common;
 
 use common::config;
 use num_bigint::BigInt;

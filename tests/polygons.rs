@@ -4,7 +4,7 @@
 //! of its triangulation's coverage; even-odd and nonzero agree on simple polygons and
 //! differ where a contour winds twice. Goldens derived by hand.
 
-mod common;
+use crate::common;
 
 use common::config;
 use proptest::prelude::*;

@@ -1,7 +1,7 @@
 //! Property tests: every invariant for `exact-snapped` and `fixed`, 256 cases each by
 //! default (PROPTEST_CASES raises it). Regressions land in proptest-regressions/.
 
-mod common;
+use crate::common;
 
 use common::{config, coverage_map, Conv, Rule};
 use num_rational::BigRational;

@@ -15,8 +15,7 @@ use rasterproof::oracle::program::{FailureKind, Program};
 use rasterproof::oracle::{Background, Format};
 use rasterproof::scene::Scene;
 
-#[path = "common/tempdir.rs"]
-mod tempdir;
+use crate::tempdir;
 
 /// A shell script in `dir` that starts `sleep 30` in the background, writes its pid to its
 /// first argument, then runs `then`.

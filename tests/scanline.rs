@@ -2,7 +2,7 @@
 //! oracle on the snapped scene: every triangle family, every preset, other subpixel grids
 //! and corner samples, far from the origin, at the envelope edge, and on meshes.
 
-mod common;
+use crate::common;
 
 use common::config;
 use proptest::prelude::*;

@@ -4,8 +4,7 @@
 
 use assert_cmd::Command;
 
-#[path = "common/tempdir.rs"]
-mod tempdir;
+use crate::tempdir;
 
 /// `render` and `clip` on `text` saved as `scene.json`: exit 2 and the one stderr line.
 fn refused(tag: &str, text: &str) -> (String, String) {

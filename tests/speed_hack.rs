@@ -15,8 +15,6 @@
 //! `(e0|e1|e2) >= 0` — still `>= 0`, with no tie rule. The harness must find both, and
 //! report each with a minimal scene.
 
-mod common;
-
 use rasterproof::convention::{Preset, Target};
 use rasterproof::coverage::{Coverage, CoverageSink};
 use rasterproof::geom::FixedTriangle;
@@ -91,7 +89,7 @@ fn config() -> HarnessConfig {
 /// The reported scene is a real counterexample: read back from its JSON text, the oracle
 /// and the speed hack disagree on it.
 fn assert_genuine(found: &Counterexample, test: Test) {
-    // Shown with `cargo test --test speed_hack -- --nocapture`: what a user sees.
+    // Shown with `cargo test --test it speed_hack:: -- --nocapture`: what a user sees.
     eprintln!("{}{}\n", found.scene.to_json(), found.violation);
     let scene = parse_scene(&found.scene.to_json(), "counterexample.json").unwrap();
     let target = scene.target().unwrap();

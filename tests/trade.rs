@@ -10,8 +10,7 @@ use assert_cmd::Command;
 use rasterproof::trade::{run, Config, Magnitude, Outcome, TradeReport};
 use serde_json::Value;
 
-#[path = "common/tempdir.rs"]
-mod tempdir;
+use crate::tempdir;
 
 /// One quick run, shared by the tests of this file.
 fn quick() -> &'static TradeReport {

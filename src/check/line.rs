@@ -36,8 +36,8 @@ pub fn check_line_pixels(from: [i64; 2], to: [i64; 2], pixels: &[[i64; 2]]) -> R
             name,
             format!(
                 "{from:?} -> {to:?}: endpoints not included: first {:?}, last {:?}",
-                pixels.first(),
-                pixels.last()
+                pixels[0],
+                pixels[n - 1]
             ),
         );
     }
@@ -186,5 +186,23 @@ pub fn check_diamond_agreement(line: &Line, model: Model, target: &Target) -> Re
                 line.from, line.to, d.x, d.y, d.reference, d.candidate
             ),
         ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A line drawn one pixel off: the explanation names the pixels it has at its ends,
+    /// as values (not as Rust's `Some(..)`).
+    #[test]
+    fn missing_endpoints_are_named_by_their_pixels() {
+        let shifted = [[1, 0], [2, 0], [3, 0], [4, 0]];
+        let v = check_line_pixels([0, 0], [3, 0], &shifted).unwrap_err();
+        assert!(
+            v.to_string()
+                .contains("[0, 0] -> [3, 0]: endpoints not included: first [1, 0], last [4, 0]"),
+            "{v}"
+        );
     }
 }

@@ -8,7 +8,7 @@ use std::process::ExitCode;
 use std::time::Duration;
 
 use rasterproof::convention::Preset;
-use rasterproof::oracle::hunt::{fit_convention, hunt, rust_test, HuntConfig, SceneFamily};
+use rasterproof::oracle::hunt::{fit_convention, hunt, rust_test, FitFirst, HuntConfig, SceneFamily, FIT_PROBES};
 use rasterproof::oracle::program::Program;
 use rasterproof::oracle::{Background, Format};
 
@@ -47,7 +47,8 @@ pub struct Options {
     #[arg(long, default_value = "exact-snapped")]
     model: String,
     /// Fit the renderer's convention first (compare --fit on tie-heavy probe scenes) and
-    /// hunt under it (its oracle model too).
+    /// hunt under it (its oracle model too). When no convention explains the probes, or
+    /// only ones a scene file cannot state (say top-right ties), it says so and exits 1.
     #[arg(long, conflicts_with_all = ["preset", "tie_rule", "subpixel_bits", "rounding", "pixel_centre", "model"])]
     fit_first: bool,
     /// Canvas side of every scene, pixels.
@@ -148,10 +149,33 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     };
     let render_with = |s: &rasterproof::scene::Scene| program.render(s);
     if o.fit_first {
-        let (best, overrides, model) = fit_convention(&config, &render_with)?;
-        eprintln!("fit: hunting under {best} (oracle {})", model.name());
-        config.overrides = overrides;
-        config.model = model;
+        match fit_convention(&config, &render_with)? {
+            FitFirst::Statable { fit, overrides, model } => {
+                eprintln!("fit: hunting under {fit} (oracle {})", model.name());
+                config.overrides = overrides;
+                config.model = model;
+            }
+            // What the renderer follows is the finding: exit 1, as `compare --fit` does.
+            FitFirst::Unstatable(fits) => {
+                let names: Vec<String> = fits.iter().map(ToString::to_string).collect();
+                super::print_stdout(&format!(
+                    "fit: the renderer's images of the {FIT_PROBES} probe scenes are explained exactly by {} \
+                     convention(s), none of which a scene file can state (scene files state the tie rules top-left \
+                     and bottom-left, and a grid of 1 to 16 subpixel bits or none), so hunt cannot hunt under it; \
+                     nothing else was run or written. The convention(s):\n  {}",
+                    fits.len(),
+                    names.join("\n  ")
+                ))?;
+                return Ok(ExitCode::from(1));
+            }
+            FitFirst::NoneExplains(last) => {
+                super::print_stdout(&format!(
+                    "fit: no convention explains the renderer's images of the {FIT_PROBES} probe scenes; nothing \
+                     else was run or written. The last probe's fit:\n{last}"
+                ))?;
+                return Ok(ExitCode::from(1));
+            }
+        }
     }
     let bar = o.run.progress_bar(config.shard.case_count(config.cases), "scenes");
     let report = hunt(&render_with, &config, o.run.jobs, &|| bar.inc(1))?;

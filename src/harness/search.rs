@@ -73,6 +73,15 @@ pub struct Counterexample {
 /// sink; it must cover with the id it is given) against the oracle on random snapped
 /// triangles; `None` when all `config.cases` agree.
 ///
+/// The rasterizer receives each triangle as a [`FixedTriangle`]: its vertices in
+/// subpixels of the preset's grid (`t.coords()`, `t.bits` fractional bits: `x` pixels is
+/// `x << t.bits` subpixels), as a rasterizer that snaps its input holds them.
+///
+/// Triangles only: the search draws triangle families and shrinks one triangle. For a
+/// line drawer or a polygon fill, give [`crate::oracle::hunt::hunt`] the renderer as a
+/// closure (a scene in, its pixels out): it draws lines and polygons too and shrinks
+/// what it finds with the same shrinker.
+///
 /// ```
 /// use rasterproof::harness::{find_counterexample, HarnessConfig};
 /// // The crate's own integer model has no counterexample.

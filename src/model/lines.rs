@@ -124,6 +124,11 @@ impl PreparedLine {
         }
     }
 
+    /// Whether it is a Bresenham line (drawn from pixel endpoints; nothing to plan).
+    pub(crate) fn is_bresenham(&self) -> bool {
+        matches!(self, PreparedLine::IdealBresenham(..) | PreparedLine::Bresenham(..))
+    }
+
     /// The exact line an exact model draws; `None` for the other models' forms.
     pub(crate) fn exact_shape(&self) -> Option<Shape> {
         match self {

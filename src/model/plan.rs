@@ -42,7 +42,17 @@ pub struct PrimitivePlan {
     /// The plan; `None` when it covers nothing (zero area, off the canvas) or is not
     /// planned (a Bresenham line: its ideal line is stepped in rationals).
     pub plan: Option<Plan>,
+    /// Why there is no plan, when there is none: [`COVERS_NO_PIXEL`] or [`BRESENHAM`].
+    pub unplanned: Option<&'static str>,
 }
+
+/// [`PrimitivePlan::unplanned`] of a primitive that covers no pixel of the canvas (zero
+/// area, or off the canvas): nothing to plan.
+pub const COVERS_NO_PIXEL: &str = "covers no pixel";
+
+/// [`PrimitivePlan::unplanned`] of a Bresenham line: its endpoints are pixels and its
+/// ideal line is stepped exactly, with no plan needed.
+pub const BRESENHAM: &str = "a Bresenham line";
 
 /// Whether a fixed-width model is exact for a scene.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -86,7 +96,7 @@ impl ScenePlan {
         for p in &self.primitives {
             let what = match &p.plan {
                 Some(q) => q.to_string(),
-                None => "not planned (covers nothing, or a Bresenham line)".into(),
+                None => format!("not planned: {}", p.unplanned.unwrap_or(COVERS_NO_PIXEL)),
             };
             s.push_str(&format!("{} {} (id {}): {what}\n", p.kind, p.index, p.id));
         }
@@ -120,7 +130,13 @@ impl ScenePlan {
                     "bound_at": q.bound.what,
                     "scale": q.scale.to_string(),
                 }),
-                None => json!({"kind": p.kind, "index": p.index, "id": p.id, "width": null}),
+                None => json!({
+                    "kind": p.kind,
+                    "index": p.index,
+                    "id": p.id,
+                    "width": null,
+                    "unplanned": p.unplanned.unwrap_or(COVERS_NO_PIXEL),
+                }),
             })
             .collect();
         let by_width: serde_json::Map<String, Value> = self
@@ -155,7 +171,7 @@ pub fn by_width(plans: &[PrimitivePlan]) -> BTreeMap<Width, usize> {
 }
 
 /// One line: `312 primitives: 300 i32, 10 i64, 2 i128`, and how many are not planned
-/// (cover nothing, or a Bresenham line).
+/// and why (`1 covers no pixel`, `2 Bresenham lines`).
 ///
 /// ```
 /// use rasterproof::convention::{Convention, Target};
@@ -165,19 +181,33 @@ pub fn by_width(plans: &[PrimitivePlan]) -> BTreeMap<Width, usize> {
 /// let off = Triangle::new(Point::from_ints(50, 50), Point::from_ints(54, 50), Point::from_ints(50, 54));
 /// let target = Target::new(4, 4, Convention::default()).unwrap();
 /// let prepared = prepare(&Primitives::from_triangles(&[t, off]), &target, Model::ExactSnapped).unwrap();
-/// assert_eq!(summary(&prepared.plans()), "2 primitives: 1 i32; 1 not planned (covers nothing, or a Bresenham line)");
+/// assert_eq!(summary(&prepared.plans()), "2 primitives: 1 i32; not planned: 1 covers no pixel");
 /// ```
 pub fn summary(plans: &[PrimitivePlan]) -> String {
     let widths: Vec<String> = by_width(plans).iter().map(|(w, n)| format!("{n} {w}")).collect();
-    let unplanned = plans.iter().filter(|p| p.plan.is_none()).count();
-    let mut s = format!("{} primitives", plans.len());
+    let mut unplanned: BTreeMap<&str, usize> = BTreeMap::new();
+    for p in plans.iter().filter(|p| p.plan.is_none()) {
+        *unplanned.entry(p.unplanned.unwrap_or(COVERS_NO_PIXEL)).or_default() += 1;
+    }
+    let mut s = match plans.len() {
+        1 => "1 primitive".to_string(),
+        n => format!("{n} primitives"),
+    };
     if !widths.is_empty() {
         s.push_str(&format!(": {}", widths.join(", ")));
     }
-    if unplanned > 0 {
-        s.push_str(&format!(
-            "; {unplanned} not planned (covers nothing, or a Bresenham line)"
-        ));
+    if !unplanned.is_empty() {
+        let why: Vec<String> = unplanned
+            .iter()
+            .map(|(&why, &n)| match (why, n) {
+                (BRESENHAM, 1) => "1 Bresenham line".to_string(),
+                (BRESENHAM, n) => format!("{n} Bresenham lines"),
+                (COVERS_NO_PIXEL, 1) => "1 covers no pixel".to_string(),
+                (COVERS_NO_PIXEL, n) => format!("{n} cover no pixel"),
+                (why, n) => format!("{n}: {why}"),
+            })
+            .collect();
+        s.push_str(&format!("; not planned: {}", why.join(", ")));
     }
     s
 }
@@ -312,4 +342,55 @@ fn float_exact_edges(vertices: &[Point], edges: &[[Point; 2]], target: &Target, 
     }
     // Every value is linear in the sample, so the range's corners bound them all.
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::convention::{Convention, Target};
+    use crate::geom::{Point, Triangle};
+    use crate::line::{BresenhamTie, Line, LineRule};
+
+    /// The summary counts in words a person reads: one primitive, and why the others
+    /// have no plan (a Bresenham line; a triangle off the canvas covers no pixel).
+    #[test]
+    fn the_summary_says_one_primitive_and_why_others_are_not_planned() {
+        let target = Target::new(4, 4, Convention::default()).unwrap();
+        let on = Triangle::new(Point::from_ints(0, 0), Point::from_ints(4, 0), Point::from_ints(0, 4));
+        let off = Triangle::new(
+            Point::from_ints(50, 50),
+            Point::from_ints(54, 50),
+            Point::from_ints(50, 54),
+        );
+        let one = plan_scene(
+            &Primitives::from_triangles(std::slice::from_ref(&on)),
+            &target,
+            Model::ExactSnapped,
+        )
+        .unwrap();
+        assert_eq!(one.summary(), "1 primitive: 1 i32");
+        let line = Line {
+            from: Point::from_ints(0, 0),
+            to: Point::from_ints(3, 1),
+            rule: LineRule::Bresenham(BresenhamTie::Stay),
+        };
+        let both = Primitives {
+            lines: vec![line.clone(), line],
+            ..Primitives::from_triangles(&[on, off.clone(), off])
+        };
+        let plan = plan_scene(&both, &target, Model::ExactSnapped).unwrap();
+        assert_eq!(
+            plan.summary(),
+            "5 primitives: 1 i32; not planned: 2 Bresenham lines, 2 cover no pixel"
+        );
+        let text = plan.to_text("s.json", "d3d11");
+        assert!(
+            text.contains("\ntriangle 1 (id 1): not planned: covers no pixel\n"),
+            "{text}"
+        );
+        assert!(
+            text.contains("\nline 0 (id 3): not planned: a Bresenham line\n"),
+            "{text}"
+        );
+    }
 }

@@ -327,6 +327,7 @@ impl PreparedScene {
                         index: k,
                         id: id(k),
                         plan: self.triangles.plan(k).cloned(),
+                        unplanned: None,
                     });
                 }
             }
@@ -337,6 +338,7 @@ impl PreparedScene {
                         index: k,
                         id: id(k),
                         plan: p.plan().cloned(),
+                        unplanned: None,
                     });
                 }
             }
@@ -347,6 +349,7 @@ impl PreparedScene {
                 index: k,
                 id: id(self.first_line + k),
                 plan: l.plan().cloned(),
+                unplanned: l.is_bresenham().then_some(super::plan::BRESENHAM),
             });
         }
         for (k, p) in self.polygons.iter().enumerate() {
@@ -360,7 +363,11 @@ impl PreparedScene {
                 index,
                 id: id(self.first_polygon + k),
                 plan: p.plan().cloned(),
+                unplanned: None,
             });
+        }
+        for p in out.iter_mut().filter(|p| p.plan.is_none()) {
+            p.unplanned = p.unplanned.or(Some(super::plan::COVERS_NO_PIXEL));
         }
         out
     }

@@ -7,7 +7,7 @@ use std::fmt;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// The longest number text accepted, in characters. Longer texts are refused so that a
 /// hostile scene cannot make the exact model allocate without bound.
@@ -290,6 +290,67 @@ pub fn shortened(text: &str) -> String {
         text.to_string()
     } else {
         format!("{}... ({} characters)", &text[..24], text.len())
+    }
+}
+
+/// The decimal of a non-negative `q` when it ends within 20 places (its denominator has
+/// no prime factor but 2 and 5), else `None`.
+///
+/// ```
+/// use num_rational::BigRational;
+/// use rasterproof::num::exact::terminating_decimal;
+/// assert_eq!(terminating_decimal(&BigRational::new(15725.into(), 32.into())).as_deref(), Some("491.40625"));
+/// assert_eq!(terminating_decimal(&BigRational::new(1.into(), 3.into())), None);
+/// ```
+pub fn terminating_decimal(q: &BigRational) -> Option<String> {
+    let ten = BigInt::from(10);
+    let mut scaled = q.clone();
+    for places in 0..=20usize {
+        if scaled.is_integer() {
+            let digits = scaled.to_integer().to_string();
+            if places == 0 {
+                return Some(digits);
+            }
+            let digits = format!("{digits:0>width$}", width = places + 1);
+            let (int, frac) = digits.split_at(digits.len() - places);
+            return Some(format!("{int}.{frac}"));
+        }
+        scaled *= BigRational::from_integer(ten.clone());
+    }
+    None
+}
+
+/// A point in decimals, for people, beside its exact text: `= (490.5, 69.5)` when both
+/// coordinates end within 20 decimal places (the denominators are products of 2s and
+/// 5s, as every snapped or float coordinate is), else `≈ (0.333333, 2)` to six places;
+/// empty when both are integers (the exact text says it all).
+///
+/// ```
+/// use num_rational::BigRational;
+/// use rasterproof::num::exact::decimal_pair_text;
+/// let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+/// assert_eq!(decimal_pair_text(&q(981, 2), &q(139, 2)), " = (490.5, 69.5)");
+/// assert_eq!(decimal_pair_text(&q(1, 3), &q(2, 1)), " ≈ (0.333333, 2)");
+/// assert_eq!(decimal_pair_text(&q(3, 1), &q(-7, 1)), "");
+/// ```
+pub fn decimal_pair_text(x: &BigRational, y: &BigRational) -> String {
+    if x.is_integer() && y.is_integer() {
+        return String::new();
+    }
+    let exact = |v: &BigRational| {
+        let d = terminating_decimal(&v.abs())?;
+        Some(if v.is_negative() { format!("-{d}") } else { d })
+    };
+    match (exact(x), exact(y)) {
+        (Some(a), Some(b)) => format!(" = ({a}, {b})"),
+        _ => {
+            let approx = |v: &BigRational| {
+                let f = v.to_f64().unwrap_or(f64::NAN);
+                let s = format!("{f:.6}");
+                s.trim_end_matches('0').trim_end_matches('.').to_string()
+            };
+            format!(" ≈ ({}, {})", approx(x), approx(y))
+        }
     }
 }
 

@@ -186,7 +186,7 @@ impl fmt::Display for Plan {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{}: |value| <= {} < 2^{} ({}), scale {}",
+            "{}: every value within ±{} < 2^{} (the largest: {}); coordinates in units of 1/{} px",
             self.width,
             self.bound.value,
             self.bound.bits(),

@@ -14,7 +14,7 @@ use crate::convention::TieRule;
 use crate::fill::polygon::{contour_winding_exact, locate_exact, Location};
 use crate::geom::{Point, Polygon};
 use crate::model::Shape;
-use crate::num::exact::{exact_text, nearest_f64};
+use crate::num::exact::{exact_text, nearest_f64, terminating_decimal};
 
 /// A polygon at a sample: the winding number of the moved sample around each contour,
 /// whether the sample itself lies on an edge, and the verdict.
@@ -179,26 +179,6 @@ pub fn distance_decimal_text(d2: &BigRational) -> String {
         Some(dec) => format!("{exact} ({dec}) px"),
         None => format!("{exact} (≈ {:.6}) px", distance_f64(d2)),
     }
-}
-
-/// The decimal of a non-negative `q` when it ends within 20 places (its denominator has
-/// no prime factor but 2 and 5), else `None`.
-fn terminating_decimal(q: &BigRational) -> Option<String> {
-    let ten = BigInt::from(10);
-    let mut scaled = q.clone();
-    for places in 0..=20usize {
-        if scaled.is_integer() {
-            let digits = scaled.to_integer().to_string();
-            if places == 0 {
-                return Some(digits);
-            }
-            let digits = format!("{digits:0>width$}", width = places + 1);
-            let (int, frac) = digits.split_at(digits.len() - places);
-            return Some(format!("{int}.{frac}"));
-        }
-        scaled *= BigRational::from_integer(ten.clone());
-    }
-    None
 }
 
 /// The exact distance whose square is `d2`: a fraction when `d2` is a rational square,

@@ -11,7 +11,7 @@ use super::reason::primitive_name;
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
 use crate::model::{prepare, Model, ModelError, Primitives};
-use crate::num::exact::pair_text;
+use crate::num::exact::{decimal_pair_text, pair_text};
 use crate::raster::sample_exact;
 
 /// One primitive near the pixel.
@@ -48,6 +48,9 @@ pub struct PixelExplanation {
     pub y: u32,
     /// The sample, exact text.
     pub sample: String,
+    /// The sample in decimals beside it, for people ([`decimal_pair_text`]): ` = (490.5,
+    /// 69.5)`, empty at integer coordinates.
+    pub sample_decimal: String,
     /// The primitives whose bounding box (grown by 2 px) holds the sample.
     pub primitives: Vec<PrimitiveAt>,
     /// Every model except the plain oracles (which the planned `exact` and
@@ -132,6 +135,7 @@ pub fn explain_pixel(primitives: &Primitives, target: &Target, x: u32, y: u32) -
         x,
         y,
         sample: pair_text(&p.x, &p.y),
+        sample_decimal: decimal_pair_text(&p.x, &p.y),
         primitives: out,
         models,
     })
@@ -149,7 +153,10 @@ fn owners(ids: &[u32]) -> String {
 impl PixelExplanation {
     /// For people.
     pub fn to_text(&self) -> String {
-        let mut s = format!("pixel ({}, {}): sample {}\n", self.x, self.y, self.sample);
+        let mut s = format!(
+            "pixel ({}, {}): sample {}{}\n",
+            self.x, self.y, self.sample, self.sample_decimal
+        );
         if self.primitives.is_empty() {
             s.push_str("no primitive's bounding box (grown by 2 px) holds the sample\n");
         }
@@ -216,6 +223,7 @@ mod tests {
         let target = scene.target().unwrap();
         let why = explain_pixel(&scene.primitives(), &target, 1, 1).unwrap();
         assert_eq!(why.sample, "(3/2, 3/2)");
+        assert_eq!(why.sample_decimal, " = (1.5, 1.5)");
         // The far small triangle and the line at y = 7 are more than 2 px away.
         let ids: Vec<u32> = why.primitives.iter().map(|p| p.id).collect();
         assert_eq!(ids, [0]);

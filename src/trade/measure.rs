@@ -82,8 +82,9 @@ pub(crate) fn unpack(k: u64) -> (u32, u32, u32) {
 /// How a candidate's pairs depart from the reference's.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub(crate) struct Departures {
-    /// Pixels the reference covers.
-    pub(crate) reference_pixels: u64,
+    /// Pixels the reference or the candidate covers: every wrong pixel is one of them, so
+    /// a rate of wrong pixels stays within one per pixel (a million per million).
+    pub(crate) covered_pixels: u64,
     /// Pixels whose owner lists differ.
     pub(crate) wrong_pixels: u64,
     /// Samples next to a shared edge (see [`shared_edge_pixels`]), when asked for.
@@ -116,8 +117,8 @@ pub(crate) fn departures(reference: &Pairs, candidate: &Pairs, shared_edge: Opti
         let ri = if pr == Some(p) { run(r, i) } else { i };
         let cj = if pc == Some(p) { run(c, j) } else { j };
         let (ours, theirs) = (&r[i..ri], &c[j..cj]);
-        if !ours.is_empty() {
-            d.reference_pixels += 1;
+        if !ours.is_empty() || !theirs.is_empty() {
+            d.covered_pixels += 1;
         }
         if ours != theirs {
             d.wrong_pixels += 1;
@@ -183,7 +184,7 @@ pub(crate) fn area_metrics(d: &Departures, mesh: bool) -> Vec<Metric> {
     let mut out = vec![Metric::Rate {
         name: WRONG_PIXELS,
         count: d.wrong_pixels,
-        of: d.reference_pixels,
+        of: d.covered_pixels,
     }];
     if mesh {
         out.push(Metric::Rate {
@@ -201,7 +202,9 @@ pub(crate) fn area_metrics(d: &Departures, mesh: bool) -> Vec<Metric> {
 }
 
 /// The wrong-pixel metric's name: pixels whose owners differ from the exact answer, per
-/// pixel the exact answer covers.
+/// pixel the exact answer or the model covers (a model that floods the canvas where the
+/// exact answer covers a few pixels is wrong on at most all of them, not on thousands of
+/// times as many).
 pub(crate) const WRONG_PIXELS: &str = "wrong pixels";
 /// Gaps: samples next to a shared edge that no triangle covers.
 pub(crate) const GAPS: &str = "gaps";
@@ -251,6 +254,17 @@ mod tests {
         (p.sorted(), c)
     }
 
+    /// A model that floods a 10x10 canvas where the exact answer covers one pixel is wrong
+    /// on 99 of the 100 pixels either covers: 990,000 per million, not 99 million.
+    #[test]
+    fn a_flood_is_wrong_on_at_most_every_pixel() {
+        let (rp, _) = both(&[(0, 0, 0)]);
+        let flood: Vec<(u32, u32, u32)> = (0..10).flat_map(|y| (0..10).map(move |x| (x, y, 0))).collect();
+        let (cp, _) = both(&flood);
+        let metrics = area_metrics(&departures(&rp, &cp, None), false);
+        assert_eq!(metrics[0].per_million(), Some(990_000.0));
+    }
+
     #[test]
     fn wrong_pixels_are_differing_pixels() {
         let reference = [(0, 0, 0), (1, 0, 0), (2, 0, 1), (1, 0, 1), (5, 5, 2), (15, 15, 3)];
@@ -268,7 +282,8 @@ mod tests {
         let d = departures(&rp, &cp, None);
         assert_eq!(d.wrong_pixels, differing_pixels(&rc, &cc).len() as u64);
         assert_eq!(d.wrong_pixels, 5); // (1,0) (2,0) (5,5) (6,5) (0,15)
-        assert_eq!(d.reference_pixels, rc.covered_pixels() as u64);
+                                       // Covered by either: the reference's 5 pixels, and the candidate's (6,5) and (0,15).
+        assert_eq!(d.covered_pixels, 7);
         assert_eq!(departures(&rp, &rp, None).wrong_pixels, 0);
     }
 

@@ -85,17 +85,51 @@ fn ratio(a: u64, b: u64) -> f64 {
     a as f64 / b as f64
 }
 
-/// A number in 4 significant digits at most, no exponent below 10^7.
+/// A number as a person reads it in a column: always in decimal notation (no exponent,
+/// so that the cells of one column compare at a glance), whole from 100 up, with up to
+/// three decimals from 1 to 100, and with two significant digits below 1.
+///
+/// ```text
+/// 0 -> "0"   0.0512 -> "0.051"   0.000123 -> "0.00012"   2.5 -> "2.5"   257000000 -> "257000000"
+/// ```
 pub(crate) fn short(v: f64) -> String {
+    let trim = |s: String| s.trim_end_matches('0').trim_end_matches('.').to_string();
     if v == 0.0 {
         "0".into()
-    } else if v.abs() >= 1e7 {
-        format!("{v:.2e}")
-    } else if v.abs() >= 100.0 {
+    } else if !v.is_finite() || v.abs() >= 100.0 {
         format!("{v:.0}")
     } else if v.abs() >= 1.0 {
-        format!("{v:.3}").trim_end_matches('0').trim_end_matches('.').into()
+        trim(format!("{v:.3}"))
     } else {
-        format!("{v:.2e}")
+        // Two significant digits: the first non-zero decimal and the next.
+        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)] // 1 <= digits <= 325
+        let digits = (1.0 - v.abs().log10().floor()) as usize;
+        trim(format!("{v:.digits$}"))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::short;
+
+    /// One notation in a column: decimals, never an exponent (hand-written values).
+    #[test]
+    fn numbers_are_written_in_decimal_notation() {
+        let cases = [
+            (0.0, "0"),
+            (0.0512, "0.051"),
+            (0.000_123, "0.00012"),
+            (0.1, "0.1"),
+            (0.099, "0.099"),
+            (0.95, "0.95"),
+            (2.5, "2.5"),
+            (12.345_6, "12.346"),
+            (194.4, "194"),
+            (161_000.0, "161000"),
+            (257_000_000.0, "257000000"),
+        ];
+        for (v, text) in cases {
+            assert_eq!(short(v), text, "{v}");
+        }
     }
 }

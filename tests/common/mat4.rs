@@ -1,7 +1,7 @@
 //! An exact 4x4 matrix kit for the homogeneous-clipping tests: products and transforms
 //! over `BigRational`, and the exact value of a glam `DMat4`, to check glam's f64 results.
 //!
-//! Include it as `#[path = "common/mat4.rs"] mod mat4;` (it stands alone).
+//! `tests/it.rs` declares it once, as `crate::mat4` (it stands alone).
 
 #![allow(dead_code)]
 

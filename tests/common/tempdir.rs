@@ -1,5 +1,5 @@
 //! A folder under the system temp dir for one test, removed on drop. Shared by the CLI
-//! tests through `#[path]`, as `rng.rs` is.
+//! tests (`crate::tempdir`, declared once in `tests/it.rs`).
 
 #![allow(dead_code)]
 

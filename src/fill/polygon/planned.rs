@@ -288,7 +288,7 @@ fn setup(poly: &Polygon, target: &Target) -> Option<PolygonSetup> {
                     bound = Bound {
                         value: rem.d.clone(),
                         what: format!(
-                            "the divisor L dy/g of contour {k}'s edge {e} (rows {}..={})",
+                            "the step divisor of contour {k}'s edge {e}, rows {}..={}: its height in units, over the gcd of its width and height",
                             i64::from(range.y0) + edge.middle[0],
                             i64::from(range.y0) + edge.middle[1]
                         ),
@@ -525,7 +525,7 @@ mod tests {
         assert_eq!(p.plan().bound.value, BigInt::from(12));
         assert_eq!(
             p.plan().bound.what,
-            "the divisor L dy/g of contour 0's edge 2 (rows 3..=5)"
+            "the step divisor of contour 0's edge 2, rows 3..=5: its height in units, over the gcd of its width and height"
         );
         assert_eq!(p.plan().width, Width::I32);
         let e = &p.edges;

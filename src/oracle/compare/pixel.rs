@@ -9,7 +9,7 @@ use super::{PixelKind, Relation};
 use crate::convention::{PixelCentre, Target};
 use crate::geom::Point;
 use crate::model::{Primitives, Shape};
-use crate::num::exact::pair_text;
+use crate::num::exact::{decimal_pair_text, pair_text};
 use crate::oracle::evidence::{polygon_at, shape_distance2, triangle_at};
 use crate::oracle::reason::{decide, primitive_name, Classifier, Found, Reason, ReasonClass, Support};
 use crate::oracle::theirs::TheirPixel;
@@ -162,7 +162,7 @@ pub(super) fn point_text(p: &Point) -> String {
 pub(crate) fn evidence(shape: &Shape, x: u32, y: u32, target: &Target) -> String {
     let p = sample_exact(x, y, target);
     let rule = target.convention.tie_rule;
-    let s = format!("sample {}: ", point_text(&p));
+    let s = format!("sample {}{}: ", point_text(&p), decimal_pair_text(&p.x, &p.y));
     match shape {
         Shape::Triangle(t) => match triangle_at(t, &p, rule.into()) {
             Some(at) => s + &at.to_string(),

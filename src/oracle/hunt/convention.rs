@@ -15,19 +15,37 @@ use crate::scene::{Overrides, Scene};
 /// apart).
 pub const FIT_PROBES: u64 = 6;
 
-/// `hunt --fit-first`: the convention that explains `render`'s images of [`FIT_PROBES`]
-/// tie-heavy probe scenes (mesh scenes drawn from `config`'s seed and convention), as the
-/// fit ([`preferred`] among the exact ones) and the scene overrides and oracle model that
-/// state it ([`hunt_convention`]). Set them on the config to hunt under that convention.
+/// What the fit before a hunt ([`fit_convention`]) found about the renderer.
+#[derive(Debug, Clone, PartialEq)]
+pub enum FitFirst {
+    /// A convention that explains every probe and that a scene file can state: hunt
+    /// under it (set `overrides` and `model` on the config).
+    Statable {
+        /// The fit ([`preferred`] among the exact ones).
+        fit: Candidate,
+        /// The scene overrides that state it.
+        overrides: Overrides,
+        /// The oracle model that draws it.
+        model: Model,
+    },
+    /// Conventions that explain every probe, none of which a scene file can state (a tie
+    /// rule other than top-left and bottom-left, or a 0-bit grid): what the renderer
+    /// follows, found; a hunt under any other convention would report its every tie.
+    Unstatable(Vec<Candidate>),
+    /// No convention explains every probe; the last probe's fit, as text.
+    NoneExplains(String),
+}
+
+/// `hunt --fit-first`: the conventions that explain `render`'s images of [`FIT_PROBES`]
+/// tie-heavy probe scenes (mesh scenes drawn from `config`'s seed and convention), and
+/// whether hunt can state one of them ([`FitFirst`]).
 ///
 /// # Errors
-/// A probe scene cannot be made, the renderer fails on one, the fit refuses one, or no
-/// convention hunt can state explains every probe (the message holds the last probe's
-/// fit).
+/// A probe scene cannot be made, the renderer fails on one, or the fit refuses one.
 pub fn fit_convention(
     config: &HuntConfig,
     render: &dyn Fn(&Scene) -> Result<Theirs, RenderFailure>,
-) -> Result<(Candidate, Overrides, Model), String> {
+) -> Result<FitFirst, String> {
     let probe = HuntConfig {
         families: vec![SceneFamily::Mesh],
         ..config.clone()
@@ -46,15 +64,14 @@ pub fn fit_convention(
         last = Some(found);
     }
     let exact = exact.unwrap_or_default();
-    let Some(best) = preferred(&exact) else {
-        return Err(format!(
-            "--fit-first: no convention hunt can state explains the renderer's images of the {FIT_PROBES} probe scenes \
-             (the last probe's fit:)\n{}",
-            last.map(|f| f.to_text()).unwrap_or_default()
-        ));
+    if exact.is_empty() {
+        return Ok(FitFirst::NoneExplains(last.map(|f| f.to_text()).unwrap_or_default()));
+    }
+    let Some(fit) = preferred(&exact) else {
+        return Ok(FitFirst::Unstatable(exact));
     };
-    let (overrides, model) = hunt_convention(&best).expect("preferred only returns statable conventions");
-    Ok((best, overrides, model))
+    let (overrides, model) = hunt_convention(&fit).expect("preferred only returns statable conventions");
+    Ok(FitFirst::Statable { fit, overrides, model })
 }
 
 /// The convention a fit names, as scene overrides and the oracle model, when hunt can

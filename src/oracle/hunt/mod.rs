@@ -28,7 +28,7 @@ use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 
 pub use crate::harness::shrink::{primitive_count, shrink};
-pub use convention::{fit_convention, hunt_convention, preferred, FIT_PROBES};
+pub use convention::{fit_convention, hunt_convention, preferred, FitFirst, FIT_PROBES};
 pub use families::{float32_exact, generate_scene, SceneFamily};
 pub use report::{HuntFinding, HuntReport, REPORT_FORMAT, REPORT_VERSION};
 pub use test_text::rust_test;

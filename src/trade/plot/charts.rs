@@ -188,7 +188,7 @@ pub(super) fn speed_error<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport) 
         &legend_entries(r),
         6,
         "Circles: exact and integer models; triangles: float models. Speed: drawing the prepared workload at the \
-         origin, median of the round-robin repetitions.\nError: per million pixels the exact answer covers (lines: \
+         origin, median of the round-robin repetitions.\nError: per million pixels the exact answer or the model covers (lines: \
          line pixels; clipping: output vertices); 0 is exactly zero. A refused contender is not drawn.",
     )
 }

@@ -38,7 +38,7 @@ impl TradeReport {
     /// ```
     ///
     /// `METRIC` is `{"metric", "kind": "rate", "count", "of", "per_million"}` (events out
-    /// of opportunities: `wrong pixels` of the pixels the exact answer covers; `gaps`,
+    /// of opportunities: `wrong pixels` of the pixels the exact answer or the model covers; `gaps`,
     /// `double covers` of the samples next to a shared mesh edge; `Gouraud channels off`
     /// of the channels sampled; `line pixels > 1/2 px off`, `line pixels off the
     /// reference` of the reference's line pixels; `clipped vertices outside` of the

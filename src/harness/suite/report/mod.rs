@@ -247,8 +247,9 @@ impl SuiteReport {
 
     /// What `rasterproof check` and `check-merge` print, one string per line: the
     /// table's header, the shard and how many cases ran when it is not the whole run,
-    /// the table, the findings (the failures grouped by invariant, model and reason, with
-    /// their first case), the legend and the verdict.
+    /// the table, the findings (the failures grouped by invariant, model and kind of
+    /// reason, each with its first case's reason, values and all), the legend and the
+    /// verdict.
     pub fn lines(&self) -> Vec<String> {
         let mut lines = vec![self.tally.header()];
         if !self.shards.is_whole() {
@@ -276,12 +277,15 @@ impl SuiteReport {
         lines.extend(self.tally.body());
         let findings = self.findings();
         if !findings.is_empty() {
-            lines.push("findings (the failures by invariant, model and reason):".to_string());
+            lines.push(
+                "findings (the failures by invariant, model and kind of reason; the first case's reason):".to_string(),
+            );
             for f in findings {
                 let fatal = if f.fatal { " (FATAL)" } else { "" };
+                let first = f.first.explanation.lines().next().unwrap_or("");
                 lines.push(format!(
-                    "  {:<22} {:<18} {:>5}x, first case {}{fatal}: {}",
-                    f.invariant, f.model, f.count, f.first.case, f.reason
+                    "  {:<22} {:<18} {:>5}x, first case {}{fatal}: {first}",
+                    f.invariant, f.model, f.count, f.first.case
                 ));
             }
         }

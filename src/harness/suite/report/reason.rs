@@ -89,8 +89,8 @@ mod tests {
     #[test]
     fn reasons_keep_words_and_drop_numbers_and_groups() {
         assert_eq!(
-            reason_of("[1, 2] -> [3, 4]: endpoints not included: first Some([1, 2]), last Some([3, 5])"),
-            "[..] -> [..]: endpoints not included: first Some(..), last Some(..)"
+            reason_of("[1, 2] -> [3, 4]: endpoints not included: first [1, 2], last [3, 5]"),
+            "[..] -> [..]: endpoints not included: first [..], last [..]"
         );
         assert_eq!(
             reason_of("21 differing pixels; first (3, 4): exact-plain [], float32-naive [5, 6]"),

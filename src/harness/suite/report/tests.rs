@@ -80,7 +80,7 @@ fn findings_group_failures_by_invariant_model_and_reason() {
     assert!(!r.passed());
     let lines = r.lines();
     assert!(lines.contains(
-        &"  watertight             fixed                  1x, first case 3 (FATAL): pixel (..) is covered N times, by [..]"
+        &"  watertight             fixed                  1x, first case 3 (FATAL): pixel (3, 1) is covered 0 times, by []"
             .to_string()
     ));
     assert_eq!(lines.last().unwrap(), &r.tally().verdict());
