@@ -188,7 +188,7 @@ fn polygon_width_boundaries_by_hand() {
         assert_eq!(p.plan().bound.value, m, "{}", p.plan());
         assert_eq!(
             p.plan().bound.what,
-            "the divisor L dy/g of contour 0's edge 0 (rows 1..=15)"
+            "the step divisor of contour 0's edge 0, rows 1..=15: its height in units, over the gcd of its width and height"
         );
         assert_eq!(p.plan().width, width, "m = {m}");
         // Every width that holds m gives the same pixels; the narrower ones refuse.

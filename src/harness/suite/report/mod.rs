@@ -282,7 +282,10 @@ impl SuiteReport {
             );
             for f in findings {
                 let fatal = if f.fatal { " (FATAL)" } else { "" };
-                let first = f.first.explanation.lines().next().unwrap_or("");
+                // The checker's message, without the `INVARIANT violated: ` the row says.
+                let e = &f.first.explanation;
+                let first = e.split_once(" violated: ").map_or(e.as_str(), |(_, m)| m);
+                let first = first.lines().next().unwrap_or("");
                 lines.push(format!(
                     "  {:<22} {:<18} {:>5}x, first case {}{fatal}: {first}",
                     f.invariant, f.model, f.count, f.first.case
