@@ -1189,3 +1189,55 @@ fn every_finding_prints_its_exact_distance() {
         assert!(d["approx"].as_f64().unwrap() <= 1.0, "{f}");
     }
 }
+
+/// A renderer that draws nothing, against a 64x64 square of two triangles: all 4096
+/// pixels differ (missing), and the comparison finds and counts every one of them by kind
+/// but classifies only as many as it is told to: the first half of them in row order and
+/// the rest spread evenly down the picture, each with its findings; the others none.
+/// Default `compare` classifies at most `CLASSIFY_AT_MOST` of them. The text says how
+/// many were classified, and the JSON marks each pixel.
+#[test]
+fn a_renderer_wrong_everywhere_is_counted_whole_and_classified_in_part() {
+    use rasterproof::oracle::compare::{compare_classifying, CLASSIFY_AT_MOST};
+    let scene = parse_scene(
+        r#"{"width": 64, "height": 64, "triangles": [
+            {"v": [[0, 0], [64, 0], [64, 64]]}, {"v": [[0, 0], [64, 64], [0, 64]]}]}"#,
+        "square.json",
+    )
+    .unwrap();
+    let target = scene.target().unwrap();
+    let nothing = Theirs::from_coverage(&Coverage::new(64, 64), Format::Json);
+    let r = compare_classifying(&scene.primitives(), &target, &nothing, Model::ExactSnapped, Some(10)).unwrap();
+    assert_eq!(r.pixels.len(), 64 * 64);
+    assert_eq!(r.pixels_by_kind().get(&PixelKind::Missing), Some(&4096));
+    assert_eq!(r.classified(), 10);
+    let classified: Vec<(u32, u32)> = r.pixels.iter().filter(|p| p.classified).map(|p| (p.x, p.y)).collect();
+    // The first 5 in row order, then pixel 5 + floor(j * 4091 / 5) for j = 0..5: 5, 823,
+    // 1641, 2459, 3277, i.e. (5, 0), (55, 12), (41, 25), (27, 38), (13, 51).
+    assert_eq!(
+        classified,
+        vec![
+            (0, 0),
+            (1, 0),
+            (2, 0),
+            (3, 0),
+            (4, 0),
+            (5, 0),
+            (55, 12),
+            (41, 25),
+            (27, 38),
+            (13, 51)
+        ]
+    );
+    assert!(r.pixels.iter().all(|p| p.classified != p.findings.is_empty()));
+    let text = r.to_text("square.json", "nothing", 0);
+    assert!(text.contains("classified: 10 of the 4096 differing pixels"), "{text}");
+    let json = r.to_json("square.json", "nothing");
+    assert_eq!(
+        (json["differing"].as_u64(), json["classified"].as_u64()),
+        (Some(4096), Some(10))
+    );
+    assert_eq!(json["unclassified_by_kind"]["missing"].as_u64(), Some(4086));
+    let default = compare(&scene.primitives(), &target, &nothing, Model::ExactSnapped).unwrap();
+    assert_eq!((default.pixels.len(), default.classified()), (4096, CLASSIFY_AT_MOST));
+}

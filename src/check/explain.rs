@@ -104,6 +104,19 @@ pub fn triangle_at(t: &Triangle, p: &Point, rule: AnyTieRule) -> Option<Triangle
     Some(TriangleAt { edges, inside })
 }
 
+/// Whether triangle `t` covers sample `p` under `rule`: [`triangle_at`]'s `inside`
+/// without its evidence (no distances, no copies of the vertices), for the searches that
+/// ask it many times (`false` for a zero-area triangle, as there).
+pub fn triangle_covers(t: &Triangle, p: &Point, rule: AnyTieRule) -> bool {
+    let Some(t) = oriented(t) else { return false };
+    let zero = BigRational::zero();
+    (0..3).all(|i| {
+        let (a, b) = (&t.v[i], &t.v[(i + 1) % 3]);
+        let e = edge_function(a, b, p);
+        e.is_positive() || (e.is_zero() && rule.is_inclusive((&b.x - &a.x).cmp(&zero), (&b.y - &a.y).cmp(&zero)))
+    })
+}
+
 impl TriangleAt {
     /// The edges the sample lies on (`E == 0`).
     pub fn zero_edges(&self) -> impl Iterator<Item = &EdgeAt> + '_ {
@@ -195,6 +208,32 @@ pub fn explain_sample(tri: &Triangle, x: u32, y: u32, target: &Target) -> String
 
 #[cfg(test)]
 mod tests {
+    /// The verdict alone equals the evidence's, on every sample of a small grid (pixel
+    /// corners, centres and quarter points, so many on an edge) for triangles of both
+    /// windings, a zero-area one and every tie rule.
+    #[test]
+    fn the_verdict_alone_is_the_evidences_verdict() {
+        use crate::convention::AnyTieRule;
+        let q = |n: i64| BigRational::new(n.into(), 4.into());
+        let tris = [
+            [(0, 0), (16, 0), (0, 16)],
+            [(0, 0), (0, 16), (16, 0)],
+            [(2, 1), (14, 9), (5, 15)],
+            [(0, 0), (8, 8), (16, 16)],
+        ];
+        for v in tris {
+            let [a, b, c] = v.map(|(x, y)| Point::new(q(x), q(y)));
+            let t = Triangle::new(a, b, c);
+            for rule in AnyTieRule::ALL {
+                for (x, y) in (0..=16).flat_map(|y| (0..=16).map(move |x| (x, y))) {
+                    let p = Point::new(q(x), q(y));
+                    let want = triangle_at(&t, &p, rule).is_some_and(|at| at.inside);
+                    assert_eq!(triangle_covers(&t, &p, rule), want, "{v:?} {rule:?} at ({x}, {y})/4");
+                }
+            }
+        }
+    }
+
     use super::*;
 
     fn q(n: i64, d: i64) -> BigRational {

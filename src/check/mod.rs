@@ -16,7 +16,7 @@ use std::fmt;
 pub use agreement::{check_agreement, differing_pixels, PixelDiff};
 pub use barycentric::{check_barycentric_exact, check_barycentric_fixed, float_sum_error_ulps};
 pub use clip::{check_clip_raster, check_inside, check_segment_clip, inside_interval};
-pub use explain::{explain_sample, segment_distance2, triangle_at, EdgeAt, Side, TriangleAt};
+pub use explain::{explain_sample, segment_distance2, triangle_at, triangle_covers, EdgeAt, Side, TriangleAt};
 pub use fill::check_triangulation;
 pub use invariance::{check_rotation_and_winding, check_translation};
 pub use line::{

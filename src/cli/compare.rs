@@ -5,7 +5,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use rasterproof::coverage::picture::{legend_path, Scale};
-use rasterproof::oracle::{compare, Background, Format, Theirs};
+use rasterproof::oracle::compare::compare_classifying;
+use rasterproof::oracle::{Background, Format, Theirs};
 
 use super::{ConventionArgs, OutputFormat, Outputs};
 
@@ -42,6 +43,11 @@ pub struct Options {
     /// Text output: how many differing pixels to explain one by one (JSON lists all).
     #[arg(long, default_value_t = 20)]
     limit: usize,
+    /// How many differing pixels to classify (each runs exact searches; a few ms): N, or
+    /// `all`. Every differing pixel is found and counted by kind whatever N is; beyond N,
+    /// the first N/2 in row order and N/2 spread evenly over the rest are classified.
+    #[arg(long, value_name = "N|all", default_value = "2000", value_parser = parse_classify)]
+    classify: Classify,
     /// Instead of comparing under one convention, search them all: tie rule (top-left,
     /// bottom-left, top-right, bottom-right, all-inclusive, all-exclusive), snapping (0..=16
     /// subpixel bits x 5 roundings, or none) and sample position (0.5 or 0); print every
@@ -49,6 +55,20 @@ pub struct Options {
     /// when one does, 1 when none does.
     #[arg(long, conflicts_with_all = ["diff_out", "model"])]
     fit: bool,
+}
+
+/// `--classify`: a bound, or none.
+#[derive(Clone, Copy, Debug)]
+struct Classify(Option<usize>);
+
+/// `--classify N|all`.
+fn parse_classify(s: &str) -> Result<Classify, String> {
+    if s == "all" {
+        return Ok(Classify(None));
+    }
+    s.parse::<usize>()
+        .map(|n| Classify(Some(n)))
+        .map_err(|_| "expected a number of pixels or `all`".to_string())
 }
 
 /// `--format`'s values for `compare`, with their help.
@@ -128,10 +148,11 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             ExitCode::SUCCESS
         });
     }
-    let report = compare(&scene.primitives(), &target, &theirs, model).map_err(|e| match e {
-        rasterproof::oracle::CompareError::Size(_) => format!("{theirs_name}: {e} ({name})"),
-        other => format!("{name}: {other} (model {model})"),
-    })?;
+    let report =
+        compare_classifying(&scene.primitives(), &target, &theirs, model, o.classify.0).map_err(|e| match e {
+            rasterproof::oracle::CompareError::Size(_) => format!("{theirs_name}: {e} ({name})"),
+            other => format!("{name}: {other} (model {model})"),
+        })?;
     if let Some(path) = &o.diff_out {
         let scale = Scale::default_for(target.width, target.height);
         let mut outputs = Outputs::new();

@@ -343,8 +343,65 @@ impl FitReport {
             .collect()
     }
 
-    /// For people: the exact fits (grouped), or the closest conventions with their
-    /// differing pixels by kind.
+    /// What the image tells of each part of the convention, one line each: the tie rules,
+    /// pixel centres and snappings among the exact fits, or, when every one of the
+    /// searched values fits, that the image cannot tell them apart (no sample of it lies
+    /// where they differ). Empty without an exact fit.
+    ///
+    /// ```
+    /// use rasterproof::model::{render, Model};
+    /// use rasterproof::oracle::{fit::fit, Format, Theirs};
+    /// use rasterproof::scene::parse_scene;
+    /// // A triangle whose edges pass through no sample: every tie rule draws it alike.
+    /// let scene = parse_scene(r#"{"width": 8, "height": 8, "triangles": [{"v": [[0.1, 0.2], [7.3, 0.4], [0.3, 6.9]]}]}"#, "s.json").unwrap();
+    /// let target = scene.target().unwrap();
+    /// let theirs = Theirs::from_coverage(&render(&scene.primitives(), &target, Model::ExactSnapped).unwrap(), Format::Json);
+    /// let lines = fit(&scene.primitives(), &target, &theirs).unwrap().observable();
+    /// assert!(lines[0].starts_with("tie rule: not observable here"), "{lines:?}");
+    /// ```
+    pub fn observable(&self) -> Vec<String> {
+        if self.exact.is_empty() {
+            return Vec::new();
+        }
+        let mut rules: Vec<AnyTieRule> = Vec::new();
+        let mut centres: Vec<PixelCentre> = Vec::new();
+        let mut snaps: Vec<Snapping> = Vec::new();
+        for c in &self.exact {
+            if !rules.contains(&c.tie_rule) {
+                rules.push(c.tie_rule);
+            }
+            if !centres.contains(&c.pixel_centre) {
+                centres.push(c.pixel_centre);
+            }
+            if !snaps.contains(&c.snapping) {
+                snaps.push(c.snapping);
+            }
+        }
+        let names = |v: Vec<&str>| v.join(", ");
+        let tie = if rules.len() == AnyTieRule::ALL.len() {
+            "tie rule: not observable here (all six fit: no sample lies on an edge where the rules differ; \
+             hunt --fit-first draws tie-heavy probe scenes that tell them apart)"
+                .to_string()
+        } else {
+            format!("tie rule: {}", names(rules.iter().map(|r| r.name()).collect()))
+        };
+        let centre = if centres.len() == 2 {
+            "pixel centre: not observable here (0.5 and 0 both fit)".to_string()
+        } else {
+            format!("pixel centre: {}", names(centres.iter().map(|c| c.name()).collect()))
+        };
+        let all = snappings();
+        let snapping = if snaps.len() == all.len() {
+            "snapping: not observable here (every grid and rounding fits)".to_string()
+        } else {
+            format!("snapping: {}", snappings_text(&snaps, &all))
+        };
+        vec![tie, centre, snapping]
+    }
+
+    /// For people: the exact fits (what the image tells of each part of the convention,
+    /// then the fits grouped), or the closest conventions with their differing pixels by
+    /// kind.
     pub fn to_text(&self) -> String {
         let mut s = format!("fit: {} conventions searched", self.searched);
         if let Some((n, why)) = &self.not_searched {
@@ -365,7 +422,12 @@ impl FitReport {
             }
             return s;
         }
-        let _ = writeln!(s, "{} conventions explain their image exactly:", self.exact.len());
+        let _ = writeln!(s, "{} conventions explain their image exactly.", self.exact.len());
+        s.push_str("what their image tells, part by part:\n");
+        for line in self.observable() {
+            let _ = writeln!(s, "  {line}");
+        }
+        s.push_str("the exact fits:\n");
         for (t, p, snaps) in self.grouped() {
             let _ = writeln!(s, "  tie rule {}, pixel centre {}: {snaps}", t.name(), p.name());
         }

@@ -147,8 +147,43 @@ impl fmt::Display for CompareError {
 
 impl std::error::Error for CompareError {}
 
+/// How many differing pixels [`compare`] classifies: a renderer that gets a whole image
+/// wrong is judged in seconds, not hours (each classification runs exact searches). Its
+/// differing pixels are all found and counted by kind; [`pick_classified`] says which are
+/// classified.
+pub const CLASSIFY_AT_MOST: usize = 2000;
+
+/// Which of `total` differing pixels (in row order) a comparison that classifies at most
+/// `at_most` classifies: all when they are that few; else the first half of `at_most` in
+/// row order (the top of the picture, whole) and the other half spread evenly over the
+/// rest (pixel `h + floor(j (total - h) / k)` for `j` in `0..k`, `h` and `k` the two
+/// halves), so the sample reaches down the picture.
+///
+/// ```
+/// use rasterproof::oracle::compare::pick_classified;
+/// assert_eq!(pick_classified(3, 10), vec![true; 3]);
+/// let picked = pick_classified(10, 4);
+/// let at: Vec<usize> = (0..10).filter(|&i| picked[i]).collect();
+/// assert_eq!(at, vec![0, 1, 2, 6]); // 2 first, then 2 + floor(j * 8 / 2) for j = 0, 1
+/// ```
+pub fn pick_classified(total: usize, at_most: usize) -> Vec<bool> {
+    if total <= at_most {
+        return vec![true; total];
+    }
+    let head = at_most / 2;
+    let spread = at_most - head;
+    let mut picked = vec![false; total];
+    picked[..head].fill(true);
+    for j in 0..spread {
+        picked[head + j * (total - head) / spread] = true;
+    }
+    picked
+}
+
 /// Compares `theirs` with what the exact `model` renders of `primitives` on `target`, and
-/// explains every differing pixel (see [`super::reason`] for the classes).
+/// explains the differing pixels (see [`super::reason`] for the classes): every one of
+/// them is found and counted by kind, and at most [`CLASSIFY_AT_MOST`] are classified
+/// ([`pick_classified`]; [`compare_classifying`] sets the bound).
 ///
 /// What a pixel's owners are in each format, and so what can differ: a mask names none
 /// (missing and extra only; an extra pixel is explained by the primitive that explains it
@@ -175,6 +210,20 @@ pub fn compare(
     theirs: &Theirs,
     model: Model,
 ) -> Result<CompareReport, CompareError> {
+    compare_classifying(primitives, target, theirs, model, Some(CLASSIFY_AT_MOST))
+}
+
+/// [`compare`], classifying at most `at_most` differing pixels (`None`: every one).
+///
+/// # Errors
+/// As [`compare`].
+pub fn compare_classifying(
+    primitives: &Primitives,
+    target: &Target,
+    theirs: &Theirs,
+    model: Model,
+    at_most: Option<usize>,
+) -> Result<CompareReport, CompareError> {
     SizeMismatch::check(theirs, target).map_err(CompareError::Size)?;
     if !model.is_exact() {
         return Err(CompareError::NotExact(model));
@@ -188,47 +237,63 @@ pub fn compare(
     keys.extend(theirs.covered().into_iter().map(|(x, y)| (y, x)));
     keys.sort_unstable();
     keys.dedup();
+    // The differing pixels, all of them; then which are classified.
+    let differing: Vec<(u32, u32, TheirPixel, DiffOwners)> = keys
+        .into_iter()
+        .filter_map(|(y, x)| {
+            let t = theirs.pixel(x, y);
+            differ(ours.owners(x, y), &t, theirs.format()).map(|d| (x, y, t, d))
+        })
+        .collect();
+    let picked = pick_classified(differing.len(), at_most.unwrap_or(usize::MAX));
     // Pass one: every finding with what the searches found; pass two decides each with
     // the support of the whole comparison (`reason::decide`).
     let mut pixels = Vec::new();
     let mut found = Vec::new();
     let mut support = Support::default();
-    for (y, x) in keys {
-        {
-            let o = ours.owners(x, y);
-            let t = theirs.pixel(x, y);
-            let Some((kind, missing, extra, unnamed)) = differ(o, &t, theirs.format()) else {
-                continue;
-            };
-            let mut findings = Vec::new();
-            let mut push = |(finding, f)| {
-                support.add(&f);
-                found.push(f);
-                findings.push(finding);
-            };
-            for id in missing {
-                push(named(&mut classifier, primitives, id, Relation::Missing, x, y, target));
-            }
-            for id in extra {
-                push(named(&mut classifier, primitives, id, Relation::Extra, x, y, target));
-            }
-            if unnamed {
-                let candidates: Vec<usize> = index
-                    .near(x, y)
-                    .into_iter()
-                    .filter(|&k| !o.iter().any(|&id| usize::try_from(id).ok() == Some(k)))
-                    .collect();
-                push(guessed(&mut classifier, primitives, &candidates, x, y, target));
-            }
+    for ((x, y, t, (kind, missing, extra, unnamed)), classified) in differing.into_iter().zip(picked) {
+        let o = ours.owners(x, y);
+        if !classified {
             pixels.push(DiffPixel {
                 x,
                 y,
                 kind,
                 ours: o.to_vec(),
                 theirs: t,
-                findings,
+                classified: false,
+                findings: Vec::new(),
             });
+            continue;
         }
+        let mut findings = Vec::new();
+        let mut push = |(finding, f)| {
+            support.add(&f);
+            found.push(f);
+            findings.push(finding);
+        };
+        for id in missing {
+            push(named(&mut classifier, primitives, id, Relation::Missing, x, y, target));
+        }
+        for id in extra {
+            push(named(&mut classifier, primitives, id, Relation::Extra, x, y, target));
+        }
+        if unnamed {
+            let candidates: Vec<usize> = index
+                .near(x, y)
+                .into_iter()
+                .filter(|&k| !o.iter().any(|&id| usize::try_from(id).ok() == Some(k)))
+                .collect();
+            push(guessed(&mut classifier, primitives, &candidates, x, y, target));
+        }
+        pixels.push(DiffPixel {
+            x,
+            y,
+            kind,
+            ours: o.to_vec(),
+            theirs: t,
+            classified: true,
+            findings,
+        });
     }
     let mut found = found.into_iter();
     for f in pixels.iter_mut().flat_map(|p: &mut DiffPixel| p.findings.iter_mut()) {
@@ -268,6 +333,10 @@ pub fn count_differences(ours: &Coverage, theirs: &Theirs, stop: Option<usize>) 
     out
 }
 
+/// How a pixel differs ([`differ`]): its kind, the ids missing in theirs, the ids extra in
+/// theirs, and whether an owner they do not name is extra.
+type DiffOwners = (PixelKind, Vec<u32>, Vec<u32>, bool);
+
 /// The multiset difference `a - b` of two ascending lists.
 fn minus(a: &[u32], b: &[u32]) -> Vec<u32> {
     let mut rest = b.to_vec();
@@ -285,7 +354,7 @@ fn minus(a: &[u32], b: &[u32]) -> Vec<u32> {
 /// How ours (`o`) and theirs (`t`) differ at a pixel: the kind, the ids missing in theirs,
 /// the ids extra in theirs, and whether an owner they do not name is extra; `None` when
 /// they agree (as far as the format tells).
-fn differ(o: &[u32], t: &TheirPixel, format: Format) -> Option<(PixelKind, Vec<u32>, Vec<u32>, bool)> {
+fn differ(o: &[u32], t: &TheirPixel, format: Format) -> Option<DiffOwners> {
     match format {
         Format::Mask => match (o.is_empty(), t.covered) {
             (false, false) => Some((PixelKind::Missing, o.to_vec(), Vec::new(), false)),

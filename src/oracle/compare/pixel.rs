@@ -51,6 +51,9 @@ pub struct DiffPixel {
     pub ours: Vec<u32>,
     /// Theirs.
     pub theirs: TheirPixel,
+    /// Whether it was classified ([`super::pick_classified`]): when not, `findings` is
+    /// empty.
+    pub classified: bool,
     /// Per primitive, why.
     pub findings: Vec<PixelFinding>,
 }

@@ -66,6 +66,21 @@ impl CompareReport {
         out
     }
 
+    /// How many differing pixels were classified (all but those [`super::pick_classified`]
+    /// left out of a large comparison).
+    pub fn classified(&self) -> usize {
+        self.pixels.iter().filter(|p| p.classified).count()
+    }
+
+    /// Differing pixels left unclassified, by kind.
+    pub fn unclassified_by_kind(&self) -> BTreeMap<PixelKind, usize> {
+        let mut out = BTreeMap::new();
+        for p in self.pixels.iter().filter(|p| !p.classified) {
+            *out.entry(p.kind).or_insert(0) += 1;
+        }
+        out
+    }
+
     /// Differing pixels by kind.
     pub fn pixels_by_kind(&self) -> BTreeMap<PixelKind, usize> {
         let mut out = BTreeMap::new();
@@ -106,9 +121,23 @@ impl CompareReport {
             .filter(|c| summary.keys().any(|(_, k)| k == c))
             .collect();
         let by_kind = self.pixels_by_kind();
+        let unclassified = self.unclassified_by_kind();
+        let classified = self.classified();
+        if classified < self.pixels.len() {
+            let _ = writeln!(
+                s,
+                "classified: {classified} of the {} differing pixels (the first {} in row order, the rest spread \
+                 evenly over the others); every pixel is counted by kind (compare --classify all classifies each)",
+                self.pixels.len(),
+                classified / 2
+            );
+        }
         let _ = write!(s, "\n{:<12} {:>7}", "", "pixels");
         for c in &classes {
             let _ = write!(s, " {:>10}", c.name());
+        }
+        if !unclassified.is_empty() {
+            let _ = write!(s, " {:>12}", "unclassified");
         }
         s.push('\n');
         for kind in PixelKind::ALL {
@@ -116,6 +145,9 @@ impl CompareReport {
             let _ = write!(s, "{:<12} {n:>7}", kind.name());
             for c in &classes {
                 let _ = write!(s, " {:>10}", summary.get(&(kind, *c)).copied().unwrap_or(0));
+            }
+            if !unclassified.is_empty() {
+                let _ = write!(s, " {:>12}", unclassified.get(&kind).copied().unwrap_or(0));
             }
             s.push('\n');
         }
@@ -136,6 +168,9 @@ impl CompareReport {
                 owners_text(&p.ours),
                 their_text(&p.theirs, self.format)
             );
+            if !p.classified {
+                s.push_str("  (not classified)\n");
+            }
             for f in &p.findings {
                 let who = match (&f.primitive, f.id) {
                     (Some(name), Some(id)) => format!("{name} (id {id})"),
@@ -166,9 +201,11 @@ impl CompareReport {
     /// The JSON report (schema version [`REPORT_VERSION`]), complete:
     /// `{"version", "scene", "theirs", "format", "model", "convention": {preset, tie_rule,
     /// pixel_centre, subpixel_bits, rounding}, "width", "height", "ours_covered",
-    /// "theirs_covered", "differing", "pixels_by_kind": {kind: n}, "summary": [{kind, class,
-    /// count}], "pixels": [{x, y, kind, ours: [ids], theirs: {covered, ids, several},
-    /// findings: [{id, primitive, relation, guessed, class, reason: {...}, distance,
+    /// "theirs_covered", "differing", "classified", "pixels_by_kind": {kind: n},
+    /// "unclassified_by_kind": {kind: n}, "summary": [{kind, class, count}] (of the
+    /// classified pixels' findings), "pixels": [{x, y, kind, ours: [ids], theirs: {covered,
+    /// ids, several}, classified, findings (empty when not classified): [{id, primitive,
+    /// relation, guessed, class, reason: {...}, distance,
     /// evidence}]}]}`; `distance` is the sample's distance to the primitive's nearest edge,
     /// `{squared, exact, approx}` (null when no primitive is named or guessed).
     /// A reason holds, by class: `tie` `{edges: [{index, from, to, side, value,
@@ -186,6 +223,11 @@ impl CompareReport {
             .collect();
         let by_kind: serde_json::Map<String, Value> = self
             .pixels_by_kind()
+            .iter()
+            .map(|(k, n)| (k.name().to_string(), json!(n)))
+            .collect();
+        let unclassified: serde_json::Map<String, Value> = self
+            .unclassified_by_kind()
             .iter()
             .map(|(k, n)| (k.name().to_string(), json!(n)))
             .collect();
@@ -212,6 +254,7 @@ impl CompareReport {
                 json!({
                     "x": p.x, "y": p.y, "kind": p.kind.name(), "ours": p.ours,
                     "theirs": {"covered": p.theirs.covered, "ids": p.theirs.ids, "several": p.theirs.several},
+                    "classified": p.classified,
                     "findings": findings,
                 })
             })
@@ -234,7 +277,9 @@ impl CompareReport {
             "ours_covered": self.ours_covered,
             "theirs_covered": self.theirs_covered,
             "differing": self.pixels.len(),
+            "classified": self.classified(),
             "pixels_by_kind": by_kind,
+            "unclassified_by_kind": unclassified,
             "summary": summary,
             "pixels": pixels,
         })

@@ -4,10 +4,12 @@
 
 use std::collections::{HashMap, HashSet};
 
+use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
 use super::{decide, Alternative, Found, Reason, Snapping, Support, DIAMOND_MIRRORED};
+use crate::check::triangle_covers;
 use crate::clip::Window;
 use crate::convention::{AnyTieRule, Convention, PixelCentre, Target, TieRule};
 use crate::coverage::CoverageSink;
@@ -184,7 +186,7 @@ impl<'a> Classifier<'a> {
             .own_grid
             .clone()
             .into_iter()
-            .filter(|s| self.snapping_gives(id, *s, x, y, theirs_covers))
+            .filter(|s| self.may_move_across(id, *s, &distance2) && self.snapping_gives(id, *s, x, y, theirs_covers))
             .map(|s| s.rounding)
             .collect();
         let own_grid = (!own_roundings.is_empty()).then_some(Reason::Snapping {
@@ -200,7 +202,7 @@ impl<'a> Classifier<'a> {
             .collect();
         if own_grid.is_none() && (self.model.snaps() || !near) {
             for s in self.other_snappings.clone() {
-                if self.snapping_gives(id, s, x, y, theirs_covers) {
+                if self.may_move_across(id, s, &distance2) && self.snapping_gives(id, s, x, y, theirs_covers) {
                     alternatives.push(Alternative::Snapping(s));
                 }
             }
@@ -249,11 +251,39 @@ impl<'a> Classifier<'a> {
         let p = Point::new(half(x, ox), half(y, oy));
         let rule = self.target.convention.tie_rule;
         let covers = match &self.shapes[id] {
-            Shape::Triangle(t) => triangle_at(t, &p, rule.into()).is_some_and(|at| at.inside),
+            Shape::Triangle(t) => triangle_covers(t, &p, rule.into()),
             Shape::Polygon(poly) => polygon_inside(poly, &p, rule),
             _ => return false,
         };
         covers == theirs_covers
+    }
+
+    /// Whether snapping `s` can move primitive `id`'s boundary across a sample whose
+    /// squared distance to the oracle's shape's nearest edge is `distance2`; when not, the
+    /// primitive's answer there is the oracle's under `s` too, and the exact test is
+    /// skipped. Snapping to `b` bits moves each vertex of the scene's primitive by less
+    /// than `2^-b` on each axis, so by at most `√2·2^-b`; the oracle's own snapping (`o`
+    /// bits, when its model snaps) by at most `√2·2^-o`. Every point of a triangle's or
+    /// polygon's edges moves by at most the largest vertex move, so an edge that crosses
+    /// the sample had to pass within `√2 (2^-b + 2^-o)` of it: a sample farther than that
+    /// from every edge keeps its answer (its winding number cannot change). Tried always:
+    /// lines, the unsnapped alternative, and scenes with a clip window or clip-space
+    /// triangles (whose clipped shapes this bound does not cover).
+    fn may_move_across(&self, id: usize, s: Snapping, distance2: &BigRational) -> bool {
+        let Some(bits) = s.bits else { return true };
+        let bounded = matches!(self.shapes[id], Shape::Triangle(_) | Shape::Polygon(_))
+            && self.primitives.clip.is_none()
+            && self.primitives.clip_space_triangles.is_empty();
+        if !bounded {
+            return true;
+        }
+        let step = |b: u32| BigRational::new(BigInt::one(), BigInt::one() << b);
+        let mut reach = step(bits);
+        if self.model.snaps() {
+            reach += step(self.target.convention.subpixel_bits);
+        }
+        // distance2 <= 2 reach^2: the sample may be crossed.
+        *distance2 <= BigRational::from_integer(2.into()) * &reach * &reach
     }
 
     /// Whether primitive `id` under snapping `s` gives their answer.
@@ -274,7 +304,7 @@ impl<'a> Classifier<'a> {
         let rule = target.convention.tie_rule;
         let kept = !clipped || self.primitives.clip.as_ref().map_or(true, |w| in_closed_window(w, &p));
         match shape {
-            Shape::Triangle(t) => triangle_at(t, &p, rule.into()).is_some_and(|at| at.inside),
+            Shape::Triangle(t) => triangle_covers(t, &p, rule.into()),
             Shape::Polygon(poly) => polygon_inside(poly, &p, rule),
             Shape::Diamond { from, to } => {
                 kept && line::exact::diamond_exits(from, to, i64::from(x), i64::from(y), target)
@@ -458,7 +488,7 @@ fn tie(shape: &Shape, p: &Point, rule: TieRule, theirs_covers: bool) -> Option<R
             }
             let rules: Vec<AnyTieRule> = AnyTieRule::ALL
                 .into_iter()
-                .filter(|r| triangle_at(t, p, *r).is_some_and(|a| a.inside) == theirs_covers)
+                .filter(|r| triangle_covers(t, p, *r) == theirs_covers)
                 .collect();
             (!rules.is_empty()).then_some(Reason::Tie { edges: zero, rules })
         }
