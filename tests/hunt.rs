@@ -140,7 +140,7 @@ fn failing_programs_are_findings_and_bad_commands_exit_2() {
 
 /// The planned engine under the top-right tie rule for triangles (lines and polygons drawn
 /// honestly): a renderer wrong at ties only.
-fn top_right(s: &rasterproof::scene::Scene) -> Result<Theirs, rasterproof::oracle::program::RenderFailure> {
+pub(crate) fn top_right(s: &rasterproof::scene::Scene) -> Result<Theirs, rasterproof::oracle::program::RenderFailure> {
     let target = s.target().unwrap();
     let mut c = Coverage::new(s.width, s.height);
     for (k, t) in s.triangles().iter().enumerate() {

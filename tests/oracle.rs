@@ -1241,3 +1241,65 @@ fn a_renderer_wrong_everywhere_is_counted_whole_and_classified_in_part() {
     let default = compare(&scene.primitives(), &target, &nothing, Model::ExactSnapped).unwrap();
     assert_eq!((default.pixels.len(), default.classified()), (4096, CLASSIFY_AT_MOST));
 }
+
+/// A renderer that samples at the pixel's corner (pixel centre 0) against the oracle at
+/// the centre: every difference is the sample position (i, j), and the report says so at
+/// its top, before the table (text and JSON). A renderer with top-right ties gets its
+/// rule named the same way; the oracle against itself has no headline.
+#[test]
+fn one_convention_that_explains_every_difference_is_named_at_the_top() {
+    use rasterproof::convention::{Convention, PixelCentre, Target};
+    let scene = parse_scene(
+        r#"{"width": 64, "height": 64, "triangles": [{"v": [[0.3, 0.2], [60.7, 5.1], [10.2, 50.9]]}]}"#,
+        "t.json",
+    )
+    .unwrap();
+    let target = scene.target().unwrap();
+    let corner = Target {
+        convention: Convention {
+            pixel_centre: PixelCentre::Corner,
+            ..target.convention
+        },
+        ..target
+    };
+    let theirs = Theirs::from_coverage(
+        &render(&scene.primitives(), &corner, Model::ExactSnapped).unwrap(),
+        Format::Json,
+    );
+    let r = compare(&scene.primitives(), &target, &theirs, Model::ExactSnapped).unwrap();
+    assert!(!r.identical());
+    let expected = "every classified difference is explained by one convention: the sample at (i, j)";
+    assert_eq!(r.headline().as_deref(), Some(expected));
+    assert!(
+        r.to_text("t.json", "theirs", 0).lines().nth(2) == Some(expected),
+        "{}",
+        r.to_text("t.json", "theirs", 0)
+    );
+    assert_eq!(r.to_json("t.json", "theirs")["headline"].as_str(), Some(expected));
+    let same = Theirs::from_coverage(
+        &render(&scene.primitives(), &target, Model::ExactSnapped).unwrap(),
+        Format::Json,
+    );
+    let r = compare(&scene.primitives(), &target, &same, Model::ExactSnapped).unwrap();
+    assert_eq!(r.headline(), None);
+    // Edges through pixel centres: the top, the left and the hypotenuse (a right edge).
+    let ties = parse_scene(
+        r#"{"width": 8, "height": 8, "triangles": [{"v": [[0.5, 0.5], [6.5, 0.5], [0.5, 6.5]]}]}"#,
+        "ties.json",
+    )
+    .unwrap();
+    let theirs = crate::hunt::top_right(&ties).unwrap();
+    let r = compare(
+        &ties.primitives(),
+        &ties.target().unwrap(),
+        &theirs,
+        Model::ExactSnapped,
+    )
+    .unwrap();
+    let h = r.headline().expect("one tie rule explains every difference");
+    assert!(
+        h.starts_with("every classified difference is explained by one convention: the tie rule ")
+            && h.contains("top-right"),
+        "{h}"
+    );
+}

@@ -9,7 +9,7 @@ use serde_json::{json, Value};
 
 use super::pixel::point_text;
 use super::{DiffPixel, PixelKind};
-use crate::convention::Convention;
+use crate::convention::{AnyTieRule, Convention, Rounding};
 use crate::coverage::picture::{upscale, Scale};
 use crate::coverage::Coverage;
 use crate::model::Model;
@@ -66,6 +66,90 @@ impl CompareReport {
         out
     }
 
+    /// The one convention that explains every classified difference, when there is one:
+    /// every finding is of one class and the alternatives it names share a value (a tie
+    /// rule, a sample position, a grid and rounding, a line rule), named so that a reader
+    /// sees it before the table: `every classified difference is explained by one
+    /// convention: the sample at (i, j)`. `None` when the findings are of several classes
+    /// or name nothing in common (say near-edge float error beside ties), or nothing
+    /// differs.
+    pub fn headline(&self) -> Option<String> {
+        let findings: Vec<&Reason> = self
+            .pixels
+            .iter()
+            .flat_map(|p| &p.findings)
+            .map(|f| &f.reason)
+            .collect();
+        let first = findings.first()?;
+        // The values every finding's list shares, in the first finding's order.
+        fn shared<T: PartialEq + Copy>(lists: &[&[T]]) -> Vec<T> {
+            lists[0]
+                .iter()
+                .copied()
+                .filter(|v| lists.iter().all(|l| l.contains(v)))
+                .collect()
+        }
+        let what = match first {
+            Reason::Tie { .. } => {
+                let lists: Option<Vec<&[AnyTieRule]>> = findings
+                    .iter()
+                    .map(|r| match r {
+                        Reason::Tie { rules, .. } => Some(rules.as_slice()),
+                        _ => None,
+                    })
+                    .collect();
+                let rules = shared(&lists?);
+                let names: Vec<&str> = rules.iter().map(|r| r.name()).collect();
+                (!names.is_empty()).then(|| format!("the tie rule {}", names.join(" or ")))?
+            }
+            Reason::SamplePosition { .. } => {
+                let lists: Option<Vec<&[[u8; 2]]>> = findings
+                    .iter()
+                    .map(|r| match r {
+                        Reason::SamplePosition { offsets } => Some(offsets.as_slice()),
+                        _ => None,
+                    })
+                    .collect();
+                let offsets = shared(&lists?);
+                let names: Vec<String> = offsets.iter().map(|o| offset_text(*o)).collect();
+                (!names.is_empty()).then(|| format!("the sample at {}", names.join(" or ")))?
+            }
+            Reason::Snapping { bits, .. } => {
+                let lists: Option<Vec<&[Rounding]>> = findings
+                    .iter()
+                    .map(|r| match r {
+                        Reason::Snapping { bits: b, roundings } if b == bits => Some(roundings.as_slice()),
+                        _ => None,
+                    })
+                    .collect();
+                let roundings = shared(&lists?);
+                let names: Vec<&str> = roundings.iter().map(|r| r.name()).collect();
+                match bits {
+                    Some(b) if !names.is_empty() => {
+                        format!("snapping to {b} subpixel bits, rounding {}", names.join(" or "))
+                    }
+                    None => "no snapping (vertices as written)".to_string(),
+                    _ => return None,
+                }
+            }
+            Reason::LineRule { .. } => {
+                let lists: Option<Vec<&[&str]>> = findings
+                    .iter()
+                    .map(|r| match r {
+                        Reason::LineRule { rules } => Some(rules.as_slice()),
+                        _ => None,
+                    })
+                    .collect();
+                let rules = shared(&lists?);
+                (!rules.is_empty()).then(|| format!("the line rule {}", rules.join(" or ")))?
+            }
+            _ => return None,
+        };
+        Some(format!(
+            "every classified difference is explained by one convention: {what}"
+        ))
+    }
+
     /// How many differing pixels were classified (all but those [`super::pick_classified`]
     /// left out of a large comparison).
     pub fn classified(&self) -> usize {
@@ -114,6 +198,9 @@ impl CompareReport {
         if self.pixels.is_empty() {
             s.push_str("identical\n");
             return s;
+        }
+        if let Some(h) = self.headline() {
+            let _ = writeln!(s, "{h}");
         }
         let summary = self.summary();
         let classes: Vec<ReasonClass> = ReasonClass::ALL
@@ -201,7 +288,8 @@ impl CompareReport {
     /// The JSON report (schema version [`REPORT_VERSION`]), complete:
     /// `{"version", "scene", "theirs", "format", "model", "convention": {preset, tie_rule,
     /// pixel_centre, subpixel_bits, rounding}, "width", "height", "ours_covered",
-    /// "theirs_covered", "differing", "classified", "pixels_by_kind": {kind: n},
+    /// "theirs_covered", "differing", "classified", "headline" ([`Self::headline`], or
+    /// null), "pixels_by_kind": {kind: n},
     /// "unclassified_by_kind": {kind: n}, "summary": [{kind, class, count}] (of the
     /// classified pixels' findings), "pixels": [{x, y, kind, ours: [ids], theirs: {covered,
     /// ids, several}, classified, findings (empty when not classified): [{id, primitive,
@@ -278,6 +366,7 @@ impl CompareReport {
             "theirs_covered": self.theirs_covered,
             "differing": self.pixels.len(),
             "classified": self.classified(),
+            "headline": self.headline(),
             "pixels_by_kind": by_kind,
             "unclassified_by_kind": unclassified,
             "summary": summary,
