@@ -70,7 +70,7 @@ fn wrong_tie_rule_and_coarse_snapping_are_found_and_shrunk() {
         let cmd = format!("{} render {{scene}} {wrong} --ids-out {{out}}", rasterproof());
         let (code, stdout, stderr) = hunt_cli(&["--cmd", &cmd, "--cases", "40", "--out", dir.path().to_str().unwrap()]);
         assert_eq!(code, 1, "{wrong}: {stdout}{stderr}");
-        assert!(stdout.contains(&format!(", {class}, ")), "{wrong}: {stdout}");
+        assert!(stdout.contains(&format!(" {class}, ")), "{wrong}: {stdout}");
         let scenes = minimal_scenes(dir.path());
         assert!(!scenes.is_empty());
         for s in &scenes {
@@ -175,9 +175,21 @@ fn a_closure_renderer_is_hunted_and_its_failures_shrunk() {
     };
     let report = hunt(&top_right, &config, 2, &|| {}).unwrap();
     assert!(report.differing > 0);
-    assert!(!report.findings.is_empty());
+    // One cause, one finding: the wrong tie rule shows as pixels of several kinds
+    // (wrong owner on shared edges, missing or extra on the mesh's outline), listed in it.
+    assert_eq!(
+        report.findings.len(),
+        1,
+        "{:?}",
+        report
+            .findings
+            .iter()
+            .map(|f| f.signature.describe())
+            .collect::<Vec<_>>()
+    );
+    assert!(report.findings[0].kinds.len() >= 2, "{:?}", report.findings[0].kinds);
     for f in &report.findings {
-        let Signature::Pixel(_, class, kind) = &f.signature else {
+        let Signature::Pixel(class, kind) = &f.signature else {
             panic!("{f:?}")
         };
         assert_eq!((*class, kind.as_str()), (ReasonClass::Tie, "triangles"));
@@ -518,7 +530,7 @@ fn the_report_and_junit_describe_every_finding() {
     assert_eq!(code, 1, "{stdout}{stderr}");
     let r: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
     assert_eq!(r["format"], "rasterproof hunt report");
-    assert_eq!(r["version"], 1);
+    assert_eq!(r["version"], 2);
     assert_eq!(r["rasterproof"], env!("CARGO_PKG_VERSION"));
     assert_eq!(r["cmd"], cmd.as_str());
     assert_eq!(
@@ -541,6 +553,13 @@ fn the_report_and_junit_describe_every_finding() {
     let findings = r["findings"].as_array().unwrap();
     assert!(!findings.is_empty());
     assert!(stdout.contains(&format!("{:02}   ", findings.len())), "{stdout}");
+    // Each pixel finding lists the kinds of pixels its cause showed; a failure none.
+    for f in findings {
+        let kinds = f["kinds"].as_array().unwrap();
+        // A pixel signature is `class, primitive kind`; a failure's is one name.
+        let pixel = f["signature"].as_str().unwrap().contains(", ");
+        assert_eq!(!kinds.is_empty(), pixel, "{f}");
+    }
 
     let program = rasterproof::oracle::program::Program::new(
         &cmd,

@@ -32,7 +32,7 @@ pub use convention::{fit_convention, hunt_convention, preferred, FitFirst, FIT_P
 pub use families::{float32_exact, generate_scene, SceneFamily};
 pub use report::{HuntFinding, HuntReport, REPORT_FORMAT, REPORT_VERSION};
 pub use test_text::rust_test;
-pub use verdict::{judge, signatures, HuntVerdict, Signature};
+pub use verdict::{judge, pixel_kinds, signatures, HuntVerdict, Signature};
 
 use verdict::CaseOutcome;
 
@@ -40,6 +40,7 @@ use crate::convention::Preset;
 use crate::harness::runner::{RunError, Runner};
 use crate::harness::suite::Shard;
 use crate::model::Model;
+use crate::oracle::compare::PixelKind;
 use crate::oracle::program::RenderFailure;
 use crate::oracle::theirs::Theirs;
 use crate::scene::{Overrides, Scene};
@@ -92,7 +93,7 @@ impl Default for HuntConfig {
 }
 
 /// One case's scene, signatures and outcome.
-type CaseResult = (u64, Scene, Vec<Signature>, CaseOutcome);
+type CaseResult = (u64, Scene, Vec<(Signature, Vec<PixelKind>)>, CaseOutcome);
 
 /// Runs the hunt: the scenes of `config.shard`'s cases among `0..config.cases` rendered by
 /// `render` on `jobs` threads, each compared with the oracle; every distinct signature's
@@ -144,7 +145,14 @@ where
             .ok_or_else(|| format!("the shard has no case at position {i}"))?;
         let scene = generate_scene(config, k)?;
         let verdict = judge(&scene, render(&scene), config.model);
-        let (sigs, outcome) = (signatures(&verdict), CaseOutcome::of(&verdict));
+        let sigs = signatures(&verdict)
+            .into_iter()
+            .map(|s| {
+                let kinds = pixel_kinds(&verdict, &s);
+                (s, kinds)
+            })
+            .collect();
+        let outcome = CaseOutcome::of(&verdict);
         tick();
         Ok((k, scene, sigs, outcome))
     };
@@ -162,7 +170,7 @@ where
         })?;
     let cases = results.len() as u64;
     let (mut same, mut differing, mut failed, mut refused) = (0u64, 0u64, 0u64, 0u64);
-    let mut first: BTreeMap<Signature, (u64, Scene, u64)> = BTreeMap::new();
+    let mut first: BTreeMap<Signature, (u64, Scene, u64, Vec<PixelKind>)> = BTreeMap::new();
     for (k, scene, sigs, outcome) in results {
         *match outcome {
             CaseOutcome::Same => &mut same,
@@ -170,17 +178,25 @@ where
             CaseOutcome::Failed => &mut failed,
             CaseOutcome::Refused => &mut refused,
         } += 1;
-        for sig in sigs {
-            first.entry(sig).or_insert_with(|| (k, scene.clone(), 0)).2 += 1;
+        for (sig, kinds) in sigs {
+            let entry = first.entry(sig).or_insert_with(|| (k, scene.clone(), 0, Vec::new()));
+            entry.2 += 1;
+            for kind in kinds {
+                if !entry.3.contains(&kind) {
+                    entry.3.push(kind);
+                }
+            }
         }
     }
     let mut findings = Vec::new();
-    for (signature, (case, original, cases)) in first {
+    for (signature, (case, original, cases, mut kinds)) in first {
+        kinds.sort();
         let mut keeps = |s: &Scene| signatures(&judge(s, render(s), config.model)).contains(&signature);
         let (minimal, runs) = shrink(&original, &mut keeps, config.shrink_runs, None);
         let verdict = judge(&minimal, render(&minimal), config.model);
         findings.push(HuntFinding {
             signature,
+            kinds,
             case,
             cases,
             original,

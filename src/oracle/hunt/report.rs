@@ -11,13 +11,17 @@ use crate::harness::junit::{JunitFailure, TestCase, TestSuite, TestSuites};
 use crate::harness::shrink::primitive_count;
 use crate::harness::suite::report::{json_object as object, json_value as j};
 use crate::harness::suite::Shard;
+use crate::oracle::compare::PixelKind;
 use crate::scene::Scene;
 
 /// A distinct failure, shrunk.
 #[derive(Debug, Clone)]
 pub struct HuntFinding {
-    /// What it is.
+    /// What it is: one cause (a reason class and a primitive kind, or a failure).
     pub signature: Signature,
+    /// The kinds of differing pixels its cases showed (missing, extra, wrong owner,
+    /// double), in [`PixelKind`] order; empty for a renderer failure.
+    pub kinds: Vec<PixelKind>,
     /// The first case that showed it.
     pub case: u64,
     /// How many cases showed it.
@@ -60,16 +64,28 @@ pub struct HuntReport {
 pub const REPORT_FORMAT: &str = "rasterproof hunt report";
 
 /// The schema version of a hunt report ([`HuntReport::to_json`]).
-pub const REPORT_VERSION: u64 = 1;
+pub const REPORT_VERSION: u64 = 2;
 
 impl HuntFinding {
+    /// Its pixel kinds in words, after the signature: ` (missing and extra pixels)`;
+    /// empty for a renderer failure.
+    pub fn kinds_text(&self) -> String {
+        let names: Vec<&str> = self.kinds.iter().map(|k| k.name()).collect();
+        match names.as_slice() {
+            [] => String::new(),
+            [one] => format!(" ({one} pixels)"),
+            [rest @ .., last] => format!(" ({} and {last} pixels)", rest.join(", ")),
+        }
+    }
+
     /// The finding's `finding-NN.txt` (`n`: its number, from 1): what it is, its minimal
     /// scene's comparison (as `finding-NN.json`, the first 50 pixels) or failure, and the
     /// first scene that showed it.
     pub fn to_text(&self, n: usize) -> String {
         let mut s = format!(
-            "finding {n:02}: {} (first in case {}, {} cases; shrunk with {} renderer runs)\n\n",
+            "finding {n:02}: {}{} (first in case {}, {} cases; shrunk with {} renderer runs)\n\n",
             self.signature.describe(),
+            self.kinds_text(),
             self.case,
             self.cases,
             self.runs
@@ -163,7 +179,8 @@ impl HuntReport {
     /// object, one field a line in this order, each finding on a line of its own, ending in
     /// a newline.
     ///
-    /// - `format` (`"rasterproof hunt report"`), `version` (1), `rasterproof` (the version
+    /// - `format` (`"rasterproof hunt report"`), `version` (2: a finding is one cause,
+    ///   its pixel kinds listed; version 1 had one finding per kind), `rasterproof` (the version
     ///   that ran it), `cmd` (`renderer`), `seed`;
     /// - `shard`: `{"k": K, "n": N}` (`{"k": 1, "n": 1}`: the whole run);
     /// - `cases` (the whole run's, `0..cases`), `cases_requested` (the shard's among them),
@@ -175,7 +192,8 @@ impl HuntReport {
     ///   `exact-snapped` or `exact`);
     /// - `counts`: `{"same", "differ", "failed", "refused"}` over the cases run;
     /// - `findings`, by first case: `{"signature"` ([`Signature::describe`]), `"slug"`
-    ///   ([`Signature::slug`]), `"first_case"`, `"cases"` (how many showed it),
+    ///   ([`Signature::slug`]), `"kinds"` (the pixel kinds its cases showed: `["missing",
+    ///   "extra"]`; `[]` for a renderer failure), `"first_case"`, `"cases"` (how many showed it),
     ///   `"primitives"` (of the minimal scene), `"scene"` (the minimal scene: the JSON
     ///   object [`Scene::to_json`] writes), `"shrink_runs"` (renderer runs the shrink
     ///   took), `"minimal_verdict"` (`differs`, `failed`, or `same` / `refused` when the
@@ -194,6 +212,7 @@ impl HuntReport {
     /// assert_eq!(v["format"], "rasterproof hunt report");
     /// assert_eq!(v["counts"]["failed"], 3);
     /// assert_eq!(v["findings"][0]["signature"], "non-zero exit");
+    /// assert_eq!(v["findings"][0]["kinds"], serde_json::json!([]));
     /// assert!(v["findings"][0]["scene"]["triangles"].is_array());
     /// ```
     pub fn to_json(&self, renderer: &str) -> String {
@@ -207,6 +226,7 @@ impl HuntReport {
                 object(&[
                     ("signature", j(&f.signature.describe())),
                     ("slug", j(&f.signature.slug())),
+                    ("kinds", j(&f.kinds.iter().map(|k| k.name()).collect::<Vec<_>>())),
                     ("first_case", j(&f.case)),
                     ("cases", j(&f.cases)),
                     ("primitives", j(&primitive_count(&f.minimal))),

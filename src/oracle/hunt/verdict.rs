@@ -76,23 +76,26 @@ impl CaseOutcome {
 /// A distinct failure: what hunt deduplicates by.
 #[derive(Debug, Clone, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Signature {
-    /// A differing pixel: its kind, the reason class, the primitive kind (`triangles`,
-    /// `lines`, `polygons`, or `none` when no primitive explains it).
-    Pixel(PixelKind, ReasonClass, String),
+    /// Differing pixels of one cause: the reason class and the primitive kind
+    /// (`triangles`, `lines`, `polygons`, or `none` when no primitive explains it). The
+    /// pixels' kinds (missing, extra, wrong owner, double) are not part of it: one tie bug
+    /// shows as missing and extra pixels at once, and is one finding ([`pixel_kinds`]
+    /// lists its kinds).
+    Pixel(ReasonClass, String),
     /// Their renderer failed this way.
     Failure(FailureKind),
 }
 
 impl Signature {
-    /// In words: `missing pixel, tie, triangles`.
+    /// In words: `tie, triangles`.
     pub fn describe(&self) -> String {
         match self {
-            Signature::Pixel(kind, class, primitive) => format!("{} pixel, {}, {primitive}", kind.name(), class.name()),
+            Signature::Pixel(class, primitive) => format!("{}, {primitive}", class.name()),
             Signature::Failure(kind) => kind.name().to_string(),
         }
     }
 
-    /// For file and test names: `missing_pixel_tie_triangles`.
+    /// For file and test names: `tie_triangles`.
     pub fn slug(&self) -> String {
         self.describe()
             .chars()
@@ -118,13 +121,7 @@ pub fn signatures(verdict: &HuntVerdict) -> Vec<Signature> {
         HuntVerdict::Differs(r) => {
             for p in &r.pixels {
                 for f in &p.findings {
-                    let kind = f
-                        .primitive
-                        .as_deref()
-                        .and_then(|n| n.split('[').next())
-                        .unwrap_or("none")
-                        .to_string();
-                    out.push(Signature::Pixel(p.kind, f.reason.class(), kind));
+                    out.push(Signature::Pixel(f.reason.class(), primitive_kind(f)));
                 }
             }
         }
@@ -134,4 +131,32 @@ pub fn signatures(verdict: &HuntVerdict) -> Vec<Signature> {
     out.sort();
     out.dedup();
     out
+}
+
+/// The kinds of the differing pixels (missing, extra, wrong owner, double) that show
+/// `signature` in `verdict`, in [`PixelKind`] order; empty for a renderer failure.
+pub fn pixel_kinds(verdict: &HuntVerdict, signature: &Signature) -> Vec<PixelKind> {
+    let mut out = Vec::new();
+    if let (HuntVerdict::Differs(r), Signature::Pixel(class, primitive)) = (verdict, signature) {
+        for p in &r.pixels {
+            if p.findings
+                .iter()
+                .any(|f| f.reason.class() == *class && primitive_kind(f) == *primitive)
+            {
+                out.push(p.kind);
+            }
+        }
+    }
+    out.sort();
+    out.dedup();
+    out
+}
+
+/// The kind of primitive a finding names: `triangles`, `lines`, `polygons`, or `none`.
+fn primitive_kind(f: &crate::oracle::PixelFinding) -> String {
+    f.primitive
+        .as_deref()
+        .and_then(|n| n.split('[').next())
+        .unwrap_or("none")
+        .to_string()
 }
