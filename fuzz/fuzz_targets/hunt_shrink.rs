@@ -24,7 +24,7 @@ use libfuzzer_sys::fuzz_target;
 use rasterproof::convention::{Preset, TieRule};
 use rasterproof::model::{render, Model};
 use rasterproof::oracle::hunt::{
-    generate_scene, hunt, judge, primitive_count, rust_test, shrink, signatures, SceneFamily, HuntConfig, HuntFinding,
+    generate_scene, hunt, judge, pixel_kinds, primitive_count, rust_test, shrink, signatures, SceneFamily, HuntConfig, HuntFinding,
     HuntVerdict,
 };
 use rasterproof::oracle::program::{RenderFailure, FailureKind};
@@ -158,6 +158,7 @@ fuzz_target!(|input: Input| {
         );
         let verdict = judge(&minimal, wrong_render(input.wrong, &minimal), config.model);
         let finding = HuntFinding {
+            kinds: pixel_kinds(&verdict, &signature),
             signature: signature.clone(),
             case: u64::from(input.case),
             cases: 1,
