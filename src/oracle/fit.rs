@@ -272,13 +272,30 @@ pub fn fit(primitives: &Primitives, target: &Target, theirs: &Theirs) -> Result<
     for s in snappings() {
         let scene = snapped(primitives, s);
         for pixel_centre in [PixelCentre::Half, PixelCentre::Corner] {
+            let candidate = |tie_rule| Candidate {
+                tie_rule,
+                snapping: s,
+                pixel_centre,
+            };
+            // Every rule covers at least what all-exclusive covers and at most what
+            // all-inclusive covers, primitive by primitive: when those two images are
+            // equal, no sample lies on an edge and every rule draws that same image,
+            // which is then rendered once, not six times.
+            let inclusive = image(&scene, target, &candidate(AnyTieRule::AllInclusive)).map_err(FitError::Model)?;
+            let exclusive = match inclusive {
+                Some(_) => image(&scene, target, &candidate(AnyTieRule::AllExclusive)).map_err(FitError::Model)?,
+                None => None,
+            };
+            let no_ties = inclusive.is_some() && inclusive == exclusive;
             for tie_rule in AnyTieRule::ALL {
-                let candidate = Candidate {
-                    tie_rule,
-                    snapping: s,
-                    pixel_centre,
+                let candidate = candidate(tie_rule);
+                let ours = match tie_rule {
+                    _ if no_ties => inclusive.clone(),
+                    AnyTieRule::AllInclusive => inclusive.clone(),
+                    AnyTieRule::AllExclusive => exclusive.clone(),
+                    _ => image(&scene, target, &candidate).map_err(FitError::Model)?,
                 };
-                let Some(ours) = image(&scene, target, &candidate).map_err(FitError::Model)? else {
+                let Some(ours) = ours else {
                     skipped += 1;
                     continue;
                 };
