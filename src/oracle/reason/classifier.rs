@@ -509,3 +509,64 @@ fn tie(shape: &Shape, p: &Point, rule: TieRule, theirs_covers: bool) -> Option<R
         Shape::Bresenham { .. } | Shape::Diamond { .. } => None,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::convention::Convention;
+    use crate::geom::Triangle;
+    use crate::model::prepare;
+
+    /// The bound of [`Classifier::may_move_across`] is sound: wherever it says a snapping
+    /// cannot move the triangle's boundary across a sample, the triangle snapped that way
+    /// covers the sample exactly when the oracle's does. Triangles with vertices on a
+    /// 1/1000 px grid (far from every coarse grid, so each snapping moves them by nearly
+    /// its whole step), every sample of an 8x8 canvas, every snapping the search tries;
+    /// under the snapping oracle (its own 8-bit move adds to the bound) and the unsnapped
+    /// one.
+    #[test]
+    fn a_snapping_the_bound_skips_never_changes_the_answer() {
+        let mut seed: u64 = 0x9e37_79b9_7f4a_7c15;
+        let mut next = |n: i64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            i64::try_from(seed % u64::try_from(n).unwrap()).unwrap()
+        };
+        let target = Target::new(8, 8, Convention::default()).unwrap();
+        let mut skipped = 0usize;
+        for _ in 0..24 {
+            let mut v = || {
+                Point::new(
+                    BigRational::new(next(8000).into(), 1000.into()),
+                    BigRational::new(next(8000).into(), 1000.into()),
+                )
+            };
+            let t = Triangle::new(v(), v(), v());
+            let primitives = Primitives::from_triangles(&[t]);
+            for model in [Model::ExactSnapped, Model::Exact] {
+                let Ok(prepared) = prepare(&primitives, &target, model) else {
+                    continue;
+                };
+                let shapes = prepared.shapes().unwrap();
+                let mut c = Classifier::new(&primitives, &target, model, &shapes);
+                let snappings: Vec<Snapping> = c.own_grid.iter().chain(&c.other_snappings).copied().collect();
+                for (x, y) in (0..8).flat_map(|y| (0..8).map(move |x| (x, y))) {
+                    let p = sample_exact(x, y, &target);
+                    let oracle = c.covers(0, &shapes[0], x, y, &target, true);
+                    let d2 = shape_distance2(&shapes[0], &p, [i64::from(x), i64::from(y)]);
+                    for &s in &snappings {
+                        if !c.may_move_across(0, s, &d2) {
+                            skipped += 1;
+                            assert!(
+                                c.snapping_gives(0, s, x, y, oracle),
+                                "{s:?} flips ({x}, {y}) at distance² {d2}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+        assert!(skipped > 10_000, "the bound skipped only {skipped} tests");
+    }
+}
