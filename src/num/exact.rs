@@ -7,7 +7,7 @@ use std::fmt;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, Zero};
 
 /// The longest number text accepted, in characters. Longer texts are refused so that a
 /// hostile scene cannot make the exact model allocate without bound.
@@ -345,7 +345,7 @@ pub fn decimal_pair_text(x: &BigRational, y: &BigRational) -> String {
         (Some(a), Some(b)) => format!(" = ({a}, {b})"),
         _ => {
             let approx = |v: &BigRational| {
-                let f = v.to_f64().unwrap_or(f64::NAN);
+                let f = nearest_f64(v).unwrap_or(f64::NAN);
                 let s = format!("{f:.6}");
                 s.trim_end_matches('0').trim_end_matches('.').to_string()
             };

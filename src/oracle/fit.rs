@@ -289,11 +289,15 @@ pub fn fit(primitives: &Primitives, target: &Target, theirs: &Theirs) -> Result<
             let no_ties = inclusive.is_some() && inclusive == exclusive;
             for tie_rule in AnyTieRule::ALL {
                 let candidate = candidate(tie_rule);
+                let rendered;
                 let ours = match tie_rule {
-                    _ if no_ties => inclusive.clone(),
-                    AnyTieRule::AllInclusive => inclusive.clone(),
-                    AnyTieRule::AllExclusive => exclusive.clone(),
-                    _ => image(&scene, target, &candidate).map_err(FitError::Model)?,
+                    _ if no_ties => inclusive.as_ref(),
+                    AnyTieRule::AllInclusive => inclusive.as_ref(),
+                    AnyTieRule::AllExclusive => exclusive.as_ref(),
+                    _ => {
+                        rendered = image(&scene, target, &candidate).map_err(FitError::Model)?;
+                        rendered.as_ref()
+                    }
                 };
                 let Some(ours) = ours else {
                     skipped += 1;
@@ -309,7 +313,7 @@ pub fn fit(primitives: &Primitives, target: &Target, theirs: &Theirs) -> Result<
                 } else {
                     None
                 };
-                let differing = count_differences(&ours, theirs, stop);
+                let differing = count_differences(ours, theirs, stop);
                 let fit = Fit { candidate, differing };
                 if fit.total() == 0 {
                     exact.push(candidate);

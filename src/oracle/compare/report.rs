@@ -9,7 +9,7 @@ use serde_json::{json, Value};
 
 use super::pixel::point_text;
 use super::{DiffPixel, PixelKind};
-use crate::convention::{AnyTieRule, Convention, Rounding};
+use crate::convention::Convention;
 use crate::coverage::picture::{upscale, Scale};
 use crate::coverage::Coverage;
 use crate::model::Model;
@@ -80,68 +80,49 @@ impl CompareReport {
             .flat_map(|p| &p.findings)
             .map(|f| &f.reason)
             .collect();
-        let first = findings.first()?;
-        // The values every finding's list shares, in the first finding's order.
-        fn shared<T: PartialEq + Copy>(lists: &[&[T]]) -> Vec<T> {
-            lists[0]
-                .iter()
-                .copied()
-                .filter(|v| lists.iter().all(|l| l.contains(v)))
-                .collect()
-        }
-        let what = match first {
+        let or = |names: Vec<String>| names.join(" or ");
+        let what = match findings.first()? {
             Reason::Tie { .. } => {
-                let lists: Option<Vec<&[AnyTieRule]>> = findings
-                    .iter()
-                    .map(|r| match r {
-                        Reason::Tie { rules, .. } => Some(rules.as_slice()),
-                        _ => None,
-                    })
-                    .collect();
-                let rules = shared(&lists?);
-                let names: Vec<&str> = rules.iter().map(|r| r.name()).collect();
-                (!names.is_empty()).then(|| format!("the tie rule {}", names.join(" or ")))?
+                let rules = shared_by_all(&findings, |r| match r {
+                    Reason::Tie { rules, .. } => Some(rules.as_slice()),
+                    _ => None,
+                })?;
+                format!(
+                    "the tie rule {}",
+                    or(rules.iter().map(|r| r.name().to_string()).collect())
+                )
             }
             Reason::SamplePosition { .. } => {
-                let lists: Option<Vec<&[[u8; 2]]>> = findings
-                    .iter()
-                    .map(|r| match r {
-                        Reason::SamplePosition { offsets } => Some(offsets.as_slice()),
-                        _ => None,
-                    })
-                    .collect();
-                let offsets = shared(&lists?);
-                let names: Vec<String> = offsets.iter().map(|o| offset_text(*o)).collect();
-                (!names.is_empty()).then(|| format!("the sample at {}", names.join(" or ")))?
+                let offsets = shared_by_all(&findings, |r| match r {
+                    Reason::SamplePosition { offsets } => Some(offsets.as_slice()),
+                    _ => None,
+                })?;
+                format!(
+                    "the sample at {}",
+                    or(offsets.iter().map(|o| offset_text(*o)).collect())
+                )
             }
-            Reason::Snapping { bits, .. } => {
-                let lists: Option<Vec<&[Rounding]>> = findings
+            Reason::Snapping { bits: None, .. } => {
+                let unsnapped = |r: &&Reason| matches!(r, Reason::Snapping { bits: None, .. });
+                findings
                     .iter()
-                    .map(|r| match r {
-                        Reason::Snapping { bits: b, roundings } if b == bits => Some(roundings.as_slice()),
-                        _ => None,
-                    })
-                    .collect();
-                let roundings = shared(&lists?);
-                let names: Vec<&str> = roundings.iter().map(|r| r.name()).collect();
-                match bits {
-                    Some(b) if !names.is_empty() => {
-                        format!("snapping to {b} subpixel bits, rounding {}", names.join(" or "))
-                    }
-                    None => "no snapping (vertices as written)".to_string(),
-                    _ => return None,
-                }
+                    .all(unsnapped)
+                    .then(|| "no snapping (vertices as written)".to_string())?
+            }
+            Reason::Snapping { bits: Some(b), .. } => {
+                let roundings = shared_by_all(&findings, |r| match r {
+                    Reason::Snapping { bits, roundings } if *bits == Some(*b) => Some(roundings.as_slice()),
+                    _ => None,
+                })?;
+                let names = or(roundings.iter().map(|r| r.name().to_string()).collect());
+                format!("snapping to {b} subpixel bits, rounding {names}")
             }
             Reason::LineRule { .. } => {
-                let lists: Option<Vec<&[&str]>> = findings
-                    .iter()
-                    .map(|r| match r {
-                        Reason::LineRule { rules } => Some(rules.as_slice()),
-                        _ => None,
-                    })
-                    .collect();
-                let rules = shared(&lists?);
-                (!rules.is_empty()).then(|| format!("the line rule {}", rules.join(" or ")))?
+                let rules = shared_by_all(&findings, |r| match r {
+                    Reason::LineRule { rules } => Some(rules.as_slice()),
+                    _ => None,
+                })?;
+                format!("the line rule {}", or(rules.iter().map(ToString::to_string).collect()))
             }
             _ => return None,
         };
@@ -440,6 +421,23 @@ fn their_text(t: &TheirPixel, format: Format) -> String {
         (Format::Ids, true) if t.several => format!("{} and others (several owners)", owners_text(&t.ids)),
         _ => owners_text(&t.ids),
     }
+}
+
+/// The values that every reason's list holds (`list` picks it: a tie's rules, a sample
+/// position's offsets, ...), in the first's order; `None` when some reason has no such list
+/// (it is of another class) or nothing is shared.
+fn shared_by_all<'r, T: PartialEq + Copy + 'r>(
+    reasons: &[&'r Reason],
+    list: impl Fn(&'r Reason) -> Option<&'r [T]>,
+) -> Option<Vec<T>> {
+    let lists: Vec<&[T]> = reasons.iter().map(|r| list(r)).collect::<Option<_>>()?;
+    let first = lists.first()?;
+    let shared: Vec<T> = first
+        .iter()
+        .copied()
+        .filter(|v| lists.iter().all(|l| l.contains(v)))
+        .collect();
+    (!shared.is_empty()).then_some(shared)
 }
 
 /// A reason in words.

@@ -119,6 +119,8 @@ pub struct Classifier<'a> {
     snapped_shapes: HashMap<(usize, Snapping), Option<Shape>>,
     unclipped_shapes: HashMap<usize, Option<Shape>>,
     line_pixels: HashMap<(usize, &'static str), HashSet<[i64; 2]>>,
+    /// [`Classifier::reach2`], per number of bits.
+    reach2: Option<Vec<BigRational>>,
 }
 
 impl<'a> Classifier<'a> {
@@ -139,6 +141,7 @@ impl<'a> Classifier<'a> {
             snapped_shapes: HashMap::new(),
             unclipped_shapes: HashMap::new(),
             line_pixels: HashMap::new(),
+            reach2: Self::reach2(primitives, target, model),
         }
     }
 
@@ -270,20 +273,32 @@ impl<'a> Classifier<'a> {
     /// lines, the unsnapped alternative, and scenes with a clip window or clip-space
     /// triangles (whose clipped shapes this bound does not cover).
     fn may_move_across(&self, id: usize, s: Snapping, distance2: &BigRational) -> bool {
-        let Some(bits) = s.bits else { return true };
-        let bounded = matches!(self.shapes[id], Shape::Triangle(_) | Shape::Polygon(_))
-            && self.primitives.clip.is_none()
-            && self.primitives.clip_space_triangles.is_empty();
-        if !bounded {
+        let (Some(bits), Some(reach2)) = (s.bits, &self.reach2) else {
             return true;
+        };
+        !matches!(self.shapes[id], Shape::Triangle(_) | Shape::Polygon(_)) || *distance2 <= reach2[bits as usize]
+    }
+
+    /// [`Classifier::may_move_across`]'s bound for each number of bits `b` in
+    /// `0..=MAX_SUBPIXEL_BITS`, squared, `2 (2^-b + 2^-o)^2`, computed once; `None` for a
+    /// scene with a clip window or clip-space triangles (the bound does not hold there).
+    fn reach2(primitives: &Primitives, target: &Target, model: Model) -> Option<Vec<BigRational>> {
+        if primitives.clip.is_some() || !primitives.clip_space_triangles.is_empty() {
+            return None;
         }
         let step = |b: u32| BigRational::new(BigInt::one(), BigInt::one() << b);
-        let mut reach = step(bits);
-        if self.model.snaps() {
-            reach += step(self.target.convention.subpixel_bits);
-        }
-        // distance2 <= 2 reach^2: the sample may be crossed.
-        *distance2 <= BigRational::from_integer(2.into()) * &reach * &reach
+        let own = if model.snaps() {
+            step(target.convention.subpixel_bits)
+        } else {
+            BigRational::zero()
+        };
+        let reach2 = (0..=crate::num::MAX_SUBPIXEL_BITS)
+            .map(|b| {
+                let reach = step(b) + &own;
+                BigRational::from_integer(2.into()) * &reach * &reach
+            })
+            .collect();
+        Some(reach2)
     }
 
     /// Whether primitive `id` under snapping `s` gives their answer.
