@@ -43,6 +43,14 @@ impl TieRule {
         }
     }
 
+    /// The move this rule tests the sample with (see [`MovedSample`]).
+    pub fn moved_sample(self) -> MovedSample {
+        MovedSample {
+            right: true,
+            down: self == TieRule::TopLeft,
+        }
+    }
+
     /// Whether an edge owns the samples on it. This is the one place the flag is derived;
     /// every model (exact, integer, float-with-rule) calls it with the signs of its own
     /// edge vector `(dx, dy) = b - a`, for an edge oriented so the interior is `E > 0`.
@@ -136,20 +144,47 @@ impl AnyTieRule {
     /// assert!(!AnyTieRule::TopRight.is_inclusive(Greater, Equal));
     /// ```
     pub fn is_inclusive(self, dx: Ordering, dy: Ordering) -> bool {
-        let (sx, sy) = match self {
-            AnyTieRule::AllInclusive => return true,
-            AnyTieRule::AllExclusive => return false,
-            AnyTieRule::TopLeft => (Ordering::Greater, Ordering::Greater),
-            AnyTieRule::BottomLeft => (Ordering::Greater, Ordering::Less),
-            AnyTieRule::TopRight => (Ordering::Less, Ordering::Greater),
-            AnyTieRule::BottomRight => (Ordering::Less, Ordering::Less),
+        let Some(moved) = self.moved_sample() else {
+            return self == AnyTieRule::AllInclusive;
         };
         // sign(sx * dy), or when dy is 0, sign(-sy * dx).
         match dy {
-            Ordering::Equal => dx != Ordering::Equal && (dx == Ordering::Less) == (sy == Ordering::Greater),
-            _ => (dy == Ordering::Greater) == (sx == Ordering::Greater),
+            Ordering::Equal => dx != Ordering::Equal && (dx == Ordering::Less) == moved.down,
+            _ => (dy == Ordering::Greater) == moved.right,
         }
     }
+
+    /// The move of a directional rule, `(sx ε, sy ε²)`; `None` for all-inclusive and
+    /// all-exclusive, which no single move stands for (they ask whether the sample is in
+    /// the closed or the open shape).
+    ///
+    /// ```
+    /// use rasterproof::convention::{AnyTieRule, MovedSample};
+    /// assert_eq!(AnyTieRule::BottomRight.moved_sample(), Some(MovedSample { right: false, down: false }));
+    /// assert_eq!(AnyTieRule::AllInclusive.moved_sample(), None);
+    /// ```
+    pub fn moved_sample(self) -> Option<MovedSample> {
+        let (right, down) = match self {
+            AnyTieRule::AllInclusive | AnyTieRule::AllExclusive => return None,
+            AnyTieRule::TopLeft => (true, true),
+            AnyTieRule::BottomLeft => (true, false),
+            AnyTieRule::TopRight => (false, true),
+            AnyTieRule::BottomRight => (false, false),
+        };
+        Some(MovedSample { right, down })
+    }
+}
+
+/// How a directional tie rule moves the sample before testing it: by `(±ε, ±ε²)` for an
+/// infinitesimal `ε > 0`, so the moved sample lies on no edge of positive length. Top-left
+/// moves it right and down (in a y-down image): the edges left of and above the sample
+/// then hold it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct MovedSample {
+    /// `+ε` in x (the left rules); `-ε` otherwise (the right rules).
+    pub right: bool,
+    /// `+ε²` in y, down the image (the top rules); `-ε²` otherwise (the bottom rules).
+    pub down: bool,
 }
 
 impl From<TieRule> for AnyTieRule {

@@ -50,6 +50,10 @@ const NO_TIES: &str = include_str!("../adapters/scenes/no-ties.json");
 /// square split along a diagonal (alternating): every edge runs through samples.
 const TIE_GRID: &str = include_str!("../adapters/scenes/tie-grid.json");
 
+/// Four polygons on a 10x10 canvas (a square, a triangle, an L and an even-odd diamond),
+/// vertices on pixel centres: axis-aligned and 45-degree edges run through samples.
+const POLYGON_TIES: &str = include_str!("../adapters/scenes/polygon-ties.json");
+
 /// An 8x8 mesh of 8 px cells on a 64x64 canvas, interior vertices moved off the grid by
 /// multiples of 1/4096 px (up to 1.5 px), no overlaps.
 const FINE_MESH: &str = include_str!("../adapters/scenes/fine-mesh.json");
@@ -242,6 +246,30 @@ fn tiny_skia_follows_bottom_right_and_its_edge_walk() {
         assert_eq!(code, 1);
         only_ties_explained_by(&report, "bottom-right", &format!("tiny-skia against {preset}"));
     }
+}
+
+/// tiny-skia's polygon ties are bottom-right, as its triangles' are: `--fit` names that
+/// rule alone for a polygon scene whose edges run through samples (every exact fit is
+/// bottom-right), and against the `gl` preset every difference is a tie that
+/// bottom-right explains. Before the polygon engines had the six rules no convention fit.
+#[test]
+fn tiny_skia_polygons_follow_bottom_right() {
+    let adapter = tiny_skia_adapter();
+    let dir = tempdir::Dir::new("adapters-tiny-skia-polygons");
+    let scene = write(&dir, "polygon-ties.json", POLYGON_TIES);
+    let out = dir.path().join("polygon-ties.png");
+    tiny_skia(&adapter, &scene, &out);
+    let (code, report) = compare(&scene, &out, &["--fit"]);
+    assert_eq!(code, 0, "{report}");
+    let exact = report["exact"].as_array().expect("exact fits");
+    assert!(!exact.is_empty(), "{report}");
+    assert!(report["not_searched"].is_null(), "{report}");
+    for fit in exact {
+        assert_eq!(fit["tie_rule"], "bottom-right", "{report}");
+    }
+    let (code, report) = compare(&scene, &out, &["--preset", "gl"]);
+    assert_eq!(code, 1);
+    only_ties_explained_by(&report, "bottom-right", "tiny-skia's polygons against gl");
 }
 
 #[test]

@@ -16,9 +16,9 @@ use proptest::prelude::*;
 use proptest::test_runner::Config;
 use rasterproof::check::differing_pixels;
 use rasterproof::clip::sutherland_hodgman::clip_polygon;
-use rasterproof::convention::{PixelCentre, Preset, Target};
+use rasterproof::convention::{AnyTieRule, PixelCentre, Preset, Target};
 use rasterproof::coverage::Coverage;
-use rasterproof::fill::polygon::{rasterize_exact, PlannedPolygon};
+use rasterproof::fill::polygon::{rasterize_exact, rasterize_exact_with, PlannedPolygon};
 use rasterproof::geom::{FillRule, Point, Polygon};
 use rasterproof::line::exact::rasterize_diamond;
 use rasterproof::line::planned::PlannedSegment;
@@ -144,6 +144,27 @@ fn rational_polygon(side: i64) -> impl Strategy<Value = Polygon> {
 /// A triangle with one edge from (0, 0) to (1, m): its divisor is `L dy' = m` (L = 1 with
 /// corner samples and integer vertices; gcd(1, m) = 1), the edge steps over rows 1..=15
 /// of a 16x16 canvas, and the other edges' divisors are at most m.
+/// Polygons of 3 to 8 vertices on the half-pixel grid of a 16x16 canvas, a vertex often
+/// at the height or the abscissa of the one before it: horizontal and vertical edges on
+/// sample rows and columns, vertices on samples (ties everywhere, under either sample
+/// position); nonzero or even-odd.
+fn half_grid_polygon() -> impl Strategy<Value = Polygon> {
+    let vertex = (-2i64..=34, -2i64..=34, 0u8..4);
+    (prop::collection::vec(vertex, 3..=8), any::<bool>()).prop_map(|(raw, even_odd)| {
+        let mut v: Vec<(i64, i64)> = Vec::new();
+        for (x, y, keep) in raw {
+            let prev = v.last().copied();
+            v.push(match (prev, keep) {
+                (Some((_, py)), 0) => (x, py),
+                (Some((px, _)), 1) => (px, y),
+                _ => (x, y),
+            });
+        }
+        let outline = v.iter().map(|&(x, y)| Point::from_fractions(x, 2, y, 2)).collect();
+        Polygon::new(outline, if even_odd { FillRule::EvenOdd } else { FillRule::NonZero })
+    })
+}
+
 fn tall_triangle(m: &BigInt) -> Polygon {
     let p = |x: i64, y: &BigInt| Point::new(BigRational::from_integer(x.into()), big(y));
     Polygon::new(
@@ -259,6 +280,42 @@ proptest! {
     ) {
         let cut = clip_polygon(&poly, &window);
         check_polygon(&cut, &target_with(24, preset, corner))?;
+    }
+
+    /// Under each of the six tie rules the planned fill equals the oracle's in every width
+    /// that holds its bound: the directional rules through the edge table, all-inclusive
+    /// and all-exclusive through the samples on edges decided apart. Polygons on the
+    /// half-pixel grid (samples on edges and vertices everywhere) and with rational
+    /// vertices, both fill rules, centre and corner samples.
+    #[test]
+    fn planned_polygon_equals_oracle_under_every_rule(
+        poly in prop_oneof![any_polygon(16, 8), half_grid_polygon()],
+        rule in prop::sample::select(AnyTieRule::ALL.to_vec()),
+        corner in any::<bool>(),
+        width in prop::sample::select(Width::ALL.to_vec()),
+    ) {
+        let target = target_with(16, Preset::D3d11, corner);
+        let mut want = Coverage::new(16, 16);
+        rasterize_exact_with(&poly, 0, &target, rule, &mut want);
+        let planned = PlannedPolygon::with_rule(&poly, &target, rule);
+        prop_assert_eq!(differing_pixels(&want, &planned_fill(planned.as_ref(), &target)), vec![], "{:?} {:?}", rule, poly);
+        if let Ok(forced) = PlannedPolygon::forced_with_rule(&poly, &target, rule, width) {
+            prop_assert_eq!(differing_pixels(&want, &planned_fill(forced.as_ref(), &target)), vec![], "{:?} in {}", rule, width);
+        }
+    }
+
+    /// The same on rational vertices (denominators 1, 2, 3, 7, 256, 1000).
+    #[test]
+    fn planned_polygon_equals_oracle_under_every_rule_on_rational_vertices(
+        poly in rational_polygon(12),
+        rule in prop::sample::select(AnyTieRule::ALL.to_vec()),
+        corner in any::<bool>(),
+    ) {
+        let target = target_with(12, Preset::D3d11, corner);
+        let mut want = Coverage::new(12, 12);
+        rasterize_exact_with(&poly, 0, &target, rule, &mut want);
+        let planned = PlannedPolygon::with_rule(&poly, &target, rule);
+        prop_assert_eq!(differing_pixels(&want, &planned_fill(planned.as_ref(), &target)), vec![], "{:?} {:?}", rule, poly);
     }
 
     /// Every width on small polygons: all six when the bound is within 2^24.

@@ -8,10 +8,11 @@ use crate::common;
 
 use common::config;
 use proptest::prelude::*;
+use rasterproof::check::triangle_covers;
 use rasterproof::check::{check_agreement, check_no_double_cover, differing_pixels};
-use rasterproof::convention::{PixelCentre, Preset, Target};
+use rasterproof::convention::{AnyTieRule, Convention, PixelCentre, Preset, Target};
 use rasterproof::coverage::Coverage;
-use rasterproof::fill::polygon::{rasterize, rasterize_exact};
+use rasterproof::fill::polygon::{contains_exact_with, rasterize, rasterize_exact, rasterize_exact_with};
 use rasterproof::fill::triangulate::{triangulate, validate, TriangulateError};
 use rasterproof::geom::{FillRule, FixedPolygon, Point, Polygon, Triangle};
 use rasterproof::model::{render, Model, Primitives};
@@ -215,6 +216,34 @@ proptest! {
         rasterproof::tri::exact::rasterize(&t, 0, &target, &mut a);
         rasterize_exact(&poly, 0, &target, &mut b);
         prop_assert_eq!(differing_pixels(&a, &b), vec![]);
+    }
+
+    /// Under each of the six tie rules, the polygon oracle on a triangle decides every
+    /// sample as the triangle's edge functions with that rule's inclusive flags do
+    /// (all-inclusive: the closed triangle; all-exclusive: the open one), either winding,
+    /// either fill rule, on the half-pixel grid where samples lie on edges and vertices.
+    #[test]
+    fn triangle_as_polygon_equals_triangle_under_every_rule(
+        t in half_grid_triangle(),
+        rule in prop::sample::select(AnyTieRule::ALL.to_vec()),
+        reversed in any::<bool>(),
+        even_odd in any::<bool>(),
+    ) {
+        let mut v = t.v.to_vec();
+        if reversed {
+            v.reverse();
+        }
+        let poly = Polygon::new(v, if even_odd { FillRule::EvenOdd } else { FillRule::NonZero });
+        for y in -2..=18i64 {
+            for x in -2..=18i64 {
+                let p = Point::from_fractions(x, 2, y, 2);
+                prop_assert_eq!(
+                    contains_exact_with(&p, &poly, rule),
+                    triangle_covers(&t, &p, rule),
+                    "{:?} at ({}/2, {}/2) of {:?}", rule, x, y, t
+                );
+            }
+        }
     }
 
     /// The active-edge-table filler equals the oracle on the same snapped polygon: simple,
@@ -448,4 +477,71 @@ fn review_case_01_bow_tie_with_a_hole_clipped() {
         differing_pixels(&clipped, &fill(&p, &target, Model::Scanline).restricted(9, 0, 16, 16)),
         vec![]
     );
+}
+
+/// All-inclusive and all-exclusive on a polygon are its closed and its open region, by
+/// hand, with samples at pixel corners (integer coordinates):
+/// - the pentagram's horizontal edge y = 35 runs from (2, 35) to (98, 35); the sample
+///   (50, 35) lies on it between the top tip (winding 1, above) and the centre pentagon
+///   (winding 2, below). Under nonzero both sides are inside, so the sample is in the open
+///   region too: both rules cover it. Under even-odd the centre is outside, so the sample
+///   is on the region's boundary: all-inclusive covers it, all-exclusive does not; the
+///   top rules move it down into the centre (outside), the bottom rules up into the tip;
+/// - the top vertex (50, 0) is a sample: the closed region holds it under either fill
+///   rule, the open one does not, and no directional rule does (moved by (±ε, ±ε²) it
+///   leaves the tip, whose sides rise at 90/29 to the vertex);
+/// - the sample (4, 35) on the same edge but left of the pentagram's inner crossing lies
+///   between the left arm (winding 1, below: x on the edge (79,90)->(2,35) at y = 35 + δ
+///   is 2 + 77 δ / 55 < 4) and the outside (above): on the boundary under both fill
+///   rules, held by the top rules (moved down) and not by the bottom ones.
+#[test]
+fn closed_and_open_polygon_by_hand() {
+    let at = |fill: FillRule, x: i64, y: i64, rule: AnyTieRule| {
+        contains_exact_with(&Point::from_ints(x, y), &pentagram(fill), rule)
+    };
+    for fill in [FillRule::NonZero, FillRule::EvenOdd] {
+        assert!(at(fill, 50, 0, AnyTieRule::AllInclusive), "{fill:?}");
+        assert!(!at(fill, 50, 0, AnyTieRule::AllExclusive), "{fill:?}");
+        for rule in &AnyTieRule::ALL[..4] {
+            assert!(!at(fill, 50, 0, *rule), "{fill:?} {rule:?}");
+        }
+        assert!(at(fill, 4, 35, AnyTieRule::AllInclusive), "{fill:?}");
+        assert!(!at(fill, 4, 35, AnyTieRule::AllExclusive), "{fill:?}");
+        // the top rules move it down into the arm, the bottom rules up out of it
+        assert!(at(fill, 4, 35, AnyTieRule::TopLeft) && at(fill, 4, 35, AnyTieRule::TopRight));
+        assert!(!at(fill, 4, 35, AnyTieRule::BottomLeft) && !at(fill, 4, 35, AnyTieRule::BottomRight));
+    }
+    for rule in AnyTieRule::ALL {
+        assert!(at(FillRule::NonZero, 50, 35, rule), "{rule:?}");
+    }
+    let even_odd = |rule| at(FillRule::EvenOdd, 50, 35, rule);
+    assert!(even_odd(AnyTieRule::AllInclusive) && !even_odd(AnyTieRule::AllExclusive));
+    assert!(!even_odd(AnyTieRule::TopLeft) && !even_odd(AnyTieRule::TopRight));
+    assert!(even_odd(AnyTieRule::BottomLeft) && even_odd(AnyTieRule::BottomRight));
+    // The whole image: under nonzero the open region loses exactly the samples on the
+    // outer boundary and the closed one gains them, so all-inclusive minus all-exclusive
+    // is the samples on the ten outer segments, and no directional rule leaves that band.
+    let target = Target::new(
+        100,
+        91,
+        Convention {
+            pixel_centre: PixelCentre::Corner,
+            ..Convention::default()
+        },
+    )
+    .unwrap();
+    let image = |rule| {
+        let mut c = Coverage::new(100, 91);
+        rasterize_exact_with(&pentagram(FillRule::NonZero), 0, &target, rule, &mut c);
+        c
+    };
+    let (closed, open) = (image(AnyTieRule::AllInclusive), image(AnyTieRule::AllExclusive));
+    for rule in &AnyTieRule::ALL[..4] {
+        let c = image(*rule);
+        assert!(c.covered_pixels() > open.covered_pixels() && c.covered_pixels() < closed.covered_pixels());
+        // open ⊆ c ⊆ closed
+        assert!(differing_pixels(&c, &open)
+            .iter()
+            .all(|d| d.reference == [0] && closed.owners(d.x, d.y) == [0]));
+    }
 }

@@ -6,9 +6,9 @@
 //! with each [`Rounding`], or no snapping; the sample at the pixel centre or its corner —
 //! 6 x (17 x 5 + 1) x 2 = 1032 conventions. Each is rendered exactly: the scene's vertices
 //! snapped by the candidate (exactly, [`crate::num::fixed::snap`]), then the planned exact
-//! engine; triangles take any of the six rules ([`PlannedTriangle::with_rule`]); polygons
-//! and clip windows follow the two directional rules the polygon engines implement
-//! (top-left, bottom-left), so a scene with either is searched over those two only.
+//! engine; triangles and polygons take any of the six rules ([`PlannedTriangle::with_rule`],
+//! [`PlannedPolygon::with_rule`]); a scene with a clip window only over the two rules the
+//! models render (top-left, bottom-left), which its clipped pieces follow.
 //! Scenes with clip-space triangles are refused (their window-space vertices exist only
 //! after clipping; compare them under a stated convention).
 
@@ -23,6 +23,7 @@ use super::reason::Snapping;
 use super::theirs::Theirs;
 use crate::convention::{AnyTieRule, Convention, PixelCentre, Target, TieRule};
 use crate::coverage::{Coverage, CoverageSink};
+use crate::fill::polygon::PlannedPolygon;
 use crate::geom::{Point, Polygon, Triangle};
 use crate::line::{Line, LineRule};
 use crate::model::{prepare, Model, ModelError, Primitives};
@@ -85,8 +86,8 @@ pub struct FitReport {
     pub closest: Vec<Fit>,
     /// How many conventions were rendered.
     pub searched: usize,
-    /// Why some were not (a scene with polygons or a window: the four non-directional or
-    /// right-hand rules), with how many.
+    /// Why some were not (a scene with a clip window: the four rules other than top-left
+    /// and bottom-left), with how many.
     pub not_searched: Option<(usize, String)>,
 }
 
@@ -194,7 +195,7 @@ impl CoverageSink for Offset<'_> {
 }
 
 /// The exact image of `primitives` (already snapped) under `candidate`; `Ok(None)` when
-/// the candidate's rule does not apply to the scene's polygons or window.
+/// the candidate's rule does not apply to the scene's clip window.
 fn image(primitives: &Primitives, target: &Target, candidate: &Candidate) -> Result<Option<Coverage>, ModelError> {
     let directional = match candidate.tie_rule {
         AnyTieRule::TopLeft => Some(TieRule::TopLeft),
@@ -213,7 +214,7 @@ fn image(primitives: &Primitives, target: &Target, candidate: &Candidate) -> Res
     if directional.is_some() {
         return Ok(Some(prepare(primitives, &t, Model::Exact)?.coverage(&t)));
     }
-    if !primitives.polygons.is_empty() || primitives.clip.is_some() {
+    if primitives.clip.is_some() {
         return Ok(None);
     }
     let mut coverage = Coverage::new(t.width, t.height);
@@ -229,6 +230,12 @@ fn image(primitives: &Primitives, target: &Target, candidate: &Candidate) -> Res
         };
         let offset = u32::try_from(primitives.triangles.len()).expect("ids fit u32");
         prepare(&lines, &t, Model::Exact)?.render(&t, &mut Offset(&mut coverage, offset));
+    }
+    let first_polygon = primitives.triangles.len() + primitives.lines.len();
+    for (k, poly) in primitives.polygons.iter().enumerate() {
+        if let Some(p) = PlannedPolygon::with_rule(poly, &t, candidate.tie_rule) {
+            p.rasterize(u32::try_from(first_polygon + k).expect("ids fit u32"), &mut coverage);
+        }
     }
     Ok(Some(coverage))
 }
@@ -335,8 +342,8 @@ pub fn fit(primitives: &Primitives, target: &Target, theirs: &Theirs) -> Result<
         not_searched: (skipped > 0).then(|| {
             (
                 skipped,
-                "top-right, bottom-right, all-inclusive and all-exclusive apply to triangles and lines only; \
-                 the scene has polygons or a clip window"
+                "top-right, bottom-right, all-inclusive and all-exclusive are not searched with a clip \
+                 window (which edges of the clipped pieces own their samples is the window's own question)"
                     .to_string(),
             )
         }),

@@ -27,7 +27,7 @@
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
-use crate::convention::{Target, TieRule};
+use crate::convention::{MovedSample, Target};
 use crate::coverage::CoverageSink;
 use crate::edge::exact::edge_function;
 use crate::geom::{FillRule, Point};
@@ -38,7 +38,7 @@ pub mod planned;
 mod rows;
 mod scanline;
 
-pub use exact::{contains_exact, contour_winding_exact, rasterize_exact};
+pub use exact::{contains_exact, contains_exact_with, contour_winding_exact, rasterize_exact, rasterize_exact_with};
 pub use float::{contour_winding_f32, contour_winding_f64, rasterize_f32, rasterize_f64, PolygonF32, PolygonF64};
 pub use planned::PlannedPolygon;
 pub use rows::rasterize_rows_exact;
@@ -56,13 +56,14 @@ pub fn area2_exact(contour: &[Point]) -> BigRational {
 }
 
 /// Whether the edge `a -> b` crosses the row of a moved sample at height `y`: never when
-/// horizontal; otherwise `min <= y < max` (top-left: the sample moves down by ε²) or
-/// `min < y <= max` (bottom-left).
-fn crosses_moved_row(a: &Point, b: &Point, y: &BigRational, rule: TieRule) -> bool {
+/// horizontal; otherwise `min <= y < max` (the top rules: the sample moves down by ε²) or
+/// `min < y <= max` (the bottom rules).
+fn crosses_moved_row(a: &Point, b: &Point, y: &BigRational, moved: MovedSample) -> bool {
     let (lo, hi) = if a.y <= b.y { (&a.y, &b.y) } else { (&b.y, &a.y) };
-    match rule {
-        TieRule::TopLeft => lo <= y && y < hi,
-        TieRule::BottomLeft => lo < y && y <= hi,
+    if moved.down {
+        lo <= y && y < hi
+    } else {
+        lo < y && y <= hi
     }
 }
 

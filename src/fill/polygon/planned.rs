@@ -15,12 +15,19 @@
 //! Each edge with `dy != 0`, oriented downwards (top `t`, `(dx, dy) = bottom - t`,
 //! `dy > 0`), reduced by `g = gcd(dx, dy)` (`dx' = dx / g`, `dy' = dy / g`), crosses the
 //! rows of the module's crossing rule (`crosses_moved_row`): `t.y <= j L < bottom.y` under
-//! top-left, `t.y < j L <= bottom.y` under bottom-left, clamped to `0..=h`. On row `j` the
-//! crossing is right of pixel `i`'s moved sample exactly when `E(i L, j L) < 0` for the
-//! downward edge (`E = 0` moves the sample right of the crossing), so pixels
-//! `i >= θ_j = ceil(N_j / d)` are at or right of it, with
+//! the top rules, `t.y < j L <= bottom.y` under the bottom rules, clamped to `0..=h`. On
+//! row `j` the crossing is right of pixel `i`'s moved sample exactly when `E(i L, j L) < 0`
+//! for the downward edge under the left rules (`E = 0` moves the sample right of the
+//! crossing), so pixels `i >= θ_j = ceil(N_j / d)` are at or right of it, with
 //!
-//! `N_j = t.x dy' + (j L - t.y) dx'`, `d = L dy' > 0`, `N_{j+1} = N_j + L dx'`.
+//! `N_j = t.x dy' + (j L - t.y) dx'`, `d = L dy' > 0`, `N_{j+1} = N_j + L dx'`;
+//!
+//! under the right rules a sample on the crossing moves left of it, so `N_j` takes one
+//! more (`θ_j = floor(N_j / d) + 1 = ceil((N_j + 1) / d)`) and nothing else changes.
+//! All-inclusive and all-exclusive run the top-left table; the samples lying exactly on
+//! an edge are then found edge by edge at setup (those where `N_j` is a multiple of `d`,
+//! and those on horizontal edges along sample rows) and decided by the oracle's closure /
+//! interior test ([`PlannedPolygon::with_rule`]).
 //!
 //! The sweep of a row (the module's `Sweep`, shared with the scanline filler) only asks
 //! which crossings have `θ_j <= i` for pixels `i` of the range, so `θ_j` is clamped to
@@ -47,13 +54,14 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::Zero;
 
+use super::contains_exact_with;
 use super::{closed_edges, Crossing, Sweep};
-use crate::convention::{Target, TieRule};
+use crate::convention::{AnyTieRule, MovedSample, Target, TieRule};
 use crate::coverage::CoverageSink;
 use crate::geom::{FillRule, Point, Polygon};
 use crate::num::lane::{InWidth, Lane, LaneState, Planned};
 use crate::num::plan::{ceil_div, floor_div, index, indices_above, scale_of, scaled, Bound, Plan, Width};
-use crate::raster::{exact_sample_range, PixelRange};
+use crate::raster::{exact_sample_range, ExactGrid, PixelRange};
 
 /// One edge of the table, independent of the width: its rows, the constant thresholds
 /// outside its middle rows, and the DDA's start and integer step.
@@ -134,12 +142,16 @@ pub struct PlannedPolygon {
     contours: usize,
     fill_rule: FillRule,
     edges: Vec<TableEdge>,
+    /// Under all-inclusive and all-exclusive: the samples on an edge, `(row, column,
+    /// covered)`, sorted; they override the top-left table's answer.
+    on_edges: Vec<(u32, u32, bool)>,
     planned: Planned<PolygonLanes>,
 }
 
 /// The exact setup.
 struct PolygonSetup {
     range: PixelRange,
+    on_edges: Vec<(u32, u32, bool)>,
     scale: BigInt,
     edges: Vec<TableEdge>,
     remainders: Vec<Remainders<BigInt>>,
@@ -153,7 +165,7 @@ struct Frame {
     /// The range's last local column and row.
     w: i64,
     h: i64,
-    rule: TieRule,
+    moved: MovedSample,
 }
 
 impl Frame {
@@ -179,9 +191,10 @@ fn table_edge(
         Ordering::Greater => (b, a, 1),
     };
     let l = &f.scale;
-    let (first, last) = match f.rule {
-        TieRule::TopLeft => (ceil_div(&top[1], l), ceil_div(&bottom[1], l) - 1),
-        TieRule::BottomLeft => (floor_div(&top[1], l) + 1, floor_div(&bottom[1], l)),
+    let (first, last) = if f.moved.down {
+        (ceil_div(&top[1], l), ceil_div(&bottom[1], l) - 1)
+    } else {
+        (floor_div(&top[1], l) + 1, floor_div(&bottom[1], l))
     };
     let first = first.max(BigInt::zero());
     let last = last.min(BigInt::from(f.h));
@@ -194,7 +207,10 @@ fn table_edge(
     let (dx, dy) = (dx / &g, dy / &g);
     let d = l * &dy;
     let inc = l * &dx;
-    let n_at = |j: i64| &top[0] * &dy + (BigInt::from(j) * l - &top[1]) * &dx;
+    // A sample moved left (the right rules) is at or right of the crossing only when
+    // strictly right of it: `θ = floor(N / d) + 1 = ceil((N + 1) / d)`.
+    let moved_left = BigInt::from(i64::from(!f.moved.right));
+    let n_at = |j: i64| &top[0] * &dy + (BigInt::from(j) * l - &top[1]) * &dx + &moved_left;
     let n_first = n_at(first);
     let (w, zero) = (f.w, BigInt::zero());
     let wd = BigInt::from(w) * &d;
@@ -257,7 +273,59 @@ fn table_edge(
     Some((edge, Some(remainders)))
 }
 
-fn setup(poly: &Polygon, target: &Target) -> Option<PolygonSetup> {
+/// The samples of the range that lie exactly on an edge of some contour, `(x, y)` on the
+/// canvas, sorted by row then column, each once. A non-horizontal edge meets the sample
+/// row `j` at `x = N_j / dy'` (the table's `N_j`, unmoved), which is a sample's when `N_j`
+/// is a multiple of `d = L dy'`; a horizontal edge on a sample row holds the samples
+/// between its ends.
+fn on_edge_samples(poly: &Polygon, frame: &Frame, range: PixelRange) -> Vec<(u32, u32)> {
+    let l = &frame.scale;
+    let zero = BigInt::zero();
+    let clamped = |lo: BigInt, hi: BigInt, last: i64| {
+        let (lo, hi) = (lo.max(zero.clone()), hi.min(BigInt::from(last)));
+        (lo <= hi).then(|| index(&lo)..=index(&hi))
+    };
+    let mut local: Vec<(i64, i64)> = Vec::new();
+    for (a, b) in poly.contours().flat_map(closed_edges) {
+        let (a, b) = (frame.local(a), frame.local(b));
+        if a[1] == b[1] {
+            let (j, rem) = a[1].div_mod_floor(l);
+            let Some(rows) = clamped(j.clone(), j, frame.h) else {
+                continue;
+            };
+            let (lo, hi) = if a[0] <= b[0] { (&a[0], &b[0]) } else { (&b[0], &a[0]) };
+            if let (true, Some(columns)) = (rem.is_zero(), clamped(ceil_div(lo, l), floor_div(hi, l), frame.w)) {
+                local.extend(columns.map(|i| (*rows.start(), i)));
+            }
+            continue;
+        }
+        let (top, bottom) = if a[1] < b[1] { (a, b) } else { (b, a) };
+        let (dx, dy) = (&bottom[0] - &top[0], &bottom[1] - &top[1]);
+        let g = dx.gcd(&dy);
+        let (dx, dy) = (dx / &g, dy / &g);
+        let d = l * &dy;
+        let Some(rows) = clamped(ceil_div(&top[1], l), floor_div(&bottom[1], l), frame.h) else {
+            continue;
+        };
+        for j in rows {
+            let n = &top[0] * &dy + (BigInt::from(j) * l - &top[1]) * &dx;
+            let (i, rem) = n.div_mod_floor(&d);
+            if rem.is_zero() && i >= zero && i <= BigInt::from(frame.w) {
+                local.push((j, index(&i)));
+            }
+        }
+    }
+    local.sort_unstable();
+    local.dedup();
+    let (x0, y0) = (i64::from(range.x0), i64::from(range.y0));
+    let canvas = |v: i64| u32::try_from(v).expect("inside the range, on the canvas");
+    local
+        .into_iter()
+        .map(|(j, i)| (canvas(x0 + i), canvas(y0 + j)))
+        .collect()
+}
+
+fn setup(poly: &Polygon, target: &Target, rule: AnyTieRule) -> Option<PolygonSetup> {
     let range = exact_sample_range(poly.outline.iter(), target)?;
     let centre = target.convention.pixel_centre.offset();
     let scale = scale_of(poly.contours().flatten().flat_map(|p| [&p.x, &p.y]).chain([&centre]));
@@ -270,7 +338,7 @@ fn setup(poly: &Polygon, target: &Target) -> Option<PolygonSetup> {
         scale,
         w: i64::from(range.x1 - range.x0),
         h: i64::from(range.y1 - range.y0),
-        rule: target.convention.tie_rule,
+        moved: rule.moved_sample().unwrap_or(TieRule::TopLeft.moved_sample()),
     };
     let mut edges = Vec::new();
     let mut remainders = Vec::new();
@@ -301,8 +369,19 @@ fn setup(poly: &Polygon, target: &Target) -> Option<PolygonSetup> {
         }
     }
     edges.sort_by_key(|e| e.first);
+    let on_edges = match rule.moved_sample() {
+        Some(_) => Vec::new(),
+        None => on_edge_samples(poly, &frame, range)
+            .into_iter()
+            .map(|(x, y)| {
+                let sample = ExactGrid::of(target).sample(x, y);
+                (y, x, contains_exact_with(&sample, poly, rule))
+            })
+            .collect(),
+    };
     Some(PolygonSetup {
         range,
+        on_edges,
         scale: frame.scale,
         edges,
         remainders,
@@ -315,35 +394,71 @@ impl PlannedPolygon {
     /// `target`, in the cheapest width its bound allows; `None` when it covers nothing
     /// because no sample of the canvas lies in its outline's bounding box.
     pub fn new(poly: &Polygon, target: &Target) -> Option<PlannedPolygon> {
-        let s = setup(poly, target)?;
-        let planned = Planned::new(s.scale, s.bound, s.remainders);
-        Some(Self::of(poly, target, s.range, s.edges, planned))
+        Self::with_rule(poly, target, target.convention.tie_rule.into())
+    }
+
+    /// As [`PlannedPolygon::new`] under any of the six tie rules, the target's own aside:
+    /// the four directional rules in the edge table itself (the rows each edge crosses,
+    /// and `N + 1` for the right rules: see the module docs); all-inclusive and
+    /// all-exclusive as the top-left table with the samples that lie exactly on an edge
+    /// decided at setup by the oracle's closure / interior test
+    /// ([`contains_exact_with`]), those samples found
+    /// exactly, edge by edge.
+    ///
+    /// ```
+    /// use rasterproof::convention::{AnyTieRule, Convention, PixelCentre, Target};
+    /// use rasterproof::coverage::Coverage;
+    /// use rasterproof::fill::polygon::{rasterize_exact_with, PlannedPolygon};
+    /// use rasterproof::geom::{FillRule, Point, Polygon};
+    /// let tri = Polygon::new([(0, 0), (4, 0), (0, 4)].iter().map(|&(x, y)| Point::from_ints(x, y)).collect(), FillRule::NonZero);
+    /// let target = Target::new(5, 5, Convention { pixel_centre: PixelCentre::Corner, ..Convention::default() }).unwrap();
+    /// for rule in AnyTieRule::ALL {
+    ///     let (mut a, mut b) = (Coverage::new(5, 5), Coverage::new(5, 5));
+    ///     PlannedPolygon::with_rule(&tri, &target, rule).unwrap().rasterize(0, &mut a);
+    ///     rasterize_exact_with(&tri, 0, &target, rule, &mut b);
+    ///     assert_eq!(a, b, "{rule:?}");
+    /// }
+    /// ```
+    pub fn with_rule(poly: &Polygon, target: &Target, rule: AnyTieRule) -> Option<PlannedPolygon> {
+        let mut s = setup(poly, target, rule)?;
+        let planned = Planned::new(s.scale.clone(), s.bound.clone(), std::mem::take(&mut s.remainders));
+        Some(Self::of(poly, target, s, planned))
     }
 
     /// As [`PlannedPolygon::new`] but in `width`: `Ok(None)` when it covers nothing,
     /// `Err(plan)` (the plan it would have) when `width` cannot hold its bound. For tests
     /// and benches that run every width.
     pub fn forced(poly: &Polygon, target: &Target, width: Width) -> Result<Option<PlannedPolygon>, Plan> {
-        let Some(s) = setup(poly, target) else {
-            return Ok(None);
-        };
-        let planned = Planned::forced(s.scale, s.bound, s.remainders, width)?;
-        Ok(Some(Self::of(poly, target, s.range, s.edges, planned)))
+        Self::forced_with_rule(poly, target, target.convention.tie_rule.into(), width)
     }
 
-    fn of(
+    /// [`PlannedPolygon::forced`] under any of the six tie rules.
+    pub fn forced_with_rule(
         poly: &Polygon,
         target: &Target,
-        range: PixelRange,
-        edges: Vec<TableEdge>,
-        planned: Planned<PolygonLanes>,
-    ) -> PlannedPolygon {
+        rule: AnyTieRule,
+        width: Width,
+    ) -> Result<Option<PlannedPolygon>, Plan> {
+        let Some(mut s) = setup(poly, target, rule) else {
+            return Ok(None);
+        };
+        let planned = Planned::forced(
+            s.scale.clone(),
+            s.bound.clone(),
+            std::mem::take(&mut s.remainders),
+            width,
+        )?;
+        Ok(Some(Self::of(poly, target, s, planned)))
+    }
+
+    fn of(poly: &Polygon, target: &Target, s: PolygonSetup, planned: Planned<PolygonLanes>) -> PlannedPolygon {
         PlannedPolygon {
             target: *target,
-            range,
+            range: s.range,
             contours: poly.contours().count(),
             fill_rule: poly.fill_rule,
-            edges,
+            edges: s.edges,
+            on_edges: s.on_edges,
             planned,
         }
     }
@@ -378,11 +493,28 @@ impl PlannedPolygon {
     /// assert_eq!(a, b);
     /// ```
     pub fn rasterize<S: CoverageSink + ?Sized>(&self, id: u32, sink: &mut S) {
+        if self.on_edges.is_empty() {
+            self.planned.run(Sweeping {
+                polygon: self,
+                id,
+                sink,
+            });
+            return;
+        }
+        let mut overriding = Overriding {
+            sink: &mut *sink,
+            on_edges: &self.on_edges,
+        };
         self.planned.run(Sweeping {
             polygon: self,
             id,
-            sink,
+            sink: &mut overriding,
         });
+        for &(y, x, covered) in &self.on_edges {
+            if covered {
+                sink.cover(x, y, id);
+            }
+        }
     }
 
     /// The active edge table over the rows of the range, generic over the planned width
@@ -442,6 +574,43 @@ impl PlannedPolygon {
                     }
                 }
             }
+        }
+    }
+}
+
+/// A sink that passes on every pixel but the samples on an edge (decided apart, under
+/// all-inclusive and all-exclusive).
+struct Overriding<'a, S: ?Sized> {
+    sink: &'a mut S,
+    /// `(row, column, covered)`, sorted.
+    on_edges: &'a [(u32, u32, bool)],
+}
+
+impl<S: CoverageSink + ?Sized> CoverageSink for Overriding<'_, S> {
+    fn cover(&mut self, x: u32, y: u32, id: u32) {
+        if self
+            .on_edges
+            .binary_search_by_key(&(y, x), |&(r, c, _)| (r, c))
+            .is_err()
+        {
+            self.sink.cover(x, y, id);
+        }
+    }
+
+    fn cover_span(&mut self, y: u32, x0: u32, x1: u32, id: u32) {
+        let first = self.on_edges.partition_point(|&(r, c, _)| (r, c) < (y, x0));
+        let mut start = x0;
+        for &(_, c, _) in self.on_edges[first..]
+            .iter()
+            .take_while(|&&(r, c, _)| r == y && c <= x1)
+        {
+            if start < c {
+                self.sink.cover_span(y, start, c - 1, id);
+            }
+            start = c + 1;
+        }
+        if start <= x1 {
+            self.sink.cover_span(y, start, x1, id);
         }
     }
 }

@@ -32,7 +32,7 @@ pub fn rasterize_rows_exact<S: CoverageSink + ?Sized>(poly: &Polygon, id: u32, t
     let Some(range) = exact_sample_range(poly.outline.iter().chain(poly.holes.iter().flatten()), target) else {
         return;
     };
-    let rule = target.convention.tie_rule;
+    let rule = target.convention.tie_rule.moved_sample();
     let grid = ExactGrid::of(target);
     let mut crossings: Vec<Crossing> = Vec::new();
     let mut sweep = Sweep::new(poly.contours().count(), poly.fill_rule);

@@ -13,6 +13,7 @@ use crate::check::triangle_covers;
 use crate::clip::Window;
 use crate::convention::{AnyTieRule, Convention, PixelCentre, Target, TieRule};
 use crate::coverage::CoverageSink;
+use crate::fill::polygon::contains_exact_with;
 use crate::geom::{FillRule, Point};
 use crate::line::{self, BresenhamTie, MAX_BRESENHAM_COORD};
 use crate::model::{prepare, Model, Primitives, Shape};
@@ -511,10 +512,9 @@ fn tie(shape: &Shape, p: &Point, rule: TieRule, theirs_covers: bool) -> Option<R
             if !polygon_at(poly, p, rule).on_boundary {
                 return None;
             }
-            let rules: Vec<AnyTieRule> = [TieRule::TopLeft, TieRule::BottomLeft]
+            let rules: Vec<AnyTieRule> = AnyTieRule::ALL
                 .into_iter()
-                .filter(|r| polygon_inside(poly, p, *r) == theirs_covers)
-                .map(AnyTieRule::from)
+                .filter(|r| contains_exact_with(p, poly, *r) == theirs_covers)
                 .collect();
             (!rules.is_empty()).then_some(Reason::Tie {
                 edges: Vec::new(),

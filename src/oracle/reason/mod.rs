@@ -5,8 +5,8 @@
 //! is the most plausible exact explanation, not merely the first that fits. Some classes
 //! decide alone, in this order:
 //! 1. `tie`: the sample lies exactly on an edge (`E == 0`) and another tie rule
-//!    ([`AnyTieRule`]; for polygons the two the polygon engines implement) gives their
-//!    answer. Names the edges, their sides and every rule that agrees with them.
+//!    ([`AnyTieRule`], for triangles and polygons alike) gives their answer. Names the
+//!    edges (of a triangle), their sides and every rule that agrees with them.
 //! 2. `clip`: the scene has a clip window and the unclipped primitive gives their answer
 //!    (they did not clip, or clipped differently).
 //! 3. `line-rule` (lines): another line convention gives their answer: the other
