@@ -11,11 +11,19 @@
 //! models render (top-left, bottom-left), which its clipped pieces follow.
 //! Scenes with clip-space triangles are refused (their window-space vertices exist only
 //! after clipping; compare them under a stated convention).
+//!
+//! Conventions that must draw the same image are not drawn twice: when the all-inclusive
+//! and all-exclusive images are equal no sample lies on an edge and every tie rule draws
+//! that image; every snapping to a grid the scene already lies on leaves the scene as it
+//! is (counted once, with the unsnapped scene); and roundings at the same bits whose
+//! snapped scenes are equal (compared exactly) share their counts.
 
 use std::collections::BTreeMap;
 use std::fmt::{self, Write as _};
 
+use num_bigint::BigInt;
 use num_rational::BigRational;
+use num_traits::One;
 use serde_json::{json, Value};
 
 use super::compare::{count_differences, PixelKind, SizeMismatch};
@@ -276,51 +284,65 @@ pub fn fit(primitives: &Primitives, target: &Target, theirs: &Theirs) -> Result<
     let mut exact = Vec::new();
     let mut closest: Vec<Fit> = Vec::new();
     let (mut searched, mut skipped) = (0, 0);
+    // Snappings that give the same scene give the same images, which are counted once:
+    // every snapping to a grid the scene is already on is the scene itself, and two
+    // roundings at the same bits often agree (compared exactly, scene by scene).
+    let on_grid = grid_bits(primitives);
+    let mut unsnapped: Option<[Counts; 2]> = None;
+    let mut same_bits: Vec<(Primitives, [Counts; 2])> = Vec::new();
+    let mut bits_of_same = None;
     for s in snappings() {
-        let scene = snapped(primitives, s);
-        for pixel_centre in [PixelCentre::Half, PixelCentre::Corner] {
-            let candidate = |tie_rule| Candidate {
-                tie_rule,
-                snapping: s,
-                pixel_centre,
-            };
-            // Every rule covers at least what all-exclusive covers and at most what
-            // all-inclusive covers, primitive by primitive: when those two images are
-            // equal, no sample lies on an edge and every rule draws that same image,
-            // which is then rendered once, not six times.
-            let inclusive = image(&scene, target, &candidate(AnyTieRule::AllInclusive)).map_err(FitError::Model)?;
-            let exclusive = match inclusive {
-                Some(_) => image(&scene, target, &candidate(AnyTieRule::AllExclusive)).map_err(FitError::Model)?,
-                None => None,
-            };
-            let no_ties = inclusive.is_some() && inclusive == exclusive;
-            for tie_rule in AnyTieRule::ALL {
-                let candidate = candidate(tie_rule);
-                let rendered;
-                let ours = match tie_rule {
-                    _ if no_ties => inclusive.as_ref(),
-                    AnyTieRule::AllInclusive => inclusive.as_ref(),
-                    AnyTieRule::AllExclusive => exclusive.as_ref(),
-                    _ => {
-                        rendered = image(&scene, target, &candidate).map_err(FitError::Model)?;
-                        rendered.as_ref()
+        let is_unsnapped = match (s.bits, on_grid) {
+            (None, _) => true,
+            (Some(b), Some(k)) => b >= k,
+            (Some(_), None) => false,
+        };
+        if bits_of_same != Some(s.bits) {
+            same_bits.clear();
+            bits_of_same = Some(s.bits);
+        }
+        let counts = match &unsnapped {
+            Some(counts) if is_unsnapped => counts.clone(),
+            _ => {
+                let scene = snapped(primitives, s);
+                match same_bits.iter().find(|(earlier, _)| *earlier == scene) {
+                    Some((_, counts)) => counts.clone(),
+                    None => {
+                        // Stop counting once the count cannot matter: at 1 when exact fits
+                        // exist, just past the worst of a full list of the closest otherwise.
+                        // (A count cut short is above every kept one, so whichever
+                        // snapping reuses it keeps it out as well: the bound only tightens.)
+                        let stop = if !exact.is_empty() {
+                            Some(1)
+                        } else if closest.len() == CLOSEST {
+                            closest.last().map(|f| f.total() + 1)
+                        } else {
+                            None
+                        };
+                        let half = counts_of(&scene, target, PixelCentre::Half, theirs, stop)?;
+                        let corner = counts_of(&scene, target, PixelCentre::Corner, theirs, stop)?;
+                        let counts = [half, corner];
+                        if is_unsnapped {
+                            unsnapped = Some(counts.clone());
+                        }
+                        same_bits.push((scene, counts.clone()));
+                        counts
                     }
-                };
-                let Some(ours) = ours else {
+                }
+            }
+        };
+        for (pixel_centre, by_rule) in [PixelCentre::Half, PixelCentre::Corner].into_iter().zip(counts) {
+            for (tie_rule, differing) in by_rule {
+                let Some(differing) = differing else {
                     skipped += 1;
                     continue;
                 };
                 searched += 1;
-                // Stop counting once the count cannot matter: at 1 when exact fits exist, just
-                // past the worst of a full list of the closest otherwise.
-                let stop = if !exact.is_empty() {
-                    Some(1)
-                } else if closest.len() == CLOSEST {
-                    closest.last().map(|f| f.total() + 1)
-                } else {
-                    None
+                let candidate = Candidate {
+                    tie_rule,
+                    snapping: s,
+                    pixel_centre,
                 };
-                let differing = count_differences(ours, theirs, stop);
                 let fit = Fit { candidate, differing };
                 if fit.total() == 0 {
                     exact.push(candidate);
@@ -348,6 +370,82 @@ pub fn fit(primitives: &Primitives, target: &Target, theirs: &Theirs) -> Result<
             )
         }),
     })
+}
+
+/// The differing pixels of each tie rule's image at one snapping and pixel centre, by
+/// kind (`None`: the rule is not searched for this scene).
+type Counts = Vec<(AnyTieRule, Option<BTreeMap<PixelKind, usize>>)>;
+
+/// The images of `scene` (snapped already) under the six tie rules with the sample at
+/// `pixel_centre`, counted against theirs (up to `stop` differing pixels each).
+fn counts_of(
+    scene: &Primitives,
+    target: &Target,
+    pixel_centre: PixelCentre,
+    theirs: &Theirs,
+    stop: Option<usize>,
+) -> Result<Counts, FitError> {
+    let candidate = |tie_rule| Candidate {
+        tie_rule,
+        snapping: Snapping {
+            bits: None,
+            rounding: Rounding::NearestEven,
+        },
+        pixel_centre,
+    };
+    let render = |tie_rule| image(scene, target, &candidate(tie_rule)).map_err(FitError::Model);
+    // Every rule covers at least what all-exclusive covers and at most what all-inclusive
+    // covers, primitive by primitive: when those two images are equal, no sample lies on
+    // an edge and every rule draws that same image, which is then counted once.
+    let inclusive = render(AnyTieRule::AllInclusive)?;
+    let exclusive = match inclusive {
+        Some(_) => render(AnyTieRule::AllExclusive)?,
+        None => None,
+    };
+    let count = |image: &Coverage| count_differences(image, theirs, stop);
+    let (inclusive, exclusive) = match (&inclusive, &exclusive) {
+        (Some(i), Some(e)) if i == e => {
+            let same = count(i);
+            return Ok(AnyTieRule::ALL.into_iter().map(|r| (r, Some(same.clone()))).collect());
+        }
+        (i, e) => (i.as_ref().map(count), e.as_ref().map(count)),
+    };
+    let mut out = Vec::new();
+    for tie_rule in AnyTieRule::ALL {
+        let differing = match tie_rule {
+            AnyTieRule::AllInclusive => inclusive.clone(),
+            AnyTieRule::AllExclusive => exclusive.clone(),
+            _ => render(tie_rule)?.map(|image| count(&image)),
+        };
+        out.push((tie_rule, differing));
+    }
+    Ok(out)
+}
+
+/// The least `k <= MAX_FIT_BITS` such that every vertex the fit snaps is on the `2^-k`
+/// grid (then every snapping to `k` bits or more leaves the scene as it is); `None` when
+/// some vertex is on no such grid.
+fn grid_bits(primitives: &Primitives) -> Option<u32> {
+    let mut points: Vec<&Point> = Vec::new();
+    for t in &primitives.triangles {
+        points.extend(t.v.iter());
+    }
+    for l in primitives.lines.iter().filter(|l| l.rule == LineRule::Diamond) {
+        points.extend([&l.from, &l.to]);
+    }
+    for p in &primitives.polygons {
+        points.extend(p.contours().flatten());
+    }
+    let mut k = 0;
+    for v in points.iter().flat_map(|p| [&p.x, &p.y]) {
+        let d = v.denom();
+        let bits = d.trailing_zeros().unwrap_or(0);
+        if (d >> bits) != BigInt::one() || bits > u64::from(MAX_FIT_BITS) {
+            return None;
+        }
+        k = k.max(u32::try_from(bits).expect("at most MAX_FIT_BITS"));
+    }
+    Some(k)
 }
 
 impl FitReport {
@@ -534,4 +632,78 @@ fn snappings_text(found: &[Snapping], all: &[Snapping]) -> String {
         .collect();
     text.extend(parts);
     text.join("; ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::render;
+    use crate::oracle::Format;
+    use crate::scene::parse_scene;
+
+    fn primitives(json: &str) -> Primitives {
+        parse_scene(json, "s.json").unwrap().primitives()
+    }
+
+    /// By hand: the grid of 1/2 and 3/4 is 2 bits; of integers 0; a third or 2^-17 is on
+    /// no grid the fit searches; a Bresenham line's pixel addresses are not snapped.
+    #[test]
+    fn grid_bits_by_hand() {
+        let tri = |a: &str, b: &str| {
+            format!(r#"{{"width": 4, "height": 4, "triangles": [{{"v": [[0, 0], ["{a}", 1], [0, "{b}"]]}}]}}"#)
+        };
+        assert_eq!(grid_bits(&primitives(&tri("1/2", "3/4"))), Some(2));
+        assert_eq!(grid_bits(&primitives(&tri("1", "3"))), Some(0));
+        assert_eq!(grid_bits(&primitives(&tri("1/3", "1"))), None);
+        assert_eq!(grid_bits(&primitives(&tri("1/131072", "1"))), None);
+        assert_eq!(grid_bits(&primitives(&tri("1/65536", "1"))), Some(16));
+        let polygon = r#"{"width": 4, "height": 4, "polygons": [{"v": [[0, 0], ["1/8", 1], [0, 2]]}]}"#;
+        assert_eq!(grid_bits(&primitives(polygon)), Some(3));
+    }
+
+    /// The fit's verdicts, counts reused across snappings included, are the plain
+    /// definition's: a convention fits exactly when the scene snapped its way and drawn
+    /// under its rule and sample position is their image, pixel for pixel. Checked for
+    /// every convention on scenes on the 1/4 grid (every snapping from 2 bits on is the
+    /// scene itself), on the 1/2 grid with a polygon, and off every grid (thirds).
+    #[test]
+    fn every_verdict_is_the_plain_definition() {
+        let scenes = [
+            r#"{"width": 3, "height": 3, "triangles": [{"v": [["1/4", "-1/2"], ["3/4", "5/2"], [-2, "3/2"]]}, {"v": [["1/2", "1/2"], ["5/2", "1/2"], ["5/2", "5/2"]]}]}"#,
+            r#"{"width": 4, "height": 4, "polygons": [{"v": [["1/2", "1/2"], ["7/2", "1/2"], ["7/2", "7/2"], ["3/2", "5/2"]]}]}"#,
+            r#"{"width": 3, "height": 3, "triangles": [{"v": [["1/3", "1/3"], ["8/3", "2/3"], ["4/3", "7/3"]]}]}"#,
+        ];
+        for json in scenes {
+            let p = primitives(json);
+            let target = parse_scene(json, "s.json").unwrap().target().unwrap();
+            // Theirs: 2 bits, floor, top-right, centre 1/2 (a convention that need not fit).
+            let theirs_candidate = Candidate {
+                tie_rule: AnyTieRule::TopRight,
+                snapping: Snapping {
+                    bits: Some(2),
+                    rounding: Rounding::Floor,
+                },
+                pixel_centre: PixelCentre::Half,
+            };
+            let drawn = image(&snapped(&p, theirs_candidate.snapping), &target, &theirs_candidate)
+                .unwrap()
+                .unwrap();
+            let theirs = Theirs::from_coverage(&drawn, Format::Json);
+            let found = fit(&p, &target, &theirs).unwrap();
+            assert!(found.exact.contains(&theirs_candidate), "{json}");
+            for s in snappings() {
+                for pixel_centre in [PixelCentre::Half, PixelCentre::Corner] {
+                    for tie_rule in AnyTieRule::ALL {
+                        let c = Candidate {
+                            tie_rule,
+                            snapping: s,
+                            pixel_centre,
+                        };
+                        let ours = image(&snapped(&p, s), &target, &c).unwrap().unwrap();
+                        assert_eq!(found.exact.contains(&c), ours == drawn, "{c} on {json}");
+                    }
+                }
+            }
+        }
+    }
 }
