@@ -637,7 +637,6 @@ fn snappings_text(found: &[Snapping], all: &[Snapping]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::render;
     use crate::oracle::Format;
     use crate::scene::parse_scene;
 
