@@ -1303,3 +1303,51 @@ fn one_convention_that_explains_every_difference_is_named_at_the_top() {
         "{h}"
     );
 }
+
+/// A fixed-point renderer: vertices truncated to 1/64 px (6 bits, towards zero) and
+/// bottom-right ties, compared under the `gl` preset (8 bits, nearest-even, bottom-left).
+/// Its differences are of two classes, ties (on the half-pixel triangles) and snapping
+/// (on the 1/1000 px ones): no one class explains them all, but the two parts together
+/// do, and drawn under both at once the scene gives their answer at every differing
+/// pixel, which the headline says.
+#[test]
+fn a_grid_and_a_tie_rule_together_are_one_headline() {
+    let mut s = random_scene(11, [24, 24], 6, [0, 0], [24, 24], 2);
+    s.triangles
+        .extend(random_scene(12, [24, 24], 12, [0, 0], [24, 24], 1000).triangles);
+    s.preset = Preset::Gl;
+    let target = s.target().unwrap();
+    let fixed = rasterproof::convention::Convention {
+        subpixel_bits: 6,
+        rounding: Rounding::TowardsZero,
+        ..target.convention
+    };
+    let mut theirs = Coverage::new(24, 24);
+    for (k, t) in s.triangles().iter().enumerate() {
+        let t = t.snapped(&fixed).to_exact();
+        if let Some(p) = rasterproof::tri::planned::PlannedTriangle::with_rule(&t, &target, AnyTieRule::BottomRight) {
+            p.rasterize(u32::try_from(k).unwrap(), &mut theirs);
+        }
+    }
+    let r = report(&s, &theirs, Format::Json, Model::ExactSnapped);
+    let counts = class_counts(&r);
+    assert!(counts["tie"] > 0 && counts["snapping"] > 0, "{counts:?}");
+    assert_eq!(
+        counts.values().sum::<usize>(),
+        counts["tie"] + counts["snapping"],
+        "{counts:?}"
+    );
+    let h = r.headline().expect("a two-part headline");
+    let prefix = "every classified difference is explained by one convention: snapping to ";
+    assert!(h.starts_with(prefix), "{h}");
+    // The coarsest grid that explains the snapping findings: at most the renderer's 6 bits.
+    let bits: u32 = h[prefix.len()..].split(' ').next().unwrap().parse().unwrap();
+    assert!(bits <= 6, "{h}");
+    assert!(
+        h.contains("towards-zero")
+            && h.contains("with the tie rule")
+            && h.contains("bottom-right")
+            && h.ends_with("the scene gives their answer at every classified pixel"),
+        "{h}"
+    );
+}

@@ -6,9 +6,11 @@
 //! with each [`Rounding`], or no snapping; the sample at the pixel centre or its corner —
 //! 6 x (17 x 5 + 1) x 2 = 1032 conventions. Each is rendered exactly: the scene's vertices
 //! snapped by the candidate (exactly, [`crate::num::fixed::snap`]), then the planned exact
-//! engine; triangles and polygons take any of the six rules ([`PlannedTriangle::with_rule`],
-//! [`PlannedPolygon::with_rule`]); a scene with a clip window only over the two rules the
-//! models render (top-left, bottom-left), which its clipped pieces follow.
+//! engine; triangles and polygons take any of the six rules
+//! ([`crate::tri::planned::PlannedTriangle::with_rule`],
+//! [`crate::fill::polygon::PlannedPolygon::with_rule`]); a scene with a clip window only
+//! over the two rules the models render (top-left, bottom-left), which its clipped pieces
+//! follow.
 //! Scenes with clip-space triangles are refused (their window-space vertices exist only
 //! after clipping; compare them under a stated convention).
 //!
@@ -22,52 +24,24 @@ use std::collections::BTreeMap;
 use std::fmt::{self, Write as _};
 
 use num_bigint::BigInt;
-use num_rational::BigRational;
 use num_traits::One;
 use serde_json::{json, Value};
 
+use super::candidate::{image, snapped, snappings};
 use super::compare::{count_differences, PixelKind, SizeMismatch};
 use super::reason::Snapping;
 use super::theirs::Theirs;
-use crate::convention::{AnyTieRule, Convention, PixelCentre, Target, TieRule};
-use crate::coverage::{Coverage, CoverageSink};
-use crate::fill::polygon::PlannedPolygon;
-use crate::geom::{Point, Polygon, Triangle};
-use crate::line::{Line, LineRule};
-use crate::model::{prepare, Model, ModelError, Primitives};
-use crate::num::exact::dyadic;
-use crate::num::fixed::snap;
+use crate::convention::{AnyTieRule, PixelCentre, Target};
+use crate::coverage::Coverage;
+use crate::geom::Point;
+use crate::line::LineRule;
+use crate::model::{ModelError, Primitives};
 use crate::num::Rounding;
-use crate::tri::planned::PlannedTriangle;
 
-/// The largest subpixel precision searched.
-pub const MAX_FIT_BITS: u32 = 16;
+pub use super::candidate::{Candidate, MAX_FIT_BITS};
 
 /// How many of the closest conventions a fit keeps when none is exact.
 pub const CLOSEST: usize = 5;
-
-/// One convention a renderer may follow.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub struct Candidate {
-    /// The tie rule.
-    pub tie_rule: AnyTieRule,
-    /// The snapping (`bits: None`: unsnapped; `Some(0)`: whole pixels).
-    pub snapping: Snapping,
-    /// Where the sample sits.
-    pub pixel_centre: PixelCentre,
-}
-
-impl fmt::Display for Candidate {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "tie rule {}, {}, pixel centre {}",
-            self.tie_rule.name(),
-            self.snapping.describe(),
-            self.pixel_centre.name()
-        )
-    }
-}
 
 /// A convention and how far its image is from theirs.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -124,129 +98,6 @@ impl fmt::Display for FitError {
 }
 
 impl std::error::Error for FitError {}
-
-/// Every snapping searched, in order: bits 0..=16 with each rounding, then unsnapped.
-fn snappings() -> Vec<Snapping> {
-    let mut out: Vec<Snapping> = (0..=MAX_FIT_BITS)
-        .flat_map(|bits| {
-            Rounding::ALL.into_iter().map(move |rounding| Snapping {
-                bits: Some(bits),
-                rounding,
-            })
-        })
-        .collect();
-    out.push(Snapping {
-        bits: None,
-        rounding: Rounding::NearestEven,
-    });
-    out
-}
-
-fn snap_point(p: &Point, s: Snapping) -> Point {
-    match s.bits {
-        None => p.clone(),
-        Some(bits) => {
-            let f = |v: &BigRational| dyadic(&snap(v, bits, s.rounding), bits);
-            Point::new(f(&p.x), f(&p.y))
-        }
-    }
-}
-
-/// `primitives` with every window-space vertex snapped by `s` (Bresenham lines keep their
-/// pixel addresses; the clip window is exact and stays).
-fn snapped(primitives: &Primitives, s: Snapping) -> Primitives {
-    let polygon = |p: &Polygon| Polygon {
-        outline: p.outline.iter().map(|v| snap_point(v, s)).collect(),
-        holes: p
-            .holes
-            .iter()
-            .map(|h| h.iter().map(|v| snap_point(v, s)).collect())
-            .collect(),
-        fill_rule: p.fill_rule,
-    };
-    Primitives {
-        triangles: primitives
-            .triangles
-            .iter()
-            .map(|t| Triangle {
-                v: t.v.clone().map(|v| snap_point(&v, s)),
-            })
-            .collect(),
-        lines: primitives
-            .lines
-            .iter()
-            .map(|l| match l.rule {
-                LineRule::Diamond => Line {
-                    from: snap_point(&l.from, s),
-                    to: snap_point(&l.to, s),
-                    rule: l.rule,
-                },
-                LineRule::Bresenham(_) => l.clone(),
-            })
-            .collect(),
-        polygons: primitives.polygons.iter().map(polygon).collect(),
-        ..primitives.clone()
-    }
-}
-
-/// Adds `offset` to every id (the lines drawn after the triangles).
-struct Offset<'a>(&'a mut Coverage, u32);
-
-impl CoverageSink for Offset<'_> {
-    fn cover(&mut self, x: u32, y: u32, id: u32) {
-        self.0.cover(x, y, id + self.1);
-    }
-
-    fn cover_span(&mut self, y: u32, x0: u32, x1: u32, id: u32) {
-        self.0.cover_span(y, x0, x1, id + self.1);
-    }
-}
-
-/// The exact image of `primitives` (already snapped) under `candidate`; `Ok(None)` when
-/// the candidate's rule does not apply to the scene's clip window.
-fn image(primitives: &Primitives, target: &Target, candidate: &Candidate) -> Result<Option<Coverage>, ModelError> {
-    let directional = match candidate.tie_rule {
-        AnyTieRule::TopLeft => Some(TieRule::TopLeft),
-        AnyTieRule::BottomLeft => Some(TieRule::BottomLeft),
-        _ => None,
-    };
-    let conv = Convention {
-        tie_rule: directional.unwrap_or(TieRule::TopLeft),
-        pixel_centre: candidate.pixel_centre,
-        ..target.convention
-    };
-    let t = Target {
-        convention: conv,
-        ..*target
-    };
-    if directional.is_some() {
-        return Ok(Some(prepare(primitives, &t, Model::Exact)?.coverage(&t)));
-    }
-    if primitives.clip.is_some() {
-        return Ok(None);
-    }
-    let mut coverage = Coverage::new(t.width, t.height);
-    for (k, tri) in primitives.triangles.iter().enumerate() {
-        if let Some(p) = PlannedTriangle::with_rule(tri, &t, candidate.tie_rule) {
-            p.rasterize(u32::try_from(k).expect("ids fit u32"), &mut coverage);
-        }
-    }
-    if !primitives.lines.is_empty() {
-        let lines = Primitives {
-            lines: primitives.lines.clone(),
-            ..Primitives::default()
-        };
-        let offset = u32::try_from(primitives.triangles.len()).expect("ids fit u32");
-        prepare(&lines, &t, Model::Exact)?.render(&t, &mut Offset(&mut coverage, offset));
-    }
-    let first_polygon = primitives.triangles.len() + primitives.lines.len();
-    for (k, poly) in primitives.polygons.iter().enumerate() {
-        if let Some(p) = PlannedPolygon::with_rule(poly, &t, candidate.tie_rule) {
-            p.rasterize(u32::try_from(first_polygon + k).expect("ids fit u32"), &mut coverage);
-        }
-    }
-    Ok(Some(coverage))
-}
 
 /// Searches the conventions (see the module docs) for those under which the exact image of
 /// `primitives` on `target`'s canvas equals `theirs`.

@@ -7,6 +7,7 @@
 //!
 //! The CLI's `compare` and `explain` are thin layers over these functions.
 
+mod candidate;
 pub mod compare;
 pub mod evidence;
 pub mod explain;

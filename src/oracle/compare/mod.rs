@@ -17,12 +17,14 @@ pub(crate) use pixel::{evidence, pixel_box_holds};
 pub use pixel::{DiffPixel, PixelFinding};
 pub use report::{reason_text, CompareReport, EMPTY_COLOUR, MATCHED_COLOUR, REPORT_VERSION};
 
-use super::reason::{decide, Classifier, Support};
+use super::candidate::{image, snapped, Candidate};
+use super::reason::{decide, Classifier, Snapping, Support};
 use super::theirs::{Format, TheirPixel, Theirs};
 use crate::convention::Target;
 use crate::coverage::Coverage;
 use crate::model::{prepare, Model, ModelError, Primitives};
 use pixel::{guessed, named, Candidates};
+use report::Joint;
 
 /// How a differing pixel differs, seen from the whole pixel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -294,6 +296,7 @@ pub fn compare_classifying(
     for f in pixels.iter_mut().flat_map(|p: &mut DiffPixel| p.findings.iter_mut()) {
         f.reason = decide(found.next().expect("one found per finding"), &support);
     }
+    let joint = joint_checked(&pixels, primitives, target, theirs.format());
     Ok(CompareReport {
         model,
         convention: target.convention,
@@ -304,7 +307,36 @@ pub fn compare_classifying(
         theirs_covered: theirs.covered_pixels(),
         pixels,
         ours,
+        joint,
     })
+}
+
+/// The two-part explanation of the classified differences ([`report::joint_parts`]),
+/// checked: the scene snapped to its grid with its first rounding, drawn under its first
+/// tie rule with the oracle's sample position, must give their answer at every classified
+/// differing pixel. Unchecked (`checked: None`) when that image cannot be drawn: clip-space
+/// triangles, or a rule other than top-left and bottom-left under a clip window.
+fn joint_checked(pixels: &[DiffPixel], primitives: &Primitives, target: &Target, format: Format) -> Option<Joint> {
+    let mut joint = report::joint_parts(pixels)?;
+    let candidate = Candidate {
+        tie_rule: joint.rules[0],
+        snapping: Snapping {
+            bits: Some(joint.bits),
+            rounding: joint.roundings[0],
+        },
+        pixel_centre: target.convention.pixel_centre,
+    };
+    if primitives.clip_space_triangles.is_empty() {
+        if let Ok(Some(both)) = image(&snapped(primitives, candidate.snapping), target, &candidate) {
+            joint.checked = Some(
+                pixels
+                    .iter()
+                    .filter(|p| p.classified)
+                    .all(|p| differ(both.owners(p.x, p.y), &p.theirs, format).is_none()),
+            );
+        }
+    }
+    Some(joint)
 }
 
 /// Differing pixels of `ours` against `theirs`, by kind, as [`compare`] counts them (without

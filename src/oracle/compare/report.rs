@@ -9,7 +9,7 @@ use serde_json::{json, Value};
 
 use super::pixel::point_text;
 use super::{DiffPixel, PixelKind};
-use crate::convention::Convention;
+use crate::convention::{AnyTieRule, Convention, Rounding};
 use crate::coverage::picture::{upscale, Scale};
 use crate::coverage::Coverage;
 use crate::model::Model;
@@ -46,6 +46,27 @@ pub struct CompareReport {
     /// Every differing pixel, row-major.
     pub pixels: Vec<DiffPixel>,
     pub(super) ours: Coverage,
+    /// The tie rule and snapping that together explain the classified differences, when
+    /// each is explained by one of the two ([`CompareReport::headline`]), with whether
+    /// the scene drawn under both at once was checked to give their answer at each.
+    pub(super) joint: Option<Joint>,
+}
+
+/// A two-part convention: a tie rule and a grid, each explaining some of the classified
+/// differences and together all of them.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(super) struct Joint {
+    /// The tie rules every tie finding names.
+    pub rules: Vec<AnyTieRule>,
+    /// The subpixel bits every snapping finding names.
+    pub bits: u32,
+    /// The roundings every snapping finding names at those bits.
+    pub roundings: Vec<Rounding>,
+    /// Findings of each part: ties, snappings.
+    pub counts: [usize; 2],
+    /// The scene drawn with the first rule and rounding at once gives their answer at every
+    /// classified differing pixel (`None`: it could not be drawn, say under a clip window).
+    pub checked: Option<bool>,
 }
 
 impl CompareReport {
@@ -70,10 +91,39 @@ impl CompareReport {
     /// every finding is of one class and the alternatives it names share a value (a tie
     /// rule, a sample position, a grid and rounding, a line rule), named so that a reader
     /// sees it before the table: `every classified difference is explained by one
-    /// convention: the sample at (i, j)`. `None` when the findings are of several classes
-    /// or name nothing in common (say near-edge float error beside ties), or nothing
-    /// differs.
+    /// convention: the sample at (i, j)`. Or two parts: every finding a tie or a snapping,
+    /// the ties sharing a rule and the snappings a grid and rounding (a fixed-point
+    /// renderer's truncation beside its own tie rule); then the scene is drawn under both
+    /// at once and the headline says whether that gives their answer at every classified
+    /// pixel. `None` when the findings name nothing in common (say near-edge float error
+    /// beside ties), or nothing differs.
     pub fn headline(&self) -> Option<String> {
+        if let Some(one) = self.one_class_headline() {
+            return Some(one);
+        }
+        let j = self.joint.as_ref()?;
+        let or = |names: Vec<&str>| names.join(" or ");
+        let rules = or(j.rules.iter().map(|r| r.name()).collect());
+        let roundings = or(j.roundings.iter().map(|r| r.name()).collect());
+        let parts = format!(
+            "snapping to {} subpixel bits, rounding {roundings} ({} findings), with the tie rule {rules} ({} findings)",
+            j.bits, j.counts[1], j.counts[0]
+        );
+        Some(match j.checked {
+            Some(true) => format!(
+                "every classified difference is explained by one convention: {parts}; drawn under both at once, \
+                 the scene gives their answer at every classified pixel"
+            ),
+            Some(false) => format!(
+                "each classified difference is explained by one of two changes: {parts}; drawn under both at once, \
+                 the scene does not give their answer at every classified pixel"
+            ),
+            None => format!("each classified difference is explained by one of two changes: {parts}"),
+        })
+    }
+
+    /// [`CompareReport::headline`] when every finding is of one class.
+    fn one_class_headline(&self) -> Option<String> {
         let findings: Vec<&Reason> = self
             .pixels
             .iter()
@@ -421,6 +471,34 @@ fn their_text(t: &TheirPixel, format: Format) -> String {
         (Format::Ids, true) if t.several => format!("{} and others (several owners)", owners_text(&t.ids)),
         _ => owners_text(&t.ids),
     }
+}
+
+/// The two parts of [`Joint`] (unchecked) when every finding is a tie or a snapping to a
+/// number of bits, some of each, the ties sharing a rule and the snappings a rounding.
+pub(super) fn joint_parts(pixels: &[DiffPixel]) -> Option<Joint> {
+    let reasons: Vec<&Reason> = pixels.iter().flat_map(|p| &p.findings).map(|f| &f.reason).collect();
+    let (ties, snaps): (Vec<&Reason>, Vec<&Reason>) = reasons.iter().partition(|r| matches!(r, Reason::Tie { .. }));
+    let Some(Reason::Snapping { bits: Some(bits), .. }) = snaps.first() else {
+        return None;
+    };
+    if ties.is_empty() {
+        return None;
+    }
+    let rules = shared_by_all(&ties, |r| match r {
+        Reason::Tie { rules, .. } => Some(rules.as_slice()),
+        _ => None,
+    })?;
+    let roundings = shared_by_all(&snaps, |r| match r {
+        Reason::Snapping { bits: b, roundings } if *b == Some(*bits) => Some(roundings.as_slice()),
+        _ => None,
+    })?;
+    Some(Joint {
+        rules,
+        bits: *bits,
+        roundings,
+        counts: [ties.len(), snaps.len()],
+        checked: None,
+    })
 }
 
 /// The values that every reason's list holds (`list` picks it: a tie's rules, a sample
