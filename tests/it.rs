@@ -80,6 +80,8 @@ mod scene_file_errors;
 mod shrink_simple;
 #[path = "speed_hack.rs"]
 mod speed_hack;
+#[path = "stay_alive.rs"]
+mod stay_alive;
 #[path = "suite.rs"]
 mod suite;
 #[path = "trade.rs"]

@@ -5,7 +5,11 @@
 //! ```sh
 //! cargo run --release --example tiny-skia-adapter -- SCENE.json OUT.png
 //! target/debug/rasterproof compare SCENE.json OUT.png --as ids
+//! target/debug/rasterproof hunt --serve 'target/release/examples/tiny-skia-adapter --serve'
 //! ```
+//!
+//! With `--serve` it stays alive and takes one scene per line on stdin (the stay-alive
+//! protocol of `rasterproof::oracle::stay_alive`), through `rasterproof::oracle::adapter`.
 //!
 //! What it draws, in id order (triangles, lines, polygons): the last writer wins a pixel,
 //! so it holds the highest id + 1 of the primitives that cover it, with alpha 254 where two
@@ -43,19 +47,19 @@
 //! a coordinate outside the f32 range is refused (exit 2).
 //!
 //! Exit status: 0 when the PNG was written, 2 with one line on stderr otherwise (bad
-//! arguments, an unreadable or invalid scene, a refused primitive, an unwritable output).
+//! arguments, an unreadable or invalid scene, a refused primitive, an unwritable output);
+//! under `--serve` each of these is an `"ok": false` answer instead.
 
 #![warn(clippy::cast_possible_truncation, clippy::cast_possible_wrap)]
 
-use std::ffi::OsString;
-use std::path::Path as FsPath;
 use std::process::ExitCode;
 
 use num_rational::BigRational;
 use num_traits::Zero;
 use rasterproof::geom::{FillRule, Point};
 use rasterproof::line::LineRule;
-use rasterproof::scene::{parse_scene_bytes, Scene};
+use rasterproof::oracle::adapter::adapter_main;
+use rasterproof::scene::Scene;
 use tiny_skia::{BlendMode, Mask, Paint, Path, PathBuilder, Pixmap, Stroke, Transform};
 
 /// The name every message starts with.
@@ -65,37 +69,18 @@ const NAME: &str = "tiny-skia-adapter";
 const MAX_ENCODED: u32 = (1 << 24) - 1;
 
 fn main() -> ExitCode {
-    match run(std::env::args_os().skip(1).collect()) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(message) => {
-            eprintln!("{NAME}: {message}");
-            ExitCode::from(2)
+    adapter_main(NAME, std::env::args_os().skip(1).collect(), |scene| {
+        let mut converter = Converter::default();
+        let rgba = render(scene, &mut converter)?;
+        if converter.inexact > 0 {
+            eprintln!(
+                "{NAME}: note: {} coordinate(s) are not f32-exact; rounded to the nearest f32",
+                converter.inexact
+            );
         }
-    }
-}
-
-/// Reads the scene, renders it, writes the PNG.
-fn run(args: Vec<OsString>) -> Result<(), String> {
-    let [scene_path, out_path] = <[OsString; 2]>::try_from(args)
-        .map_err(|_| "usage: tiny-skia-adapter SCENE.json OUT.png (two arguments)".to_string())?;
-    let scene_path = FsPath::new(&scene_path);
-    let out_path = FsPath::new(&out_path);
-    let bytes = std::fs::read(scene_path).map_err(|e| format!("{}: cannot read: {e}", scene_path.display()))?;
-    let scene = parse_scene_bytes(&bytes, &scene_path.display().to_string()).map_err(|e| e.to_string())?;
-    let mut converter = Converter::default();
-    let rgba = render(&scene, &mut converter).map_err(|e| format!("{}: {e}", scene_path.display()))?;
-    if converter.inexact > 0 {
-        eprintln!(
-            "{NAME}: note: {} coordinate(s) of {} are not f32-exact; rounded to the nearest f32",
-            converter.inexact,
-            scene_path.display()
-        );
-    }
-    let image = image::RgbaImage::from_raw(scene.width, scene.height, rgba)
-        .ok_or_else(|| "internal: the pixmap's size does not match its data".to_string())?;
-    image
-        .save_with_format(out_path, image::ImageFormat::Png)
-        .map_err(|e| format!("{}: cannot write the PNG: {e}", out_path.display()))
+        image::RgbaImage::from_raw(scene.width, scene.height, rgba)
+            .ok_or_else(|| "internal: the pixmap's size does not match its data".to_string())
+    })
 }
 
 /// Exact coordinates to tiny-skia's f32, counting those that did not fit exactly.

@@ -9,7 +9,8 @@ use std::time::Duration;
 
 use rasterproof::convention::Preset;
 use rasterproof::oracle::hunt::{fit_convention, hunt, rust_test, FitFirst, HuntConfig, SceneFamily, FIT_PROBES};
-use rasterproof::oracle::program::Program;
+use rasterproof::oracle::program::{Program, Renderer};
+use rasterproof::oracle::stay_alive::StayAlive;
 use rasterproof::oracle::{Background, Format};
 
 use rasterproof::model::Model;
@@ -20,11 +21,22 @@ use super::{ConventionArgs, Outputs};
 /// What `hunt` was asked to do.
 #[derive(clap::Args)]
 pub struct Options {
-    /// The renderer: `PROGRAM ARGS {scene} {out}`, split as a POSIX shell splits words and
-    /// run without a shell; {scene} is replaced by a scene file's path, {out} by the path
-    /// it must write (a PNG, or JSON with --as json).
+    /// The renderer, run once per scene: `PROGRAM ARGS {scene} {out}`, split as a POSIX
+    /// shell splits words and run without a shell; {scene} is replaced by a scene file's
+    /// path, {out} by the path it must write (a PNG, or JSON with --as json).
+    #[arg(
+        long,
+        value_name = "COMMAND",
+        required_unless_present = "serve",
+        conflicts_with = "serve"
+    )]
+    cmd: Option<String>,
+    /// The renderer, started once per job and kept alive: `PROGRAM ARGS`, which reads one
+    /// JSON request per line on stdin and answers one JSON line per scene on stdout (the
+    /// stay-alive protocol, docs/oracle.md). Far faster than --cmd for a renderer with a
+    /// costly start (Python, a GPU context).
     #[arg(long, value_name = "COMMAND")]
-    cmd: String,
+    serve: Option<String>,
     /// How to read its output: ids (default), mask or json.
     #[arg(long = "as", value_name = "FORMAT", default_value = "ids")]
     theirs_as: String,
@@ -105,18 +117,24 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         }
         families
     };
-    let program = Program::new(
-        &o.cmd,
-        format,
-        Background::default(),
-        Duration::from_secs_f64(o.timeout),
-    )?;
+    let timeout = Duration::from_secs_f64(o.timeout);
+    let (cmd, program): (&str, Box<dyn Renderer>) = match (&o.cmd, &o.serve) {
+        (_, Some(serve)) => (
+            serve,
+            Box::new(StayAlive::new(serve, format, Background::default(), timeout)?),
+        ),
+        (Some(cmd), None) => (
+            cmd,
+            Box::new(Program::new(cmd, format, Background::default(), timeout)?),
+        ),
+        (None, None) => return Err("give the renderer with --cmd or --serve".to_string()),
+    };
     // Interrupted (Ctrl-C, SIGTERM): no stray temporary files and no renderer left
     // running. The renderer runs in a process group of its own (it does not get the
     // terminal's Ctrl-C): every running renderer's whole group is killed here; its files
     // go with the folder.
-    let temp = program.temp_dir().to_path_buf();
-    let groups = program.process_groups();
+    let (temp, groups) = program.files_and_groups().expect("a program has both");
+    let temp = temp.to_path_buf();
     let _ = ctrlc::set_handler(move || {
         groups.kill_all();
         let _ = std::fs::remove_dir_all(&temp);
@@ -147,9 +165,9 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             ))
         }
     };
-    let render_with = |s: &rasterproof::scene::Scene| program.render(s);
+    let render_with = program.as_ref();
     if o.fit_first {
-        match fit_convention(&config, &render_with)? {
+        match fit_convention(&config, render_with)? {
             FitFirst::Statable { fit, overrides, model } => {
                 eprintln!("fit: hunting under {fit} (oracle {})", model.name());
                 config.overrides = overrides;
@@ -178,7 +196,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         }
     }
     let bar = o.run.progress_bar(config.shard.case_count(config.cases), "scenes");
-    let report = hunt(&render_with, &config, o.run.jobs, &|| bar.inc(1))?;
+    let report = hunt(render_with, &config, o.run.jobs, &|| bar.inc(1))?;
     bar.finish_and_clear();
 
     let mut outputs = Outputs::new();
@@ -193,10 +211,10 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         }
     }
     if let Some(path) = &o.run.outputs.report {
-        outputs.stage_text(path, &report.to_json(&o.cmd))?;
+        outputs.stage_text(path, &report.to_json(cmd))?;
     }
     if let Some(path) = &o.run.outputs.junit {
-        outputs.stage_text(path, &report.junit(&o.cmd))?;
+        outputs.stage_text(path, &report.junit(cmd))?;
     }
     outputs.commit()?;
     super::write_stdout(|out| out.write_all(report.to_text(o.out.as_deref()).as_bytes()))?;

@@ -21,6 +21,63 @@ use std::time::{Duration, Instant};
 use super::theirs::{Background, Format, Theirs};
 use crate::scene::Scene;
 
+/// Another renderer as `hunt`, its convention fit and its shrinker call it: scene in,
+/// their output (or how it failed) out. A closure is one (a renderer driven from Rust), a
+/// per-scene [`Program`] is one, a stay-alive program (`stay_alive::StayAlive`) is one.
+pub trait Renderer: Sync {
+    /// Their output for `scene`.
+    ///
+    /// # Errors
+    /// How the renderer failed on it (a finding).
+    fn render(&self, scene: &Scene) -> Result<Theirs, RenderFailure>;
+
+    /// How many scenes it was asked to render and how many programs it started for them
+    /// (`None` for a renderer that is not a program).
+    fn runs(&self) -> Option<RendererRuns> {
+        None
+    }
+
+    /// For a program: the folder of its temporary files and its process groups (what a
+    /// Ctrl-C handler removes and kills); `None` otherwise.
+    fn files_and_groups(&self) -> Option<(&Path, ProcessGroups)> {
+        None
+    }
+}
+
+/// What a hunt cost the renderer: scenes asked for, programs started.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RendererRuns {
+    /// Scenes it was asked to render (the hunt's cases, its shrinking, its fit).
+    pub calls: u64,
+    /// Programs started: one per call for a per-scene program; one per job, plus one after
+    /// each failure, for a stay-alive one.
+    pub starts: u64,
+}
+
+impl<F> Renderer for F
+where
+    F: Fn(&Scene) -> Result<Theirs, RenderFailure> + Sync,
+{
+    fn render(&self, scene: &Scene) -> Result<Theirs, RenderFailure> {
+        self(scene)
+    }
+}
+
+impl Renderer for Program {
+    fn render(&self, scene: &Scene) -> Result<Theirs, RenderFailure> {
+        Program::render(self, scene)
+    }
+
+    fn runs(&self) -> Option<RendererRuns> {
+        let calls = self.count.load(Ordering::Relaxed);
+        Some(RendererRuns { calls, starts: calls })
+    }
+
+    fn files_and_groups(&self) -> Option<(&Path, ProcessGroups)> {
+        Some((self.temp_dir(), self.process_groups()))
+    }
+}
+
 /// How an external renderer failed on a scene.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum FailureKind {
@@ -34,6 +91,9 @@ pub enum FailureKind {
     NoOutput,
     /// Its output file is not what `--as` says, or not the scene's size.
     BadOutput,
+    /// A stay-alive renderer broke the protocol: a malformed, oversized, unasked-for or
+    /// out-of-turn response line (the stay-alive protocol).
+    Protocol,
 }
 
 impl FailureKind {
@@ -45,6 +105,7 @@ impl FailureKind {
             FailureKind::Timeout => "timeout",
             FailureKind::NoOutput => "no output",
             FailureKind::BadOutput => "unreadable output",
+            FailureKind::Protocol => "protocol error",
         }
     }
 }
@@ -66,7 +127,7 @@ impl fmt::Display for RenderFailure {
 
 /// A folder of temporaries, removed with everything in it when dropped.
 #[derive(Debug)]
-struct TempDir(PathBuf);
+pub(super) struct TempDir(pub(super) PathBuf);
 
 impl Drop for TempDir {
     fn drop(&mut self) {
@@ -100,7 +161,7 @@ impl ProcessGroups {
         }
     }
 
-    fn add(&self, group: u32) {
+    pub(super) fn add(&self, group: u32) {
         let mut groups = self.0.lock().unwrap_or_else(PoisonError::into_inner);
         groups.live.push(group);
         if groups.closed {
@@ -108,7 +169,7 @@ impl ProcessGroups {
         }
     }
 
-    fn remove(&self, group: u32) {
+    pub(super) fn remove(&self, group: u32) {
         let mut groups = self.0.lock().unwrap_or_else(PoisonError::into_inner);
         groups.live.retain(|&g| g != group);
     }
@@ -116,7 +177,7 @@ impl ProcessGroups {
 
 /// Sends SIGKILL to process group `group` (its leader's pid); errors (the group is gone
 /// already) are ignored. A no-op off unix, where only the program itself is killed.
-fn kill_group(group: u32) {
+pub(super) fn kill_group(group: u32) {
     #[cfg(unix)]
     {
         use nix::sys::signal::{killpg, Signal};
@@ -301,30 +362,42 @@ impl Program {
             }
             return Err(fail(FailureKind::Exit, format!("{status}{said}")));
         }
-        let bytes = match std::fs::read(out_path) {
-            Ok(b) => b,
-            Err(_) => return Err(fail(FailureKind::NoOutput, format!("it wrote no {}{said}", "{out}"))),
-        };
-        let theirs = Theirs::read(&bytes, "{out}", self.format, self.background)
-            .map_err(|e| fail(FailureKind::BadOutput, e.message))?;
-        if (theirs.width(), theirs.height()) != (scene.width, scene.height) {
-            return Err(fail(
-                FailureKind::BadOutput,
-                format!(
-                    "its image is {}x{}, the scene's canvas {}x{}",
-                    theirs.width(),
-                    theirs.height(),
-                    scene.width,
-                    scene.height
-                ),
-            ));
-        }
-        Ok(theirs)
+        read_output(out_path, self.format, self.background, scene, &said)
     }
 }
 
+/// Their output file for `scene`, read as `format`: no file, an unreadable one or one of
+/// another size is a [`RenderFailure`] (`said`: the end of their stderr, or nothing).
+pub(super) fn read_output(
+    out_path: &Path,
+    format: Format,
+    background: Background,
+    scene: &Scene,
+    said: &str,
+) -> Result<Theirs, RenderFailure> {
+    let fail = |kind, message: String| RenderFailure { kind, message };
+    let Ok(bytes) = std::fs::read(out_path) else {
+        return Err(fail(FailureKind::NoOutput, format!("it wrote no {}{said}", "{out}")));
+    };
+    let theirs =
+        Theirs::read(&bytes, "{out}", format, background).map_err(|e| fail(FailureKind::BadOutput, e.message))?;
+    if (theirs.width(), theirs.height()) != (scene.width, scene.height) {
+        return Err(fail(
+            FailureKind::BadOutput,
+            format!(
+                "its image is {}x{}, the scene's canvas {}x{}",
+                theirs.width(),
+                theirs.height(),
+                scene.width,
+                scene.height
+            ),
+        ));
+    }
+    Ok(theirs)
+}
+
 /// `; stderr: ...` with the end of the captured stderr, or nothing when it is empty.
-fn stderr_tail(path: &Path) -> String {
+pub(super) fn stderr_tail(path: &Path) -> String {
     let mut text = String::new();
     if let Ok(mut f) = std::fs::File::open(path) {
         let _ = f.read_to_string(&mut text);
@@ -338,7 +411,7 @@ fn stderr_tail(path: &Path) -> String {
 }
 
 /// Whether `program` names a file, or a file on `PATH`.
-fn program_exists(program: &str) -> bool {
+pub(super) fn program_exists(program: &str) -> bool {
     let p = Path::new(program);
     if p.components().count() > 1 {
         return p.is_file();

@@ -6,9 +6,8 @@ use super::{generate_scene, HuntConfig, SceneFamily};
 use crate::convention::{AnyTieRule, PixelCentre, TieRule};
 use crate::model::Model;
 use crate::oracle::fit::{fit, Candidate};
-use crate::oracle::program::RenderFailure;
-use crate::oracle::Theirs;
-use crate::scene::{Overrides, Scene};
+use crate::oracle::program::Renderer;
+use crate::scene::Overrides;
 
 /// How many tie-heavy probe scenes [`fit_convention`] renders: the conventions that
 /// explain every one of them are kept (one scene rarely tells every rule and snapping
@@ -42,10 +41,7 @@ pub enum FitFirst {
 ///
 /// # Errors
 /// A probe scene cannot be made, the renderer fails on one, or the fit refuses one.
-pub fn fit_convention(
-    config: &HuntConfig,
-    render: &dyn Fn(&Scene) -> Result<Theirs, RenderFailure>,
-) -> Result<FitFirst, String> {
+pub fn fit_convention(config: &HuntConfig, renderer: &dyn Renderer) -> Result<FitFirst, String> {
     let probe = HuntConfig {
         families: vec![SceneFamily::Mesh],
         ..config.clone()
@@ -55,7 +51,9 @@ pub fn fit_convention(
     for k in 0..FIT_PROBES {
         let scene = generate_scene(&probe, u64::MAX - k)?;
         let target = scene.target().ok_or("--fit-first: invalid probe scene")?;
-        let theirs = render(&scene).map_err(|f| format!("--fit-first: the renderer failed on a probe scene: {f}"))?;
+        let theirs = renderer
+            .render(&scene)
+            .map_err(|f| format!("--fit-first: the renderer failed on a probe scene: {f}"))?;
         let found = fit(&scene.primitives(), &target, &theirs).map_err(|e| format!("--fit-first: {e}"))?;
         exact = Some(match exact {
             None => found.exact.clone(),

@@ -41,8 +41,7 @@ use crate::harness::runner::{RunError, Runner};
 use crate::harness::suite::Shard;
 use crate::model::Model;
 use crate::oracle::compare::PixelKind;
-use crate::oracle::program::RenderFailure;
-use crate::oracle::theirs::Theirs;
+use crate::oracle::program::Renderer;
 use crate::scene::{Overrides, Scene};
 
 /// How a hunt runs.
@@ -129,10 +128,11 @@ type CaseResult = (u64, Scene, Vec<(Signature, Vec<PixelKind>)>, CaseOutcome);
 ///
 /// # Errors
 /// A scene could not be generated.
-pub fn hunt<R>(render: &R, config: &HuntConfig, jobs: usize, tick: &(dyn Fn() + Sync)) -> Result<HuntReport, String>
+pub fn hunt<R>(renderer: &R, config: &HuntConfig, jobs: usize, tick: &(dyn Fn() + Sync)) -> Result<HuntReport, String>
 where
-    R: Fn(&Scene) -> Result<Theirs, RenderFailure> + Sync,
+    R: Renderer + ?Sized,
 {
+    let render = |s: &Scene| renderer.render(s);
     let requested = config.shard.case_count(config.cases);
     let deadline = config.budget.and_then(|b| Instant::now().checked_add(b));
     // The cases that ran are the first of the shard's, in order (the runner hands on an
@@ -216,5 +216,6 @@ where
         failed,
         refused,
         findings,
+        renderer_runs: renderer.runs(),
     })
 }

@@ -12,6 +12,7 @@ use crate::harness::shrink::primitive_count;
 use crate::harness::suite::report::{json_object as object, json_value as j};
 use crate::harness::suite::Shard;
 use crate::oracle::compare::PixelKind;
+use crate::oracle::program::RendererRuns;
 use crate::scene::Scene;
 
 /// A distinct failure, shrunk.
@@ -58,6 +59,9 @@ pub struct HuntReport {
     pub refused: u64,
     /// Every distinct failure, by its first case.
     pub findings: Vec<HuntFinding>,
+    /// What the hunt cost the renderer, when it is a program: scenes asked for and
+    /// programs started.
+    pub renderer_runs: Option<RendererRuns>,
 }
 
 /// The `format` of a hunt report ([`HuntReport::to_json`]).
@@ -127,6 +131,15 @@ impl HuntReport {
             self.failed,
             self.refused
         )];
+        if let Some(r) = self.renderer_runs {
+            lines.push(format!(
+                "renderer: {} scene{} asked for, {} program start{}",
+                r.calls,
+                if r.calls == 1 { "" } else { "s" },
+                r.starts,
+                if r.starts == 1 { "" } else { "s" }
+            ));
+        }
         if self.stopped_by_time {
             lines.push(format!(
                 "stopped: the time budget ({:?}) ran out after {} of {} cases",
@@ -242,7 +255,10 @@ impl HuntReport {
             format!("[\n    {}\n  ]", findings.join(",\n    "))
         };
         let families: Vec<&str> = c.families.iter().map(|f| f.name()).collect();
-        let fields: [(&str, String); 19] = [
+        let runs = self
+            .renderer_runs
+            .map(|r| object(&[("calls", j(&r.calls)), ("starts", j(&r.starts))]));
+        let fields: [(&str, String); 20] = [
             ("format", j(REPORT_FORMAT)),
             ("version", j(&REPORT_VERSION)),
             ("rasterproof", j(env!("CARGO_PKG_VERSION"))),
@@ -272,6 +288,7 @@ impl HuntReport {
                     ("refused", j(&self.refused)),
                 ]),
             ),
+            ("renderer_runs", runs.unwrap_or_else(|| "null".to_string())),
             ("findings", findings),
         ];
         let body: Vec<String> = fields
