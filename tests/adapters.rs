@@ -31,7 +31,7 @@ use std::process::{Command, Output};
 use rasterproof::convention::Target;
 use rasterproof::edge::exact::edge_function;
 use rasterproof::raster::sample_exact;
-use rasterproof::scene::parse_scene;
+use rasterproof::scene::{parse_scene, parse_scene_bytes};
 use serde_json::Value;
 
 use crate::tempdir;
@@ -468,6 +468,87 @@ fn rgba(path: &Path) -> Vec<u8> {
         .into_raw()
 }
 
+/// The same hunt once per scene (`--cmd`) and kept alive (`--serve`) finds the same
+/// signatures in the same cases: the protocol changes how scenes reach the renderer,
+/// nothing else.
+#[test]
+fn once_per_scene_and_kept_alive_hunts_agree() {
+    let adapter = tiny_skia_adapter();
+    let args = [
+        "--preset",
+        "gl",
+        "--subpixel-bits",
+        "6",
+        "--rounding",
+        "towards-zero",
+        "--cases",
+        "40",
+        "--shrink-runs",
+        "10",
+    ];
+    let per_scene = short_hunt("--cmd", &format!("{} {{scene}} {{out}}", adapter.display()), &args);
+    let kept = short_hunt("--serve", &format!("{} --serve", adapter.display()), &args);
+    assert_eq!(per_scene.0, kept.0);
+    assert_eq!(per_scene.1, kept.1);
+    assert_eq!(per_scene.2 .0, per_scene.2 .1, "once per scene: a start per scene");
+    assert!(kept.2 .1 < per_scene.2 .1 / 4, "{:?} against {:?}", kept.2, per_scene.2);
+}
+
+/// Every fixture drawn through the stay-alive protocol (one program per renderer for all
+/// its fixtures) is the committed PNG, and tiny-skia's failure fixture is a non-zero exit
+/// there too (its panic ends the program without an answer).
+#[test]
+fn the_fixtures_draw_the_same_through_the_protocol() {
+    use rasterproof::oracle::program::FailureKind;
+    use rasterproof::oracle::stay_alive::StayAlive;
+    use rasterproof::oracle::{Background, Format, Theirs};
+    let serve = |cmd: String| {
+        StayAlive::new(
+            &cmd,
+            Format::Ids,
+            Background::default(),
+            std::time::Duration::from_secs(60),
+        )
+        .unwrap()
+    };
+    let tiny = serve(format!("{} --serve", tiny_skia_adapter().display()));
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/osmesa/render.py");
+    let mesa = |driver: &str| serve(format!("{} {} --serve --driver {driver}", python(), script.display()));
+    let (llvmpipe, softpipe) = if osmesa_available() {
+        (Some(mesa("llvmpipe")), Some(mesa("softpipe")))
+    } else {
+        (None, None)
+    };
+    for f in fixtures() {
+        let renderer = match f.renderer.as_str() {
+            "tiny-skia" => &tiny,
+            "llvmpipe" => match &llvmpipe {
+                Some(r) => r,
+                None => continue,
+            },
+            _ => match &softpipe {
+                Some(r) => r,
+                None => continue,
+            },
+        };
+        let scene = parse_scene_bytes(&std::fs::read(&f.scene).unwrap(), "fixture").unwrap();
+        let got = renderer.render(&scene);
+        match &f.theirs {
+            None => {
+                let failure = got.expect_err("the failure fixture still fails");
+                assert_eq!(failure.kind, FailureKind::Exit, "{failure}");
+                assert!(failure.message.contains("101"), "{failure}");
+            }
+            Some(png) => {
+                let want =
+                    Theirs::read(&std::fs::read(png).unwrap(), "png", Format::Ids, Background::default()).unwrap();
+                assert_eq!(got.unwrap(), want, "{}: {}", f.renderer, f.scene.display());
+            }
+        }
+    }
+    assert!(tiny.starts() <= 2, "{} starts", tiny.starts());
+}
+
 #[test]
 fn every_fixture_shows_its_finding() {
     let all = fixtures();
@@ -526,14 +607,15 @@ fn the_renderers_still_draw_the_fixtures_so() {
     }
 }
 
-/// `rasterproof hunt` against `cmd` with a fixed seed: the signatures it found (from its
-/// summary table) and its first line.
-fn short_hunt(cmd: &str, args: &[&str]) -> (Vec<String>, String) {
+/// `rasterproof hunt` against `cmd` (`how`: `--cmd` once per scene, or `--serve` kept
+/// alive) with a fixed seed: the signatures it found (from its summary table), its first
+/// line and its `renderer:` line (scenes asked for, program starts).
+fn short_hunt(how: &str, cmd: &str, args: &[&str]) -> (Vec<String>, String, (u64, u64)) {
     let output = assert_cmd::Command::cargo_bin("rasterproof")
         .unwrap()
         .args([
             "hunt",
-            "--cmd",
+            how,
             cmd,
             "--float32-exact",
             "--seed",
@@ -554,7 +636,15 @@ fn short_hunt(cmd: &str, args: &[&str]) -> (Vec<String>, String) {
         .filter(|l| l.len() > 4 && l.as_bytes()[..2].iter().all(u8::is_ascii_digit) && l.as_bytes()[2] == b' ')
         .map(|l| l[4..].split("  ").next().unwrap().trim().to_string())
         .collect();
-    (found, stdout.lines().next().unwrap_or("").to_string())
+    let runs = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("renderer: "))
+        .map(|l| {
+            let n: Vec<u64> = l.split(' ').filter_map(|w| w.parse().ok()).collect();
+            (n[0], n[1])
+        })
+        .expect("a renderer: line");
+    (found, stdout.lines().next().unwrap_or("").to_string(), runs)
 }
 
 /// The reason class of a signature (`tie, triangles` -> `tie`).
@@ -567,7 +657,7 @@ fn short_hunts_find_only_the_classes_of_the_fixtures() {
     let all = fixtures();
     let mut hunts = vec![(
         "tiny-skia",
-        format!("{} {{scene}} {{out}}", tiny_skia_adapter().display()),
+        format!("{} --serve", tiny_skia_adapter().display()),
         vec![
             "--preset",
             "gl",
@@ -582,7 +672,7 @@ fn short_hunts_find_only_the_classes_of_the_fixtures() {
         ],
     )];
     if osmesa_available() {
-        let script = format!("{} adapters/osmesa/render.py {{scene}} {{out}} --driver", python());
+        let script = format!("{} adapters/osmesa/render.py --serve --driver", python());
         hunts.push((
             "llvmpipe",
             format!("{script} llvmpipe"),
@@ -609,8 +699,11 @@ fn short_hunts_find_only_the_classes_of_the_fixtures() {
             .filter(|f| f.renderer == renderer)
             .map(|f| class_of(&f.signature))
             .collect();
-        let (found, summary) = short_hunt(&cmd, &args);
-        eprintln!("{renderer}: {summary}; {found:?}");
+        let (found, summary, (calls, starts)) = short_hunt("--serve", &cmd, &args);
+        eprintln!("{renderer}: {summary}; {found:?}; {calls} scenes, {starts} program starts");
+        // Kept alive: a program per job, and a fresh one after each failure of the
+        // renderer (tiny-skia's hairline panic).
+        assert!(starts * 4 <= calls, "{renderer}: {starts} starts for {calls} scenes");
         for s in &found {
             assert!(
                 known.contains(&class_of(s)),

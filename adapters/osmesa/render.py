@@ -5,6 +5,11 @@ layout), so that `rasterproof compare SCENE.json OUT.png --as ids` can judge the
 
     /usr/bin/python3 adapters/osmesa/render.py SCENE.json OUT.png [--driver llvmpipe|softpipe]
         [--viewport canvas|wide]
+    /usr/bin/python3 adapters/osmesa/render.py --serve [--driver ...] [--viewport ...]
+
+With --serve it stays alive: one OSMesa context, made current on a buffer of each scene's
+size, answering one JSON request per line on stdin (rasterproof hunt --serve; the protocol
+is in docs/oracle.md and adapters/python/rasterproof_adapter.py).
 
 Needs Debian's libosmesa6, python3-opengl, python3-numpy and python3-pil, which are
 installed for /usr/bin/python3 (not for a pyenv or venv `python3` on PATH).
@@ -173,6 +178,12 @@ def load_scene(path):
         raw = json.loads(text, parse_float=JsonNumber, parse_int=JsonNumber, parse_constant=bad_constant)
     except ValueError as e:
         raise Refused(f"{path}: not JSON: {e}") from e
+    return scene_from_raw(raw, path)
+
+
+def scene_from_raw(raw, path):
+    """A scene parsed with JsonNumber numbers (from a file, or a stay-alive request) as
+    plain Python data with Fraction coordinates; `path` names it in messages."""
     top = fields(raw, path, ("width", "height", "preset", "subpixel_bits", "rounding", "tie_rule",
                              "pixel_centre", "triangles", "lines", "polygons", "clip_space_triangles",
                              "viewport", "clip"))
@@ -488,34 +499,48 @@ def viewport_square(kind, side, max_dims):
     return (-(span // 2) if side <= span // 2 else 0), span
 
 
-def render(args):
-    os.environ["PYOPENGL_PLATFORM"] = "osmesa"
-    os.environ["GALLIUM_DRIVER"] = args.driver
-    scene = load_scene(args.scene)
-    try:
-        import numpy as np
-        from OpenGL import GL, osmesa
-        from PIL import Image
-    except Exception as e:  # ImportError, or PyOpenGL failing to load libOSMesa
-        raise Refused(f"cannot load the OSMesa Python stack ({e}); install libosmesa6 python3-opengl "
-                      f"python3-numpy python3-pil and run /usr/bin/python3") from e
-    W, H = scene["width"], scene["height"]
-    ctx = osmesa.OSMesaCreateContextExt(osmesa.OSMESA_RGBA, 0, 8, 0, None)
-    if not ctx:
-        raise Refused("OSMesaCreateContextExt failed")
-    try:
-        buf = np.zeros((H, W, 4), dtype=np.uint8)
-        if not osmesa.OSMesaMakeCurrent(ctx, buf, GL.GL_UNSIGNED_BYTE, W, H):
-            raise Refused(f"OSMesaMakeCurrent failed for a {W}x{H} buffer")
+class Mesa:
+    """One OSMesa context of the requested driver, made current on a buffer the size of
+    each scene in turn (per-scene use makes one per scene; --serve keeps one)."""
+
+    def __init__(self, driver):
+        os.environ["PYOPENGL_PLATFORM"] = "osmesa"
+        os.environ["GALLIUM_DRIVER"] = driver
+        try:
+            import numpy as np
+            from OpenGL import GL, osmesa
+            from PIL import Image
+        except Exception as e:  # ImportError, or PyOpenGL failing to load libOSMesa
+            raise Refused(f"cannot load the OSMesa Python stack ({e}); install libosmesa6 python3-opengl "
+                          f"python3-numpy python3-pil and run /usr/bin/python3") from e
+        self.np, self.GL, self.osmesa, self.Image = np, GL, osmesa, Image
+        self.ctx = osmesa.OSMesaCreateContextExt(osmesa.OSMESA_RGBA, 0, 8, 0, None)
+        if not self.ctx:
+            raise Refused("OSMesaCreateContextExt failed")
+        self.current(1, 1)
         renderer_name = GL.glGetString(GL.GL_RENDERER).decode()
         version = GL.glGetString(GL.GL_VERSION).decode()
         print(f"{NAME}: renderer: {renderer_name}; {version}", file=sys.stderr)
-        if not renderer_name.startswith(args.driver):
-            raise Refused(f"asked for {args.driver}, but GL_RENDERER is {renderer_name!r}")
+        if not renderer_name.startswith(driver):
+            self.close()
+            raise Refused(f"asked for {driver}, but GL_RENDERER is {renderer_name!r}")
         if GL.glGetIntegerv(GL.GL_STENCIL_BITS) < 8:
+            self.close()
             raise Refused("the context has fewer than 8 stencil bits")
-        max_dims = min(int(d) for d in GL.glGetIntegerv(GL.GL_MAX_VIEWPORT_DIMS))
-        low, span = viewport_square(args.viewport, max(W, H), max_dims)
+        self.max_dims = min(int(d) for d in GL.glGetIntegerv(GL.GL_MAX_VIEWPORT_DIMS))
+
+    def current(self, W, H):
+        """Makes the context current on a fresh W x H buffer."""
+        self.buf = self.np.zeros((H, W, 4), dtype=self.np.uint8)
+        if not self.osmesa.OSMesaMakeCurrent(self.ctx, self.buf, self.GL.GL_UNSIGNED_BYTE, W, H):
+            raise Refused(f"OSMesaMakeCurrent failed for a {W}x{H} buffer")
+
+    def draw(self, scene, viewport, source):
+        """The ids PNG of `scene` as a PIL image."""
+        GL, np = self.GL, self.np
+        W, H = scene["width"], scene["height"]
+        self.current(W, H)
+        low, span = viewport_square(viewport, max(W, H), self.max_dims)
         to_f32 = F32(np)
         r = Renderer(GL, np, scene, to_f32, low, span)
         r.setup()
@@ -527,16 +552,40 @@ def render(args):
         r.draw(lambda _id: (1, 0, 0, 0))
         counts = r.read()[:, :, 0]
         GL.glDisable(GL.GL_BLEND)
-    finally:
-        osmesa.OSMesaDestroyContext(ctx)
-    ids[:, :, 3][counts >= 2] = 254
-    if to_f32.inexact:
-        print(f"{NAME}: note: {to_f32.inexact} coordinate(s) of {args.scene} are not f32-exact; "
-              f"rounded to the nearest f32", file=sys.stderr)
+        ids[:, :, 3][counts >= 2] = 254
+        if to_f32.inexact:
+            print(f"{NAME}: note: {to_f32.inexact} coordinate(s) of {source} are not f32-exact; "
+                  f"rounded to the nearest f32", file=sys.stderr)
+        return self.Image.fromarray(ids, "RGBA")
+
+    def close(self):
+        self.osmesa.OSMesaDestroyContext(self.ctx)
+
+
+def render(args):
+    scene = load_scene(args.scene)
+    mesa = Mesa(args.driver)
     try:
-        Image.fromarray(ids, "RGBA").save(args.out, format="PNG")
+        image = mesa.draw(scene, args.viewport, args.scene)
+    finally:
+        mesa.close()
+    try:
+        image.save(args.out, format="PNG")
     except (OSError, ValueError) as e:
         raise Refused(f"{args.out}: cannot write the PNG: {e}") from e
+
+
+def serve(args):
+    """The stay-alive protocol (adapters/python/rasterproof_adapter.py): one context for
+    every scene, resized per scene."""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+    import rasterproof_adapter
+    mesa = Mesa(args.driver)
+    try:
+        rasterproof_adapter.serve(lambda raw: mesa.draw(scene_from_raw(raw, "scene"), args.viewport, "the scene"),
+                                  NAME, parse_number=JsonNumber)
+    finally:
+        mesa.close()
 
 
 class Parser(argparse.ArgumentParser):
@@ -548,15 +597,23 @@ class Parser(argparse.ArgumentParser):
 
 def main(argv):
     p = Parser(prog=NAME, description="Render a rasterproof scene with Mesa (OSMesa) into an ids PNG.")
-    p.add_argument("scene", help="the scene file (JSON)")
-    p.add_argument("out", help="the ids PNG to write")
+    p.add_argument("scene", nargs="?", help="the scene file (JSON)")
+    p.add_argument("out", nargs="?", help="the ids PNG to write")
+    p.add_argument("--serve", action="store_true",
+                   help="stay alive: read one JSON request per line on stdin and answer each on stdout "
+                        "(rasterproof hunt --serve; docs/oracle.md)")
     p.add_argument("--driver", choices=DRIVERS, default="llvmpipe", help="the Gallium driver (default llvmpipe)")
     p.add_argument("--viewport", choices=("canvas", "wide"), default="canvas",
                    help="GL's viewport: the canvas widened to a power of two (default), or the "
                         "largest GL allows, centred on the origin")
     args = p.parse_args(argv)
+    if args.serve != (args.scene is None and args.out is None) or (not args.serve and args.out is None):
+        p.error("give SCENE.json OUT.png, or --serve alone")
     try:
-        render(args)
+        if args.serve:
+            serve(args)
+        else:
+            render(args)
     except Refused as e:
         print(f"{NAME}: {e}", file=sys.stderr)
         return 2
