@@ -755,3 +755,31 @@ fn shards_of_a_closure_hunt_partition_it() {
         assert!(r.findings.iter().all(|g| g.case % 4 == k as u64), "shard {}", k + 1);
     }
 }
+
+/// The renderer is asked once per distinct scene while shrinking: every call is a case, a
+/// distinct scene a shrink tried, or a minimal scene's final verdict, and no more (a
+/// shrink that tries a scene twice answers the second try from the first).
+#[test]
+fn shrinking_asks_the_renderer_once_per_distinct_scene() {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let calls = AtomicUsize::new(0);
+    let counted = |s: &rasterproof::scene::Scene| {
+        calls.fetch_add(1, Ordering::Relaxed);
+        top_right(s)
+    };
+    let config = HuntConfig {
+        cases: 24,
+        shrink_runs: 60,
+        ..HuntConfig::default()
+    };
+    let report = hunt(&counted, &config, 1, &|| {}).unwrap();
+    assert!(!report.findings.is_empty());
+    let shrinking: usize = report.findings.iter().map(|f| f.renderer_calls).sum();
+    let tried: usize = report.findings.iter().map(|f| f.runs).sum();
+    assert!(shrinking <= tried);
+    assert_eq!(
+        calls.load(Ordering::Relaxed),
+        24 + shrinking + report.findings.len(),
+        "cases + distinct shrink scenes + final verdicts"
+    );
+}

@@ -191,8 +191,20 @@ where
     let mut findings = Vec::new();
     for (signature, (case, original, cases, mut kinds)) in first {
         kinds.sort();
-        let mut keeps = |s: &Scene| signatures(&judge(s, render(s), config.model)).contains(&signature);
+        // The shrinker may try one scene twice (two steps reaching it): the renderer is
+        // asked once per distinct scene.
+        let mut seen: std::collections::HashMap<String, bool> = std::collections::HashMap::new();
+        let mut keeps = |s: &Scene| {
+            let key = s.to_json();
+            if let Some(&kept) = seen.get(&key) {
+                return kept;
+            }
+            let kept = signatures(&judge(s, render(s), config.model)).contains(&signature);
+            seen.insert(key, kept);
+            kept
+        };
         let (minimal, runs) = shrink(&original, &mut keeps, config.shrink_runs, None);
+        let renderer_calls = seen.len();
         let verdict = judge(&minimal, render(&minimal), config.model);
         findings.push(HuntFinding {
             signature,
@@ -203,6 +215,7 @@ where
             minimal,
             verdict,
             runs,
+            renderer_calls,
         });
     }
     findings.sort_by_key(|f| (f.case, f.signature.clone()));

@@ -33,8 +33,11 @@ pub struct HuntFinding {
     pub minimal: Scene,
     /// Their verdict on the minimal scene.
     pub verdict: HuntVerdict,
-    /// Runs of their renderer the shrink took.
+    /// Scenes the shrink tried.
     pub runs: usize,
+    /// Of those, the distinct ones, each rendered once (a scene tried again is answered
+    /// from the first try).
+    pub renderer_calls: usize,
 }
 
 /// What a hunt found.
@@ -87,12 +90,13 @@ impl HuntFinding {
     /// first scene that showed it.
     pub fn to_text(&self, n: usize) -> String {
         let mut s = format!(
-            "finding {n:02}: {}{} (first in case {}, {} cases; shrunk with {} renderer runs)\n\n",
+            "finding {n:02}: {}{} (first in case {}, {} cases; shrunk in {} steps, {} renderer calls)\n\n",
             self.signature.describe(),
             self.kinds_text(),
             self.case,
             self.cases,
-            self.runs
+            self.runs,
+            self.renderer_calls
         );
         match &self.verdict {
             HuntVerdict::Differs(r) => s.push_str(&r.to_text(&format!("finding-{n:02}.json"), "their output", 50)),
@@ -245,6 +249,7 @@ impl HuntReport {
                     ("primitives", j(&primitive_count(&f.minimal))),
                     ("scene", scene),
                     ("shrink_runs", j(&f.runs)),
+                    ("shrink_renderer_calls", j(&f.renderer_calls)),
                     ("minimal_verdict", j(CaseOutcome::of(&f.verdict).name())),
                 ])
             })
