@@ -776,7 +776,10 @@ fn shrinking_asks_the_renderer_once_per_distinct_scene() {
     assert!(!report.findings.is_empty());
     let shrinking: usize = report.findings.iter().map(|f| f.renderer_calls).sum();
     let tried: usize = report.findings.iter().map(|f| f.runs).sum();
-    assert!(shrinking < tried, "some scene was tried twice: {tried} tried, {shrinking} distinct");
+    assert!(
+        shrinking < tried,
+        "some scene was tried twice: {tried} tried, {shrinking} distinct"
+    );
     assert_eq!(
         calls.load(Ordering::Relaxed),
         24 + shrinking + report.findings.len(),

@@ -46,6 +46,8 @@ mod fuzz_layout;
 mod golden;
 #[path = "homogeneous.rs"]
 mod homogeneous;
+#[path = "html_report.rs"]
+mod html_report;
 #[path = "hunt.rs"]
 mod hunt;
 #[path = "hunt_families.rs"]

@@ -37,6 +37,10 @@ pub struct Options {
     /// for small canvases, its legend beside it as DIFF.legend.txt.
     #[arg(long = "diff-out", value_name = "DIFF.png")]
     diff_out: Option<PathBuf>,
+    /// Write the comparison as one self-contained HTML page: the three images side by
+    /// side, zoom and pan, each pixel's explanation on click.
+    #[arg(long, value_name = "REPORT.html")]
+    html: Option<PathBuf>,
     /// Output format on stdout.
     #[arg(long = "format", default_value_t = OutputFormat::Text, value_parser = OutputFormat::parser(FORMATS))]
     format_out: OutputFormat,
@@ -53,7 +57,7 @@ pub struct Options {
     /// subpixel bits x 5 roundings, or none) and sample position (0.5 or 0); print every
     /// convention under which the oracle's image equals theirs, or the closest five. Exit 0
     /// when one does, 1 when none does.
-    #[arg(long, conflicts_with_all = ["diff_out", "model"])]
+    #[arg(long, conflicts_with_all = ["diff_out", "model", "html"])]
     fit: bool,
 }
 
@@ -153,13 +157,18 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             rasterproof::oracle::CompareError::Size(_) => format!("{theirs_name}: {e} ({name})"),
             other => format!("{name}: {other} (model {model})"),
         })?;
+    let mut outputs = Outputs::new();
     if let Some(path) = &o.diff_out {
         let scale = Scale::default_for(target.width, target.height);
-        let mut outputs = Outputs::new();
         outputs.stage_png(path, &report.diff_picture(scale))?;
         outputs.stage_text(&legend_path(path), &report.diff_legend(scale))?;
-        outputs.commit()?;
     }
+    if let Some(path) = &o.html {
+        let scene_text = std::fs::read_to_string(&o.scene).unwrap_or_else(|_| scene.to_json());
+        let command = shell_words::join(std::env::args());
+        outputs.stage_text(path, &report.to_html(&name, &theirs_name, &scene_text, &command))?;
+    }
+    outputs.commit()?;
     match o.format_out {
         OutputFormat::Text => {
             super::write_stdout(|out| out.write_all(report.to_text(&name, &theirs_name, o.limit).as_bytes()))?

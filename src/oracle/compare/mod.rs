@@ -7,6 +7,7 @@
 //! shapes that may explain it (`pixel`), and the [`CompareReport`] with its text, JSON and
 //! difference picture (`report`).
 
+mod html;
 mod pixel;
 mod report;
 

@@ -277,40 +277,49 @@ impl CompareReport {
             let _ = writeln!(s, "\nthe first {shown} of {} differing pixels:", self.pixels.len());
         }
         for p in self.pixels.iter().take(limit) {
+            s.push_str(&self.pixel_text(p));
+        }
+        s
+    }
+
+    /// One differing pixel in words, as the text report prints it: the pixel, its kind and
+    /// both answers, then each finding with its reason, the exact evidence and the distance
+    /// to the nearest edge.
+    pub fn pixel_text(&self, p: &DiffPixel) -> String {
+        let mut s = String::new();
+        let _ = writeln!(
+            s,
+            "({}, {}) {}: oracle {}, theirs {}",
+            p.x,
+            p.y,
+            p.kind.name(),
+            owners_text(&p.ours),
+            their_text(&p.theirs, self.format)
+        );
+        if !p.classified {
+            s.push_str("  (not classified)\n");
+        }
+        for f in &p.findings {
+            let who = match (&f.primitive, f.id) {
+                (Some(name), Some(id)) => format!("{name} (id {id})"),
+                (None, Some(id)) => format!("id {id}"),
+                _ => "no primitive".to_string(),
+            };
+            let guess = if f.guessed {
+                " (their output names no owner; the best explanation)"
+            } else {
+                ""
+            };
             let _ = writeln!(
                 s,
-                "({}, {}) {}: oracle {}, theirs {}",
-                p.x,
-                p.y,
-                p.kind.name(),
-                owners_text(&p.ours),
-                their_text(&p.theirs, self.format)
+                "  {who} {}{guess}: {}: {}",
+                f.relation.name(),
+                f.reason.class().name(),
+                reason_text(&f.reason)
             );
-            if !p.classified {
-                s.push_str("  (not classified)\n");
-            }
-            for f in &p.findings {
-                let who = match (&f.primitive, f.id) {
-                    (Some(name), Some(id)) => format!("{name} (id {id})"),
-                    (None, Some(id)) => format!("id {id}"),
-                    _ => "no primitive".to_string(),
-                };
-                let guess = if f.guessed {
-                    " (their output names no owner; the best explanation)"
-                } else {
-                    ""
-                };
-                let _ = writeln!(
-                    s,
-                    "  {who} {}{guess}: {}: {}",
-                    f.relation.name(),
-                    f.reason.class().name(),
-                    reason_text(&f.reason)
-                );
-                let _ = writeln!(s, "    {}", f.evidence);
-                if let Some(d2) = &f.distance2 {
-                    let _ = writeln!(s, "    nearest edge: {}", distance_decimal_text(d2));
-                }
+            let _ = writeln!(s, "    {}", f.evidence);
+            if let Some(d2) = &f.distance2 {
+                let _ = writeln!(s, "    nearest edge: {}", distance_decimal_text(d2));
             }
         }
         s
