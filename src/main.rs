@@ -58,6 +58,10 @@ enum Command {
     /// run's; print it as check does.
     #[command(after_help = cli::EXIT_CODES)]
     CheckMerge(cli::check::MergeOptions),
+    /// Merge the reports of a hunt's shards (hunt --shard K/N --report) into the whole
+    /// hunt's report; print its counts and findings.
+    #[command(after_help = cli::EXIT_CODES)]
+    HuntMerge(cli::hunt::MergeOptions),
     /// Every model's speed and error side by side, on seeded workloads at coordinate
     /// magnitudes 0 to 2^30 px: the tables, and with --out trade.json, trade.md and the
     /// pictures. Exit 1 when an exact or integer model shows an error.
@@ -77,6 +81,7 @@ fn main() -> ExitCode {
         Command::Flood(options) => cli::flood::run(&options),
         Command::Check(options) => cli::check::run(&options),
         Command::CheckMerge(options) => cli::check::merge(&options),
+        Command::HuntMerge(options) => cli::hunt::merge(&options),
         Command::Trade(options) => cli::trade::run(&options),
     };
     match result {

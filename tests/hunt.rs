@@ -786,3 +786,88 @@ fn shrinking_asks_the_renderer_once_per_distinct_scene() {
         "cases + distinct shrink scenes + final verdicts"
     );
 }
+
+/// A hunt split in three shards (as a CI matrix or a Kubernetes Indexed Job would run
+/// it: `--shard $((JOB_COMPLETION_INDEX + 1))/3`), merged by `hunt-merge`, is the
+/// unsharded hunt's report: the same counts, cases and findings (first cases, case counts,
+/// pixel kinds, minimal scenes, their shrinking), in the same order; only what the
+/// renderer was asked differs (each shard shrinks its own first case of each signature).
+/// Two of the three merge into a partial report that says which shards it holds; a shard
+/// given twice, or one of another hunt, is refused naming the file.
+#[test]
+fn merged_shards_equal_the_unsharded_hunt() {
+    let cmd = coarse_cmd();
+    let common = [
+        "--cmd",
+        cmd.as_str(),
+        "--cases",
+        "30",
+        "--seed",
+        "5",
+        "--shrink-runs",
+        "20",
+    ];
+    let (_, whole, _) = hunt_report(&common);
+    let dir = fresh_dir("hunt-merge");
+    let mut paths = Vec::new();
+    for k in 1..=3 {
+        let path = dir.path().join(format!("shard-{k}.json"));
+        let shard = format!("{k}/3");
+        let mut args = common.to_vec();
+        args.extend(["--shard", shard.as_str(), "--report", path.to_str().unwrap()]);
+        let (code, out, err) = hunt_cli(&args);
+        assert!(code == 0 || code == 1, "{out}{err}");
+        paths.push(path);
+    }
+    let merged_path = dir.path().join("merged.json");
+    let mut args: Vec<&str> = vec!["hunt-merge"];
+    args.extend(paths.iter().map(|p| p.to_str().unwrap()));
+    args.extend(["--report", merged_path.to_str().unwrap()]);
+    let out = Command::cargo_bin("rasterproof").unwrap().args(&args).output().unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "{stdout}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        stdout.starts_with("hunt-merge: 3 reports (every shard): 30 scenes"),
+        "{stdout}"
+    );
+    let mut merged: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&merged_path).unwrap()).unwrap();
+    let mut whole = whole;
+    let (m_runs, w_runs) = (merged["renderer_runs"].take(), whole["renderer_runs"].take());
+    assert!(n(&m_runs["calls"]) >= n(&w_runs["calls"]), "{m_runs} {w_runs}");
+    assert_eq!(merged, whole);
+    assert!(!whole["findings"].as_array().unwrap().is_empty());
+
+    // Two of three: a partial report, which says so.
+    let out = Command::cargo_bin("rasterproof")
+        .unwrap()
+        .args(["hunt-merge", paths[0].to_str().unwrap(), paths[2].to_str().unwrap()])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(
+        stdout.starts_with("hunt-merge: 2 reports (shards [1,3] of 3)"),
+        "{stdout}"
+    );
+    // Refusals.
+    let refused = |args: &[&str], says: &str| {
+        let out = Command::cargo_bin("rasterproof").unwrap().args(args).output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr).to_string();
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(err.contains(says), "{err}");
+    };
+    let p0 = paths[0].to_str().unwrap();
+    refused(&["hunt-merge", p0, p0], "is given twice");
+    let other = dir.path().join("other.json");
+    let mut text = std::fs::read_to_string(&paths[1]).unwrap();
+    text = text.replace("\"seed\": 5", "\"seed\": 6");
+    std::fs::write(&other, text).unwrap();
+    refused(&["hunt-merge", p0, other.to_str().unwrap()], "seed 6, but");
+    let check = dir.path().join("not-hunt.json");
+    std::fs::write(&check, "{\"format\": \"something else\"}").unwrap();
+    refused(&["hunt-merge", check.to_str().unwrap()], "not a hunt report");
+}

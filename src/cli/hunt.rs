@@ -224,3 +224,65 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         ExitCode::from(1)
     })
 }
+
+/// What `hunt-merge` was asked to do.
+#[derive(clap::Args)]
+pub struct MergeOptions {
+    /// The reports of the shards (`hunt --shard K/N --report FILE.json`) of one hunt.
+    #[arg(required = true, value_name = "REPORT.json")]
+    reports: Vec<PathBuf>,
+    /// Write the merged report (JSON, the hunt report's schema).
+    #[arg(long, value_name = "FILE.json")]
+    report: Option<PathBuf>,
+}
+
+/// Reads the shard reports, merges them, writes `--report` and prints the merged counts
+/// and findings; exit 1 when something was found.
+pub fn merge(o: &MergeOptions) -> Result<ExitCode, String> {
+    let mut reports = Vec::new();
+    for path in &o.reports {
+        let name = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|e| format!("{name}: cannot read: {e}"))?;
+        let value: serde_json::Value =
+            serde_json::from_str(&text).map_err(|e| format!("{name}: not a hunt report: not JSON ({e})"))?;
+        reports.push((name, value));
+    }
+    let merged = rasterproof::oracle::hunt::merge_reports(&reports)?;
+    if let Some(path) = &o.report {
+        let mut outputs = Outputs::new();
+        let text = serde_json::to_string_pretty(&merged).map_err(|e| format!("internal: {e}"))?;
+        outputs.stage_text(path, &format!("{text}\n"))?;
+        outputs.commit()?;
+    }
+    let counts = &merged["counts"];
+    let findings = merged["findings"].as_array().cloned().unwrap_or_default();
+    let shard = &merged["shard"];
+    let shards = match shard.get("merged") {
+        Some(list) => format!("shards {list} of {}", shard["n"]),
+        None => "every shard".to_string(),
+    };
+    let mut text = format!(
+        "hunt-merge: {} reports ({shards}): {} scenes: {} identical, {} differ, {} failed, {} refused by the oracle\n",
+        reports.len(),
+        merged["cases_run"],
+        counts["same"],
+        counts["differ"],
+        counts["failed"],
+        counts["refused"]
+    );
+    for (k, f) in findings.iter().enumerate() {
+        text.push_str(&format!(
+            "{:02}   {:<44} {:>6} {:>6}\n",
+            k + 1,
+            f["signature"].as_str().unwrap_or("?"),
+            f["cases"],
+            f["first_case"]
+        ));
+    }
+    super::print_stdout(text.trim_end())?;
+    Ok(if findings.is_empty() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}

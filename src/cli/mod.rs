@@ -69,7 +69,7 @@ pub const EXIT_CODES: &str = "Exit codes:
   0  success (compare: identical)
   1  an invariant of an exact or integer model was violated (check, check-merge); an
      exact or integer model shows an error (trade); the images differ (compare); no
-     convention fits (compare --fit); hunt found something
+     convention fits (compare --fit); hunt or hunt-merge found something
   2  bad input: one line on stderr naming the file, field (or option) and value";
 
 /// The `--model` help: every model with its one-line description, from

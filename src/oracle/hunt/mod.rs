@@ -20,6 +20,7 @@
 
 mod convention;
 mod families;
+mod merge;
 mod report;
 mod test_text;
 mod verdict;
@@ -30,6 +31,7 @@ use std::time::{Duration, Instant};
 pub use crate::harness::shrink::{primitive_count, shrink};
 pub use convention::{fit_convention, hunt_convention, preferred, FitFirst, FIT_PROBES};
 pub use families::{float32_exact, generate_scene, SceneFamily};
+pub use merge::merge_reports;
 pub use report::{HuntFinding, HuntReport, REPORT_FORMAT, REPORT_VERSION};
 pub use test_text::rust_test;
 pub use verdict::{judge, pixel_kinds, signatures, HuntVerdict, Signature};
