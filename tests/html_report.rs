@@ -132,3 +132,47 @@ fn a_click_on_a_pixel_shows_its_explanation() {
     let at = dom(&browser, &page, "#pixel=9,9");
     assert!(text_of(&at, "explanation").contains("nothing to explain"));
 }
+
+/// `hunt --out DIR` writes `DIR/index.html`, every finding in one page: opened at
+/// `#finding=01&pixel=X,Y` (the first differing pixel of finding 01's minimal scene, read
+/// from `finding-01.txt`), finding 01's explanation is that pixel's in its `.txt`, and the
+/// other findings' are untouched.
+#[test]
+fn a_hunts_index_explains_a_findings_pixel() {
+    let dir = tempdir::Dir::new("html-hunt");
+    let exe = assert_cmd::cargo::cargo_bin("rasterproof");
+    let cmd = format!("{} render {{scene}} --subpixel-bits 4 --ids-out {{out}}", exe.display());
+    let out = dir.path().join("found");
+    let (code, _) = rasterproof(&[
+        "hunt".as_ref(),
+        "--cmd".as_ref(),
+        cmd.as_ref(),
+        "--cases".as_ref(),
+        "12".as_ref(),
+        "--shrink-runs".as_ref(),
+        "20".as_ref(),
+        "--quiet".as_ref(),
+        "--out".as_ref(),
+        out.as_os_str(),
+    ]);
+    assert_eq!(code, 1);
+    let page = out.join("index.html");
+    let html = std::fs::read_to_string(&page).unwrap();
+    assert!(html.contains("id=\"finding-01\""));
+    for fetch in ["src=\"http", "href=\"http", "src=\"//"] {
+        assert!(!html.contains(fetch), "the page fetches something: {fetch}");
+    }
+    let txt = std::fs::read_to_string(out.join("finding-01.txt")).unwrap();
+    let list = &txt[txt.find("differing pixels:\n").expect("a pixel list") + "differing pixels:\n".len()..];
+    let coords = &list[1..list.find(')').unwrap()];
+    let (x, y) = coords.split_once(", ").unwrap();
+    let Some(browser) = chromium() else { return };
+    let after = dom(&browser, &page, &format!("#finding=01&pixel={x},{y}"));
+    assert_eq!(text_of(&after, "pixel-title-01"), format!("Pixel ({x}, {y})"));
+    let shown = text_of(&after, "explanation-01");
+    assert!(shown.starts_with(&format!("({x}, {y}) ")), "{shown}");
+    assert!(txt.contains(shown.trim_end()), "{shown}\nnot in\n{txt}");
+    if after.contains("id=\"pixel-title-02\"") {
+        assert_eq!(text_of(&after, "pixel-title-02"), "No pixel chosen");
+    }
+}

@@ -67,7 +67,8 @@ pub struct Options {
     #[arg(long, default_value_t = 16)]
     canvas: u32,
     /// Write each distinct failure here: the minimal scene (finding-NN.json), its
-    /// explanation (finding-NN.txt) and a Rust test (finding-NN.rs).
+    /// explanation (finding-NN.txt) and a Rust test (finding-NN.rs); and index.html, every
+    /// finding in one self-contained page to explore.
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
     /// Kill the renderer after this many seconds (a timeout is a finding).
@@ -209,6 +210,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             outputs.stage_text(&path("txt"), &f.to_text(n))?;
             outputs.stage_text(&path("rs"), &rust_test(f, n, config.model))?;
         }
+        outputs.stage_text(&dir.join("index.html"), &report.to_html(cmd))?;
     }
     if let Some(path) = &o.run.outputs.report {
         outputs.stage_text(path, &report.to_json(cmd))?;

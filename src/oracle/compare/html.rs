@@ -24,12 +24,79 @@ impl CompareReport {
     /// (X, Y) of the difference view once the page has loaded (a link to one pixel, and
     /// what the browser test uses).
     pub fn to_html(&self, scene: &str, theirs: &str, scene_json: &str, command: &str) -> String {
+        let title = format!("rasterproof compare: {theirs} against {scene}");
+        let mut body = format!("<h1>{}</h1>\n", escape(&title));
+        body.push_str(&self.html_views(""));
+        let _ = writeln!(
+            body,
+            "<details open><summary>Summary</summary><pre id=\"summary\">{}</pre></details>",
+            escape(&self.to_text(scene, theirs, 0))
+        );
+        let _ = writeln!(
+            body,
+            "<details><summary>The scene</summary><pre id=\"scene\">{}</pre></details>",
+            escape(scene_json)
+        );
+        let _ = writeln!(
+            body,
+            "<p>Reproduce: <code id=\"command\">{}</code></p>",
+            escape(command)
+        );
+        html_page(&title, &body)
+    }
+
+    /// The interactive part of a page: the headline, the zoom controls, the three views,
+    /// the legend, the hovered pixel and the chosen pixel's explanation, with the data
+    /// they draw from; element ids end in `suffix` (several on one page: a hunt's
+    /// findings).
+    pub fn html_views(&self, suffix: &str) -> String {
+        let data = self.html_data().to_string().replace("</", "<\\/"); // "</" would end the <script>
+        let headline = if self.identical() {
+            "identical".to_string()
+        } else {
+            self.headline()
+                .unwrap_or_else(|| format!("{} pixels differ", self.pixels.len()))
+        };
+        let mut out = format!("<div class=\"compare\" data-suffix=\"{suffix}\">\n");
+        let _ = writeln!(
+            out,
+            "<p class=\"headline\" id=\"headline{suffix}\">{}</p>",
+            escape(&headline)
+        );
+        out.push_str(
+            "<div class=\"controls\">zoom <button data-role=\"zoom-out\" title=\"zoom out (-)\">&minus;</button> \
+             <span data-role=\"zoom\"></span> <button data-role=\"zoom-in\" title=\"zoom in (+)\">+</button> \
+             <span class=\"hint\">scroll to pan (the three views move together); hover a pixel for both answers, \
+             click it for its explanation</span></div>\n<div class=\"views\">\n",
+        );
+        for (role, caption) in [
+            ("ours", "the oracle (exact)"),
+            ("theirs", "theirs"),
+            ("diff", "the difference"),
+        ] {
+            let _ = writeln!(
+                out,
+                "<figure><figcaption>{caption}</figcaption><div class=\"pane\"><canvas data-role=\"{role}\" id=\"{role}{suffix}\"></canvas></div></figure>"
+            );
+        }
+        let _ = writeln!(
+            out,
+            "</div>\n<div class=\"legend\" data-role=\"legend\"></div>\n<p data-role=\"hover\">&nbsp;</p>\n\
+             <section class=\"pixel\"><h2 data-role=\"pixel-title\" id=\"pixel-title{suffix}\">No pixel chosen</h2>\
+             <pre data-role=\"explanation\" id=\"explanation{suffix}\">Click a differing pixel.</pre></section>\n\
+             <script type=\"application/json\" data-role=\"data\">{data}</script>\n</div>"
+        );
+        out
+    }
+
+    /// What the views draw: per pixel the oracle's first owner + 1 (0: none) and
+    /// theirs (a mask's covered pixel is the largest u32), the pixels with several
+    /// owners, the difference view's colour index (0 neither, 1 matched, 2 + kind), the
+    /// palette, and each differing pixel's explanation.
+    fn html_data(&self) -> Value {
         let n = usize::try_from(u64::from(self.width) * u64::from(self.height)).expect("a canvas fits memory");
         let index =
             |x: u32, y: u32| usize::try_from(u64::from(y) * u64::from(self.width) + u64::from(x)).expect("fits");
-        // Per pixel: the oracle's first owner + 1 (0: none), with a flag for several;
-        // theirs the same (a mask's covered pixel is 1); the difference view's colour
-        // index: 0 neither, 1 matched, 2 + kind.
         let mut ours = vec![0u32; n];
         let mut several = Vec::new();
         let mut diff = vec![0u8; n];
@@ -77,7 +144,7 @@ impl CompareReport {
             .into_iter()
             .chain(PixelKind::ALL.iter().map(|k| k.name()))
             .collect();
-        let data = json!({
+        json!({
             "width": self.width,
             "height": self.height,
             "ours": ours,
@@ -88,67 +155,21 @@ impl CompareReport {
             "palette": palette,
             "kinds": kinds,
             "explain": explain,
-        });
-        // Inside <script>, "</" would end the element: JSON allows "<\/".
-        let data = data.to_string().replace("</", "<\\/");
-        let title = format!("rasterproof compare: {theirs} against {scene}");
-        let summary = self.to_text(scene, theirs, 0);
-        let mut page = String::new();
-        let _ = writeln!(
-            page,
-            "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>{}</title>\n<style>{STYLE}</style>\n</head>\n<body>",
-            escape(&title)
-        );
-        let _ = writeln!(page, "<h1>{}</h1>", escape(&title));
-        let headline = if self.identical() {
-            "identical".to_string()
-        } else {
-            self.headline()
-                .unwrap_or_else(|| format!("{} pixels differ", self.pixels.len()))
-        };
-        let _ = writeln!(page, "<p id=\"headline\">{}</p>", escape(&headline));
-        page.push_str(
-            "<div id=\"controls\">zoom <button id=\"zoom-out\" title=\"zoom out (-)\">&minus;</button> <span id=\"zoom\"></span> \
-             <button id=\"zoom-in\" title=\"zoom in (+)\">+</button> <span class=\"hint\">scroll to pan (the three views move together); \
-             hover a pixel for both answers, click it for its explanation</span></div>\n<div id=\"views\">\n",
-        );
-        for (id, caption) in [
-            ("ours", "the oracle (exact)"),
-            ("theirs", "theirs"),
-            ("diff", "the difference"),
-        ] {
-            let _ = writeln!(
-                page,
-                "<figure><figcaption>{caption}</figcaption><div class=\"pane\"><canvas id=\"{id}\"></canvas></div></figure>"
-            );
-        }
-        page.push_str("</div>\n<div id=\"legend\"></div>\n<p id=\"hover\">&nbsp;</p>\n");
-        page.push_str("<section id=\"pixel\"><h2 id=\"pixel-title\">No pixel chosen</h2><pre id=\"explanation\">Click a differing pixel.</pre></section>\n");
-        let _ = writeln!(
-            page,
-            "<details open><summary>Summary</summary><pre id=\"summary\">{}</pre></details>",
-            escape(&summary)
-        );
-        let _ = writeln!(
-            page,
-            "<details><summary>The scene</summary><pre id=\"scene\">{}</pre></details>",
-            escape(scene_json)
-        );
-        let _ = writeln!(
-            page,
-            "<p>Reproduce: <code id=\"command\">{}</code></p>",
-            escape(command)
-        );
-        let _ = writeln!(
-            page,
-            "<script id=\"data\" type=\"application/json\">{data}</script>\n<script>{SCRIPT}</script>\n</body>\n</html>"
-        );
-        page
+        })
     }
 }
 
+/// A whole page: `title`, the style, `body` (with its views' data) and the script that
+/// brings every view block of it to life.
+pub fn html_page(title: &str, body: &str) -> String {
+    format!(
+        "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>{}</title>\n<style>{STYLE}</style>\n</head>\n<body>\n{body}<script>{SCRIPT}</script>\n</body>\n</html>\n",
+        escape(title)
+    )
+}
+
 /// `text` with `&`, `<`, `>` and `"` escaped for HTML.
-fn escape(text: &str) -> String {
+pub fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
@@ -158,24 +179,21 @@ fn escape(text: &str) -> String {
 const STYLE: &str = r#"
 body { font: 14px system-ui, sans-serif; margin: 1em 2em; background: #fafafa; color: #222; }
 h1 { font-size: 1.2em; } h2 { font-size: 1.05em; margin: 0.3em 0; }
-#headline { font-weight: 600; }
-#views { display: flex; gap: 1em; flex-wrap: wrap; }
+.headline { font-weight: 600; }
+.views { display: flex; gap: 1em; flex-wrap: wrap; }
 figure { margin: 0; } figcaption { font-weight: 600; margin-bottom: 0.3em; }
 .pane { width: 420px; height: 420px; overflow: auto; border: 1px solid #999; background: #000; position: relative; }
 .marker { position: absolute; box-sizing: border-box; border: 2px solid #00e5ff; outline: 1px solid #000; pointer-events: none; display: none; }
 canvas { image-rendering: pixelated; image-rendering: crisp-edges; display: block; cursor: crosshair; }
-#legend span { display: inline-block; margin-right: 1em; }
-#legend i { display: inline-block; width: 0.9em; height: 0.9em; margin-right: 0.3em; vertical-align: middle; border: 1px solid #666; }
-#pixel { border: 1px solid #bbb; background: #fff; padding: 0.5em 1em; margin: 0.5em 0; }
+.legend span { display: inline-block; margin-right: 1em; }
+.legend i { display: inline-block; width: 0.9em; height: 0.9em; margin-right: 0.3em; vertical-align: middle; border: 1px solid #666; }
+.pixel { border: 1px solid #bbb; background: #fff; padding: 0.5em 1em; margin: 0.5em 0; }
 pre { white-space: pre-wrap; font: 12px ui-monospace, monospace; }
 .hint { color: #666; font-size: 0.9em; }
 "#;
 
 const SCRIPT: &str = r#"
 "use strict";
-const D = JSON.parse(document.getElementById("data").textContent);
-const W = D.width, H = D.height;
-const views = ["ours", "theirs", "diff"].map(id => document.getElementById(id));
 function idColour(v) {
   if (v === 0) return [0, 0, 0];
   if (v === 4294967295) return [255, 255, 255];
@@ -184,88 +202,104 @@ function idColour(v) {
   return [f(0), f(8), f(4)].map(c => Math.round(c * 255));
 }
 function hex(c) { const n = parseInt(c.slice(1), 16); return [n >> 16, (n >> 8) & 255, n & 255]; }
-function paint(canvas, colourAt, several) {
-  canvas.width = W; canvas.height = H;
-  const ctx = canvas.getContext("2d");
-  const img = ctx.createImageData(W, H);
-  for (let i = 0; i < W * H; i++) {
-    const c = colourAt(i);
-    img.data[4 * i] = c[0]; img.data[4 * i + 1] = c[1]; img.data[4 * i + 2] = c[2]; img.data[4 * i + 3] = 255;
+function setup(block) {
+  const role = r => block.querySelector('[data-role="' + r + '"]');
+  const D = JSON.parse(role("data").textContent);
+  const W = D.width, H = D.height;
+  const views = ["ours", "theirs", "diff"].map(role);
+  function paint(canvas, colourAt, several) {
+    canvas.width = W; canvas.height = H;
+    const ctx = canvas.getContext("2d");
+    const img = ctx.createImageData(W, H);
+    for (let i = 0; i < W * H; i++) {
+      const c = colourAt(i);
+      img.data[4 * i] = c[0]; img.data[4 * i + 1] = c[1]; img.data[4 * i + 2] = c[2]; img.data[4 * i + 3] = 255;
+    }
+    for (const i of several || []) { img.data[4 * i] = 255; img.data[4 * i + 1] = 255; img.data[4 * i + 2] = 255; }
+    ctx.putImageData(img, 0, 0);
   }
-  for (const i of several || []) { img.data[4 * i] = 255; img.data[4 * i + 1] = 255; img.data[4 * i + 2] = 255; }
-  ctx.putImageData(img, 0, 0);
-}
-const palette = D.palette.map(hex);
-paint(views[0], i => idColour(D.ours[i]), D.ours_several);
-paint(views[1], i => idColour(D.theirs[i]), D.theirs_several);
-paint(views[2], i => palette[D.diff[i]]);
-const legend = document.getElementById("legend");
-D.kinds.forEach((k, j) => {
-  const span = document.createElement("span");
-  const swatch = document.createElement("i");
-  swatch.style.background = D.palette[j];
-  span.append(swatch, k);
-  legend.append(span);
-});
-let zoom = Math.max(1, Math.min(32, Math.floor(400 / Math.max(W, H))));
-let chosen = null;
-const markers = views.map(c => { const m = document.createElement("div"); m.className = "marker"; c.parentElement.append(m); return m; });
-function placeMarkers() {
-  if (!chosen) return;
-  for (const m of markers) {
-    const side = Math.max(zoom, 4);
-    m.style.display = "block";
-    m.style.left = (chosen[0] * zoom + zoom / 2 - side / 2 - 2) + "px"; m.style.top = (chosen[1] * zoom + zoom / 2 - side / 2 - 2) + "px";
-    m.style.width = (side + 4) + "px"; m.style.height = (side + 4) + "px";
+  const palette = D.palette.map(hex);
+  paint(views[0], i => idColour(D.ours[i]), D.ours_several);
+  paint(views[1], i => idColour(D.theirs[i]), D.theirs_several);
+  paint(views[2], i => palette[D.diff[i]]);
+  D.kinds.forEach((k, j) => {
+    const span = document.createElement("span");
+    const swatch = document.createElement("i");
+    swatch.style.background = D.palette[j];
+    span.append(swatch, k);
+    role("legend").append(span);
+  });
+  let zoom = Math.max(1, Math.min(32, Math.floor(400 / Math.max(W, H))));
+  let chosen = null;
+  const markers = views.map(c => { const m = document.createElement("div"); m.className = "marker"; c.parentElement.append(m); return m; });
+  function placeMarkers() {
+    if (!chosen) return;
+    for (const m of markers) {
+      const side = Math.max(zoom, 4);
+      m.style.display = "block";
+      m.style.left = (chosen[0] * zoom + zoom / 2 - side / 2 - 2) + "px"; m.style.top = (chosen[1] * zoom + zoom / 2 - side / 2 - 2) + "px";
+      m.style.width = (side + 4) + "px"; m.style.height = (side + 4) + "px";
+    }
   }
+  function setZoom(z) {
+    zoom = Math.max(1, Math.min(64, z));
+    for (const c of views) {
+      c.style.width = (W * zoom) + "px"; c.style.height = (H * zoom) + "px";
+      // A pane no larger than its image (scroll bars aside), at most 420 px.
+      c.parentElement.style.width = Math.min(420, W * zoom + 16) + "px";
+      c.parentElement.style.height = Math.min(420, H * zoom + 16) + "px";
+    }
+    role("zoom").textContent = zoom + "x";
+    placeMarkers();
+  }
+  setZoom(zoom);
+  role("zoom-in").onclick = () => setZoom(zoom * 2);
+  role("zoom-out").onclick = () => setZoom(Math.floor(zoom / 2));
+  block.tabIndex = 0;
+  block.addEventListener("keydown", e => { if (e.key === "+") setZoom(zoom * 2); if (e.key === "-") setZoom(Math.floor(zoom / 2)); });
+  const panes = views.map(c => c.parentElement);
+  let syncing = false;
+  for (const p of panes) p.addEventListener("scroll", () => {
+    if (syncing) return;
+    syncing = true;
+    for (const q of panes) if (q !== p) { q.scrollLeft = p.scrollLeft; q.scrollTop = p.scrollTop; }
+    syncing = false;
+  });
+  function pixelAt(canvas, e) {
+    const r = canvas.getBoundingClientRect();
+    const x = Math.floor((e.clientX - r.left) / r.width * W), y = Math.floor((e.clientY - r.top) / r.height * H);
+    return (x >= 0 && y >= 0 && x < W && y < H) ? [x, y] : null;
+  }
+  function owners(v, several) { return v === 0 ? "none" : v === 4294967295 ? "covered" : "id " + (v - 1) + (several ? " and more" : ""); }
+  function describe(x, y) {
+    const i = y * W + x;
+    return "(" + x + ", " + y + ") " + D.kinds[D.diff[i]] + ": oracle " + owners(D.ours[i], D.ours_several.includes(i)) +
+      ", theirs " + owners(D.theirs[i], D.theirs_several.includes(i));
+  }
+  function choose(x, y) {
+    chosen = [x, y];
+    placeMarkers();
+    role("pixel-title").textContent = "Pixel (" + x + ", " + y + ")";
+    role("explanation").textContent = D.explain[x + "," + y] || (describe(x, y) + "\n(the same in both images: nothing to explain)");
+  }
+  for (const c of views) {
+    c.addEventListener("mousemove", e => { const p = pixelAt(c, e); role("hover").textContent = p ? describe(p[0], p[1]) : "\u00a0"; });
+    c.addEventListener("click", e => { const p = pixelAt(c, e); if (p) choose(p[0], p[1]); });
+  }
+  // A click at pixel (x, y), as a person's would be: whole CSS pixels, the first inside it.
+  block.clickPixel = (x, y) => {
+    const c = views[2], p = c.parentElement;
+    p.scrollLeft = x * zoom - p.clientWidth / 2; p.scrollTop = y * zoom - p.clientHeight / 2;
+    const r = c.getBoundingClientRect();
+    c.dispatchEvent(new MouseEvent("click", { clientX: Math.ceil(r.left + x * zoom), clientY: Math.ceil(r.top + y * zoom), bubbles: true }));
+  };
 }
-function setZoom(z) {
-  zoom = Math.max(1, Math.min(64, z));
-  for (const c of views) { c.style.width = (W * zoom) + "px"; c.style.height = (H * zoom) + "px"; }
-  document.getElementById("zoom").textContent = zoom + "x";
-  placeMarkers();
-}
-setZoom(zoom);
-document.getElementById("zoom-in").onclick = () => setZoom(zoom * 2);
-document.getElementById("zoom-out").onclick = () => setZoom(Math.floor(zoom / 2));
-document.addEventListener("keydown", e => { if (e.key === "+") setZoom(zoom * 2); if (e.key === "-") setZoom(Math.floor(zoom / 2)); });
-const panes = views.map(c => c.parentElement);
-let syncing = false;
-for (const p of panes) p.addEventListener("scroll", () => {
-  if (syncing) return;
-  syncing = true;
-  for (const q of panes) if (q !== p) { q.scrollLeft = p.scrollLeft; q.scrollTop = p.scrollTop; }
-  syncing = false;
-});
-function pixelAt(canvas, e) {
-  const r = canvas.getBoundingClientRect();
-  const x = Math.floor((e.clientX - r.left) / r.width * W), y = Math.floor((e.clientY - r.top) / r.height * H);
-  return (x >= 0 && y >= 0 && x < W && y < H) ? [x, y] : null;
-}
-function owners(v, several) { return v === 0 ? "none" : v === 4294967295 ? "covered" : "id " + (v - 1) + (several ? " and more" : ""); }
-function describe(x, y) {
-  const i = y * W + x;
-  return "(" + x + ", " + y + ") " + D.kinds[D.diff[i]] + ": oracle " + owners(D.ours[i], D.ours_several.includes(i)) +
-    ", theirs " + owners(D.theirs[i], D.theirs_several.includes(i));
-}
-function choose(x, y) {
-  const key = x + "," + y;
-  chosen = [x, y];
-  placeMarkers();
-  document.getElementById("pixel-title").textContent = "Pixel (" + x + ", " + y + ")";
-  document.getElementById("explanation").textContent = D.explain[key] || (describe(x, y) + "\n(the same in both images: nothing to explain)");
-}
-for (const c of views) {
-  c.addEventListener("mousemove", e => { const p = pixelAt(c, e); document.getElementById("hover").textContent = p ? describe(p[0], p[1]) : "\u00a0"; });
-  c.addEventListener("click", e => { const p = pixelAt(c, e); if (p) choose(p[0], p[1]); });
-}
-const m = /^#pixel=(\d+),(\d+)$/.exec(location.hash);
+const blocks = Array.from(document.querySelectorAll(".compare"));
+blocks.forEach(setup);
+// #pixel=X,Y clicks pixel (X, Y) of the first block; #finding=NN&pixel=X,Y of finding NN's.
+const m = /^#(?:finding=(\d+)&)?pixel=(\d+),(\d+)$/.exec(location.hash);
 if (m) {
-  const x = +m[1], y = +m[2], c = views[2];
-  const p = c.parentElement;
-  p.scrollLeft = x * zoom - p.clientWidth / 2; p.scrollTop = y * zoom - p.clientHeight / 2;
-  const r = c.getBoundingClientRect();
-  // Event coordinates are whole CSS pixels: the first whole one inside the pixel.
-  c.dispatchEvent(new MouseEvent("click", { clientX: Math.ceil(r.left + x * zoom), clientY: Math.ceil(r.top + y * zoom), bubbles: true }));
+  const block = m[1] ? document.querySelector('.compare[data-suffix="-' + m[1] + '"]') : blocks[0];
+  if (block) { (block.closest("section") || block).scrollIntoView(); block.clickPixel(+m[2], +m[3]); }
 }
 "#;

@@ -20,6 +20,7 @@
 
 mod convention;
 mod families;
+mod html;
 mod merge;
 mod report;
 mod test_text;
