@@ -450,11 +450,17 @@ mod tests {
             "convention",
             "model",
             "counts",
+            "renderer_runs",
             "findings",
         ] {
             assert!(keys.contains(&key), "{key}: {keys:?}");
         }
-        assert_eq!(keys.len(), 19);
+        assert_eq!(keys.len(), 20);
+        assert_eq!(
+            v["renderer_runs"],
+            serde_json::Value::Null,
+            "a closure is not a program"
+        );
         assert_eq!(v["cmd"], "r \"q\"");
         assert_eq!(v["shard"], serde_json::json!({"k": 3, "n": 3}));
         assert_eq!((&v["cases_requested"], &v["cases_run"]), (&1.into(), &0.into()));
