@@ -166,6 +166,7 @@ fuzz_target!(|input: Input| {
             minimal: minimal.clone(),
             verdict,
             runs,
+            renderer_calls: runs,
         };
         let test = rust_test(&finding, 1, config.model);
         assert!(test.contains(&signature.slug()), "{test}");
