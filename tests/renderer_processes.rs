@@ -111,8 +111,10 @@ fn a_renderers_background_children_are_killed_when_it_exits() {
     assert_gone(pid_in(&pidfile), "after the renderer exited");
 }
 
-/// `rasterproof hunt` interrupted (SIGINT, as Ctrl-C sends it) while its renderer hangs:
-/// the renderer's child is killed with it, and the hunt exits 130.
+/// `rasterproof hunt` interrupted twice (SIGINT, as Ctrl-C sends it) while its renderer
+/// hangs: the first asks for the report of the cases done (the hanging one would finish
+/// at its timeout), the second stops at once: the renderer's child is killed with it, and
+/// the hunt exits 130.
 #[test]
 fn an_interrupted_hunt_kills_the_renderers_children() {
     let dir = tempdir::Dir::new("procs-interrupt");
@@ -126,11 +128,14 @@ fn an_interrupted_hunt_kills_the_renderers_children() {
         .spawn()
         .unwrap();
     let child = pid_in(&pidfile);
-    let sent = std::process::Command::new("kill")
-        .args(["-INT", &hunt.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(sent.success());
+    for _ in 0..2 {
+        let sent = std::process::Command::new("kill")
+            .args(["-INT", &hunt.id().to_string()])
+            .status()
+            .unwrap();
+        assert!(sent.success());
+        std::thread::sleep(Duration::from_millis(300));
+    }
     let start = Instant::now();
     let status = loop {
         if let Some(status) = hunt.try_wait().unwrap() {
@@ -144,4 +149,69 @@ fn an_interrupted_hunt_kills_the_renderers_children() {
     };
     assert_eq!(status.code(), Some(130));
     assert_gone(child, "after Ctrl-C");
+}
+
+/// One Ctrl-C stops a long hunt early and leaves a valid report of the cases done: no case
+/// starts after it, the running ones finish, the report (JSON, written whole) says
+/// `"interrupted": true`, its counts add up to the cases run, its findings are unshrunk
+/// first cases among them, and the hunt exits 130.
+#[test]
+fn one_ctrl_c_leaves_the_report_of_the_cases_done() {
+    let dir = tempdir::Dir::new("procs-interrupt-report");
+    let exe = assert_cmd::cargo::cargo_bin("rasterproof");
+    let script = dir.path().join("slow.sh");
+    std::fs::write(
+        &script,
+        format!(
+            "#!/bin/sh\nsleep 0.05\nexec {} render \"$1\" --subpixel-bits 4 --ids-out \"$2\"\n",
+            exe.display()
+        ),
+    )
+    .unwrap();
+    {
+        use std::os::unix::fs::PermissionsExt as _;
+        std::fs::set_permissions(&script, std::fs::Permissions::from_mode(0o755)).unwrap();
+    }
+    let report = dir.path().join("report.json");
+    let cmd = format!("{} {{scene}} {{out}}", script.display());
+    let mut hunt = std::process::Command::new(&exe)
+        .args(["hunt", "--cmd", &cmd, "--cases", "100000", "--quiet", "--report"])
+        .arg(&report)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(Duration::from_millis(1500));
+    let sent = std::process::Command::new("kill")
+        .args(["-INT", &hunt.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(sent.success());
+    let start = Instant::now();
+    let status = loop {
+        if let Some(status) = hunt.try_wait().unwrap() {
+            break status;
+        }
+        if start.elapsed() > Duration::from_secs(30) {
+            let _ = hunt.kill();
+            panic!("hunt did not stop after one SIGINT");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    assert_eq!(status.code(), Some(130));
+    let r: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&report).expect("the report")).unwrap();
+    assert_eq!(r["interrupted"], true);
+    assert_eq!(r["stopped_by_time"], false);
+    let run = r["cases_run"].as_u64().unwrap();
+    assert!(run > 0 && run < 100_000, "{run} cases run");
+    let c = &r["counts"];
+    let sum: u64 = ["same", "differ", "failed", "refused"]
+        .iter()
+        .map(|k| c[k].as_u64().unwrap())
+        .sum();
+    assert_eq!(sum, run);
+    for f in r["findings"].as_array().unwrap() {
+        assert!(f["first_case"].as_u64().unwrap() < run);
+        assert_eq!(f["shrink_runs"], 0, "not shrunk after the interrupt");
+    }
 }

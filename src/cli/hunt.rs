@@ -5,10 +5,13 @@
 
 use std::path::PathBuf;
 use std::process::ExitCode;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 
 use rasterproof::convention::Preset;
-use rasterproof::oracle::hunt::{fit_convention, hunt, rust_test, FitFirst, HuntConfig, SceneFamily, FIT_PROBES};
+use rasterproof::oracle::hunt::{
+    fit_convention, hunt_interruptible, rust_test, FitFirst, HuntConfig, SceneFamily, FIT_PROBES,
+};
 use rasterproof::oracle::program::{Program, Renderer};
 use rasterproof::oracle::stay_alive::StayAlive;
 use rasterproof::oracle::{Background, Format};
@@ -130,16 +133,25 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         ),
         (None, None) => return Err("give the renderer with --cmd or --serve".to_string()),
     };
-    // Interrupted (Ctrl-C, SIGTERM): no stray temporary files and no renderer left
-    // running. The renderer runs in a process group of its own (it does not get the
-    // terminal's Ctrl-C): every running renderer's whole group is killed here; its files
-    // go with the folder.
+    // Interrupted (Ctrl-C, SIGTERM): the first time, no case starts any more, the running
+    // ones finish and the report of the cases done is written (findings not shrunk). The
+    // second time at once: no stray temporary files and no renderer left running. The
+    // renderer runs in a process group of its own (it does not get the terminal's
+    // Ctrl-C): every running renderer's whole group is killed here; its files go with the
+    // folder.
     let (temp, groups) = program.files_and_groups().expect("a program has both");
     let temp = temp.to_path_buf();
     let _ = ctrlc::set_handler(move || {
+        if !INTERRUPTED.swap(true, Ordering::SeqCst) {
+            eprintln!(
+                "hunt: interrupted: finishing the running scenes, then writing the report of the cases done \
+                 (Ctrl-C again to stop at once, writing nothing)"
+            );
+            return;
+        }
         groups.kill_all();
         let _ = std::fs::remove_dir_all(&temp);
-        eprintln!("hunt: interrupted; nothing written");
+        eprintln!("hunt: interrupted twice; nothing written");
         std::process::exit(130);
     });
     let mut config = HuntConfig {
@@ -197,7 +209,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         }
     }
     let bar = o.run.progress_bar(config.shard.case_count(config.cases), "scenes");
-    let report = hunt(render_with, &config, o.run.jobs, &|| bar.inc(1))?;
+    let report = hunt_interruptible(render_with, &config, o.run.jobs, &|| bar.inc(1), &INTERRUPTED)?;
     bar.finish_and_clear();
 
     let mut outputs = Outputs::new();
@@ -220,12 +232,17 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     }
     outputs.commit()?;
     super::write_stdout(|out| out.write_all(report.to_text(o.out.as_deref()).as_bytes()))?;
-    Ok(if report.findings.is_empty() {
+    Ok(if report.interrupted {
+        ExitCode::from(130)
+    } else if report.findings.is_empty() {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
     })
 }
+
+/// Set by the first Ctrl-C (or SIGTERM) of a hunt.
+static INTERRUPTED: AtomicBool = AtomicBool::new(false);
 
 /// What `hunt-merge` was asked to do.
 #[derive(clap::Args)]

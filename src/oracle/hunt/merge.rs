@@ -121,6 +121,9 @@ pub fn merge_reports(reports: &[(String, Value)]) -> Result<Value, String> {
             "cases_requested" => json!(sum(&["cases_requested"])?),
             "cases_run" => json!(sum(&["cases_run"])?),
             "stopped_by_time" => json!(stopped),
+            "interrupted" => json!(reports
+                .iter()
+                .any(|(_, r)| r.get("interrupted").and_then(Value::as_bool) == Some(true))),
             "counts" => json!({
                 "same": sum(&["counts", "same"])?,
                 "differ": sum(&["counts", "differ"])?,

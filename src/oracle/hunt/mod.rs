@@ -27,6 +27,7 @@ mod test_text;
 mod verdict;
 
 use std::collections::BTreeMap;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 pub use crate::harness::shrink::{primitive_count, shrink};
@@ -135,12 +136,33 @@ pub fn hunt<R>(renderer: &R, config: &HuntConfig, jobs: usize, tick: &(dyn Fn() 
 where
     R: Renderer + ?Sized,
 {
+    hunt_interruptible(renderer, config, jobs, tick, &AtomicBool::new(false))
+}
+
+/// [`hunt`] that stops early once `interrupted` is set (what `rasterproof hunt`'s Ctrl-C
+/// handler does): no case starts after it, the running ones finish, and the findings of
+/// the cases that ran are reported as they were first seen, not shrunk
+/// ([`HuntReport::interrupted`]), so an interrupted hunt still leaves a valid report of the
+/// cases done.
+///
+/// # Errors
+/// A scene could not be generated.
+pub fn hunt_interruptible<R>(
+    renderer: &R,
+    config: &HuntConfig,
+    jobs: usize,
+    tick: &(dyn Fn() + Sync),
+    interrupted: &AtomicBool,
+) -> Result<HuntReport, String>
+where
+    R: Renderer + ?Sized,
+{
     let render = |s: &Scene| renderer.render(s);
     let requested = config.shard.case_count(config.cases);
     let deadline = config.budget.and_then(|b| Instant::now().checked_add(b));
     // The cases that ran are the first of the shard's, in order (the runner hands on an
     // unbroken prefix), whatever the number of threads.
-    let stop = || deadline.is_some_and(|d| Instant::now() >= d);
+    let stop = || deadline.is_some_and(|d| Instant::now() >= d) || interrupted.load(Ordering::SeqCst);
     let case = |i: u64| -> Result<CaseResult, String> {
         let k = config
             .shard
@@ -206,7 +228,12 @@ where
             seen.insert(key, kept);
             kept
         };
-        let (minimal, runs) = shrink(&original, &mut keeps, config.shrink_runs, None);
+        let budget = if interrupted.load(Ordering::SeqCst) {
+            0
+        } else {
+            config.shrink_runs
+        };
+        let (minimal, runs) = shrink(&original, &mut keeps, budget, None);
         let renderer_calls = seen.len();
         let verdict = judge(&minimal, render(&minimal), config.model);
         findings.push(HuntFinding {
@@ -226,7 +253,8 @@ where
         config: config.clone(),
         requested,
         cases,
-        stopped_by_time: cases < requested,
+        stopped_by_time: cases < requested && !interrupted.load(Ordering::SeqCst),
+        interrupted: interrupted.load(Ordering::SeqCst),
         same,
         differing,
         failed,

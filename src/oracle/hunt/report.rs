@@ -52,6 +52,9 @@ pub struct HuntReport {
     pub cases: u64,
     /// Whether the time budget stopped the hunt before every requested case ran.
     pub stopped_by_time: bool,
+    /// Whether it was interrupted (Ctrl-C): the cases that ran are reported, their
+    /// findings not shrunk.
+    pub interrupted: bool,
     /// Identical to the oracle.
     pub same: u64,
     /// Differing.
@@ -142,6 +145,12 @@ impl HuntReport {
                 if r.calls == 1 { "" } else { "s" },
                 r.starts,
                 if r.starts == 1 { "" } else { "s" }
+            ));
+        }
+        if self.interrupted {
+            lines.push(format!(
+                "stopped: interrupted after {} of {} cases; the findings are those cases' scenes, not shrunk",
+                self.cases, self.requested
             ));
         }
         if self.stopped_by_time {
@@ -263,7 +272,7 @@ impl HuntReport {
         let runs = self
             .renderer_runs
             .map(|r| object(&[("calls", j(&r.calls)), ("starts", j(&r.starts))]));
-        let fields: [(&str, String); 20] = [
+        let fields: [(&str, String); 21] = [
             ("format", j(REPORT_FORMAT)),
             ("version", j(&REPORT_VERSION)),
             ("rasterproof", j(env!("CARGO_PKG_VERSION"))),
@@ -277,6 +286,7 @@ impl HuntReport {
             ("cases_requested", j(&self.requested)),
             ("cases_run", j(&self.cases)),
             ("stopped_by_time", j(&self.stopped_by_time)),
+            ("interrupted", j(&self.interrupted)),
             ("families", j(&families)),
             ("canvas", j(&c.canvas)),
             ("float32_exact", j(&c.float32_exact)),
@@ -442,6 +452,7 @@ mod tests {
             "cases_requested",
             "cases_run",
             "stopped_by_time",
+            "interrupted",
             "families",
             "canvas",
             "float32_exact",
@@ -455,7 +466,7 @@ mod tests {
         ] {
             assert!(keys.contains(&key), "{key}: {keys:?}");
         }
-        assert_eq!(keys.len(), 20);
+        assert_eq!(keys.len(), 21);
         assert_eq!(
             v["renderer_runs"],
             serde_json::Value::Null,
