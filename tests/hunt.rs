@@ -389,7 +389,7 @@ fn a_time_budget_stops_the_hunt_and_the_report_says_so() {
 /// Whether `xml` is well-formed as far as these reports go: one root element, every
 /// element closed in order, attribute values quoted, and no `<` or bare `&` in text or
 /// attribute values (only the five named entities and character references).
-fn well_formed(xml: &str) -> Result<(), String> {
+pub(crate) fn well_formed(xml: &str) -> Result<(), String> {
     fn entities_ok(s: &str) -> Result<(), String> {
         let mut rest = s;
         while let Some(i) = rest.find('&') {

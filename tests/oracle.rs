@@ -1351,3 +1351,63 @@ fn a_grid_and_a_tie_rule_together_are_one_headline() {
         "{h}"
     );
 }
+
+/// `explain --svg`: the picture of a pixel on the shared diagonal of two triangles (a
+/// square split from (13/2, 1/2) to (1/2, 13/2)); pixel (3, 3)'s sample (7/2, 7/2) lies on
+/// it. By hand, under top-left: for the upper triangle the diagonal is a right edge
+/// (exclusive, dashed), for the lower one a left edge (inclusive, solid), so the lower one
+/// (id 1) covers the sample: the ringed sample is filled. The picture is well-formed XML,
+/// 5x5 pixels of 96 units under a 64-unit caption: the sample at (2.5 * 96, 64 + 2.5 * 96).
+#[test]
+fn explain_draws_the_pixels_neighbourhood() {
+    let dir = tempdir::Dir::new("explain-svg");
+    let scene = write(
+        &dir,
+        "split.json",
+        br#"{"width": 8, "height": 8, "triangles": [{"v": [[0.5, 0.5], [6.5, 0.5], [0.5, 6.5]]}, {"v": [[6.5, 0.5], [6.5, 6.5], [0.5, 6.5]]}]}"#,
+    );
+    let svg_path = dir.path().join("px.svg");
+    let (code, out, err) = run(&[
+        "explain".as_ref(),
+        scene.as_os_str(),
+        "3,3".as_ref(),
+        "--svg".as_ref(),
+        svg_path.as_os_str(),
+    ]);
+    assert_eq!(code, 0, "{out}{err}");
+    let svg = std::fs::read_to_string(&svg_path).unwrap();
+    crate::hunt::well_formed(&svg).unwrap();
+    assert!(
+        svg.contains("pixel (3, 3), sample (7/2, 7/2): covered by 1 (exact-snapped)"),
+        "{svg}"
+    );
+    let edge = |id: u32, flag: &str| {
+        svg.lines()
+            .filter(|l| l.contains(&format!("class=\"edge {flag}\" data-primitive=\"{id}\"")))
+            .count()
+    };
+    // Upper triangle: left and top inclusive, the diagonal (a right edge) exclusive;
+    // lower triangle: the diagonal (a left edge) inclusive, right and bottom exclusive.
+    assert_eq!((edge(0, "inclusive"), edge(0, "exclusive")), (2, 1), "{svg}");
+    assert_eq!((edge(1, "inclusive"), edge(1, "exclusive")), (1, 2), "{svg}");
+    assert!(
+        svg.contains("class=\"edge exclusive\" data-primitive=\"0\" data-edge=\"1\""),
+        "{svg}"
+    );
+    assert!(
+        svg.contains("<circle class=\"sample chosen\" cx=\"240.00\" cy=\"304.00\" r=\"6\" fill=\"#000000\""),
+        "{svg}"
+    );
+    assert_eq!(svg.matches("class=\"sample\"").count(), 24);
+    // Off the canvas: refused, nothing written.
+    let missing = dir.path().join("off.svg");
+    let (code, _, err) = run(&[
+        "explain".as_ref(),
+        scene.as_os_str(),
+        "8,0".as_ref(),
+        "--svg".as_ref(),
+        missing.as_os_str(),
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(!missing.exists());
+}

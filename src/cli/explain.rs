@@ -20,6 +20,12 @@ pub struct Options {
     /// Output format on stdout.
     #[arg(long, default_value_t = OutputFormat::Text, value_parser = OutputFormat::parser(FORMATS))]
     format: OutputFormat,
+    /// Also draw the pixel's neighbourhood as an SVG picture: the 5x5 pixels around it,
+    /// their samples, each nearby edge (solid where it owns the samples on it, dashed
+    /// where not), a polygon's winding number, a line's diamond, as the oracle
+    /// (exact-snapped) draws them.
+    #[arg(long, value_name = "OUT.svg")]
+    svg: Option<PathBuf>,
 }
 
 /// `--format`'s values for `explain`, with their help.
@@ -46,6 +52,20 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             target.width, target.height
         )
     })?;
+    if let Some(path) = &o.svg {
+        let svg = rasterproof::oracle::svg::neighbourhood_svg(
+            &scene.primitives(),
+            &target,
+            x,
+            y,
+            rasterproof::model::Model::ExactSnapped,
+        )
+        .map_err(|e| format!("{name}: {e}"))?
+        .ok_or_else(|| format!("pixel: ({x}, {y}) is off the canvas of {name}"))?;
+        let mut outputs = super::Outputs::new();
+        outputs.stage_text(path, &svg)?;
+        outputs.commit()?;
+    }
     match o.format {
         OutputFormat::Text => super::write_stdout(|out| {
             writeln!(out, "{name}: {}", target.convention)?;

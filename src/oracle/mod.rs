@@ -19,6 +19,7 @@ pub mod hunt;
 pub mod program;
 pub mod reason;
 pub mod stay_alive;
+pub mod svg;
 pub mod theirs;
 
 pub use compare::{compare, CompareError, CompareReport, DiffPixel, PixelFinding, PixelKind, Relation, SizeMismatch};
