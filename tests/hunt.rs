@@ -871,3 +871,30 @@ fn merged_shards_equal_the_unsharded_hunt() {
     std::fs::write(&check, "{\"format\": \"something else\"}").unwrap();
     refused(&["hunt-merge", check.to_str().unwrap()], "not a hunt report");
 }
+
+/// The findings (shrunk in parallel, one finding per thread) do not depend on the number
+/// of jobs: the same report with 1 and 3 threads, but for the program starts.
+#[test]
+fn the_findings_do_not_depend_on_the_jobs() {
+    let cmd = coarse_cmd();
+    let run = |jobs: &str| {
+        let (code, mut r, out) = hunt_report(&[
+            "--cmd",
+            &cmd,
+            "--cases",
+            "20",
+            "--seed",
+            "9",
+            "--shrink-runs",
+            "30",
+            "--jobs",
+            jobs,
+        ]);
+        assert_eq!(code, 1, "{out}");
+        r["renderer_runs"].take();
+        r
+    };
+    let one = run("1");
+    assert!(one["findings"].as_array().unwrap().len() >= 2, "{one}");
+    assert_eq!(one, run("3"));
+}

@@ -213,41 +213,65 @@ where
             }
         }
     }
-    let mut findings = Vec::new();
-    for (signature, (case, original, cases, mut kinds)) in first {
-        kinds.sort();
-        // The shrinker may try one scene twice (two steps reaching it): the renderer is
-        // asked once per distinct scene.
-        let mut seen: std::collections::HashMap<String, bool> = std::collections::HashMap::new();
-        let mut keeps = |s: &Scene| {
-            let key = s.to_json();
-            if let Some(&kept) = seen.get(&key) {
-                return kept;
+    // Each finding's first case is shrunk on its own, `jobs` at a time (the results do not
+    // depend on it: each shrink sees only its own scene and renderer answers).
+    let shrink_one =
+        |(signature, (case, original, cases, mut kinds)): (Signature, (u64, Scene, u64, Vec<PixelKind>))| {
+            kinds.sort();
+            // The shrinker may try one scene twice (two steps reaching it): the renderer is
+            // asked once per distinct scene.
+            let mut seen: std::collections::HashMap<String, bool> = std::collections::HashMap::new();
+            let mut keeps = |s: &Scene| {
+                let key = s.to_json();
+                if let Some(&kept) = seen.get(&key) {
+                    return kept;
+                }
+                let kept = signatures(&judge(s, render(s), config.model)).contains(&signature);
+                seen.insert(key, kept);
+                kept
+            };
+            let budget = if interrupted.load(Ordering::SeqCst) {
+                0
+            } else {
+                config.shrink_runs
+            };
+            let (minimal, runs) = shrink(&original, &mut keeps, budget, None);
+            let renderer_calls = seen.len();
+            let verdict = judge(&minimal, render(&minimal), config.model);
+            HuntFinding {
+                signature,
+                kinds,
+                case,
+                cases,
+                original,
+                minimal,
+                verdict,
+                runs,
+                renderer_calls,
             }
-            let kept = signatures(&judge(s, render(s), config.model)).contains(&signature);
-            seen.insert(key, kept);
-            kept
         };
-        let budget = if interrupted.load(Ordering::SeqCst) {
-            0
-        } else {
-            config.shrink_runs
+    let queue = std::sync::Mutex::new(first.into_iter());
+    let found = std::sync::Mutex::new(Vec::new());
+    std::thread::scope(|scope| -> Result<(), String> {
+        let work = || loop {
+            let next = queue.lock().unwrap_or_else(std::sync::PoisonError::into_inner).next();
+            let Some(entry) = next else { break };
+            let finding = shrink_one(entry);
+            found
+                .lock()
+                .unwrap_or_else(std::sync::PoisonError::into_inner)
+                .push(finding);
         };
-        let (minimal, runs) = shrink(&original, &mut keeps, budget, None);
-        let renderer_calls = seen.len();
-        let verdict = judge(&minimal, render(&minimal), config.model);
-        findings.push(HuntFinding {
-            signature,
-            kinds,
-            case,
-            cases,
-            original,
-            minimal,
-            verdict,
-            runs,
-            renderer_calls,
-        });
-    }
+        for _ in 1..jobs.max(1) {
+            std::thread::Builder::new()
+                .name("rasterproof-shrink".into())
+                .spawn_scoped(scope, work)
+                .map_err(|e| format!("cannot start a shrinking thread: {e}"))?;
+        }
+        work();
+        Ok(())
+    })?;
+    let mut findings = found.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner);
     findings.sort_by_key(|f| (f.case, f.signature.clone()));
     Ok(HuntReport {
         config: config.clone(),
