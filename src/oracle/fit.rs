@@ -36,6 +36,7 @@ use crate::coverage::Coverage;
 use crate::geom::Point;
 use crate::line::LineRule;
 use crate::model::{ModelError, Primitives};
+use crate::num::plan::scale_of;
 use crate::num::Rounding;
 
 pub use super::candidate::{Candidate, MAX_FIT_BITS};
@@ -287,16 +288,11 @@ fn grid_bits(primitives: &Primitives) -> Option<u32> {
     for p in &primitives.polygons {
         points.extend(p.contours().flatten());
     }
-    let mut k = 0;
-    for v in points.iter().flat_map(|p| [&p.x, &p.y]) {
-        let d = v.denom();
-        let bits = d.trailing_zeros().unwrap_or(0);
-        if (d >> bits) != BigInt::one() || bits > u64::from(MAX_FIT_BITS) {
-            return None;
-        }
-        k = k.max(u32::try_from(bits).expect("at most MAX_FIT_BITS"));
-    }
-    Some(k)
+    // The common denominator is 2^k exactly when every coordinate is on the 2^-k grid.
+    let scale = scale_of(points.iter().flat_map(|p| [&p.x, &p.y]));
+    let k = scale.trailing_zeros().unwrap_or(0);
+    (scale == BigInt::one() << k && k <= u64::from(MAX_FIT_BITS))
+        .then(|| u32::try_from(k).expect("at most MAX_FIT_BITS"))
 }
 
 impl FitReport {

@@ -129,6 +129,38 @@ impl fmt::Display for RenderFailure {
 #[derive(Debug)]
 pub(super) struct TempDir(pub(super) PathBuf);
 
+impl TempDir {
+    /// A fresh folder `rasterproof-WHAT-PID-N` under the system temp dir.
+    pub(super) fn new(what: &str) -> Result<TempDir, String> {
+        static DIRS: AtomicU64 = AtomicU64::new(0);
+        let dir = std::env::temp_dir().join(format!(
+            "rasterproof-{what}-{}-{}",
+            std::process::id(),
+            DIRS.fetch_add(1, Ordering::Relaxed)
+        ));
+        std::fs::create_dir_all(&dir).map_err(|e| format!("{}: cannot create: {e}", dir.display()))?;
+        Ok(TempDir(dir))
+    }
+}
+
+/// `cmd` (the value of the option `flag`) split as a POSIX shell splits words: not
+/// empty, holding each of `placeholders`, its program found.
+pub(super) fn command_words(cmd: &str, flag: &str, placeholders: &[&str]) -> Result<Vec<String>, String> {
+    let argv = shell_words::split(cmd).map_err(|e| format!("{flag}: cannot split {cmd:?}: {e}"))?;
+    let Some(program) = argv.first() else {
+        return Err(format!("{flag}: empty"));
+    };
+    for placeholder in placeholders {
+        if !argv.iter().any(|a| a.contains(placeholder)) {
+            return Err(format!("{flag}: {cmd:?} has no {placeholder} placeholder"));
+        }
+    }
+    if !program_exists(program) {
+        return Err(format!("{flag}: program {program:?} not found"));
+    }
+    Ok(argv)
+}
+
 impl Drop for TempDir {
     fn drop(&mut self) {
         let _ = std::fs::remove_dir_all(&self.0);
@@ -239,31 +271,12 @@ impl Program {
     /// `cmd` is empty, does not parse, lacks `{scene}` or `{out}`, its program cannot be
     /// found, or the temporary folder cannot be made: one line naming the problem.
     pub fn new(cmd: &str, format: Format, background: Background, timeout: Duration) -> Result<Program, String> {
-        let argv = shell_words::split(cmd).map_err(|e| format!("--cmd: cannot split {cmd:?}: {e}"))?;
-        let Some(program) = argv.first() else {
-            return Err("--cmd: empty".to_string());
-        };
-        for placeholder in ["{scene}", "{out}"] {
-            if !argv.iter().any(|a| a.contains(placeholder)) {
-                return Err(format!("--cmd: {cmd:?} has no {placeholder} placeholder"));
-            }
-        }
-        if !program_exists(program) {
-            return Err(format!("--cmd: program {program:?} not found"));
-        }
-        static DIRS: AtomicU64 = AtomicU64::new(0);
-        let dir = std::env::temp_dir().join(format!(
-            "rasterproof-hunt-{}-{}",
-            std::process::id(),
-            DIRS.fetch_add(1, Ordering::Relaxed)
-        ));
-        std::fs::create_dir_all(&dir).map_err(|e| format!("{}: cannot create: {e}", dir.display()))?;
         Ok(Program {
-            argv,
+            argv: command_words(cmd, "--cmd", &["{scene}", "{out}"])?,
             format,
             background,
             timeout,
-            dir: TempDir(dir),
+            dir: TempDir::new("hunt")?,
             count: AtomicU64::new(0),
             groups: ProcessGroups::default(),
         })
@@ -411,7 +424,7 @@ pub(super) fn stderr_tail(path: &Path) -> String {
 }
 
 /// Whether `program` names a file, or a file on `PATH`.
-pub(super) fn program_exists(program: &str) -> bool {
+fn program_exists(program: &str) -> bool {
     let p = Path::new(program);
     if p.components().count() > 1 {
         return p.is_file();

@@ -49,7 +49,7 @@ use std::time::Duration;
 use serde_json::{json, Value};
 
 use super::program::{
-    kill_group, program_exists, read_output, stderr_tail, FailureKind, ProcessGroups, RenderFailure, TempDir,
+    command_words, kill_group, read_output, stderr_tail, FailureKind, ProcessGroups, RenderFailure, TempDir,
 };
 use super::program::{Renderer, RendererRuns};
 use super::theirs::{Background, Format, Theirs};
@@ -126,26 +126,12 @@ impl StayAlive {
     /// `cmd` is empty, does not parse, names a program that cannot be found, or the
     /// temporary folder cannot be made: one line naming the problem.
     pub fn new(cmd: &str, format: Format, background: Background, timeout: Duration) -> Result<StayAlive, String> {
-        let argv = shell_words::split(cmd).map_err(|e| format!("--serve: cannot split {cmd:?}: {e}"))?;
-        let Some(program) = argv.first() else {
-            return Err("--serve: empty".to_string());
-        };
-        if !program_exists(program) {
-            return Err(format!("--serve: program {program:?} not found"));
-        }
-        static DIRS: AtomicU64 = AtomicU64::new(0);
-        let dir = std::env::temp_dir().join(format!(
-            "rasterproof-serve-{}-{}",
-            std::process::id(),
-            DIRS.fetch_add(1, Ordering::Relaxed)
-        ));
-        std::fs::create_dir_all(&dir).map_err(|e| format!("{}: cannot create: {e}", dir.display()))?;
         Ok(StayAlive {
-            argv,
+            argv: command_words(cmd, "--serve", &[])?,
             format,
             background,
             timeout,
-            dir: TempDir(dir),
+            dir: TempDir::new("serve")?,
             idle: Mutex::new(Vec::new()),
             requests: AtomicU64::new(0),
             starts: AtomicU64::new(0),

@@ -369,12 +369,13 @@ fn setup(poly: &Polygon, target: &Target, rule: AnyTieRule) -> Option<PolygonSet
         }
     }
     edges.sort_by_key(|e| e.first);
+    let grid = ExactGrid::of(target);
     let on_edges = match rule.moved_sample() {
         Some(_) => Vec::new(),
         None => on_edge_samples(poly, &frame, range)
             .into_iter()
             .map(|(x, y)| {
-                let sample = ExactGrid::of(target).sample(x, y);
+                let sample = grid.sample(x, y);
                 (y, x, contains_exact_with(&sample, poly, rule))
             })
             .collect(),

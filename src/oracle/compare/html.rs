@@ -108,7 +108,11 @@ impl CompareReport {
             diff[index(x, y)] = 1;
         }
         let mut theirs_px = ours.clone();
-        let mut theirs_several = several.clone();
+        // Theirs agrees with the oracle but where it differs: there, its own mark.
+        let mut theirs_marked = vec![false; n];
+        for &i in &several {
+            theirs_marked[i] = true;
+        }
         let mut explain = serde_json::Map::new();
         for (k, p) in self.pixels.iter().enumerate() {
             let i = index(p.x, p.y);
@@ -119,10 +123,7 @@ impl CompareReport {
                 (true, Some(id)) => id + 1,
                 (true, None) => u32::MAX,
             };
-            theirs_several.retain(|&j| j != i);
-            if p.theirs.several {
-                theirs_several.push(i);
-            }
+            theirs_marked[i] = p.theirs.several;
             let text = if k < HTML_EXPLAINED_AT_MOST {
                 self.pixel_text(p)
             } else {
@@ -135,6 +136,7 @@ impl CompareReport {
             };
             explain.insert(format!("{},{}", p.x, p.y), Value::String(text));
         }
+        let theirs_several: Vec<usize> = (0..n).filter(|&i| theirs_marked[i]).collect();
         let palette: Vec<String> = std::iter::once(EMPTY_COLOUR)
             .chain(std::iter::once(MATCHED_COLOUR))
             .chain(PixelKind::ALL.iter().map(|k| k.colour()))
@@ -229,6 +231,9 @@ function setup(block) {
     span.append(swatch, k);
     role("legend").append(span);
   });
+  const several = document.createElement("span");
+  several.textContent = "(white in the first two views: two or more owners)";
+  role("legend").append(several);
   let zoom = Math.max(1, Math.min(32, Math.floor(400 / Math.max(W, H))));
   let chosen = null;
   const markers = views.map(c => { const m = document.createElement("div"); m.className = "marker"; c.parentElement.append(m); return m; });
