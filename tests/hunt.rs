@@ -892,9 +892,16 @@ fn the_findings_do_not_depend_on_the_jobs() {
         ]);
         assert_eq!(code, 1, "{out}");
         r["renderer_runs"].take();
+        // Spare jobs try a step's candidates side by side: the calls may grow, nothing else.
+        for f in r["findings"].as_array_mut().unwrap() {
+            f["shrink_renderer_calls"].take();
+        }
         r
     };
     let one = run("1");
-    assert!(one["findings"].as_array().unwrap().len() >= 2, "{one}");
+    let findings = one["findings"].as_array().unwrap().len();
+    assert!((2..=4).contains(&findings), "{one}");
     assert_eq!(one, run("3"));
+    // 8 jobs for at most 4 findings: each shrink tries 2 or more candidates at once.
+    assert_eq!(one, run("8"));
 }

@@ -4,10 +4,11 @@
 //! renderer runs.
 
 use num_rational::BigRational;
+use proptest::prelude::*;
 use rasterproof::coverage::Coverage;
 use rasterproof::geom::{Point, Triangle};
 use rasterproof::model::{render, Model};
-use rasterproof::oracle::hunt::{judge, shrink, HuntVerdict};
+use rasterproof::oracle::hunt::{judge, shrink, shrink_batched, HuntVerdict};
 use rasterproof::oracle::program::RenderFailure;
 use rasterproof::oracle::{Format, Theirs};
 use rasterproof::scene::Scene;
@@ -73,4 +74,92 @@ fn tiny_fractions_shrink_to_integers_within_the_budget() {
         minimal.clone().coordinates_mut().iter().all(|c| *c.denom() <= 2.into()),
         "coordinates not integers or halves: {coordinates:?}"
     );
+}
+
+/// A scene of `n` triangles with vertices on the quarter-pixel grid of a 16x16 canvas.
+fn quarter_scene() -> impl Strategy<Value = Scene> {
+    let coord = (-8i64..72).prop_map(|q| BigRational::new(q.into(), 4.into()));
+    let vertex = (coord.clone(), coord).prop_map(|(x, y)| Point::new(x, y));
+    let triangle = [vertex.clone(), vertex.clone(), vertex].prop_map(|v| Triangle { v });
+    prop::collection::vec(triangle, 1..5).prop_map(|t| Scene::new(16, 16, t))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// Trying a step's candidates several at a time shrinks to the same scene in the same
+    /// runs as one at a time, for a failure that needs some triangles with a coordinate at
+    /// or beyond a threshold and a canvas no smaller than a size, under every budget.
+    #[test]
+    fn batches_shrink_as_one_at_a_time(
+        scene in quarter_scene(),
+        need in 1usize..3,
+        at_least in -2i64..40,
+        side in 1u32..10,
+        budget in 0usize..200,
+    ) {
+        let threshold = BigRational::new(at_least.into(), 4.into());
+        // Which triangles are dropped matters: those reaching the threshold are needed.
+        let keeps = |s: &Scene| {
+            let reaching = s
+                .triangles
+                .iter()
+                .filter(|t| t.triangle.v.iter().any(|p| p.x >= threshold || p.y >= threshold))
+                .count();
+            reaching >= need && s.width.min(s.height) >= side
+        };
+        prop_assume!(keeps(&scene));
+        let one = shrink(&scene, &mut |s: &Scene| keeps(s), budget, None);
+        for width in [2, 3, 7] {
+            let mut batches = 0usize;
+            let mut tried = 0usize;
+            let mut first_kept = |batch: &[Scene]| {
+                assert!(!batch.is_empty() && batch.len() <= width);
+                batches += 1;
+                tried += batch.len();
+                batch.iter().position(&keeps)
+            };
+            let (minimal, runs) = shrink_batched(&scene, &mut first_kept, width, budget, None);
+            prop_assert_eq!(&minimal, &one.0, "width {}", width);
+            prop_assert_eq!(runs, one.1, "width {}", width);
+            prop_assert!(batches <= runs && runs <= tried);
+        }
+    }
+}
+
+/// The drops of one round, derived by hand: of triangles A, B, C (the failure needs C), the
+/// shrinker tries without C (no), without B (yes), then without A from what is left (yes),
+/// each triangle once, and after a drop goes on with the triangle before it.
+#[test]
+fn drops_go_on_with_the_primitive_before() {
+    let r = |n: i64| BigRational::from_integer(n.into());
+    let t = |x: i64| Triangle {
+        v: [
+            Point::new(r(x), r(0)),
+            Point::new(r(x + 1), r(0)),
+            Point::new(r(x), r(1)),
+        ],
+    };
+    let scene = Scene::new(8, 8, vec![t(0), t(2), t(4)]);
+    let name = |s: &Scene| -> String {
+        s.triangles
+            .iter()
+            .map(|k| match k.triangle.v[0].x.to_integer().to_string().as_str() {
+                "0" => "A",
+                "2" => "B",
+                _ => "C",
+            })
+            .collect()
+    };
+    for width in [1, 2, 3] {
+        let mut tried = Vec::new();
+        let mut first_kept = |batch: &[Scene]| {
+            let kept = batch.iter().position(|s| name(s).contains('C'));
+            tried.extend(batch[..kept.map_or(batch.len(), |k| k + 1)].iter().map(&name));
+            kept
+        };
+        let (minimal, _) = shrink_batched(&scene, &mut first_kept, width, 3, None);
+        assert_eq!(tried, ["AB", "AC", "C"], "width {width}");
+        assert_eq!(name(&minimal), "C");
+    }
 }

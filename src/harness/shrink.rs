@@ -161,14 +161,54 @@ pub fn shrink(
     budget: usize,
     step: Option<&BigRational>,
 ) -> (Scene, usize) {
+    let mut first_kept = |batch: &[Scene]| batch.iter().position(&mut *keeps);
+    shrink_batched(scene, &mut first_kept, 1, budget, step)
+}
+
+/// [`shrink`], trying each step's candidates up to `width` at a time: `first_kept` is
+/// handed a batch of candidates (in the order [`shrink`] would try them, all made from the
+/// same scene) and returns the index of the first that keeps the failure, or `None`. A
+/// caller with several renderers runs a batch at once (the hunt does, when it has more
+/// jobs than findings).
+///
+/// The minimal scene and the runs are [`shrink`]'s, whatever the width: the runs count
+/// the candidates up to and including the kept one, as one at a time would; the
+/// candidates after it in its batch were made from a scene the shrinker no longer holds
+/// and are dropped (work done ahead for nothing: at most `width - 1` per kept step).
+/// Every batch holds at most the runs left in `budget`.
+///
+/// ```
+/// use num_rational::BigRational;
+/// use rasterproof::geom::{Point, Triangle};
+/// use rasterproof::harness::shrink::{shrink, shrink_batched};
+/// use rasterproof::scene::Scene;
+/// let r = |n: i64| BigRational::from_integer(n.into());
+/// let p = |x, y| Point::new(r(x), r(y));
+/// let scene = Scene::new(8, 8, vec![Triangle { v: [p(1, 1), p(7, 2), p(3, 6)] }]);
+/// // Fails while the first vertex lies at x >= 1.
+/// let keeps = |s: &Scene| s.triangles[0].triangle.v[0].x >= r(1);
+/// let one = shrink(&scene, &mut |s: &Scene| keeps(s), 100, None);
+/// let mut batches = 0;
+/// let mut first_kept = |batch: &[Scene]| {
+///     batches += 1;
+///     batch.iter().position(|s| keeps(s))
+/// };
+/// assert_eq!(shrink_batched(&scene, &mut first_kept, 4, 100, None), one);
+/// assert!(batches < one.1);
+/// ```
+pub fn shrink_batched(
+    scene: &Scene,
+    first_kept: &mut dyn FnMut(&[Scene]) -> Option<usize>,
+    width: usize,
+    budget: usize,
+    step: Option<&BigRational>,
+) -> (Scene, usize) {
     let mut best = scene.clone();
-    let mut runs = 0;
-    let mut attempt = |candidate: &Scene, runs: &mut usize| -> bool {
-        if *runs >= budget {
-            return false;
-        }
-        *runs += 1;
-        keeps(candidate)
+    let mut tries = Tries {
+        first_kept,
+        width: width.max(1),
+        budget,
+        runs: 0,
     };
     // Whether this round may move values away from zero (the first, and each after a
     // drop or a crop).
@@ -176,31 +216,33 @@ pub fn shrink(
     loop {
         let mut changed = false;
         let mut structural = false;
-        // Drop primitives, last first.
+        // Drop primitives, last first; after a drop, on with the one before it.
         for kind in 0..3 {
-            let len = match kind {
+            let mut below = match kind {
                 0 => best.triangles.len(),
                 1 => best.lines.len(),
                 _ => best.polygons.len(),
             };
-            for i in (0..len).rev() {
+            while let Some((m, c)) = tries.first(below, |m| {
+                let i = below - 1 - m;
                 let mut c = best.clone();
                 match kind {
                     0 => drop(c.triangles.remove(i)),
                     1 => drop(c.lines.remove(i)),
                     _ => drop(c.polygons.remove(i)),
                 }
-                if primitive_count(&c) > 0 && attempt(&c, &mut runs) {
-                    best = c;
-                    changed = true;
-                    structural = true;
-                }
+                (primitive_count(&c) > 0).then_some(c)
+            }) {
+                best = c;
+                changed = true;
+                structural = true;
+                below -= m + 1;
             }
         }
         if best.clip.is_some() {
             let mut c = best.clone();
             c.clip = None;
-            if attempt(&c, &mut runs) {
+            if let Some((_, c)) = tries.first(1, |_| Some(c.clone())) {
                 best = c;
                 changed = true;
                 structural = true;
@@ -219,48 +261,87 @@ pub fn shrink(
                 (0, 0, w, h - 1),
                 (0, 1, w, h - 1),
             ];
-            for (dx, dy, cw, ch) in crops {
-                if cw == 0 || ch == 0 || (cw, ch) == (best.width, best.height) {
-                    continue;
-                }
-                let c = moved(&best, dx, dy, cw, ch);
-                if attempt(&c, &mut runs) {
-                    best = c;
-                    changed = true;
-                    structural = true;
-                    break;
-                }
+            let crop = |m: usize| {
+                let (dx, dy, cw, ch) = crops[m];
+                (cw != 0 && ch != 0 && (cw, ch) != (w, h)).then(|| moved(&best, dx, dy, cw, ch))
+            };
+            if let Some((_, c)) = tries.first(crops.len(), crop) {
+                best = c;
+                changed = true;
+                structural = true;
             }
         }
         // All coordinates at once on the coarsest grid that keeps the failure.
         if away || structural {
-            for bits in GRID_BITS {
-                if let Some(c) = rounded(&best, bits) {
-                    if attempt(&c, &mut runs) {
-                        best = c;
-                        changed = true;
-                        break;
-                    }
-                }
+            let grids: Vec<u32> = GRID_BITS.collect();
+            if let Some((_, c)) = tries.first(grids.len(), |m| rounded(&best, grids[m])) {
+                best = c;
+                changed = true;
             }
         }
         // Simpler coordinates, one at a time.
         // A move changes one coordinate only: the others' values, read once, stay true.
         let values: Vec<BigRational> = best.clone().coordinates_mut().into_iter().map(|c| c.clone()).collect();
         for (k, value) in values.iter().enumerate() {
-            for v in simpler(value, step, away || structural) {
+            let vs = simpler(value, step, away || structural);
+            let moved_to = |m: usize| {
                 let mut c = best.clone();
-                *c.coordinates_mut()[k] = v;
-                if attempt(&c, &mut runs) {
-                    best = c;
-                    changed = true;
-                    break;
-                }
+                *c.coordinates_mut()[k] = vs[m].clone();
+                Some(c)
+            };
+            if let Some((_, c)) = tries.first(vs.len(), moved_to) {
+                best = c;
+                changed = true;
             }
         }
+        let runs = tries.runs;
         if !changed || runs >= budget {
             return (best, runs);
         }
         away = structural;
+    }
+}
+
+/// The shrinker's runs of the failure test: candidates tried up to `width` at a time,
+/// counted as one at a time would count them.
+struct Tries<'k> {
+    /// The index of the first candidate of a batch that keeps the failure.
+    first_kept: &'k mut dyn FnMut(&[Scene]) -> Option<usize>,
+    /// Candidates per batch, at least 1.
+    width: usize,
+    /// Runs allowed.
+    budget: usize,
+    /// Runs counted so far.
+    runs: usize,
+}
+
+impl Tries<'_> {
+    /// The first of the candidates `make(0)`, ..., `make(n - 1)` (skipping those that are
+    /// `None`, which cost no run) that keeps the failure, with its index; `None` when none
+    /// does or the budget ends first.
+    fn first(&mut self, n: usize, make: impl Fn(usize) -> Option<Scene>) -> Option<(usize, Scene)> {
+        let mut next = 0;
+        while next < n && self.runs < self.budget {
+            let room = (self.budget - self.runs).min(self.width);
+            let (mut batch, mut at) = (Vec::with_capacity(room), Vec::with_capacity(room));
+            while next < n && batch.len() < room {
+                if let Some(c) = make(next) {
+                    batch.push(c);
+                    at.push(next);
+                }
+                next += 1;
+            }
+            if batch.is_empty() {
+                return None;
+            }
+            match (self.first_kept)(&batch) {
+                Some(p) if p < batch.len() => {
+                    self.runs += p + 1;
+                    return Some((at[p], batch.swap_remove(p)));
+                }
+                _ => self.runs += batch.len(),
+            }
+        }
+        None
     }
 }

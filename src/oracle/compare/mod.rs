@@ -234,9 +234,6 @@ pub fn compare_classifying(
     }
     let prepared = prepare(primitives, target, model).map_err(CompareError::Model)?;
     let ours = prepared.coverage(target);
-    let shapes = prepared.shapes().ok_or(CompareError::NotExact(model))?;
-    let mut classifier = Classifier::new(primitives, target, model, &shapes);
-    let index = Candidates::new(&shapes, target);
     // The differing pixels, all of them; then which are classified.
     let differing: Vec<(u32, u32, TheirPixel, DiffOwners)> = covered_by_either(&ours, theirs)
         .filter_map(|(y, x)| {
@@ -244,6 +241,15 @@ pub fn compare_classifying(
             differ(ours.owners(x, y), &t, theirs.format()).map(|d| (x, y, t, d))
         })
         .collect();
+    // The index is built only when a pixel differs: an identical image costs its render,
+    // its shapes and one pass over the covered pixels.
+    let shapes = prepared.shapes().ok_or(CompareError::NotExact(model))?;
+    let mut classifier = Classifier::new(primitives, target, model, &shapes);
+    let index = if differing.is_empty() {
+        Candidates::new(&[], target)
+    } else {
+        Candidates::new(&shapes, target)
+    };
     let picked = pick_classified(differing.len(), at_most.unwrap_or(usize::MAX));
     // Pass one: every finding with what the searches found; pass two decides each with
     // the support of the whole comparison (`reason::decide`).

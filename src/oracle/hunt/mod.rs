@@ -26,11 +26,12 @@ mod report;
 mod test_text;
 mod verdict;
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Mutex, MutexGuard, PoisonError};
 use std::time::{Duration, Instant};
 
-pub use crate::harness::shrink::{primitive_count, shrink};
+pub use crate::harness::shrink::{primitive_count, shrink, shrink_batched};
 pub use convention::{fit_convention, hunt_convention, preferred, FitFirst, FIT_PROBES};
 pub use families::{float32_exact, generate_scene, SceneFamily};
 pub use merge::merge_reports;
@@ -214,29 +215,42 @@ where
         }
     }
     // Each finding's first case is shrunk on its own, `jobs` at a time (the results do not
-    // depend on it: each shrink sees only its own scene and renderer answers).
+    // depend on it: each shrink sees only its own scene and renderer answers). Jobs left
+    // over (fewer findings than jobs) try each shrinking step's candidates side by side,
+    // `width` at a time: the same minimal scene, sooner, for a few renderer calls more.
+    let width = jobs.max(1) / first.len().clamp(1, jobs.max(1));
     let shrink_one =
         |(signature, (case, original, cases, mut kinds)): (Signature, (u64, Scene, u64, Vec<PixelKind>))| {
             kinds.sort();
             // The shrinker may try one scene twice (two steps reaching it): the renderer is
             // asked once per distinct scene.
-            let mut seen: std::collections::HashMap<String, bool> = std::collections::HashMap::new();
-            let mut keeps = |s: &Scene| {
+            let seen: Mutex<HashMap<String, bool>> = Mutex::new(HashMap::new());
+            let keeps = |s: &Scene| {
                 let key = s.to_json();
-                if let Some(&kept) = seen.get(&key) {
+                if let Some(&kept) = lock(&seen).get(&key) {
                     return kept;
                 }
                 let kept = signatures(&judge(s, render(s), config.model)).contains(&signature);
-                seen.insert(key, kept);
+                lock(&seen).insert(key, kept);
                 kept
+            };
+            let mut first_kept = |batch: &[Scene]| -> Option<usize> {
+                if batch.len() == 1 {
+                    return keeps(&batch[0]).then_some(0);
+                }
+                let kept: Vec<bool> = std::thread::scope(|scope| {
+                    let running: Vec<_> = batch.iter().map(|c| scope.spawn(|| keeps(c))).collect();
+                    running.into_iter().map(|h| h.join().unwrap_or(false)).collect()
+                });
+                kept.iter().position(|&k| k)
             };
             let budget = if interrupted.load(Ordering::SeqCst) {
                 0
             } else {
                 config.shrink_runs
             };
-            let (minimal, runs) = shrink(&original, &mut keeps, budget, None);
-            let renderer_calls = seen.len();
+            let (minimal, runs) = shrink_batched(&original, &mut first_kept, width, budget, None);
+            let renderer_calls = lock(&seen).len();
             let verdict = judge(&minimal, render(&minimal), config.model);
             HuntFinding {
                 signature,
@@ -250,17 +264,14 @@ where
                 renderer_calls,
             }
         };
-    let queue = std::sync::Mutex::new(first.into_iter());
-    let found = std::sync::Mutex::new(Vec::new());
+    let queue = Mutex::new(first.into_iter());
+    let found = Mutex::new(Vec::new());
     std::thread::scope(|scope| -> Result<(), String> {
         let work = || loop {
-            let next = queue.lock().unwrap_or_else(std::sync::PoisonError::into_inner).next();
+            let next = lock(&queue).next();
             let Some(entry) = next else { break };
             let finding = shrink_one(entry);
-            found
-                .lock()
-                .unwrap_or_else(std::sync::PoisonError::into_inner)
-                .push(finding);
+            lock(&found).push(finding);
         };
         for _ in 1..jobs.max(1) {
             std::thread::Builder::new()
@@ -271,7 +282,7 @@ where
         work();
         Ok(())
     })?;
-    let mut findings = found.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner);
+    let mut findings = found.into_inner().unwrap_or_else(PoisonError::into_inner);
     findings.sort_by_key(|f| (f.case, f.signature.clone()));
     Ok(HuntReport {
         config: config.clone(),
@@ -286,4 +297,10 @@ where
         findings,
         renderer_runs: renderer.runs(),
     })
+}
+
+/// `m` locked, whether or not a thread panicked holding it (the data is a cache or a
+/// queue: every state it can be left in is valid).
+fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(PoisonError::into_inner)
 }
