@@ -83,6 +83,7 @@
 #![warn(missing_docs)]
 #![warn(clippy::cast_possible_truncation, clippy::cast_possible_wrap)]
 
+pub mod area;
 pub mod check;
 pub mod clip;
 pub mod convention;

@@ -20,6 +20,8 @@ mod tempdir;
 // The test files.
 #[path = "adapters.rs"]
 mod adapters;
+#[path = "area.rs"]
+mod area;
 #[path = "check_cli.rs"]
 mod check_cli;
 #[path = "check_scale.rs"]

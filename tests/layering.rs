@@ -19,7 +19,7 @@ const LAYERS: &[(u32, &[&str])] = &[
     (0, &["num"]),
     (1, &["geom", "convention", "raster"]),
     (2, &["coverage", "edge"]),
-    (3, &["tri", "line", "clip", "fill", "interp"]),
+    (3, &["tri", "line", "clip", "fill", "interp", "area"]),
     (4, &["model"]),
     (5, &["check"]),
     (6, &["strategy", "scene"]),

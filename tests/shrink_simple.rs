@@ -5,6 +5,8 @@
 
 use num_rational::BigRational;
 use proptest::prelude::*;
+
+use crate::common::config;
 use rasterproof::coverage::Coverage;
 use rasterproof::geom::{Point, Triangle};
 use rasterproof::model::{render, Model};
@@ -85,7 +87,7 @@ fn quarter_scene() -> impl Strategy<Value = Scene> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
+    #![proptest_config(ProptestConfig { cases: 64, ..config("proptest-regressions/shrink_simple.txt") })]
 
     /// Trying a step's candidates several at a time shrinks to the same scene in the same
     /// runs as one at a time, for a failure that needs some triangles with a coordinate at

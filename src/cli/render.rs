@@ -4,12 +4,16 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use num_rational::BigRational;
+use num_traits::{One, ToPrimitive, Zero};
+use rasterproof::area::{AreaImage, Quantization, Semantics};
 use rasterproof::convention::Target;
 use rasterproof::coverage::picture::{legend_path, upscale};
 use rasterproof::coverage::Coverage;
 use rasterproof::coverage::{Scale, ASCII_GRID_MAX_SIDE};
 use rasterproof::model::plan;
-use rasterproof::model::{prepare, PreparedScene};
+use rasterproof::model::{prepare, render_area, PreparedScene};
+use rasterproof::num::exact::{exact_text, terminating_decimal};
 use std::time::{Duration, Instant};
 
 use super::{OutputFormat, Outputs};
@@ -45,6 +49,31 @@ pub struct Options {
     /// Output format on stdout.
     #[arg(long, default_value_t = OutputFormat::Text, value_parser = OutputFormat::parser(FORMATS))]
     format: OutputFormat,
+    /// What a pixel's answer is: `sample` (one sample per pixel, covered or not) or `area`
+    /// (anti-aliased coverage: the exact fraction of the pixel's square inside the shapes,
+    /// a rational number; triangles and polygons only, exact models only). With `area`,
+    /// `--format json` prints `{"width","height","coverage":"area","semantics","model",
+    /// "pixels":[[x,y,"n/d"],...]}` (every pixel with a value, by row) and the text grid
+    /// shows tenths (`.` none, `1`-`9` tenths, `#` whole).
+    #[arg(long, default_value = "sample", value_name = "sample|area")]
+    coverage: String,
+    /// With `--coverage area`, which area: `true` (the part of the pixel inside under the
+    /// fill rule; the union of the shapes), `accumulated` (the integral of the winding
+    /// number, folded as FreeType's ftgrays.c folds it: nonzero min(1, |acc|), even-odd
+    /// modulo 2; each shape's value summed, as an accumulation buffer does) or `unclamped`
+    /// (|acc|, not folded: font-rs, ab_glyph).
+    #[arg(long, default_value = "true", value_name = "true|accumulated|unclamped")]
+    semantics: String,
+    /// With `--coverage area`: write the grey image (PNG, 8-bit grey, 16-bit for
+    /// `round16`; never scaled), each pixel its value quantized by `--quantization`.
+    #[arg(long = "grey-out", value_name = "GREY.png")]
+    grey_out: Option<PathBuf>,
+    /// How `--grey-out` quantizes a value v (clamped to [0, 1]): `round` (v x 255, to the
+    /// nearest, ties to even), `truncate` (v x 255 towards zero), `ftgrays` (FreeType's
+    /// smooth rasterizer: v x 256 truncated, 256 clamped to 255), `round16` (v x 65535
+    /// to the nearest, ties to even; 16-bit PNG).
+    #[arg(long, default_value = "round", value_name = "round|truncate|ftgrays|round16")]
+    quantization: String,
 }
 
 /// `--format`'s values for `render`, with their help.
@@ -64,6 +93,14 @@ const FORMATS: [(OutputFormat, &str); 2] = [
 /// Renders the scene with the model `o` names, writes the pictures asked for (all or
 /// none) and prints the coverage and summary; exit 0.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
+    match o.coverage.as_str() {
+        "sample" => {}
+        "area" => return run_area(o),
+        other => return Err(format!("--coverage: unknown kind {other:?} (expected sample or area)")),
+    }
+    if o.grey_out.is_some() || o.semantics != "true" || o.quantization != "round" {
+        return Err("--grey-out, --semantics and --quantization need --coverage area".to_string());
+    }
     let model = super::parse_model(&o.model)?;
     let scale_asked = o.scale.as_deref().map(parse_scale).transpose()?;
     let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
@@ -126,6 +163,110 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         }
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// `render --coverage area`: the exact area of every pixel, its grey image and its text
+/// or JSON; exit 0.
+fn run_area(o: &Options) -> Result<ExitCode, String> {
+    if o.out.is_some() || o.colors_out.is_some() || o.ids_out.is_some() || o.scale.is_some() {
+        return Err(
+            "--coverage area writes --grey-out GREY.png (and the values on stdout); -o, --colors-out, --ids-out and --scale are for --coverage sample".to_string(),
+        );
+    }
+    let model = super::parse_model(&o.model)?;
+    let semantics = Semantics::from_name(&o.semantics).ok_or_else(|| {
+        format!(
+            "--semantics: unknown semantics {:?} (expected true, accumulated or unclamped)",
+            o.semantics
+        )
+    })?;
+    let quantization = Quantization::from_name(&o.quantization).ok_or_else(|| {
+        format!(
+            "--quantization: unknown quantization {:?} (expected round, truncate, ftgrays or round16)",
+            o.quantization
+        )
+    })?;
+    let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
+    let image = render_area(&scene.primitives(), &target, model, semantics)
+        .map_err(|e| format!("{name}: {e} (model {model})"))?;
+    let mut outputs = Outputs::new();
+    let mut wrote = String::new();
+    if let Some(path) = &o.grey_out {
+        let levels = image.levels(quantization);
+        if quantization.bits() == 16 {
+            let grey: image::ImageBuffer<image::Luma<u16>, Vec<u16>> =
+                image::ImageBuffer::from_raw(target.width, target.height, levels).ok_or("the grey image's size")?;
+            outputs.stage(path, "PNG", |out| grey.write_to(out, image::ImageFormat::Png))?;
+        } else {
+            let bytes = levels.iter().map(|&l| u8::try_from(l).unwrap_or(u8::MAX)).collect();
+            let grey: image::GrayImage =
+                image::ImageBuffer::from_raw(target.width, target.height, bytes).ok_or("the grey image's size")?;
+            outputs.stage_png(path, &grey)?;
+        }
+        wrote = format!(
+            "; wrote {} ({}-bit grey, {})",
+            path.display(),
+            quantization.bits(),
+            quantization.name()
+        );
+    }
+    outputs.commit()?;
+    let whole = image.pixels.iter().filter(|(_, _, v)| v.is_one()).count();
+    let total = image.total();
+    let summary = format!(
+        "{name}: area coverage ({} semantics), model {model}, {}: {} pixels with area, {whole} of them whole; total {}{}{wrote}",
+        semantics.name(),
+        target.convention,
+        image.pixels.len(),
+        exact_text(&total),
+        terminating_decimal(&total).map_or(String::new(), |d| format!(" = {d}")),
+    );
+    match o.format {
+        OutputFormat::Json => {
+            crate::cli::write_stdout(|out| {
+                write!(
+                    out,
+                    "{{\"width\":{},\"height\":{},\"coverage\":\"area\",\"semantics\":\"{}\",\"model\":\"{model}\",\"pixels\":[",
+                    image.width,
+                    image.height,
+                    semantics.name()
+                )?;
+                for (k, (x, y, v)) in image.pixels.iter().enumerate() {
+                    let comma = if k == 0 { "" } else { "," };
+                    write!(out, "{comma}[{x},{y},\"{}\"]", exact_text(v))?;
+                }
+                writeln!(out, "]}}")
+            })?;
+            eprintln!("{summary}");
+        }
+        OutputFormat::Text => {
+            let small = target.width <= ASCII_GRID_MAX_SIDE && target.height <= ASCII_GRID_MAX_SIDE;
+            let grid = if small { tenths_grid(&image) } else { String::new() };
+            crate::cli::print_stdout(&format!("{grid}{summary}"))?;
+        }
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The area image as text, row 0 first: `.` no area, `1`-`9` the tenths (rounded down,
+/// at least 1), `#` a whole pixel.
+fn tenths_grid(image: &AreaImage) -> String {
+    let mut s = String::new();
+    for y in 0..image.height {
+        for x in 0..image.width {
+            let v = image.value(x, y);
+            s.push(if v.is_zero() {
+                '.'
+            } else if v >= BigRational::one() {
+                '#'
+            } else {
+                let tenths = (v * BigRational::from_integer(10.into())).floor().to_integer();
+                char::from_digit(tenths.to_u32().unwrap_or(0).clamp(1, 9), 10).unwrap_or('?')
+            });
+        }
+        s.push('\n');
+    }
+    s
 }
 
 /// Draws the scene; once drawing has gone on for a second (an arbitrary-precision plan, a

@@ -1,0 +1,358 @@
+//! Exact area coverage (`area::exact`, the plain oracle), checked against what other roads
+//! give: Sutherland-Hodgman clipping summed by the shoelace formula, inclusion-exclusion
+//! of two triangles, the polygon's whole area, a spade triangulation's hull, rotations,
+//! reversals and whole-pixel moves, and the one-sample oracles at the pixel centre.
+
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
+use proptest::prelude::*;
+
+use crate::common::config;
+use rasterproof::area::exact::{pixel, value};
+use rasterproof::area::{path_signed_area, shoelace, triangle_shape, AreaShape, Semantics};
+use rasterproof::check::triangle_covers;
+use rasterproof::clip::sutherland_hodgman::clip_exact;
+use rasterproof::clip::Window;
+use rasterproof::convention::AnyTieRule;
+use rasterproof::fill::polygon::contains_exact_with;
+use rasterproof::geom::{FillRule, Point, Polygon, Triangle};
+use rasterproof::strategy::polygon::{any_polygon, star_polygon};
+use rasterproof::strategy::{any_triangle, delaunay_mesh};
+
+fn int(v: i64) -> BigRational {
+    BigRational::from_integer(v.into())
+}
+
+/// The pixels `(px, py)` that the shapes' bounding box meets (negative ones too).
+fn pixels_of(shapes: &[AreaShape]) -> Vec<(i64, i64)> {
+    let points: Vec<&Point> = shapes.iter().flat_map(Polygon::contours).flatten().collect();
+    let lo = |f: fn(&Point) -> &BigRational| points.iter().map(|p| f(p).floor().to_integer()).min().unwrap();
+    let hi = |f: fn(&Point) -> &BigRational| points.iter().map(|p| f(p).ceil().to_integer()).max().unwrap();
+    let to = |b: num_bigint::BigInt| i64::try_from(b).unwrap();
+    let (x0, x1, y0, y1) = (to(lo(|p| &p.x)), to(hi(|p| &p.x)), to(lo(|p| &p.y)), to(hi(|p| &p.y)));
+    (y0..y1).flat_map(|y| (x0..x1).map(move |x| (x, y))).collect()
+}
+
+/// The half-planes of the pixel square `(px, py)`.
+fn pixel_window(px: i64, py: i64) -> Window {
+    Window::rect(int(px), int(py), int(px + 1), int(py + 1)).unwrap()
+}
+
+/// A triangle with vertices on the quarter-pixel grid of `[-1, 5]^2` (degenerate ones too).
+fn small_triangle() -> impl Strategy<Value = Triangle> {
+    let c = (-4i64..=20).prop_map(|q| BigRational::new(q.into(), 4.into()));
+    let v = (c.clone(), c).prop_map(|(x, y)| Point::new(x, y));
+    [v.clone(), v.clone(), v].prop_map(|[a, b, c]| Triangle::new(a, b, c))
+}
+
+fn shape_of(poly: &Polygon) -> AreaShape {
+    poly.clone()
+}
+
+fn moved(s: &AreaShape, f: impl Fn(&Point) -> Point) -> AreaShape {
+    Polygon {
+        outline: s.outline.iter().map(&f).collect(),
+        holes: s.holes.iter().map(|c| c.iter().map(&f).collect()).collect(),
+        fill_rule: s.fill_rule,
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, ..config("proptest-regressions/area.txt") })]
+
+    /// The accumulated value of a pixel is the signed area of each contour clipped to the
+    /// pixel (Sutherland-Hodgman keeps the winding number inside a convex window), summed
+    /// with each hole turned against the outline: for tangled, stellated and holed
+    /// polygons alike.
+    #[test]
+    fn accumulated_is_the_clipped_shoelace(poly in any_polygon(5, 7)) {
+        let shape = shape_of(&poly);
+        let shapes = [shape.clone()];
+        for (px, py) in pixels_of(&shapes) {
+            let planes = pixel_window(px, py).half_planes();
+            let clipped = |c: &[Point]| Polygon::new(clip_exact(c, &planes), poly.fill_rule);
+            let piece = Polygon {
+                outline: clipped(&poly.outline).outline,
+                holes: Vec::new(),
+                fill_rule: poly.fill_rule,
+            };
+            // The holes keep their sign relative to the whole outline, not to its piece.
+            let outline_negative = shoelace(&poly.outline).is_negative();
+            let clipped: BigRational = shoelace(&piece.outline)
+                + poly
+                    .holes
+                    .iter()
+                    .map(|h| {
+                        let a = shoelace(&clipped(h).outline);
+                        if shoelace(h).is_negative() == outline_negative { -a } else { a }
+                    })
+                    .sum::<BigRational>();
+            let (_, acc) = pixel(&shapes, px, py);
+            prop_assert_eq!(&acc[0], &clipped, "pixel ({}, {})", px, py);
+        }
+    }
+
+    /// Area conservation: the accumulated values of every pixel add up to the polygon's
+    /// path's signed area; true coverage lies in [0, 1], and so do the folded values.
+    #[test]
+    fn conservation_and_bounds(poly in any_polygon(5, 7)) {
+        let shape = shape_of(&poly);
+        let shapes = [shape.clone()];
+        let mut total = BigRational::zero();
+        for (px, py) in pixels_of(&shapes) {
+            let (union, acc) = pixel(&shapes, px, py);
+            total += &acc[0];
+            prop_assert!(!union.is_negative() && union <= BigRational::one());
+            let folded = value(&shapes, px, py, Semantics::Accumulated);
+            prop_assert!(!folded.is_negative() && folded <= BigRational::one());
+        }
+        prop_assert_eq!(total, path_signed_area(&shape));
+    }
+
+    /// A simple polygon: true and accumulated coverage agree at every pixel and add up to
+    /// its area.
+    #[test]
+    fn simple_polygons_accumulate_their_true_area(poly in star_polygon(6, 9, false, 4)) {
+        let shapes = [shape_of(&poly)];
+        let mut total = BigRational::zero();
+        for (px, py) in pixels_of(&shapes) {
+            let t = value(&shapes, px, py, Semantics::True);
+            prop_assert_eq!(&t, &value(&shapes, px, py, Semantics::Accumulated));
+            total += t;
+        }
+        prop_assert_eq!(total, shoelace(&poly.outline).abs());
+    }
+
+    /// Two triangles: their union's area in a pixel is each one's area less the area of
+    /// their intersection (one clipped by the other, a convex window, then by the pixel).
+    #[test]
+    fn union_is_inclusion_exclusion(a in small_triangle(), b in small_triangle()) {
+        let shapes = [triangle_shape(&a), triangle_shape(&b)];
+        let both = Window::convex(b.v.to_vec()).ok().map(|w| clip_exact(&a.v, &w.half_planes()));
+        for (px, py) in pixels_of(&shapes) {
+            let planes = pixel_window(px, py).half_planes();
+            let area = |c: &[Point]| shoelace(&clip_exact(c, &planes)).abs();
+            let overlap = both.as_ref().map_or_else(BigRational::zero, |c| area(c));
+            let expected = area(&a.v) + area(&b.v) - overlap;
+            prop_assert_eq!(value(&shapes, px, py, Semantics::True), expected, "pixel ({}, {})", px, py);
+        }
+    }
+
+    /// Additivity: the triangles of a spade triangulation cover every pixel exactly as
+    /// their convex hull does, summed one by one (no seam, no overlap) and as a union.
+    #[test]
+    fn a_triangulation_adds_up_to_its_hull(mesh in delaunay_mesh([0, 0], 4, 2, 7)) {
+        let hull = [Polygon::new(mesh.outline.clone(), FillRule::NonZero)];
+        let triangles: Vec<AreaShape> = mesh.triangles.iter().map(triangle_shape).collect();
+        for (px, py) in pixels_of(&hull) {
+            let whole = value(&hull, px, py, Semantics::True);
+            let (union, acc) = pixel(&triangles, px, py);
+            let summed: BigRational = acc.iter().map(Signed::abs).sum();
+            prop_assert_eq!(&union, &whole, "pixel ({}, {})", px, py);
+            prop_assert_eq!(&summed, &whole, "pixel ({}, {})", px, py);
+            prop_assert_eq!(value(&triangles, px, py, Semantics::Accumulated), whole);
+        }
+    }
+
+    /// Rotating by a quarter turn, reversing every contour and moving by whole pixels
+    /// change no pixel's value under any semantics.
+    #[test]
+    fn rotation_reversal_translation(poly in any_polygon(4, 6), dx in -3i64..4, dy in -3i64..4) {
+        let shape = shape_of(&poly);
+        let shapes = [shape.clone()];
+        // (x, y) -> (-y, x) takes pixel (px, py) to (-py - 1, px).
+        let turned = [moved(&shape, |p| Point::new(-p.y.clone(), p.x.clone()))];
+        let shifted = [moved(&shape, |p| Point::new(&p.x + int(dx), &p.y + int(dy)))];
+        let mut reversed = shape.clone();
+        reversed.outline.reverse();
+        for c in &mut reversed.holes {
+            c.reverse();
+        }
+        let reversed = [reversed];
+        for (px, py) in pixels_of(&shapes) {
+            for s in Semantics::ALL {
+                let v = value(&shapes, px, py, s);
+                prop_assert_eq!(&value(&turned, -py - 1, px, s), &v);
+                prop_assert_eq!(&value(&shifted, px + dx, py + dy, s), &v);
+                prop_assert_eq!(&value(&reversed, px, py, s), &v);
+            }
+        }
+    }
+
+    /// The one-sample oracles agree: a pixel a shape covers wholly has its centre covered
+    /// under every tie rule, and a pixel it does not touch (area 0) under none.
+    #[test]
+    fn whole_and_empty_pixels_agree_with_the_sample(poly in any_polygon(4, 6), t in any_triangle(4)) {
+        let shapes = [shape_of(&poly)];
+        let half = BigRational::new(1.into(), 2.into());
+        for (px, py) in pixels_of(&shapes) {
+            let t = value(&shapes, px, py, Semantics::True);
+            let centre = Point::new(int(px) + &half, int(py) + &half);
+            for rule in AnyTieRule::ALL {
+                let covered = contains_exact_with(&centre, &poly, rule);
+                if t.is_one() {
+                    prop_assert!(covered, "pixel ({}, {}) whole, centre not covered under {:?}", px, py, rule);
+                }
+                if t.is_zero() {
+                    prop_assert!(!covered, "pixel ({}, {}) empty, centre covered under {:?}", px, py, rule);
+                }
+            }
+        }
+        // A triangle, by its edge functions, in the pixels near the canvas.
+        let shapes = [triangle_shape(&t)];
+        for py in -1..5 {
+            for px in -1..5 {
+                let v = value(&shapes, px, py, Semantics::True);
+                let centre = Point::new(int(px) + &half, int(py) + &half);
+                for rule in AnyTieRule::ALL {
+                    let covered = triangle_covers(&t, &centre, rule);
+                    prop_assert!(!v.is_one() || covered, "({}, {}) whole, {:?}", px, py, rule);
+                    prop_assert!(!v.is_zero() || !covered, "({}, {}) empty, {:?}", px, py, rule);
+                }
+            }
+        }
+    }
+}
+
+/// A triangle's pixels by hand, on the quarter grid: (1/2, 1/2) (5/2, 1/2) (1/2, 5/2).
+/// Pixel (0, 0): the square [1/2, 1]^2, 1/4. Pixel (1, 0): x in [1, 2], y in [1/2, 1]
+/// under x + y <= 3: wholly under it, 1/2. Pixel (1, 1): x, y >= 1, x + y <= 3: the
+/// triangle (1,1) (2,1) (1,2), 1/2. Pixel (2, 0): x in [2, 5/2], y from 1/2 to 3 - x (at
+/// most 1): the triangle (2,1/2) (5/2,1/2) (2,1), 1/8. The whole: (2 x 2) / 2 = 2.
+#[test]
+fn quarter_grid_triangle_by_hand() {
+    let q = |n: i64| BigRational::new(n.into(), 2.into());
+    let t = Triangle::new(Point::new(q(1), q(1)), Point::new(q(5), q(1)), Point::new(q(1), q(5)));
+    let shapes = [triangle_shape(&t)];
+    let v = |x, y| value(&shapes, x, y, Semantics::True);
+    let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+    assert_eq!(v(0, 0), r(1, 4));
+    assert_eq!(v(1, 0), r(1, 2));
+    assert_eq!(v(1, 1), r(1, 2));
+    assert_eq!(v(2, 0), r(1, 8));
+    assert_eq!(v(2, 2), r(0, 1));
+    let total: BigRational = pixels_of(&shapes).into_iter().map(|(x, y)| v(x, y)).sum();
+    assert_eq!(total, r(2, 1));
+}
+
+/// `render --coverage area` on a scene derived by hand: the triangle (0,0) (3,0) (0,3) on a
+/// 3x3 canvas, unsnapped. Pixels on the diagonal below it are whole ((0,0), (1,0), (0,1)),
+/// those the hypotenuse x + y = 3 crosses diagonally are halves ((2,0), (1,1), (0,2)), the
+/// rest empty; total 9/2. The grey PNG: whole 255, half 127.5 -> 128 (round, ties to
+/// even) or 128 (ftgrays: 128 of 256); 16-bit 65535 and 32768. JSON holds the fractions.
+#[test]
+fn render_area_cli_by_hand() {
+    use assert_cmd::Command;
+    let dir = crate::tempdir::Dir::new("area-cli");
+    let scene = dir.path().join("t.json");
+    std::fs::write(
+        &scene,
+        r#"{"width": 3, "height": 3, "triangles": [{"v": [[0, 0], [3, 0], [0, 3]]}]}"#,
+    )
+    .unwrap();
+    let run = |args: &[&str]| {
+        let out = Command::cargo_bin("rasterproof")
+            .unwrap()
+            .arg("render")
+            .arg(&scene)
+            .args(args)
+            .output()
+            .unwrap();
+        (
+            out.status.code(),
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    let (code, text, _) = run(&["--coverage", "area", "--model", "exact"]);
+    assert_eq!(code, Some(0));
+    assert!(text.starts_with("##5\n#5.\n5..\n"), "{text}");
+    assert!(
+        text.contains("6 pixels with area, 3 of them whole; total 9/2 = 4.5"),
+        "{text}"
+    );
+    let (code, json, _) = run(&["--coverage", "area", "--model", "exact", "--format", "json"]);
+    assert_eq!(code, Some(0));
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(v["semantics"], "true");
+    assert_eq!(
+        v["pixels"],
+        serde_json::json!([
+            [0, 0, "1"],
+            [1, 0, "1"],
+            [2, 0, "1/2"],
+            [0, 1, "1"],
+            [1, 1, "1/2"],
+            [0, 2, "1/2"]
+        ])
+    );
+    for (q, whole, half) in [
+        ("round", 255u16, 128u16),
+        ("ftgrays", 255, 128),
+        ("truncate", 255, 127),
+        ("round16", 65535, 32768),
+    ] {
+        let png = dir.path().join(format!("{q}.png"));
+        let (code, _, err) = run(&[
+            "--coverage",
+            "area",
+            "--model",
+            "exact",
+            "--quantization",
+            q,
+            "--grey-out",
+            png.to_str().unwrap(),
+        ]);
+        assert_eq!(code, Some(0), "{err}");
+        let img = image::open(&png).unwrap();
+        let grey = img.to_luma16();
+        let level = |x, y| {
+            let l = grey.get_pixel(x, y).0[0];
+            // to_luma16 widens 8-bit levels by x 257.
+            if q == "round16" {
+                l
+            } else {
+                l / 257
+            }
+        };
+        assert_eq!(
+            [level(0, 0), level(2, 0), level(1, 1), level(2, 2)],
+            [whole, half, half, 0],
+            "{q}"
+        );
+    }
+    // Bad input: lines, a non-exact model, an unknown semantics, a picture flag.
+    let lines = dir.path().join("l.json");
+    std::fs::write(
+        &lines,
+        r#"{"width": 3, "height": 3, "lines": [{"from": [0, 0], "to": [2, 2]}]}"#,
+    )
+    .unwrap();
+    let out = Command::cargo_bin("rasterproof")
+        .unwrap()
+        .args(["render", lines.to_str().unwrap(), "--coverage", "area"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("lines have no area"));
+    for (args, says) in [
+        (
+            &["--coverage", "area", "--model", "fixed"][..],
+            "model fixed is not one of",
+        ),
+        (
+            &["--coverage", "area", "--semantics", "mean"][..],
+            "--semantics: unknown semantics \"mean\"",
+        ),
+        (
+            &["--coverage", "area", "-o", "x.png"][..],
+            "-o, --colors-out, --ids-out and --scale are for --coverage sample",
+        ),
+        (&["--semantics", "accumulated"][..], "need --coverage area"),
+        (&["--coverage", "areas"][..], "--coverage: unknown kind \"areas\""),
+    ] {
+        let (code, _, err) = run(args);
+        assert_eq!(code, Some(2), "{args:?}");
+        assert!(err.contains(says), "{args:?}: {err}");
+    }
+}
