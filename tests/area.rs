@@ -8,9 +8,11 @@ use num_traits::{One, Signed, Zero};
 use proptest::prelude::*;
 
 use crate::common::config;
-use rasterproof::area::exact::{pixel, value};
+use rasterproof::area::exact::{pixel, rasterize, value};
+use rasterproof::area::{cells, float, supersample, AreaImage};
 use rasterproof::area::{path_signed_area, shoelace, triangle_shape, AreaShape, Semantics};
 use rasterproof::check::triangle_covers;
+use rasterproof::check::{check_area_additivity, check_area_bounds, check_area_conservation};
 use rasterproof::clip::sutherland_hodgman::clip_exact;
 use rasterproof::clip::Window;
 use rasterproof::convention::AnyTieRule;
@@ -92,6 +94,29 @@ proptest! {
         }
     }
 
+    /// Cell accumulation (the scanline renderers' method, exactly) gives the plain
+    /// oracle's signed integral at every pixel of the canvas, and the same folded images.
+    #[test]
+    fn cells_equal_the_plain_oracle(poly in any_polygon(5, 7), t in small_triangle()) {
+        let shapes = [shape_of(&poly), triangle_shape(&t)];
+        for shape in &shapes {
+            let one = std::slice::from_ref(shape);
+            let got: std::collections::BTreeMap<(u32, u32), BigRational> =
+                cells::accumulate(shape, 6, 6).into_iter().map(|(x, y, v)| ((x, y), v)).collect();
+            for y in 0..6u32 {
+                for x in 0..6u32 {
+                    let (_, acc) = pixel(one, i64::from(x), i64::from(y));
+                    let cell = got.get(&(x, y)).cloned().unwrap_or_else(BigRational::zero);
+                    prop_assert_eq!(&cell, &acc[0], "pixel ({}, {})", x, y);
+                }
+            }
+        }
+        for s in [Semantics::Accumulated, Semantics::AccumulatedUnclamped] {
+            prop_assert_eq!(cells::rasterize(&shapes, 6, 6, s), Some(rasterize(&shapes, 6, 6, s)));
+        }
+        prop_assert_eq!(cells::rasterize(&shapes, 6, 6, Semantics::True), None);
+    }
+
     /// Area conservation: the accumulated values of every pixel add up to the polygon's
     /// path's signed area; true coverage lies in [0, 1], and so do the folded values.
     #[test]
@@ -151,6 +176,36 @@ proptest! {
             prop_assert_eq!(&union, &whole, "pixel ({}, {})", px, py);
             prop_assert_eq!(&summed, &whole, "pixel ({}, {})", px, py);
             prop_assert_eq!(value(&triangles, px, py, Semantics::Accumulated), whole);
+        }
+    }
+
+    /// The checkers pass the exact images: a triangulation's triangles add up to the hull
+    /// (pixel by pixel and in total), every value in [0, 1]. Supersampling adds up too
+    /// (each sample has one owner). f32 accumulation stays within 2^-16 of the exact
+    /// value at every pixel here (quarter-pixel coordinates, a 4x4 canvas).
+    #[test]
+    fn the_checkers_pass_the_exact_images(mesh in delaunay_mesh([0, 0], 4, 2, 7)) {
+        let hull = [Polygon::new(mesh.outline.clone(), FillRule::NonZero)];
+        let whole = rasterize(&hull, 4, 4, Semantics::True);
+        let pieces: Vec<AreaImage> = mesh
+            .triangles
+            .iter()
+            .map(|t| rasterize(&[triangle_shape(t)], 4, 4, Semantics::True))
+            .collect();
+        prop_assert_eq!(check_area_additivity(&pieces, &whole), Ok(()));
+        prop_assert_eq!(check_area_bounds(&whole), Ok(()));
+        prop_assert_eq!(check_area_conservation(&whole, &shoelace(&mesh.outline).abs()), Ok(()));
+        let sampled: Vec<AreaImage> =
+            mesh.triangles.iter().map(|t| supersample::rasterize(&[triangle_shape(t)], 4, 4, 4)).collect();
+        prop_assert_eq!(check_area_additivity(&sampled, &supersample::rasterize(&hull, 4, 4, 4)), Ok(()));
+        let f = float::rasterize(&hull, 4, 4, Semantics::Accumulated);
+        let bound = BigRational::new(1.into(), 65536.into());
+        let got = AreaImage::from_f32(4, 4, Semantics::Accumulated, &f).unwrap();
+        for y in 0..4 {
+            for x in 0..4 {
+                let err = (got.value(x, y) - whole.value(x, y)).abs();
+                prop_assert!(err <= bound, "pixel ({}, {}): f32 off by {}", x, y, err);
+            }
         }
     }
 
@@ -354,5 +409,146 @@ fn render_area_cli_by_hand() {
         let (code, _, err) = run(args);
         assert_eq!(code, Some(2), "{args:?}");
         assert!(err.contains(says), "{args:?}: {err}");
+    }
+}
+
+/// The contenders break what the exact models keep, and the checkers say by how much.
+/// Supersampling 4x4 the triangle (0,0) (1,0) (0,1) (y down): of the 16 samples
+/// ((i + 1/2)/4, (j + 1/2)/4), 6 lie strictly inside (i + j <= 2) and 4 on the hypotenuse
+/// (i + j = 3), the triangle's lower-right edge, which the top-left rule does not give it:
+/// 6/16 = 3/8, not 1/2. f32 accumulation of a triangle of area 1/3 cannot add up to 1/3
+/// (a sum of f32 values has a power-of-two denominator).
+#[test]
+fn the_contenders_break_conservation() {
+    let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+    let p = |x: BigRational, y: BigRational| Point::new(x, y);
+    let t = Triangle::new(p(r(0, 1), r(0, 1)), p(r(1, 1), r(0, 1)), p(r(0, 1), r(1, 1)));
+    let sampled = supersample::rasterize(&[triangle_shape(&t)], 1, 1, 4);
+    assert_eq!(sampled.value(0, 0), r(3, 8));
+    let v = check_area_conservation(&sampled, &r(1, 2)).unwrap_err();
+    assert!(v.message.contains("3/8") && v.message.contains("off by -1/8"), "{v}");
+    // Exact: 1/2.
+    let exact = rasterize(&[triangle_shape(&t)], 1, 1, Semantics::True);
+    assert_eq!(check_area_conservation(&exact, &r(1, 2)), Ok(()));
+    // A third: (0,0) (1,0) (0,2/3).
+    let third = Triangle::new(p(r(0, 1), r(0, 1)), p(r(1, 1), r(0, 1)), p(r(0, 1), r(2, 3)));
+    let f = float::rasterize(&[triangle_shape(&third)], 2, 2, Semantics::Accumulated);
+    let got = AreaImage::from_f32(2, 2, Semantics::Accumulated, &f).unwrap();
+    let v = check_area_conservation(&got, &r(1, 3)).unwrap_err();
+    assert!(v.message.contains("the area drawn is 1/3"), "{v}");
+    assert_eq!(
+        check_area_conservation(&rasterize(&[triangle_shape(&third)], 2, 2, Semantics::True), &r(1, 3)),
+        Ok(())
+    );
+    // Bad input: a NaN in a renderer's output, and a wrong length.
+    let e = AreaImage::from_f32(2, 1, Semantics::True, &[0.5, f32::NAN]).unwrap_err();
+    assert!(e.contains("pixel (1, 0)") && e.contains("not a number"), "{e}");
+    assert!(AreaImage::from_f32(2, 2, Semantics::True, &[0.0; 3])
+        .unwrap_err()
+        .contains("3 values for a 2x2 canvas"));
+}
+
+/// f32 accumulation leaves seams and overlaps between abutting shapes that the exact
+/// models do not: an 8x4 quadrilateral split along the diagonal (0,0)-(8,4), one corner at
+/// (8, 1/3) (not an f32). The exact halves add up to the whole at every pixel; the f32
+/// halves do not, and the checker names the pixel.
+#[test]
+fn f32_accumulation_leaves_seams() {
+    let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+    let p = |x: BigRational, y: BigRational| Point::new(x, y);
+    // A square split along a shallow diagonal; the f32 values of the halves are added in
+    // f32 per pixel by the renderer (its accumulation buffer), then read exactly.
+    let (a, b, c, d) = (
+        p(r(0, 1), r(0, 1)),
+        p(r(8, 1), r(1, 3)),
+        p(r(8, 1), r(4, 1)),
+        p(r(0, 1), r(4, 1)),
+    );
+    let halves = [
+        Triangle::new(a.clone(), b.clone(), c.clone()),
+        Triangle::new(a.clone(), c.clone(), d.clone()),
+    ];
+    let whole = [Polygon::new(vec![a, b, c, d], FillRule::NonZero)];
+    let exact_pieces: Vec<AreaImage> = halves
+        .iter()
+        .map(|t| rasterize(&[triangle_shape(t)], 8, 4, Semantics::True))
+        .collect();
+    assert_eq!(
+        check_area_additivity(&exact_pieces, &rasterize(&whole, 8, 4, Semantics::True)),
+        Ok(())
+    );
+    let f32_image = |shapes: &[AreaShape]| {
+        AreaImage::from_f32(
+            8,
+            4,
+            Semantics::Accumulated,
+            &float::rasterize(shapes, 8, 4, Semantics::Accumulated),
+        )
+        .unwrap()
+    };
+    let f32_pieces: Vec<AreaImage> = halves.iter().map(|t| f32_image(&[triangle_shape(t)])).collect();
+    let v = check_area_additivity(&f32_pieces, &f32_image(&whole)).unwrap_err();
+    assert!(v.message.contains("pixel(s) differ"), "{v}");
+}
+
+/// `explain X,Y --coverage area` on two overlapping squares traced as one even-odd
+/// contour (as in the oracle's unit test): pixel (0, 0) holds 3/4 of true coverage (the
+/// square [0, 1]^2 less the overlap [1/2, 1]^2), the integral 1 + 1/4 = 5/4, folded
+/// to 2 - 5/4 = 3/4; the edges meeting the pixel are the first square's top and left
+/// sides, the joining segment both ways, and the second square's top and left sides.
+#[test]
+fn explain_area_cli_by_hand() {
+    use assert_cmd::Command;
+    let dir = crate::tempdir::Dir::new("area-explain");
+    let scene = dir.path().join("sq.json");
+    std::fs::write(
+        &scene,
+        r#"{"width": 3, "height": 3, "polygons": [{"v": [[0, 0], [1.5, 0], [1.5, 1.5], [0, 1.5], [0, 0], [0.5, 0.5], [2, 0.5], [2, 2], [0.5, 2], [0.5, 0.5]], "fill_rule": "even-odd"}]}"#,
+    )
+    .unwrap();
+    let out = Command::cargo_bin("rasterproof")
+        .unwrap()
+        .args([
+            "explain",
+            scene.to_str().unwrap(),
+            "0,0",
+            "--coverage",
+            "area",
+            "--model",
+            "exact",
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    for line in [
+        "true         3/4 (= 0.75)",
+        "accumulated  3/4 (= 0.75)",
+        "unclamped    5/4 (= 1.25)",
+        "shape 0: integral of its path's winding number 5/4",
+        "edge: shape 0 outline edge 0: (0, 0) -> (3/2, 0)",
+        "edge: shape 0 outline edge 9: (1/2, 1/2) -> (0, 0)",
+    ] {
+        assert!(text.contains(line), "{line:?} not in\n{text}");
+    }
+    assert_eq!(text.matches("edge: shape 0").count(), 6, "{text}");
+    // Off the canvas, and --svg with area: exit 2 with the reason.
+    for (args, says) in [
+        (&["3,0", "--coverage", "area"][..], "off the 3x3 canvas"),
+        (
+            &["0,0", "--coverage", "area", "--svg", "x.svg"][..],
+            "--svg draws the sample's neighbourhood",
+        ),
+        (&["0,0", "--model", "exact"][..], "--model is for --coverage area"),
+    ] {
+        let out = Command::cargo_bin("rasterproof")
+            .unwrap()
+            .arg("explain")
+            .arg(&scene)
+            .args(args)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(String::from_utf8_lossy(&out.stderr).contains(says), "{args:?}");
     }
 }

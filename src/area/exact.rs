@@ -241,6 +241,128 @@ pub fn rasterize(shapes: &[AreaShape], width: u32, height: u32, semantics: Seman
     }
 }
 
+/// An edge of a shape that meets a pixel's square.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CrossingEdge {
+    /// The shape (its index among the shapes: its id in the scene).
+    pub shape: usize,
+    /// The contour: 0 the outline, 1.. the holes.
+    pub contour: usize,
+    /// The edge's index in its contour (from vertex `edge` to the next).
+    pub edge: usize,
+    /// Its start.
+    pub from: Point,
+    /// Its end.
+    pub to: Point,
+}
+
+/// What makes up one pixel's area ([`explain`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct AreaExplanation {
+    /// The pixel's column.
+    pub x: i64,
+    /// The pixel's row.
+    pub y: i64,
+    /// Its value under each semantics, in [`Semantics::ALL`] order.
+    pub values: Vec<(Semantics, BigRational)>,
+    /// Each shape's signed integral of its path's winding number over the pixel.
+    pub accumulated: Vec<BigRational>,
+    /// The edges that meet the pixel's closed square.
+    pub edges: Vec<CrossingEdge>,
+    /// The pixel's trapezoids ([`pieces`]).
+    pub pieces: Vec<Piece>,
+}
+
+/// Pixel `(px, py)` explained: its exact values, each shape's integral, the edges that meet
+/// its square and its pieces with their winding numbers.
+pub fn explain(shapes: &[AreaShape], px: i64, py: i64) -> AreaExplanation {
+    let int = |v: i64| BigRational::from_integer(v.into());
+    let (x0, x1, y0, y1) = (int(px), int(px + 1), int(py), int(py + 1));
+    let square = crate::clip::Rect {
+        xmin: x0,
+        ymin: y0,
+        xmax: x1,
+        ymax: y1,
+    };
+    let mut edges = Vec::new();
+    for (s, shape) in shapes.iter().enumerate() {
+        for (c, contour) in shape.contours().enumerate() {
+            for e in 0..contour.len() {
+                let (a, b) = (&contour[e], &contour[(e + 1) % contour.len()]);
+                if crate::clip::cohen_sutherland::clip_exact(a, b, &square).is_some() {
+                    edges.push(CrossingEdge {
+                        shape: s,
+                        contour: c,
+                        edge: e,
+                        from: a.clone(),
+                        to: b.clone(),
+                    });
+                }
+            }
+        }
+    }
+    let (_, accumulated) = pixel(shapes, px, py);
+    AreaExplanation {
+        x: px,
+        y: py,
+        values: Semantics::ALL
+            .into_iter()
+            .map(|s| (s, value(shapes, px, py, s)))
+            .collect(),
+        accumulated,
+        edges,
+        pieces: pieces(shapes, px, py),
+    }
+}
+
+impl AreaExplanation {
+    /// As text: the values, each shape's integral, the edges, the pieces.
+    pub fn to_text(&self) -> String {
+        use crate::num::exact::{exact_text, terminating_decimal};
+        let shown = |v: &BigRational| match terminating_decimal(v) {
+            Some(d) if d != exact_text(v) => format!("{} (= {d})", exact_text(v)),
+            _ => exact_text(v),
+        };
+        let mut s = format!("pixel ({}, {}): area coverage\n", self.x, self.y);
+        for (sem, v) in &self.values {
+            s.push_str(&format!("  {:<12} {}\n", sem.name(), shown(v)));
+        }
+        for (k, acc) in self.accumulated.iter().enumerate() {
+            if !acc.is_zero() {
+                s.push_str(&format!(
+                    "  shape {k}: integral of its path's winding number {}\n",
+                    shown(acc)
+                ));
+            }
+        }
+        if self.edges.is_empty() {
+            s.push_str("  no edge meets the pixel\n");
+        }
+        for e in &self.edges {
+            let contour = if e.contour == 0 {
+                "outline".to_string()
+            } else {
+                format!("hole {}", e.contour - 1)
+            };
+            s.push_str(&format!(
+                "  edge: shape {} {contour} edge {}: {} -> {}\n",
+                e.shape,
+                e.edge,
+                crate::num::exact::pair_text(&e.from.x, &e.from.y),
+                crate::num::exact::pair_text(&e.to.x, &e.to.y)
+            ));
+        }
+        for p in &self.pieces {
+            s.push_str(&format!(
+                "  piece: area {}, winding numbers {:?}\n",
+                shown(&p.area),
+                p.windings
+            ));
+        }
+        s
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

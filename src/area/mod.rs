@@ -22,10 +22,16 @@
 //! value (what a renderer that adds each shape into one accumulation buffer computes).
 //!
 //! The family: [`exact`], the plain oracle (each pixel cut into trapezoids between the
-//! edges, each trapezoid's area and winding numbers exact). A grey image quantizes the
+//! edges, each trapezoid's area and winding numbers exact); [`cells`], the accumulated
+//! semantics by signed-area cell accumulation (the scanline renderers' method), exactly;
+//! the contenders: [`float`], the same accumulation in f32 (font-rs, ab_glyph_rasterizer),
+//! and [`supersample`], k x k point samples per pixel counted exactly. A grey image quantizes the
 //! exact values by a named [`Quantization`].
 
+pub mod cells;
 pub mod exact;
+pub mod float;
+pub mod supersample;
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -254,6 +260,37 @@ impl AreaImage {
     /// The sum of every pixel's value.
     pub fn total(&self) -> BigRational {
         self.pixels.iter().map(|(_, _, v)| v).sum()
+    }
+
+    /// Values a renderer produced in f32, row-major (`width x height` of them), read
+    /// exactly (every finite f32 is a fraction with a power-of-two denominator).
+    ///
+    /// # Errors
+    /// A value that is not finite (named by its pixel), or a length that is not
+    /// `width x height`.
+    pub fn from_f32(width: u32, height: u32, semantics: Semantics, values: &[f32]) -> Result<AreaImage, String> {
+        if values.len() != width as usize * height as usize {
+            return Err(format!(
+                "{} values for a {width}x{height} canvas ({} expected)",
+                values.len(),
+                width as usize * height as usize
+            ));
+        }
+        let mut pixels = Vec::new();
+        let positions = (0..height).flat_map(|y| (0..width).map(move |x| (x, y)));
+        for (&v, (x, y)) in values.iter().zip(positions) {
+            let exact =
+                BigRational::from_float(v).ok_or_else(|| format!("pixel ({x}, {y}): the value {v} is not a number"))?;
+            if !exact.is_zero() {
+                pixels.push((x, y, exact));
+            }
+        }
+        Ok(AreaImage {
+            width,
+            height,
+            semantics,
+            pixels,
+        })
     }
 
     /// The grey levels, row by row (`width x height`), under `q`.

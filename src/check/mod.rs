@@ -3,6 +3,7 @@
 //! compiled: they are what users run on their own rasterizers' output.
 
 mod agreement;
+mod area;
 mod barycentric;
 mod clip;
 mod explain;
@@ -14,6 +15,7 @@ mod watertight;
 use std::fmt;
 
 pub use agreement::{check_agreement, differing_pixels, PixelDiff};
+pub use area::{check_area_additivity, check_area_bounds, check_area_conservation};
 pub use barycentric::{check_barycentric_exact, check_barycentric_fixed, float_sum_error_ulps};
 pub use clip::{check_clip_raster, check_inside, check_segment_clip, inside_interval};
 pub use explain::{explain_sample, segment_distance2, triangle_at, triangle_covers, EdgeAt, Side, TriangleAt};

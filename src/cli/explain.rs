@@ -26,6 +26,16 @@ pub struct Options {
     /// (exact-snapped) draws them.
     #[arg(long, value_name = "OUT.svg")]
     svg: Option<PathBuf>,
+    /// `area`: explain the pixel's exact area coverage instead (as `render --coverage
+    /// area` computes it, under `--model`): its value under each semantics, each shape's
+    /// integral of its winding number, the edges that meet the pixel's square, and its
+    /// pieces (the trapezoids between the edges) with their areas and winding numbers.
+    #[arg(long, default_value = "sample", value_name = "sample|area")]
+    coverage: String,
+    /// The model whose shapes `--coverage area` measures (exact-snapped or exact; the
+    /// plain forms give the same shapes).
+    #[arg(long, default_value = "exact-snapped")]
+    model: String,
 }
 
 /// `--format`'s values for `explain`, with their help.
@@ -46,6 +56,33 @@ fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
 pub fn run(o: &Options) -> Result<ExitCode, String> {
     let (x, y) = parse_pixel(&o.pixel)?;
     let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
+    match o.coverage.as_str() {
+        "sample" => {}
+        "area" => {
+            if o.svg.is_some() {
+                return Err("--svg draws the sample's neighbourhood: it is for --coverage sample".to_string());
+            }
+            if x >= target.width || y >= target.height {
+                return Err(format!(
+                    "pixel: ({x}, {y}) is off the {}x{} canvas of {name}",
+                    target.width, target.height
+                ));
+            }
+            let model = super::parse_model(&o.model)?;
+            let shapes = rasterproof::model::area_shapes(&scene.primitives(), &target, model)
+                .map_err(|e| format!("{name}: {e} (model {model})"))?;
+            let why = rasterproof::area::exact::explain(&shapes, i64::from(x), i64::from(y));
+            super::write_stdout(|out| {
+                writeln!(out, "{name}: model {model}, {}", target.convention)?;
+                out.write_all(why.to_text().as_bytes())
+            })?;
+            return Ok(ExitCode::SUCCESS);
+        }
+        other => return Err(format!("--coverage: unknown kind {other:?} (expected sample or area)")),
+    }
+    if o.model != "exact-snapped" {
+        return Err("--model is for --coverage area (explain shows every model's decision for a sample)".to_string());
+    }
     let why = explain_pixel(&scene.primitives(), &target, x, y).ok_or_else(|| {
         format!(
             "pixel: ({x}, {y}) is off the {}x{} canvas of {name}",

@@ -184,9 +184,10 @@ pub fn shrink(
 /// use rasterproof::scene::Scene;
 /// let r = |n: i64| BigRational::from_integer(n.into());
 /// let p = |x, y| Point::new(r(x), r(y));
-/// let scene = Scene::new(8, 8, vec![Triangle { v: [p(1, 1), p(7, 2), p(3, 6)] }]);
-/// // Fails while the first vertex lies at x >= 1.
-/// let keeps = |s: &Scene| s.triangles[0].triangle.v[0].x >= r(1);
+/// let scene = Scene::new(8, 8, vec![Triangle { v: [p(7, 1), p(7, 2), p(3, 6)] }]);
+/// // Fails while the first vertex lies at x >= 5: moving it to 0 is tried and refused
+/// // before 6 is kept, so a batch of 4 holds both (one batch, two runs).
+/// let keeps = |s: &Scene| s.triangles[0].triangle.v[0].x >= r(5);
 /// let one = shrink(&scene, &mut |s: &Scene| keeps(s), 100, None);
 /// let mut batches = 0;
 /// let mut first_kept = |batch: &[Scene]| {

@@ -1,0 +1,96 @@
+//! Exact area coverage: on any polygon (self-intersecting, with holes, degenerate) lying
+//! on a small canvas, the cell accumulation equals the plain oracle's signed integral at
+//! every pixel; the integrals add up to the path's signed area; true and folded values lie
+//! in [0, 1]; and a spade triangulation of the outline's points adds up, pixel by pixel,
+//! to its hull.
+
+#![no_main]
+
+use arbitrary::Arbitrary;
+use libfuzzer_sys::fuzz_target;
+use num_rational::BigRational;
+use num_traits::Zero;
+
+use rasterproof::area::{cells, exact, path_signed_area, triangle_shape, Semantics};
+use rasterproof::check::{check_area_additivity, check_area_bounds, check_area_conservation};
+use rasterproof::geom::{FillRule, Point, Polygon};
+use rasterproof::strategy::triangulate;
+
+#[derive(Debug, Clone, Arbitrary)]
+struct Input {
+    outline: Vec<(u8, u8)>,
+    holes: Vec<Vec<(u8, u8)>>,
+    /// Coordinates are `v / (1 + den % 4)` px, folded onto the canvas.
+    den: u8,
+    even_odd: bool,
+    /// Canvas sides, read as `1 + w % 6`.
+    width: u8,
+    height: u8,
+}
+
+fuzz_target!(|input: Input| {
+    let (w, h) = (1 + u32::from(input.width % 6), 1 + u32::from(input.height % 6));
+    let den = 1 + i64::from(input.den % 4);
+    let (sx, sy) = (i64::from(w) * den + 1, i64::from(h) * den + 1);
+    // Every vertex on the canvas, edges included: [0, w] x [0, h].
+    let grid = |&(x, y): &(u8, u8)| (i64::from(x) % sx, i64::from(y) % sy);
+    let point = |(x, y): (i64, i64)| Point::from_fractions(x, den, y, den);
+    let contour = |c: &[(u8, u8)]| -> Vec<Point> { c.iter().take(8).map(|v| point(grid(v))).collect() };
+    let outline = contour(&input.outline);
+    let holes: Vec<Vec<Point>> = input.holes.iter().take(2).map(|c| contour(c)).collect();
+    if outline.len() < 3 || holes.iter().any(|c| c.len() < 3) {
+        return;
+    }
+    let fill_rule = if input.even_odd { FillRule::EvenOdd } else { FillRule::NonZero };
+    let poly = Polygon { outline, holes, fill_rule };
+    let one = std::slice::from_ref(&poly);
+
+    // Cells against the plain oracle, and conservation of the signed integral.
+    let from_cells: std::collections::BTreeMap<(u32, u32), BigRational> =
+        cells::accumulate(&poly, w, h).into_iter().map(|(x, y, v)| ((x, y), v)).collect();
+    let mut total = BigRational::zero();
+    for y in 0..h {
+        for x in 0..w {
+            let (_, acc) = exact::pixel(one, i64::from(x), i64::from(y));
+            let cell = from_cells.get(&(x, y)).cloned().unwrap_or_else(BigRational::zero);
+            assert_eq!(cell, acc[0], "pixel ({x}, {y}) of {poly:?}");
+            total += &acc[0];
+        }
+    }
+    assert_eq!(total, path_signed_area(&poly), "{poly:?}");
+    for s in [Semantics::True, Semantics::Accumulated] {
+        let image = exact::rasterize(one, w, h, s);
+        if let Err(v) = check_area_bounds(&image) {
+            panic!("{v}: {poly:?}");
+        }
+    }
+
+    // A triangulation of the outline's points adds up to its hull.
+    let quarter: Vec<[i64; 2]> = input
+        .outline
+        .iter()
+        .take(8)
+        .map(|v| {
+            let (x, y) = grid(v);
+            // On the quarter-pixel grid: x / den rounded down to quarters.
+            [x * 4 / den, y * 4 / den]
+        })
+        .collect();
+    if let Some(mesh) = triangulate(&quarter, 2) {
+        let hull = [Polygon::new(mesh.outline.clone(), FillRule::NonZero)];
+        let whole = exact::rasterize(&hull, w, h, Semantics::True);
+        let pieces: Vec<_> = mesh
+            .triangles
+            .iter()
+            .map(|t| exact::rasterize(&[triangle_shape(t)], w, h, Semantics::True))
+            .collect();
+        if let Err(v) = check_area_additivity(&pieces, &whole) {
+            panic!("{v}: {mesh:?}");
+        }
+        let area = rasterproof::area::shoelace(&mesh.outline);
+        let area = if area < BigRational::zero() { -area } else { area };
+        if let Err(v) = check_area_conservation(&whole, &area) {
+            panic!("{v}: {mesh:?}");
+        }
+    }
+});
