@@ -9,7 +9,7 @@ use proptest::prelude::*;
 
 use crate::common::config;
 use rasterproof::area::exact::{pixel, rasterize, value};
-use rasterproof::area::{cells, float, supersample, AreaImage};
+use rasterproof::area::{cells, float, ftgrays, supersample, AreaImage, Quantization};
 use rasterproof::area::{path_signed_area, shoelace, triangle_shape, AreaShape, Semantics};
 use rasterproof::check::triangle_covers;
 use rasterproof::check::{check_area_additivity, check_area_bounds, check_area_conservation};
@@ -206,6 +206,23 @@ proptest! {
                 let err = (got.value(x, y) - whole.value(x, y)).abs();
                 prop_assert!(err <= bound, "pixel ({}, {}): f32 off by {}", x, y, err);
             }
+        }
+    }
+
+    /// FreeType's method stays within 2 levels (of 255) of the exact value quantized as
+    /// FreeType quantizes it, on polygons whose points lie on its 1/64 px grid (the floor
+    /// divisions and `~` are its only departures there): nonzero and even-odd.
+    #[test]
+    fn ftgrays_is_near_the_exact_levels(poly in any_polygon(4, 7)) {
+        // The polygon on FreeType's 1/64 px grid first (its own rounding is another error).
+        let grid = BigRational::from_integer(64.into());
+        let poly = moved(&poly, |p| Point::new((&p.x * &grid).round() / &grid, (&p.y * &grid).round() / &grid));
+        let shapes = [poly.clone()];
+        let levels = ftgrays::rasterize(&shapes, 4, 4).unwrap();
+        let exact = rasterize(&shapes, 4, 4, Semantics::Accumulated).levels(Quantization::FtGrays);
+        for (k, (&got, &want)) in levels.iter().zip(&exact).enumerate() {
+            let off = (i32::from(got) - i32::from(want)).abs();
+            prop_assert!(off <= 2, "pixel ({}, {}): FreeType's method {} against {} exactly", k % 4, k / 4, got, want);
         }
     }
 
@@ -440,6 +457,19 @@ fn the_contenders_break_conservation() {
         check_area_conservation(&rasterize(&[triangle_shape(&third)], 2, 2, Semantics::True), &r(1, 3)),
         Ok(())
     );
+    // FreeType's envelope: 24.8 coordinates within 2^31, so |v| < 2^23 px.
+    let far = Triangle::new(p(r(0, 1), r(0, 1)), p(r(1 << 23, 1), r(0, 1)), p(r(0, 1), r(1, 1)));
+    let e = ftgrays::rasterize(&[triangle_shape(&far)], 2, 2).unwrap_err();
+    assert!(
+        e.contains("shape 0: (8388608, 0) is outside FreeType's 24.8 envelope"),
+        "{e}"
+    );
+    let near = Triangle::new(
+        p(r(0, 1), r(0, 1)),
+        p(r((1 << 23) - 1, 1), r(0, 1)),
+        p(r(0, 1), r(1, 1)),
+    );
+    assert!(ftgrays::rasterize(&[triangle_shape(&near)], 2, 2).is_ok());
     // Bad input: a NaN in a renderer's output, and a wrong length.
     let e = AreaImage::from_f32(2, 1, Semantics::True, &[0.5, f32::NAN]).unwrap_err();
     assert!(e.contains("pixel (1, 0)") && e.contains("not a number"), "{e}");
@@ -551,4 +581,45 @@ fn explain_area_cli_by_hand() {
         assert_eq!(out.status.code(), Some(2), "{args:?}");
         assert!(String::from_utf8_lossy(&out.stderr).contains(says), "{args:?}");
     }
+}
+
+/// FreeType's method on a rectangle derived by hand: [1/4, 11/4] x [1/2, 5/2] on a 3x3
+/// canvas. Pixel (0, 0) holds 3/4 x 1/2 = 3/8 of its area (96/256), (1, 0) 1/2 (128),
+/// (2, 0) 3/4 x 1/2 (96), (0, 1) 3/4 (192), (1, 1) whole (255 after the clamp), row 2 as
+/// row 0. Drawn one way round the values are FreeType's quantization of the exact ones;
+/// the other way round they come out negative and `~v` takes one off the partial pixels.
+#[test]
+fn ftgrays_rectangle_by_hand() {
+    let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+    let p = |x: BigRational, y: BigRational| Point::new(x, y);
+    let rect = vec![
+        p(r(1, 4), r(1, 2)),
+        p(r(11, 4), r(1, 2)),
+        p(r(11, 4), r(5, 2)),
+        p(r(1, 4), r(5, 2)),
+    ];
+    let expected = [96u8, 128, 96, 192, 255, 192, 96, 128, 96];
+    let mut reversed = rect.clone();
+    reversed.reverse();
+    let one_way = ft_levels(&rect);
+    let other = ft_levels(&reversed);
+    let exact = rasterize(&[Polygon::new(rect.clone(), FillRule::NonZero)], 3, 3, Semantics::True);
+    let quantized: Vec<u8> = exact
+        .levels(Quantization::FtGrays)
+        .into_iter()
+        .map(|l| u8::try_from(l).unwrap())
+        .collect();
+    assert_eq!(quantized, expected);
+    let (equal, less) = if one_way == expected {
+        (one_way, other)
+    } else {
+        (other, one_way)
+    };
+    assert_eq!(equal, expected);
+    let one_less: Vec<u8> = expected.iter().map(|&l| if l == 255 { 255 } else { l - 1 }).collect();
+    assert_eq!(less, one_less);
+}
+
+fn ft_levels(outline: &[Point]) -> Vec<u8> {
+    ftgrays::rasterize(&[Polygon::new(outline.to_vec(), FillRule::NonZero)], 3, 3).unwrap()
 }

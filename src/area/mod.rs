@@ -25,12 +25,15 @@
 //! edges, each trapezoid's area and winding numbers exact); [`cells`], the accumulated
 //! semantics by signed-area cell accumulation (the scanline renderers' method), exactly;
 //! the contenders: [`float`], the same accumulation in f32 (font-rs, ab_glyph_rasterizer),
+//! [`ftgrays`], FreeType's smooth rasterizer's integer method (26.6 points, 24.8 cells,
+//! 8-bit levels),
 //! and [`supersample`], k x k point samples per pixel counted exactly. A grey image quantizes the
 //! exact values by a named [`Quantization`].
 
 pub mod cells;
 pub mod exact;
 pub mod float;
+pub mod ftgrays;
 pub mod supersample;
 
 use num_bigint::BigInt;
