@@ -1411,3 +1411,69 @@ fn explain_draws_the_pixels_neighbourhood() {
     assert_eq!(code, 2, "{err}");
     assert!(!missing.exists());
 }
+
+/// A coordinate for the i128 path of `triangle_covers`, over 2^(k + 0..3) (mixed
+/// denominators: the path scales each to the largest): with `small`, a small numerator
+/// (ties, zero areas); else also near the scaled limit 2^60 on either side, at the ends of
+/// i64, or anywhere.
+fn dyadic_near_limits(k: u32, small: bool) -> impl Strategy<Value = num_rational::BigRational> {
+    let limit = 1i64 << rasterproof::check::DYADIC_LIMIT_BITS;
+    let numerator = if small {
+        (-8i64..8).boxed()
+    } else {
+        prop_oneof![
+            -8i64..8,
+            (0i64..3).prop_map(move |j| limit - 1 - j),
+            (0i64..3).prop_map(move |j| -(limit - 1 - j)),
+            (0i64..3).prop_map(move |j| limit + j),
+            (0i64..3).prop_map(move |j| -(limit + j)),
+            Just(i64::MAX),
+            Just(i64::MIN + 1),
+            any::<i64>(),
+        ]
+        .boxed()
+    };
+    (numerator, 0u32..3).prop_map(move |(n, extra)| {
+        num_rational::BigRational::new(n.into(), num_bigint::BigInt::from(1) << (k + extra))
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, ..config() })]
+
+    /// `triangle_covers` (i128 where the points are dyadic and small enough, big rationals
+    /// beyond) decides as the full evidence (`triangle_at`, big rationals throughout)
+    /// under every tie rule: denominators on both sides of 2^32 and mixed, scaled
+    /// coordinates on both sides of 2^60 and at the ends of i64, samples on edges and at
+    /// vertices, zero-area triangles, and thirds.
+    #[test]
+    fn triangle_covers_in_i128_equals_the_rational_evidence(
+        c in prop_oneof![Just(0u32), Just(31), Just(32), Just(33), 0u32..40]
+            .prop_flat_map(|k| (Just(k), any::<bool>()))
+            .prop_flat_map(|(k, small)| prop::collection::vec(dyadic_near_limits(k, small), 8)),
+        sample in 0u8..4,
+        third in any::<bool>(),
+        degenerate in any::<bool>(),
+    ) {
+        let point = |i: usize| rasterproof::geom::Point::new(c[i].clone(), c[i + 1].clone());
+        let half = num_rational::BigRational::new(1.into(), 2.into());
+        let mut v = [point(0), point(2), point(4)];
+        if degenerate {
+            // On the line of the first two: zero area, covering nothing.
+            v[2] = rasterproof::geom::Point::new((&v[0].x + &v[1].x) * &half, (&v[0].y + &v[1].y) * &half);
+        }
+        let t = rasterproof::geom::Triangle::new(v[0].clone(), v[1].clone(), v[2].clone());
+        let mut p = match sample {
+            0 => rasterproof::geom::Point::new((&v[0].x + &v[1].x) * &half, (&v[0].y + &v[1].y) * &half),
+            1 => v[2].clone(),
+            _ => point(6),
+        };
+        if third {
+            p.x = &p.x + num_rational::BigRational::new(1.into(), 3.into());
+        }
+        for rule in AnyTieRule::ALL {
+            let evidence = rasterproof::check::triangle_at(&t, &p, rule).is_some_and(|a| a.inside);
+            prop_assert_eq!(rasterproof::check::triangle_covers(&t, &p, rule), evidence, "{:?} {:?} {:?}", t, p, rule);
+        }
+    }
+}

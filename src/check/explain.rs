@@ -107,7 +107,15 @@ pub fn triangle_at(t: &Triangle, p: &Point, rule: AnyTieRule) -> Option<Triangle
 /// Whether triangle `t` covers sample `p` under `rule`: [`triangle_at`]'s `inside`
 /// without its evidence (no distances, no copies of the vertices), for the searches that
 /// ask it many times (`false` for a zero-area triangle, as there).
+///
+/// Where the four points are dyadic (power-of-two denominators up to `2^DYADIC_BITS`) and
+/// lie within `2^DYADIC_LIMIT_BITS` once scaled to integers, the same decision is taken in
+/// i128 (each edge function a difference of two products below `2^122`: exact); beyond,
+/// in big rationals. The two agree everywhere (`tests/oracle.rs`, at both bounds).
 pub fn triangle_covers(t: &Triangle, p: &Point, rule: AnyTieRule) -> bool {
+    if let Some(covered) = covers_dyadic(t, p, rule) {
+        return covered;
+    }
     let Some(t) = oriented(t) else { return false };
     let zero = BigRational::zero();
     (0..3).all(|i| {
@@ -115,6 +123,58 @@ pub fn triangle_covers(t: &Triangle, p: &Point, rule: AnyTieRule) -> bool {
         let e = edge_function(a, b, p);
         e.is_positive() || (e.is_zero() && rule.is_inclusive((&b.x - &a.x).cmp(&zero), (&b.y - &a.y).cmp(&zero)))
     })
+}
+
+/// The largest power-of-two denominator the i128 path of [`triangle_covers`] takes.
+pub const DYADIC_BITS: u32 = 32;
+/// Scaled coordinates of [`triangle_covers`]'s i128 path lie below `2^DYADIC_LIMIT_BITS`
+/// in magnitude: differences below `2^61`, products below `2^122`, their difference below
+/// `2^123`.
+pub const DYADIC_LIMIT_BITS: u32 = 60;
+
+/// [`triangle_covers`] in i128, or `None` when a coordinate is not dyadic within
+/// [`DYADIC_BITS`] or its scaled value reaches `2^DYADIC_LIMIT_BITS`.
+fn covers_dyadic(t: &Triangle, p: &Point, rule: AnyTieRule) -> Option<bool> {
+    let coordinates = [
+        &t.v[0].x, &t.v[0].y, &t.v[1].x, &t.v[1].y, &t.v[2].x, &t.v[2].y, &p.x, &p.y,
+    ];
+    // Each denominator's exponent (a power of two, or give up).
+    let mut exponents = [0u32; 8];
+    for (e, v) in exponents.iter_mut().zip(coordinates) {
+        let d = v.denom();
+        let bits = u32::try_from(d.bits()).ok()?;
+        if bits == 0 || bits - 1 > DYADIC_BITS || d.trailing_zeros() != Some(u64::from(bits - 1)) {
+            return None;
+        }
+        *e = bits - 1;
+    }
+    let shift = exponents.iter().copied().max().unwrap_or(0);
+    let mut scaled = [0i128; 8];
+    for ((out, v), e) in scaled.iter_mut().zip(coordinates).zip(exponents) {
+        let n = num_traits::ToPrimitive::to_i128(v.numer())?;
+        let s = n.checked_mul(1i128 << (shift - e))?;
+        if s.unsigned_abs() >= 1u128 << DYADIC_LIMIT_BITS {
+            return None;
+        }
+        *out = s;
+    }
+    let [ax, ay, bx, by, cx, cy, px, py] = scaled;
+    let e = |(ax, ay): (i128, i128), (bx, by): (i128, i128), (px, py): (i128, i128)| {
+        (px - ax) * (by - ay) - (py - ay) * (bx - ax)
+    };
+    let (a, mut b, mut c) = ((ax, ay), (bx, by), (cx, cy));
+    let area = e(a, b, c);
+    if area == 0 {
+        return Some(false);
+    }
+    if area < 0 {
+        std::mem::swap(&mut b, &mut c);
+    }
+    let sample = (px, py);
+    Some([(a, b), (b, c), (c, a)].into_iter().all(|(from, to)| {
+        let v = e(from, to, sample);
+        v > 0 || (v == 0 && rule.is_inclusive((to.0 - from.0).cmp(&0), (to.1 - from.1).cmp(&0)))
+    }))
 }
 
 impl TriangleAt {

@@ -18,7 +18,10 @@ pub use agreement::{check_agreement, differing_pixels, PixelDiff};
 pub use area::{check_area_additivity, check_area_bounds, check_area_conservation};
 pub use barycentric::{check_barycentric_exact, check_barycentric_fixed, float_sum_error_ulps};
 pub use clip::{check_clip_raster, check_inside, check_segment_clip, inside_interval};
-pub use explain::{explain_sample, segment_distance2, triangle_at, triangle_covers, EdgeAt, Side, TriangleAt};
+pub use explain::{
+    explain_sample, segment_distance2, triangle_at, triangle_covers, EdgeAt, Side, TriangleAt, DYADIC_BITS,
+    DYADIC_LIMIT_BITS,
+};
 pub use fill::check_triangulation;
 pub use invariance::{check_rotation_and_winding, check_translation};
 pub use line::{

@@ -93,14 +93,89 @@ impl std::error::Error for EnvelopeError {}
 /// assert_eq!(snap(&x, 8, Rounding::NearestEven), 0.into());
 /// assert_eq!(snap(&x, 8, Rounding::HalfAwayFromZero), 1.into());
 /// ```
+///
+/// A numerator and denominator that fit i64 (nearly every coordinate) are snapped in
+/// i128 (`n 2^bits` below `2^126` for `bits <= 62`, then one division); others in big
+/// rationals. Both give [`round_to_integer`]'s answer (unit tests, at the limits).
 pub fn snap(x: &BigRational, bits: u32, rounding: Rounding) -> BigInt {
+    if let (Some(n), Some(d), true) = (x.numer().to_i64(), x.denom().to_i64(), bits <= 62) {
+        return BigInt::from(round_quotient(i128::from(n) << bits, i128::from(d), rounding));
+    }
     let scaled = x * BigRational::from_integer(BigInt::from(1) << bits);
     round_to_integer(&scaled, rounding)
+}
+
+/// `n / d` (`d > 0`) rounded to an integer by `rounding`, as [`round_to_integer`] rounds.
+fn round_quotient(n: i128, d: i128, rounding: Rounding) -> i128 {
+    let (floor, rem) = (n.div_euclid(d), n.rem_euclid(d));
+    let ceiling = floor + i128::from(rem != 0);
+    match rounding {
+        Rounding::Floor => floor,
+        Rounding::Ceiling => ceiling,
+        Rounding::TowardsZero => {
+            if n < 0 {
+                ceiling
+            } else {
+                floor
+            }
+        }
+        Rounding::NearestEven | Rounding::HalfAwayFromZero => match (2 * rem).cmp(&d) {
+            std::cmp::Ordering::Less => floor,
+            std::cmp::Ordering::Greater => floor + 1,
+            std::cmp::Ordering::Equal => match rounding {
+                Rounding::HalfAwayFromZero if n < 0 => floor,
+                Rounding::HalfAwayFromZero => floor + 1,
+                _ if floor % 2 == 0 => floor,
+                _ => floor + 1,
+            },
+        },
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The i128 snap equals the big-rational rounding for every rounding, at the ends of
+    /// i64, at ties and at `bits` 0, 8, 16 and 62 (the last the i128 path takes) and 63
+    /// (the first it leaves), 64 and 65.
+    #[test]
+    fn snap_in_i128_equals_the_rational_rounding() {
+        let numerators = [
+            0,
+            1,
+            -1,
+            3,
+            -3,
+            5,
+            -5,
+            7,
+            255,
+            -255,
+            1 << 40,
+            -(1 << 40) - 1,
+            i64::MAX,
+            i64::MIN,
+            i64::MIN + 1,
+            i64::MAX - 1,
+        ];
+        let denominators = [1, 2, 3, 4, 6, 7, 512, 1000, (1 << 40) + 3, i64::MAX, i64::MAX - 1];
+        for &n in &numerators {
+            for &d in &denominators {
+                let x = BigRational::new(n.into(), d.into());
+                for bits in [0, 1, 8, 16, 61, 62, 63, 64, 65] {
+                    for rounding in Rounding::ALL {
+                        let scaled = &x * BigRational::from_integer(BigInt::from(1) << bits);
+                        assert_eq!(
+                            snap(&x, bits, rounding),
+                            round_to_integer(&scaled, rounding),
+                            "{x} at {bits} bits, {rounding:?}"
+                        );
+                    }
+                }
+            }
+        }
+    }
 
     #[test]
     fn envelope_edge_is_inclusive() {

@@ -120,6 +120,9 @@ pub struct Classifier<'a> {
     snapped_shapes: HashMap<(usize, Snapping), Option<Shape>>,
     unclipped_shapes: HashMap<usize, Option<Shape>>,
     line_pixels: HashMap<(usize, &'static str), HashSet<[i64; 2]>>,
+    /// The pixels of each diamond-exit segment asked about (by its ends and the sample
+    /// position), drawn once by the planned engine (equal to the plain reading).
+    diamond_pixels: HashMap<(Point, Point, PixelCentre), HashSet<[i64; 2]>>,
     /// [`Classifier::reach2`], per number of bits.
     reach2: Option<Vec<BigRational>>,
 }
@@ -142,6 +145,7 @@ impl<'a> Classifier<'a> {
             snapped_shapes: HashMap::new(),
             unclipped_shapes: HashMap::new(),
             line_pixels: HashMap::new(),
+            diamond_pixels: HashMap::new(),
             reach2: Self::reach2(primitives, target, model),
         }
     }
@@ -323,7 +327,16 @@ impl<'a> Classifier<'a> {
             Shape::Triangle(t) => triangle_covers(t, &p, rule.into()),
             Shape::Polygon(poly) => polygon_inside(poly, &p, rule),
             Shape::Diamond { from, to } => {
-                kept && line::exact::diamond_exits(from, to, i64::from(x), i64::from(y), target)
+                let key = (from.clone(), to.clone(), target.convention.pixel_centre);
+                kept && self
+                    .diamond_pixels
+                    .entry(key)
+                    .or_insert_with(|| {
+                        let mut set = PixelSet::default();
+                        line::planned::rasterize(from, to, 0, target, &mut set);
+                        set.0
+                    })
+                    .contains(&[i64::from(x), i64::from(y)])
             }
             Shape::Bresenham { tie, .. } => {
                 let name = if *tie == BresenhamTie::Stay {
@@ -424,7 +437,7 @@ impl<'a> Classifier<'a> {
             let m = BigRational::from_integer((i64::from(target.height) - 1).into())
                 + target.convention.pixel_centre.offset() * BigRational::from_integer(2.into());
             let mirror = |p: &Point| Point::new(p.x.clone(), &m - &p.y);
-            line::exact::rasterize_diamond(&mirror(from), &mirror(to), 0, target, &mut set);
+            line::planned::rasterize(&mirror(from), &mirror(to), 0, target, &mut set);
             let height = i64::from(target.height);
             return set.0.into_iter().map(|[i, j]| [i, height - 1 - j]).collect();
         }
@@ -460,7 +473,7 @@ impl<'a> Classifier<'a> {
                         BigRational::from_integer(a[1].into()) + &c,
                     )
                 };
-                line::exact::rasterize_diamond(&at(from), &at(to), 0, target, &mut set);
+                line::planned::rasterize(&at(from), &at(to), 0, target, &mut set);
             }
         }
         set.0
