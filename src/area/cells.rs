@@ -19,7 +19,7 @@ use std::collections::BTreeMap;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
-use super::{fold, shoelace, AreaImage, AreaShape, Semantics};
+use super::{fold, path_contours, AreaImage, AreaShape, Semantics};
 use crate::geom::Point;
 
 /// The cells of one shape: `(row, column) -> (cover, area)`.
@@ -28,17 +28,12 @@ type Cells = BTreeMap<(i64, i64), (BigRational, BigRational)>;
 /// The directed edges of `shape`'s path: the outline's, and each hole's turned against the
 /// outline (reversed when its shoelace sum has the outline's sign).
 fn path_edges(shape: &AreaShape) -> Vec<(Point, Point)> {
-    let outline_negative = shoelace(&shape.outline).is_negative();
     let mut out = Vec::new();
-    for (k, contour) in shape.contours().enumerate() {
-        let turn = k > 0 && {
-            let a = shoelace(contour);
-            !a.is_zero() && a.is_negative() == outline_negative
-        };
+    for (contour, turned) in path_contours(shape) {
         let n = contour.len();
         for i in 0..n {
             let (a, b) = (contour[i].clone(), contour[(i + 1) % n].clone());
-            out.push(if turn { (b, a) } else { (a, b) });
+            out.push(if turned { (b, a) } else { (a, b) });
         }
     }
     out

@@ -6,7 +6,7 @@
 
 use num_traits::ToPrimitive;
 
-use super::{shoelace, AreaShape, Semantics};
+use super::{path_contours, AreaShape, Semantics};
 use crate::geom::FillRule;
 
 /// A point in f32.
@@ -15,18 +15,14 @@ type P = [f32; 2];
 /// `shape`'s path in f32 (each coordinate rounded to the nearest f32; holes turned against
 /// the outline as [`super::path_winding`] says).
 fn path_f32(shape: &AreaShape) -> Vec<(P, P)> {
-    let outline_negative = num_traits::Signed::is_negative(&shoelace(&shape.outline));
     let f = |v: &num_rational::BigRational| v.to_f32().unwrap_or(f32::NAN);
     let mut out = Vec::new();
-    for (k, contour) in shape.contours().enumerate() {
-        let area = shoelace(contour);
-        let turn =
-            k > 0 && !num_traits::Zero::is_zero(&area) && num_traits::Signed::is_negative(&area) == outline_negative;
+    for (contour, turned) in path_contours(shape) {
         let n = contour.len();
         for i in 0..n {
             let (a, b) = (&contour[i], &contour[(i + 1) % n]);
             let (a, b) = ([f(&a.x), f(&a.y)], [f(&b.x), f(&b.y)]);
-            out.push(if turn { (b, a) } else { (a, b) });
+            out.push(if turned { (b, a) } else { (a, b) });
         }
     }
     out

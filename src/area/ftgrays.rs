@@ -24,7 +24,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::ToPrimitive;
 
-use super::{shoelace, AreaShape};
+use super::{path_contours, AreaShape};
 use crate::geom::FillRule;
 
 /// Subpixel bits of a cell coordinate (24.8).
@@ -63,6 +63,23 @@ fn add_piece(cells: &mut Cells, ex: i64, ey: i64, (x1, y1): (i64, i64), (x2, y2)
     cell.1 += dy * (fx1 + fx2);
 }
 
+/// `from`, every cell boundary (a multiple of `ONE_PIXEL`) strictly between `from` and
+/// `to` in the order of travel, and `to`.
+fn boundaries(from: i64, to: i64) -> Vec<i64> {
+    let (lo, hi) = (from.min(to), from.max(to));
+    let mut out = vec![from];
+    let mut k = floor_div(lo, ONE_PIXEL) + 1;
+    while k * ONE_PIXEL < hi {
+        out.push(k * ONE_PIXEL);
+        k += 1;
+    }
+    if to < from {
+        out[1..].reverse();
+    }
+    out.push(to);
+    out
+}
+
 /// Walks the edge `(x1, y1) -> (x2, y2)` (24.8) through the cells, row by row and, within a
 /// row, column by column.
 fn add_edge(cells: &mut Cells, (x1, y1): (i64, i64), (x2, y2): (i64, i64)) {
@@ -71,35 +88,13 @@ fn add_edge(cells: &mut Cells, (x1, y1): (i64, i64), (x2, y2): (i64, i64)) {
     }
     let (dx, dy) = (x2 - x1, y2 - y1);
     let x_at = |y: i64| x1 + floor_div((y - y1) * dx, dy);
-    // Row boundaries crossed, in the direction of travel.
-    let (lo, hi) = (y1.min(y2), y1.max(y2));
-    let mut ys = vec![y1];
-    let mut k = floor_div(lo, ONE_PIXEL) + 1;
-    while k * ONE_PIXEL < hi {
-        ys.push(k * ONE_PIXEL);
-        k += 1;
-    }
-    if y2 < y1 {
-        ys[1..].reverse();
-    }
-    ys.push(y2);
+    let ys = boundaries(y1, y2);
     for w in ys.windows(2) {
         let (ya, yb) = (w[0], w[1]);
         let ey = floor_div(ya.min(yb), ONE_PIXEL);
         let xa = if ya == y1 { x1 } else { x_at(ya) };
         let xb = if yb == y2 { x2 } else { x_at(yb) };
-        // Column boundaries crossed within the row.
-        let (cl, ch) = (xa.min(xb), xa.max(xb));
-        let mut xs = vec![xa];
-        let mut c = floor_div(cl, ONE_PIXEL) + 1;
-        while c * ONE_PIXEL < ch {
-            xs.push(c * ONE_PIXEL);
-            c += 1;
-        }
-        if xb < xa {
-            xs[1..].reverse();
-        }
-        xs.push(xb);
+        let xs = boundaries(xa, xb);
         let mut from = (xa, ya);
         for pair in xs.windows(2) {
             let xe = pair[1];
@@ -125,13 +120,8 @@ pub fn rasterize(shapes: &[AreaShape], width: u32, height: u32) -> Result<Vec<u8
     let (w, h) = (i64::from(width), i64::from(height));
     let mut out = vec![0u8; width as usize * height as usize];
     for (k, shape) in shapes.iter().enumerate() {
-        let outline_negative = num_traits::Signed::is_negative(&shoelace(&shape.outline));
         let mut cells = Cells::new();
-        for (c, contour) in shape.contours().enumerate() {
-            let area = shoelace(contour);
-            let turn = c > 0
-                && !num_traits::Zero::is_zero(&area)
-                && num_traits::Signed::is_negative(&area) == outline_negative;
+        for (contour, turned) in path_contours(shape) {
             let mut points = Vec::with_capacity(contour.len());
             for p in contour {
                 let (Some(x), Some(y)) = (to_24_8(&p.x), to_24_8(&p.y)) else {
@@ -143,7 +133,7 @@ pub fn rasterize(shapes: &[AreaShape], width: u32, height: u32) -> Result<Vec<u8
                 // FreeType's frame: y up.
                 points.push((x, h * ONE_PIXEL - y));
             }
-            if turn {
+            if turned {
                 points.reverse();
             }
             for i in 0..points.len() {

@@ -100,37 +100,35 @@ pub fn inside(poly: &Polygon, windings: &[i64]) -> bool {
     rule(windings[0]) && !windings[1..].iter().any(|&w| rule(w))
 }
 
+/// `poly`'s contours as its path takes them (see [`AreaShape`]): each with whether it is
+/// turned (walked backwards), which is so for a hole whose signed area is non-zero and has
+/// the outline's sign. The one place the turn is decided; every accumulating model walks
+/// its contours this way.
+pub fn path_contours(poly: &Polygon) -> impl Iterator<Item = (&[Point], bool)> + '_ {
+    let outline_negative = shoelace(&poly.outline).is_negative();
+    poly.contours().enumerate().map(move |(k, c)| {
+        let turned = k > 0 && {
+            let area = shoelace(c);
+            !area.is_zero() && area.is_negative() == outline_negative
+        };
+        (c, turned)
+    })
+}
+
 /// The winding number of `poly`'s path (see [`AreaShape`]) at a point whose winding
 /// numbers about its contours are `windings`.
 pub fn path_winding(poly: &Polygon, windings: &[i64]) -> i64 {
-    let outline_sign = shoelace(&poly.outline).is_negative();
-    let holes = poly.holes.iter().zip(&windings[1..]).map(|(h, &w)| {
-        let area = shoelace(h);
-        if !area.is_zero() && area.is_negative() == outline_sign {
-            -w
-        } else {
-            w
-        }
-    });
-    windings[0] + holes.sum::<i64>()
+    path_contours(poly)
+        .zip(windings)
+        .map(|((_, turned), &w)| if turned { -w } else { w })
+        .sum()
 }
 
 /// The signed area of `poly`'s path: the integral of [`path_winding`] over the plane.
 pub fn path_signed_area(poly: &Polygon) -> BigRational {
-    let outline = shoelace(&poly.outline);
-    let holes: BigRational = poly
-        .holes
-        .iter()
-        .map(|h| {
-            let a = shoelace(h);
-            if a.is_negative() == outline.is_negative() {
-                -a
-            } else {
-                a
-            }
-        })
-        .sum();
-    outline + holes
+    path_contours(poly)
+        .map(|(c, turned)| if turned { -shoelace(c) } else { shoelace(c) })
+        .sum()
 }
 
 /// The accumulated value `acc` (the integral of the path's winding number over a pixel)
