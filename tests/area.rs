@@ -86,7 +86,10 @@ proptest! {
                     .iter()
                     .map(|h| {
                         let a = shoelace(&clipped(h).outline);
-                        if shoelace(h).is_negative() == outline_negative { -a } else { a }
+                        // Turned when its signed area is non-zero and has the outline's sign
+                        // (a zero-area hole, a bow tie of two opposite lobes, as given).
+                        let whole = shoelace(h);
+                        if !whole.is_zero() && whole.is_negative() == outline_negative { -a } else { a }
                     })
                     .sum::<BigRational>();
             let (_, acc) = pixel(&shapes, px, py);
@@ -622,4 +625,201 @@ fn ftgrays_rectangle_by_hand() {
 
 fn ft_levels(outline: &[Point]) -> Vec<u8> {
     ftgrays::rasterize(&[Polygon::new(outline.to_vec(), FillRule::NonZero)], 3, 3).unwrap()
+}
+
+/// Their grey image as a `GreyImage` from 8-bit levels.
+fn grey8(width: u32, height: u32, levels: &[u8]) -> rasterproof::oracle::grey::GreyImage {
+    rasterproof::oracle::grey::GreyImage {
+        width,
+        height,
+        bits: 8,
+        levels: levels.iter().map(|&l| u16::from(l)).collect(),
+    }
+}
+
+/// The grey comparison's classes, each from a renderer whose behaviour is known by hand:
+/// - FreeType's method on the rectangle of `ftgrays_rectangle_by_hand`, walked the way
+///   round that complements negative values: its 8 partial pixels are one level under the
+///   exact value's (96 -> 95, 128 -> 127, 192 -> 191), and no rounding, other semantics or
+///   supersampling gives that: `precision`, off by -1 quantum; the whole pixel has the
+///   exact value's level (255, the clamp of 256: itself a quantum under it).
+/// - 4x4 supersampling of the triangle (0,0) (1,0) (0,1): 6 samples of 16, 3/8 x 255 =
+///   95.625, level 96, where the exact 1/2 is 127.5 (level 128): `supersampling (4x4)`.
+/// - A bow tie (0,0) (1,1) (1,0) (0,1) inside one pixel: its two lobes wind +1 and -1,
+///   true coverage 1/2, the integral 0: a renderer that accumulates gives 0,
+///   `accumulation`.
+/// - Level 200 for that triangle: none of these, `gross`; 127 for it: another rounding of
+///   127.5, `quantization`.
+#[test]
+fn grey_classes_by_hand() {
+    use rasterproof::oracle::grey::{compare_grey, GreyClass};
+    let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+    let p = |x: BigRational, y: BigRational| Point::new(x, y);
+    let rect = vec![
+        p(r(1, 4), r(1, 2)),
+        p(r(11, 4), r(1, 2)),
+        p(r(11, 4), r(5, 2)),
+        p(r(1, 4), r(5, 2)),
+    ];
+    let exact_levels: Vec<u8> = vec![96, 128, 96, 192, 255, 192, 96, 128, 96];
+    let mut found_precision = false;
+    for outline in [rect.clone(), rect.iter().rev().cloned().collect()] {
+        let shapes = [Polygon::new(outline, FillRule::NonZero)];
+        let levels = ftgrays::rasterize(&shapes, 3, 3).unwrap();
+        let report = compare_grey(
+            &shapes,
+            &grey8(3, 3, &levels),
+            3,
+            3,
+            Semantics::True,
+            Quantization::FtGrays,
+        )
+        .unwrap();
+        if levels == exact_levels {
+            assert!(report.pixels.is_empty());
+        } else {
+            found_precision = true;
+            assert_eq!(report.pixels.len(), 8);
+            assert!(
+                report
+                    .pixels
+                    .iter()
+                    .all(|px| px.class == GreyClass::Precision && px.error == r(-1, 1)),
+                "{report:?}"
+            );
+            assert_eq!(report.max_error, r(1, 1));
+            // The whole pixel too is a quantum under 256 (the clamp to 255), not differing.
+            assert_eq!(report.mean_error, r(1, 1));
+        }
+    }
+    assert!(found_precision);
+    let t = Triangle::new(p(r(0, 1), r(0, 1)), p(r(1, 1), r(0, 1)), p(r(0, 1), r(1, 1)));
+    let shapes = [triangle_shape(&t)];
+    let sampled = supersample::rasterize(&shapes, 1, 1, 4).levels(Quantization::Round8);
+    assert_eq!(sampled, [96]);
+    let class = |level: u8, shapes: &[AreaShape]| {
+        let report = compare_grey(
+            shapes,
+            &grey8(1, 1, &[level]),
+            1,
+            1,
+            Semantics::True,
+            Quantization::Round8,
+        )
+        .unwrap();
+        report.pixels.first().map(|px| px.class)
+    };
+    assert_eq!(class(96, &shapes), Some(GreyClass::Supersampling(4)));
+    assert_eq!(class(128, &shapes), None);
+    assert_eq!(class(127, &shapes), Some(GreyClass::Quantization));
+    assert_eq!(class(200, &shapes), Some(GreyClass::Gross));
+    let bow = [Polygon::new(
+        vec![
+            p(r(0, 1), r(0, 1)),
+            p(r(1, 1), r(1, 1)),
+            p(r(1, 1), r(0, 1)),
+            p(r(0, 1), r(1, 1)),
+        ],
+        FillRule::NonZero,
+    )];
+    assert_eq!(value(&bow, 0, 0, Semantics::True), r(1, 2));
+    assert_eq!(value(&bow, 0, 0, Semantics::Accumulated), r(0, 1));
+    assert_eq!(class(0, &bow), Some(GreyClass::Accumulation));
+    // Bad input: another size, another bit depth.
+    let e = compare_grey(
+        &shapes,
+        &grey8(2, 1, &[0, 0]),
+        1,
+        1,
+        Semantics::True,
+        Quantization::Round8,
+    )
+    .unwrap_err();
+    assert!(e.contains("their image is 2x1, the scene's canvas 1x1"), "{e}");
+    let e = compare_grey(
+        &shapes,
+        &grey8(1, 1, &[0]),
+        1,
+        1,
+        Semantics::True,
+        Quantization::Round16,
+    )
+    .unwrap_err();
+    assert!(
+        e.contains("8-bit levels; the quantization round16 makes 16-bit ones"),
+        "{e}"
+    );
+}
+
+/// `compare --as grey` from the command line: the oracle's own grey PNG is identical
+/// (exit 0); an RGB PNG and a missing file are refused (exit 2) naming the file.
+#[test]
+fn compare_grey_cli() {
+    use assert_cmd::Command;
+    let dir = crate::tempdir::Dir::new("area-grey");
+    let scene = dir.path().join("t.json");
+    std::fs::write(
+        &scene,
+        r#"{"width": 3, "height": 3, "triangles": [{"v": [[0, 0], [3, 0], [0, 3]]}]}"#,
+    )
+    .unwrap();
+    let grey = dir.path().join("g.png");
+    let s = scene.to_str().unwrap();
+    let ok = Command::cargo_bin("rasterproof")
+        .unwrap()
+        .args([
+            "render",
+            s,
+            "--coverage",
+            "area",
+            "--model",
+            "exact",
+            "--grey-out",
+            grey.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(ok.status.code(), Some(0));
+    let run = |theirs: &std::path::Path, extra: &[&str]| {
+        let out = Command::cargo_bin("rasterproof")
+            .unwrap()
+            .args([
+                "compare",
+                s,
+                theirs.to_str().unwrap(),
+                "--as",
+                "grey",
+                "--model",
+                "exact",
+            ])
+            .args(extra)
+            .output()
+            .unwrap();
+        (
+            out.status.code(),
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    let (code, text, _) = run(&grey, &[]);
+    assert_eq!(code, Some(0), "{text}");
+    assert!(text.contains("0 of 9 pixels differ"), "{text}");
+    // Truncated instead of rounded: the half pixels are 127 where rounding gives 128.
+    let (code, text, _) = run(&grey, &["--quantization", "truncate"]);
+    assert_eq!(code, Some(1), "{text}");
+    assert!(
+        text.contains("3 of 9 pixels differ") && text.contains("quantization: 3 pixels"),
+        "{text}"
+    );
+    let rgb = dir.path().join("rgb.png");
+    image::RgbImage::new(3, 3).save(&rgb).unwrap();
+    let (code, _, err) = run(&rgb, &[]);
+    assert_eq!(code, Some(2));
+    assert!(
+        err.contains("rgb.png: a Rgb8 PNG; --as grey reads 8- or 16-bit grey"),
+        "{err}"
+    );
+    let (code, _, err) = run(&dir.path().join("none.png"), &[]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("none.png: cannot read"), "{err}");
 }

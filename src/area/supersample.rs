@@ -18,25 +18,10 @@ use crate::geom::Point;
 /// share of its `k x k` samples inside any shape (true coverage's counterpart). `k` of 0 is
 /// read as 1.
 pub fn rasterize(shapes: &[AreaShape], width: u32, height: u32, k: u32) -> AreaImage {
-    let k = k.max(1);
-    let samples = BigRational::from_integer((u64::from(k) * u64::from(k)).into());
-    let step = |i: u32| BigRational::new((2 * i64::from(i) + 1).into(), (2 * i64::from(k)).into());
     let mut pixels = Vec::new();
     for y in 0..height {
         for x in 0..width {
-            let mut count = 0u64;
-            for j in 0..k {
-                for i in 0..k {
-                    let p = Point::new(
-                        BigRational::from_integer(x.into()) + step(i),
-                        BigRational::from_integer(y.into()) + step(j),
-                    );
-                    if shapes.iter().any(|s| contains_exact(&p, s, TieRule::TopLeft)) {
-                        count += 1;
-                    }
-                }
-            }
-            let v = BigRational::from_integer(count.into()) / &samples;
+            let v = pixel(shapes, x, y, k);
             if !v.is_zero() {
                 pixels.push((x, y, v));
             }
@@ -48,4 +33,24 @@ pub fn rasterize(shapes: &[AreaShape], width: u32, height: u32, k: u32) -> AreaI
         semantics: Semantics::True,
         pixels,
     }
+}
+
+/// Pixel `(x, y)`'s supersampled value: the share of its `k x k` samples inside any shape
+/// (`k` of 0 read as 1).
+pub fn pixel(shapes: &[AreaShape], x: u32, y: u32, k: u32) -> BigRational {
+    let k = k.max(1);
+    let step = |i: u32| BigRational::new((2 * i64::from(i) + 1).into(), (2 * i64::from(k)).into());
+    let mut count = 0u64;
+    for j in 0..k {
+        for i in 0..k {
+            let p = Point::new(
+                BigRational::from_integer(x.into()) + step(i),
+                BigRational::from_integer(y.into()) + step(j),
+            );
+            if shapes.iter().any(|s| contains_exact(&p, s, TieRule::TopLeft)) {
+                count += 1;
+            }
+        }
+    }
+    BigRational::new(count.into(), (u64::from(k) * u64::from(k)).into())
 }

@@ -19,7 +19,9 @@ pub struct Options {
     theirs: PathBuf,
     /// How to read THEIRS: mask (covered where a pixel differs from the background), ids
     /// (the ids PNG of `render --ids-out`: id + 1 in R (low byte), G, B; alpha 254 marks
-    /// several owners) or json. Default: json for a .json file, ids otherwise.
+    /// several owners), json, or grey (an anti-aliased 8- or 16-bit grey PNG, compared
+    /// with the exact area coverage: see --semantics and --quantization). Default: json
+    /// for a .json file, ids otherwise.
     #[arg(long = "as", value_name = "FORMAT")]
     theirs_as: Option<String>,
     /// The oracle model: exact-snapped (default: the answer of a renderer that snaps
@@ -59,6 +61,15 @@ pub struct Options {
     /// when one does, 1 when none does.
     #[arg(long, conflicts_with_all = ["diff_out", "model", "html"])]
     fit: bool,
+    /// With `--as grey`: the exact area semantics their levels approximate (`true`,
+    /// `accumulated` or `unclamped`; see `render --coverage area`).
+    #[arg(long, default_value = "true", value_name = "true|accumulated|unclamped")]
+    semantics: String,
+    /// With `--as grey`: how their levels quantize a value (`round`, `truncate`,
+    /// `ftgrays`: 8-bit; `round16`: 16-bit). A pixel whose level is another rounding of the
+    /// exact value is classed `quantization`.
+    #[arg(long, default_value = "round", value_name = "round|truncate|ftgrays|round16")]
+    quantization: String,
 }
 
 /// `--classify`: a bound, or none.
@@ -109,11 +120,16 @@ fn parse_background(text: &str) -> Result<Background, String> {
 /// writes `--diff-out` and prints the report; exit 1 when the images differ (or no
 /// convention fits).
 pub fn run(o: &Options) -> Result<ExitCode, String> {
+    if o.theirs_as.as_deref() == Some("grey") {
+        return run_grey(o);
+    }
+    if o.semantics != "true" || o.quantization != "round" {
+        return Err("--semantics and --quantization are for --as grey".to_string());
+    }
     let model = super::parse_model(&o.model)?;
     let format = match &o.theirs_as {
-        Some(f) => {
-            Format::from_name(f).ok_or_else(|| format!("--as: unknown format {f:?} (expected mask, ids or json)"))?
-        }
+        Some(f) => Format::from_name(f)
+            .ok_or_else(|| format!("--as: unknown format {f:?} (expected mask, ids, json or grey)"))?,
         None if o.theirs.extension().is_some_and(|e| e.eq_ignore_ascii_case("json")) => Format::Json,
         None => Format::Ids,
     };
@@ -176,6 +192,48 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         OutputFormat::Json => super::print_stdout(&report.to_json(&name, &theirs_name).to_string())?,
     }
     Ok(if report.identical() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
+
+/// `compare --as grey`: their grey levels against the exact area coverage; exit 0 when
+/// every pixel has the exact value's level, 1 when some differ.
+fn run_grey(o: &Options) -> Result<ExitCode, String> {
+    if o.fit || o.diff_out.is_some() || o.html.is_some() || o.background.is_some() {
+        return Err("--as grey prints its comparison (text or JSON); --fit, --diff-out, --html and --background are for the one-sample formats".to_string());
+    }
+    let model = super::parse_model(&o.model)?;
+    let semantics = rasterproof::area::Semantics::from_name(&o.semantics).ok_or_else(|| {
+        format!(
+            "--semantics: unknown semantics {:?} (expected true, accumulated or unclamped)",
+            o.semantics
+        )
+    })?;
+    let quantization = rasterproof::area::Quantization::from_name(&o.quantization).ok_or_else(|| {
+        format!(
+            "--quantization: unknown quantization {:?} (expected round, truncate, ftgrays or round16)",
+            o.quantization
+        )
+    })?;
+    let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
+    let theirs_name = o.theirs.display().to_string();
+    let bytes = std::fs::read(&o.theirs).map_err(|e| format!("{theirs_name}: cannot read: {e}"))?;
+    let theirs = rasterproof::oracle::grey::GreyImage::read_png(&bytes, &theirs_name)?;
+    let shapes = rasterproof::model::area_shapes(&scene.primitives(), &target, model)
+        .map_err(|e| format!("{name}: {e} (model {model})"))?;
+    let report =
+        rasterproof::oracle::grey::compare_grey(&shapes, &theirs, target.width, target.height, semantics, quantization)
+            .map_err(|e| format!("{theirs_name}: {e} ({name})"))?;
+    match o.format_out {
+        OutputFormat::Text => super::write_stdout(|out| {
+            writeln!(out, "compare --as grey: {theirs_name} against {name} (model {model})")?;
+            out.write_all(report.to_text(o.limit).as_bytes())
+        })?,
+        OutputFormat::Json => super::print_stdout(&report.to_json().to_string())?,
+    }
+    Ok(if report.pixels.is_empty() {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)

@@ -14,6 +14,7 @@ pub mod compare;
 pub mod evidence;
 pub mod explain;
 pub mod fit;
+pub mod grey;
 #[cfg(feature = "proptest")]
 pub mod hunt;
 pub mod program;

@@ -1,0 +1,308 @@
+//! Another renderer's anti-aliased output (a grey image) against exact area coverage
+//! (`compare --as grey`): per pixel their level against the exact value in units of their
+//! quantum, and for each pixel that differs from the exact value's level under the named
+//! quantization, the most plausible exact reason ([`GreyClass`]).
+
+use std::collections::BTreeMap;
+
+use num_rational::BigRational;
+use num_traits::{Signed, ToPrimitive, Zero};
+use serde_json::json;
+
+use crate::area::{exact, supersample, AreaShape, Quantization, Semantics};
+use crate::num::exact::{exact_text, nearest_f64};
+
+/// The supersampling counts tried (per axis).
+pub const SUPERSAMPLING: [u32; 4] = [2, 4, 8, 16];
+
+/// A grey image: one level per pixel, row-major, of `bits` bits (8 or 16).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct GreyImage {
+    /// Width.
+    pub width: u32,
+    /// Height.
+    pub height: u32,
+    /// Bits per level: 8 or 16.
+    pub bits: u32,
+    /// The levels, row-major.
+    pub levels: Vec<u16>,
+}
+
+impl GreyImage {
+    /// A grey PNG (8- or 16-bit grey, with or without alpha, whose alpha is ignored),
+    /// named `name` in errors.
+    ///
+    /// # Errors
+    /// Not a PNG, or another colour type: the error names the file and what it holds.
+    pub fn read_png(bytes: &[u8], name: &str) -> Result<GreyImage, String> {
+        let image = image::load_from_memory_with_format(bytes, image::ImageFormat::Png)
+            .map_err(|e| format!("{name}: not a PNG this reader takes: {e}"))?;
+        let (width, height) = (image.width(), image.height());
+        match image {
+            image::DynamicImage::ImageLuma8(_) | image::DynamicImage::ImageLumaA8(_) => Ok(GreyImage {
+                width,
+                height,
+                bits: 8,
+                levels: image.to_luma8().into_raw().into_iter().map(u16::from).collect(),
+            }),
+            image::DynamicImage::ImageLuma16(_) | image::DynamicImage::ImageLumaA16(_) => Ok(GreyImage {
+                width,
+                height,
+                bits: 16,
+                levels: image.to_luma16().into_raw(),
+            }),
+            other => Err(format!(
+                "{name}: a {:?} PNG; --as grey reads 8- or 16-bit grey (with or without alpha)",
+                other.color()
+            )),
+        }
+    }
+}
+
+/// Why their level differs from the exact value's, the most plausible first.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum GreyClass {
+    /// Their level is a legal rounding of the exact value (within one quantum): another
+    /// rounding than the one named.
+    Quantization,
+    /// Their level is the named quantization of another semantics' value (they integrate
+    /// the winding number where the stated semantics is true coverage, or the other way
+    /// round).
+    Accumulation,
+    /// Their level is a rounding of the share of `k x k` samples covered: they
+    /// supersample.
+    Supersampling(u32),
+    /// Within two quanta of the exact value: fixed- or floating-point error.
+    Precision,
+    /// None of these.
+    Gross,
+}
+
+impl GreyClass {
+    /// In words: `quantization`, `supersampling (4x4)`, ...
+    pub fn name(self) -> String {
+        match self {
+            GreyClass::Quantization => "quantization".into(),
+            GreyClass::Accumulation => "accumulation".into(),
+            GreyClass::Supersampling(k) => format!("supersampling ({k}x{k})"),
+            GreyClass::Precision => "precision".into(),
+            GreyClass::Gross => "gross".into(),
+        }
+    }
+}
+
+/// A pixel whose level is not the exact value's under the named quantization.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct GreyPixel {
+    /// Column.
+    pub x: u32,
+    /// Row.
+    pub y: u32,
+    /// Their level.
+    pub theirs: u16,
+    /// The exact value's level under the named quantization.
+    pub ours: u16,
+    /// The exact value.
+    pub exact: BigRational,
+    /// Their level less the exact value, in quanta (exact).
+    pub error: BigRational,
+    /// Why.
+    pub class: GreyClass,
+}
+
+/// A grey comparison.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct GreyReport {
+    /// The canvas.
+    pub width: u32,
+    /// The canvas.
+    pub height: u32,
+    /// The semantics the exact values follow.
+    pub semantics: Semantics,
+    /// Their named quantization.
+    pub quantization: Quantization,
+    /// The pixels that differ, row by row.
+    pub pixels: Vec<GreyPixel>,
+    /// The largest `|their level - exact value|` over the canvas, in quanta.
+    pub max_error: BigRational,
+    /// The mean of `|their level - exact value|` over the canvas, in quanta.
+    pub mean_error: BigRational,
+    /// How many pixels are off from the named quantization's level by each number of
+    /// levels (0 included).
+    pub histogram: BTreeMap<u32, u64>,
+}
+
+/// Levels per unit of coverage: 256 for FreeType's quantization, else the largest level.
+fn scale(q: Quantization) -> i64 {
+    match q {
+        Quantization::FtGrays => 256,
+        Quantization::Round16 => 65535,
+        _ => 255,
+    }
+}
+
+/// Whether `level` is a rounding (down or up) of `v x scale`, clamped to `[0, top]`.
+fn rounds(level: u16, v: &BigRational, s: i64, top: u16) -> bool {
+    let scaled = v.clone().max(BigRational::zero()) * BigRational::from_integer(s.into());
+    let clamp = |b: num_bigint::BigInt| b.to_i64().unwrap_or(i64::MAX).clamp(0, i64::from(top));
+    let (lo, hi) = (clamp(scaled.floor().to_integer()), clamp(scaled.ceil().to_integer()));
+    (lo..=hi).contains(&i64::from(level))
+}
+
+/// Compares `theirs` with the exact area coverage of `shapes` under `semantics`, their
+/// levels read under `quantization`.
+///
+/// # Errors
+/// Their image's size or bit depth does not fit the canvas or the quantization.
+pub fn compare_grey(
+    shapes: &[AreaShape],
+    theirs: &GreyImage,
+    width: u32,
+    height: u32,
+    semantics: Semantics,
+    quantization: Quantization,
+) -> Result<GreyReport, String> {
+    if (theirs.width, theirs.height) != (width, height) {
+        return Err(format!(
+            "their image is {}x{}, the scene's canvas {width}x{height}",
+            theirs.width, theirs.height
+        ));
+    }
+    if theirs.bits != quantization.bits() {
+        return Err(format!(
+            "their image has {}-bit levels; the quantization {} makes {}-bit ones",
+            theirs.bits,
+            quantization.name(),
+            quantization.bits()
+        ));
+    }
+    let s = scale(quantization);
+    let top = u16::try_from((1u32 << theirs.bits) - 1).unwrap_or(u16::MAX);
+    let others: Vec<Semantics> = Semantics::ALL.into_iter().filter(|o| *o != semantics).collect();
+    let mut pixels = Vec::new();
+    let (mut max_error, mut total_error) = (BigRational::zero(), BigRational::zero());
+    let mut histogram = BTreeMap::new();
+    for y in 0..height {
+        for x in 0..width {
+            let level = theirs.levels[(y * width + x) as usize];
+            let v = exact::value(shapes, i64::from(x), i64::from(y), semantics);
+            let ours = quantization.level(&v);
+            let error = BigRational::from_integer(level.into()) - &v * BigRational::from_integer(s.into());
+            max_error = max_error.max(error.abs());
+            total_error += error.abs();
+            *histogram.entry(u32::from(level.abs_diff(ours))).or_insert(0) += 1;
+            if level == ours {
+                continue;
+            }
+            let class = if rounds(level, &v, s, top) {
+                GreyClass::Quantization
+            } else if others
+                .iter()
+                .any(|o| quantization.level(&exact::value(shapes, i64::from(x), i64::from(y), *o)) == level)
+            {
+                GreyClass::Accumulation
+            } else if let Some(k) = SUPERSAMPLING
+                .into_iter()
+                .find(|&k| rounds(level, &supersample::pixel(shapes, x, y, k), s, top))
+            {
+                GreyClass::Supersampling(k)
+            } else if error.abs() <= BigRational::from_integer(2.into()) {
+                GreyClass::Precision
+            } else {
+                GreyClass::Gross
+            };
+            pixels.push(GreyPixel {
+                x,
+                y,
+                theirs: level,
+                ours,
+                exact: v,
+                error,
+                class,
+            });
+        }
+    }
+    let count = u64::from(width) * u64::from(height);
+    Ok(GreyReport {
+        width,
+        height,
+        semantics,
+        quantization,
+        pixels,
+        max_error,
+        mean_error: total_error / BigRational::from_integer(count.max(1).into()),
+        histogram,
+    })
+}
+
+impl GreyReport {
+    /// How many differing pixels each class explains.
+    pub fn classes(&self) -> BTreeMap<GreyClass, usize> {
+        let mut out = BTreeMap::new();
+        for p in &self.pixels {
+            *out.entry(p.class).or_insert(0) += 1;
+        }
+        out
+    }
+
+    /// As text: the summary, the classes, then up to `limit` pixels.
+    pub fn to_text(&self, limit: usize) -> String {
+        let approx = |v: &BigRational| nearest_f64(v).map_or_else(|| exact_text(v), |f| format!("{f:.4}"));
+        let mut s = format!(
+            "{} of {} pixels differ from the exact {} coverage quantized by {}; error in quanta: max {}, mean {}\n",
+            self.pixels.len(),
+            u64::from(self.width) * u64::from(self.height),
+            self.semantics.name(),
+            self.quantization.name(),
+            approx(&self.max_error),
+            approx(&self.mean_error),
+        );
+        for (class, n) in self.classes() {
+            s.push_str(&format!("  {}: {n} pixels\n", class.name()));
+        }
+        let histogram: Vec<String> = self.histogram.iter().map(|(d, n)| format!("{d}: {n}")).collect();
+        s.push_str(&format!("  levels off (levels: pixels): {}\n", histogram.join(", ")));
+        for p in self.pixels.iter().take(limit) {
+            s.push_str(&format!(
+                "  ({}, {}): theirs {}, exact {} (level {}), off by {} quanta: {}\n",
+                p.x,
+                p.y,
+                p.theirs,
+                exact_text(&p.exact),
+                p.ours,
+                approx(&p.error),
+                p.class.name()
+            ));
+        }
+        if self.pixels.len() > limit {
+            s.push_str(&format!("  ... and {} more\n", self.pixels.len() - limit));
+        }
+        s
+    }
+
+    /// As JSON: `{"width","height","semantics","quantization","differing","classes",
+    /// "max_error","mean_error","histogram","pixels":[{"x","y","theirs","ours","exact",
+    /// "error","class"}]}` (exact values as fraction strings).
+    pub fn to_json(&self) -> serde_json::Value {
+        json!({
+            "width": self.width,
+            "height": self.height,
+            "semantics": self.semantics.name(),
+            "quantization": self.quantization.name(),
+            "differing": self.pixels.len(),
+            "classes": self.classes().into_iter().map(|(c, n)| (c.name(), n)).collect::<BTreeMap<_, _>>(),
+            "max_error": exact_text(&self.max_error),
+            "mean_error": exact_text(&self.mean_error),
+            "histogram": self.histogram.iter().map(|(d, n)| (d.to_string(), *n)).collect::<BTreeMap<_, _>>(),
+            "pixels": self.pixels.iter().map(|p| json!({
+                "x": p.x,
+                "y": p.y,
+                "theirs": p.theirs,
+                "ours": p.ours,
+                "exact": exact_text(&p.exact),
+                "error": exact_text(&p.error),
+                "class": p.class.name(),
+            })).collect::<Vec<_>>(),
+        })
+    }
+}
