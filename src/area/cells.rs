@@ -19,21 +19,19 @@ use std::collections::BTreeMap;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
-use super::{fold, path_contours, AreaImage, AreaShape, Semantics};
+use super::{fold, AreaImage, AreaShape, Semantics};
 use crate::geom::Point;
 
 /// The cells of one shape: `(row, column) -> (cover, area)`.
 type Cells = BTreeMap<(i64, i64), (BigRational, BigRational)>;
 
-/// The directed edges of `shape`'s path: the outline's, and each hole's turned against the
-/// outline (reversed when its shoelace sum has the outline's sign).
+/// The directed edges of `shape`'s path: every contour's, as given.
 fn path_edges(shape: &AreaShape) -> Vec<(Point, Point)> {
     let mut out = Vec::new();
-    for (contour, turned) in path_contours(shape) {
+    for contour in shape.contours() {
         let n = contour.len();
         for i in 0..n {
-            let (a, b) = (contour[i].clone(), contour[(i + 1) % n].clone());
-            out.push(if turned { (b, a) } else { (a, b) });
+            out.push((contour[i].clone(), contour[(i + 1) % n].clone()));
         }
     }
     out

@@ -6,23 +6,21 @@
 
 use num_traits::ToPrimitive;
 
-use super::{path_contours, AreaShape, Semantics};
+use super::{AreaShape, Semantics};
 use crate::geom::FillRule;
 
 /// A point in f32.
 type P = [f32; 2];
 
-/// `shape`'s path in f32 (each coordinate rounded to the nearest f32; holes turned against
-/// the outline as [`super::path_winding`] says).
+/// `shape`'s path in f32 (each coordinate rounded to the nearest f32; contours as given).
 fn path_f32(shape: &AreaShape) -> Vec<(P, P)> {
     let f = |v: &num_rational::BigRational| v.to_f32().unwrap_or(f32::NAN);
     let mut out = Vec::new();
-    for (contour, turned) in path_contours(shape) {
+    for contour in shape.contours() {
         let n = contour.len();
         for i in 0..n {
             let (a, b) = (&contour[i], &contour[(i + 1) % n]);
-            let (a, b) = ([f(&a.x), f(&a.y)], [f(&b.x), f(&b.y)]);
-            out.push(if turned { (b, a) } else { (a, b) });
+            out.push(([f(&a.x), f(&a.y)], [f(&b.x), f(&b.y)]));
         }
     }
     out

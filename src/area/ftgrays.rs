@@ -24,7 +24,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::ToPrimitive;
 
-use super::{path_contours, AreaShape};
+use super::AreaShape;
 use crate::geom::FillRule;
 
 /// Subpixel bits of a cell coordinate (24.8).
@@ -121,7 +121,7 @@ pub fn rasterize(shapes: &[AreaShape], width: u32, height: u32) -> Result<Vec<u8
     let mut out = vec![0u8; width as usize * height as usize];
     for (k, shape) in shapes.iter().enumerate() {
         let mut cells = Cells::new();
-        for (contour, turned) in path_contours(shape) {
+        for contour in shape.contours() {
             let mut points = Vec::with_capacity(contour.len());
             for p in contour {
                 let (Some(x), Some(y)) = (to_24_8(&p.x), to_24_8(&p.y)) else {
@@ -132,9 +132,6 @@ pub fn rasterize(shapes: &[AreaShape], width: u32, height: u32) -> Result<Vec<u8
                 };
                 // FreeType's frame: y up.
                 points.push((x, h * ONE_PIXEL - y));
-            }
-            if turned {
-                points.reverse();
             }
             for i in 0..points.len() {
                 add_edge(&mut cells, points[i], points[(i + 1) % points.len()]);
