@@ -784,6 +784,17 @@ fn compare_grey_cli() {
     let (code, text, _) = run(&grey, &[]);
     assert_eq!(code, Some(0), "{text}");
     assert!(text.contains("0 of 9 pixels differ"), "{text}");
+    let fit = Command::cargo_bin("rasterproof")
+        .unwrap()
+        .args(["compare", s, grey.to_str().unwrap(), "--as", "grey", "--fit"])
+        .output()
+        .unwrap();
+    let (code, text) = (fit.status.code(), String::from_utf8_lossy(&fit.stdout).into_owned());
+    assert_eq!(code, Some(0), "{text}");
+    assert!(
+        text.contains("exact true coverage, quantized by round: 0 pixels differ"),
+        "{text}"
+    );
     // Truncated instead of rounded: the half pixels are 127 where rounding gives 128.
     let (code, text, _) = run(&grey, &["--quantization", "truncate"]);
     assert_eq!(code, Some(1), "{text}");
@@ -802,4 +813,61 @@ fn compare_grey_cli() {
     let (code, _, err) = run(&dir.path().join("none.png"), &[]);
     assert_eq!(code, Some(2));
     assert!(err.contains("none.png: cannot read"), "{err}");
+}
+
+/// `--fit` for grey images names the method that draws their image, from images whose
+/// method is known: FreeType's integer method on the rectangle, either way round (walked
+/// the way that complements negative values its 95s and 127s are also truncations), and 4x4
+/// supersampling of the triangle (0,0) (3,0) (0,3) (its three diagonal pixels 6/16 of their
+/// samples: level 96; 8x8 gives 28/64, level 112; the exact value 1/2, level 128).
+#[test]
+fn grey_fit_names_the_method() {
+    use rasterproof::oracle::grey::{fit_grey, GreyMethod};
+    let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+    let p = |x: BigRational, y: BigRational| Point::new(x, y);
+    let rect = vec![
+        p(r(1, 4), r(1, 2)),
+        p(r(11, 4), r(1, 2)),
+        p(r(11, 4), r(5, 2)),
+        p(r(1, 4), r(5, 2)),
+    ];
+    for outline in [rect.clone(), rect.iter().rev().cloned().collect()] {
+        let shapes = [Polygon::new(outline, FillRule::NonZero)];
+        let levels = ftgrays::rasterize(&shapes, 3, 3).unwrap();
+        let found = fit_grey(&shapes, &grey8(3, 3, &levels), 3, 3).unwrap();
+        let exact: Vec<GreyMethod> = found.iter().filter(|(_, n)| *n == 0).map(|(m, _)| *m).collect();
+        assert!(exact.contains(&GreyMethod::FtGrays), "{found:?}");
+        if levels != [96, 128, 96, 192, 255, 192, 96, 128, 96] {
+            // 95, 127, 191 are also v x 255 truncated (95.6, 127.5, 191.25): this image
+            // cannot tell FreeType's method from truncation, and the fit says both; no
+            // rounding to the nearest gives it.
+            assert!(
+                exact.contains(&GreyMethod::Exact(Semantics::True, Quantization::Truncate8)),
+                "{exact:?}"
+            );
+            assert!(
+                !exact
+                    .iter()
+                    .any(|m| matches!(m, GreyMethod::Exact(_, Quantization::Round8 | Quantization::FtGrays))),
+                "{exact:?}"
+            );
+        }
+    }
+    let t = Triangle::new(p(r(0, 1), r(0, 1)), p(r(3, 1), r(0, 1)), p(r(0, 1), r(3, 1)));
+    let shapes = [triangle_shape(&t)];
+    let sampled = supersample::rasterize(&shapes, 3, 3, 4).levels(Quantization::Round8);
+    assert_eq!(sampled[2], 96);
+    let levels: Vec<u8> = sampled.iter().map(|&l| u8::try_from(l).unwrap()).collect();
+    let found = fit_grey(&shapes, &grey8(3, 3, &levels), 3, 3).unwrap();
+    let exact: Vec<GreyMethod> = found.iter().filter(|(_, n)| *n == 0).map(|(m, _)| *m).collect();
+    assert!(
+        exact.contains(&GreyMethod::Supersampling(4, Quantization::Round8)),
+        "{found:?}"
+    );
+    assert!(
+        !exact
+            .iter()
+            .any(|m| matches!(m, GreyMethod::Exact(..) | GreyMethod::Supersampling(8 | 16, _))),
+        "{exact:?}"
+    );
 }

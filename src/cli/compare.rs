@@ -201,8 +201,8 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
 /// `compare --as grey`: their grey levels against the exact area coverage; exit 0 when
 /// every pixel has the exact value's level, 1 when some differ.
 fn run_grey(o: &Options) -> Result<ExitCode, String> {
-    if o.fit || o.diff_out.is_some() || o.html.is_some() || o.background.is_some() {
-        return Err("--as grey prints its comparison (text or JSON); --fit, --diff-out, --html and --background are for the one-sample formats".to_string());
+    if o.diff_out.is_some() || o.html.is_some() || o.background.is_some() {
+        return Err("--as grey prints its comparison (text or JSON); --diff-out, --html and --background are for the one-sample formats".to_string());
     }
     let model = super::parse_model(&o.model)?;
     let semantics = rasterproof::area::Semantics::from_name(&o.semantics).ok_or_else(|| {
@@ -223,6 +223,34 @@ fn run_grey(o: &Options) -> Result<ExitCode, String> {
     let theirs = rasterproof::oracle::grey::GreyImage::read_png(&bytes, &theirs_name)?;
     let shapes = rasterproof::model::area_shapes(&scene.primitives(), &target, model)
         .map_err(|e| format!("{name}: {e} (model {model})"))?;
+    if o.fit {
+        let found = rasterproof::oracle::grey::fit_grey(&shapes, &theirs, target.width, target.height)
+            .map_err(|e| format!("{theirs_name}: {e} ({name})"))?;
+        let exact: Vec<_> = found.iter().filter(|(_, n)| *n == 0).collect();
+        match o.format_out {
+            OutputFormat::Text => super::write_stdout(|out| {
+                writeln!(out, "compare --as grey --fit: {theirs_name} against {name} (model {model})")?;
+                writeln!(out, "{} methods tried, {} give their image exactly", found.len(), exact.len())?;
+                let closest: Vec<_> = found.iter().take(5).collect();
+                for (m, n) in if exact.is_empty() { closest } else { exact.clone() } {
+                    writeln!(out, "  {}: {n} pixels differ", m.describe())?;
+                }
+                Ok(())
+            })?,
+            OutputFormat::Json => super::print_stdout(
+                &serde_json::json!({
+                    "tried": found.len(),
+                    "methods": found.iter().map(|(m, n)| serde_json::json!({"method": m.describe(), "differing": n})).collect::<Vec<_>>(),
+                })
+                .to_string(),
+            )?,
+        }
+        return Ok(if exact.is_empty() {
+            ExitCode::from(1)
+        } else {
+            ExitCode::SUCCESS
+        });
+    }
     let report =
         rasterproof::oracle::grey::compare_grey(&shapes, &theirs, target.width, target.height, semantics, quantization)
             .map_err(|e| format!("{theirs_name}: {e} ({name})"))?;

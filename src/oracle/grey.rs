@@ -306,3 +306,91 @@ impl GreyReport {
         })
     }
 }
+
+/// One way a renderer may produce grey levels, as `compare --as grey --fit` tries it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GreyMethod {
+    /// The exact value under a semantics, quantized.
+    Exact(Semantics, Quantization),
+    /// The share of `k x k` samples covered, quantized.
+    Supersampling(u32, Quantization),
+    /// f32 signed-area accumulation (font-rs, ab_glyph's method), folded as FreeType
+    /// folds, quantized.
+    Float(Quantization),
+    /// FreeType's smooth rasterizer's integer method ([`crate::area::ftgrays`]).
+    FtGrays,
+}
+
+impl GreyMethod {
+    /// In words.
+    pub fn describe(self) -> String {
+        match self {
+            GreyMethod::Exact(s, q) => format!("exact {} coverage, quantized by {}", s.name(), q.name()),
+            GreyMethod::Supersampling(k, q) => format!("{k}x{k} supersampling, quantized by {}", q.name()),
+            GreyMethod::Float(q) => format!("f32 accumulation, quantized by {}", q.name()),
+            GreyMethod::FtGrays => "FreeType's smooth rasterizer (ftgrays.c's integer method)".to_string(),
+        }
+    }
+
+    /// The levels this method gives `shapes` on the canvas, or `None` when it cannot draw
+    /// them (FreeType's envelope).
+    pub fn levels(self, shapes: &[AreaShape], width: u32, height: u32) -> Option<Vec<u16>> {
+        match self {
+            GreyMethod::Exact(s, q) => Some(exact::rasterize(shapes, width, height, s).levels(q)),
+            GreyMethod::Supersampling(k, q) => Some(supersample::rasterize(shapes, width, height, k).levels(q)),
+            GreyMethod::Float(q) => {
+                let values = crate::area::float::rasterize(shapes, width, height, Semantics::Accumulated);
+                let image = crate::area::AreaImage::from_f32(width, height, Semantics::Accumulated, &values).ok()?;
+                Some(image.levels(q))
+            }
+            GreyMethod::FtGrays => crate::area::ftgrays::rasterize(shapes, width, height)
+                .ok()
+                .map(|l| l.into_iter().map(u16::from).collect()),
+        }
+    }
+
+    /// Every method whose levels have `bits` bits, the exact ones first.
+    pub fn all(bits: u32) -> Vec<GreyMethod> {
+        let qs: Vec<Quantization> = Quantization::ALL.into_iter().filter(|q| q.bits() == bits).collect();
+        let mut out = Vec::new();
+        for s in Semantics::ALL {
+            out.extend(qs.iter().map(|&q| GreyMethod::Exact(s, q)));
+        }
+        for k in SUPERSAMPLING {
+            out.extend(qs.iter().map(|&q| GreyMethod::Supersampling(k, q)));
+        }
+        out.extend(qs.iter().map(|&q| GreyMethod::Float(q)));
+        if bits == 8 {
+            out.push(GreyMethod::FtGrays);
+        }
+        out
+    }
+}
+
+/// `compare --as grey --fit`: every method of [`GreyMethod::all`] with how many of their
+/// pixels it gets wrong, fewest first (ties in the order tried).
+///
+/// # Errors
+/// Their image's size does not fit the canvas.
+pub fn fit_grey(
+    shapes: &[AreaShape],
+    theirs: &GreyImage,
+    width: u32,
+    height: u32,
+) -> Result<Vec<(GreyMethod, usize)>, String> {
+    if (theirs.width, theirs.height) != (width, height) {
+        return Err(format!(
+            "their image is {}x{}, the scene's canvas {width}x{height}",
+            theirs.width, theirs.height
+        ));
+    }
+    let mut out: Vec<(GreyMethod, usize)> = GreyMethod::all(theirs.bits)
+        .into_iter()
+        .filter_map(|m| {
+            let levels = m.levels(shapes, width, height)?;
+            Some((m, levels.iter().zip(&theirs.levels).filter(|(a, b)| a != b).count()))
+        })
+        .collect();
+    out.sort_by_key(|(_, n)| *n);
+    Ok(out)
+}
