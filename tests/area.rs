@@ -47,6 +47,17 @@ fn small_triangle() -> impl Strategy<Value = Triangle> {
     [v.clone(), v.clone(), v].prop_map(|[a, b, c]| Triangle::new(a, b, c))
 }
 
+/// Runs `rasterproof ARGS`: its exit code, stdout and stderr.
+fn rasterproof(args: &[&str]) -> (Option<i32>, String, String) {
+    let out = assert_cmd::Command::cargo_bin("rasterproof")
+        .unwrap()
+        .args(args)
+        .output()
+        .unwrap();
+    let text = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
+    (out.status.code(), text(&out.stdout), text(&out.stderr))
+}
+
 fn shape_of(poly: &Polygon) -> AreaShape {
     poly.clone()
 }
@@ -297,7 +308,6 @@ fn quarter_grid_triangle_by_hand() {
 /// even) or 128 (ftgrays: 128 of 256); 16-bit 65535 and 32768. JSON holds the fractions.
 #[test]
 fn render_area_cli_by_hand() {
-    use assert_cmd::Command;
     let dir = crate::tempdir::Dir::new("area-cli");
     let scene = dir.path().join("t.json");
     std::fs::write(
@@ -305,20 +315,7 @@ fn render_area_cli_by_hand() {
         r#"{"width": 3, "height": 3, "triangles": [{"v": [[0, 0], [3, 0], [0, 3]]}]}"#,
     )
     .unwrap();
-    let run = |args: &[&str]| {
-        let out = Command::cargo_bin("rasterproof")
-            .unwrap()
-            .arg("render")
-            .arg(&scene)
-            .args(args)
-            .output()
-            .unwrap();
-        (
-            out.status.code(),
-            String::from_utf8_lossy(&out.stdout).into_owned(),
-            String::from_utf8_lossy(&out.stderr).into_owned(),
-        )
-    };
+    let run = |args: &[&str]| rasterproof(&[&["render", scene.to_str().unwrap()], args].concat());
     let (code, text, _) = run(&["--coverage", "area", "--model", "exact"]);
     assert_eq!(code, Some(0));
     assert!(text.starts_with("##5\n#5.\n5..\n"), "{text}");
@@ -383,13 +380,9 @@ fn render_area_cli_by_hand() {
         r#"{"width": 3, "height": 3, "lines": [{"from": [0, 0], "to": [2, 2]}]}"#,
     )
     .unwrap();
-    let out = Command::cargo_bin("rasterproof")
-        .unwrap()
-        .args(["render", lines.to_str().unwrap(), "--coverage", "area"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("lines have no area"));
+    let (code, _, err) = rasterproof(&["render", lines.to_str().unwrap(), "--coverage", "area"]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("lines have no area"), "{err}");
     for (args, says) in [
         (
             &["--coverage", "area", "--model", "fixed"][..],
@@ -511,7 +504,6 @@ fn f32_accumulation_leaves_seams() {
 /// sides, the joining segment both ways, and the second square's top and left sides.
 #[test]
 fn explain_area_cli_by_hand() {
-    use assert_cmd::Command;
     let dir = crate::tempdir::Dir::new("area-explain");
     let scene = dir.path().join("sq.json");
     std::fs::write(
@@ -519,21 +511,9 @@ fn explain_area_cli_by_hand() {
         r#"{"width": 3, "height": 3, "polygons": [{"v": [[0, 0], [1.5, 0], [1.5, 1.5], [0, 1.5], [0, 0], [0.5, 0.5], [2, 0.5], [2, 2], [0.5, 2], [0.5, 0.5]], "fill_rule": "even-odd"}]}"#,
     )
     .unwrap();
-    let out = Command::cargo_bin("rasterproof")
-        .unwrap()
-        .args([
-            "explain",
-            scene.to_str().unwrap(),
-            "0,0",
-            "--coverage",
-            "area",
-            "--model",
-            "exact",
-        ])
-        .output()
-        .unwrap();
-    let text = String::from_utf8_lossy(&out.stdout);
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let sq = scene.to_str().unwrap();
+    let (code, text, err) = rasterproof(&["explain", sq, "0,0", "--coverage", "area", "--model", "exact"]);
+    assert_eq!(code, Some(0), "{err}");
     for line in [
         "true         3/4 (= 0.75)",
         "accumulated  3/4 (= 0.75)",
@@ -554,15 +534,9 @@ fn explain_area_cli_by_hand() {
         ),
         (&["0,0", "--model", "exact"][..], "--model is for --coverage area"),
     ] {
-        let out = Command::cargo_bin("rasterproof")
-            .unwrap()
-            .arg("explain")
-            .arg(&scene)
-            .args(args)
-            .output()
-            .unwrap();
-        assert_eq!(out.status.code(), Some(2), "{args:?}");
-        assert!(String::from_utf8_lossy(&out.stderr).contains(says), "{args:?}");
+        let (code, _, err) = rasterproof(&[&["explain", sq], args].concat());
+        assert_eq!(code, Some(2), "{args:?}");
+        assert!(err.contains(says), "{args:?}: {err}");
     }
 }
 
@@ -735,7 +709,6 @@ fn grey_classes_by_hand() {
 /// (exit 0); an RGB PNG and a missing file are refused (exit 2) naming the file.
 #[test]
 fn compare_grey_cli() {
-    use assert_cmd::Command;
     let dir = crate::tempdir::Dir::new("area-grey");
     let scene = dir.path().join("t.json");
     std::fs::write(
@@ -745,51 +718,38 @@ fn compare_grey_cli() {
     .unwrap();
     let grey = dir.path().join("g.png");
     let s = scene.to_str().unwrap();
-    let ok = Command::cargo_bin("rasterproof")
-        .unwrap()
-        .args([
-            "render",
-            s,
-            "--coverage",
-            "area",
-            "--model",
-            "exact",
-            "--grey-out",
-            grey.to_str().unwrap(),
-        ])
-        .output()
-        .unwrap();
-    assert_eq!(ok.status.code(), Some(0));
+    let (code, _, err) = rasterproof(&[
+        "render",
+        s,
+        "--coverage",
+        "area",
+        "--model",
+        "exact",
+        "--grey-out",
+        grey.to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(0), "{err}");
     let run = |theirs: &std::path::Path, extra: &[&str]| {
-        let out = Command::cargo_bin("rasterproof")
-            .unwrap()
-            .args([
-                "compare",
-                s,
-                theirs.to_str().unwrap(),
-                "--as",
-                "grey",
-                "--model",
-                "exact",
-            ])
-            .args(extra)
-            .output()
-            .unwrap();
-        (
-            out.status.code(),
-            String::from_utf8_lossy(&out.stdout).into_owned(),
-            String::from_utf8_lossy(&out.stderr).into_owned(),
+        rasterproof(
+            &[
+                &[
+                    "compare",
+                    s,
+                    theirs.to_str().unwrap(),
+                    "--as",
+                    "grey",
+                    "--model",
+                    "exact",
+                ],
+                extra,
+            ]
+            .concat(),
         )
     };
     let (code, text, _) = run(&grey, &[]);
     assert_eq!(code, Some(0), "{text}");
     assert!(text.contains("0 of 9 pixels differ"), "{text}");
-    let fit = Command::cargo_bin("rasterproof")
-        .unwrap()
-        .args(["compare", s, grey.to_str().unwrap(), "--as", "grey", "--fit"])
-        .output()
-        .unwrap();
-    let (code, text) = (fit.status.code(), String::from_utf8_lossy(&fit.stdout).into_owned());
+    let (code, text, _) = rasterproof(&["compare", s, grey.to_str().unwrap(), "--as", "grey", "--fit"]);
     assert_eq!(code, Some(0), "{text}");
     assert!(
         text.contains("exact true coverage, quantized by round: 0 pixels differ"),

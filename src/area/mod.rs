@@ -41,6 +41,7 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 use crate::geom::{FillRule, Point, Polygon, Triangle};
+use crate::num::exact::{round_to_integer, Rounding};
 
 /// Which area a pixel's value measures (see the module documentation).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -197,24 +198,12 @@ impl Quantization {
         let v = v.clone().max(BigRational::zero()).min(BigRational::one());
         let scaled = |k: i64| &v * BigRational::from_integer(k.into());
         let level: BigInt = match self {
-            Quantization::Round8 => round_half_even(&scaled(255)),
-            Quantization::Truncate8 => scaled(255).floor().to_integer(),
-            Quantization::FtGrays => scaled(256).floor().to_integer().min(BigInt::from(255)),
-            Quantization::Round16 => round_half_even(&scaled(65535)),
+            Quantization::Round8 => round_to_integer(&scaled(255), Rounding::NearestEven),
+            Quantization::Truncate8 => round_to_integer(&scaled(255), Rounding::Floor),
+            Quantization::FtGrays => round_to_integer(&scaled(256), Rounding::Floor).min(BigInt::from(255)),
+            Quantization::Round16 => round_to_integer(&scaled(65535), Rounding::NearestEven),
         };
         level.to_u16().unwrap_or(u16::MAX)
-    }
-}
-
-/// `x` rounded to the nearest integer, ties to the even one.
-fn round_half_even(x: &BigRational) -> BigInt {
-    let floor = x.floor().to_integer();
-    let frac = x - BigRational::from_integer(floor.clone());
-    let half = BigRational::new(BigInt::one(), BigInt::from(2));
-    if frac > half || (frac == half && (&floor % 2u32) != BigInt::zero()) {
-        floor + 1
-    } else {
-        floor
     }
 }
 

@@ -82,13 +82,8 @@ pub fn check_area_conservation(image: &AreaImage, area: &BigRational) -> Result<
 /// # Errors
 /// Also when the images' sizes differ.
 pub fn check_area_additivity(pieces: &[AreaImage], whole: &AreaImage) -> Result<(), Violation> {
-    let mut sum = AreaImage {
-        width: whole.width,
-        height: whole.height,
-        semantics: whole.semantics,
-        pixels: Vec::new(),
-    };
-    let mut all: std::collections::BTreeMap<(u32, u32), BigRational> = std::collections::BTreeMap::new();
+    // The pieces' sum, by (row, column).
+    let mut sum: std::collections::BTreeMap<(u32, u32), BigRational> = std::collections::BTreeMap::new();
     for p in pieces {
         if (p.width, p.height) != (whole.width, whole.height) {
             return Err(Violation::new(
@@ -100,19 +95,15 @@ pub fn check_area_additivity(pieces: &[AreaImage], whole: &AreaImage) -> Result<
             ));
         }
         for (x, y, v) in &p.pixels {
-            *all.entry((*y, *x)).or_insert_with(BigRational::zero) += v;
+            *sum.entry((*y, *x)).or_insert_with(BigRational::zero) += v;
         }
     }
-    sum.pixels = all
-        .into_iter()
-        .filter(|(_, v)| !v.is_zero())
-        .map(|((y, x), v)| (x, y, v))
-        .collect();
     let mut first = None;
     let mut count = 0usize;
     for y in 0..whole.height {
         for x in 0..whole.width {
-            let (s, w) = (sum.value(x, y), whole.value(x, y));
+            let s = sum.get(&(y, x)).cloned().unwrap_or_else(BigRational::zero);
+            let w = whole.value(x, y);
             if s != w {
                 count += 1;
                 first.get_or_insert((x, y, s, w));

@@ -9,7 +9,7 @@ use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 use serde_json::json;
 
-use crate::area::{exact, supersample, AreaShape, Quantization, Semantics};
+use crate::area::{exact, supersample, AreaImage, AreaShape, Quantization, Semantics};
 use crate::num::exact::{exact_text, nearest_f64};
 
 /// The supersampling counts tried (per axis).
@@ -336,16 +336,45 @@ impl GreyMethod {
     /// them (FreeType's envelope).
     pub fn levels(self, shapes: &[AreaShape], width: u32, height: u32) -> Option<Vec<u16>> {
         match self {
-            GreyMethod::Exact(s, q) => Some(exact::rasterize(shapes, width, height, s).levels(q)),
-            GreyMethod::Supersampling(k, q) => Some(supersample::rasterize(shapes, width, height, k).levels(q)),
-            GreyMethod::Float(q) => {
-                let values = crate::area::float::rasterize(shapes, width, height, Semantics::Accumulated);
-                let image = crate::area::AreaImage::from_f32(width, height, Semantics::Accumulated, &values).ok()?;
-                Some(image.levels(q))
-            }
             GreyMethod::FtGrays => crate::area::ftgrays::rasterize(shapes, width, height)
                 .ok()
                 .map(|l| l.into_iter().map(u16::from).collect()),
+            _ => self.values(shapes, width, height).map(|(image, q)| image.levels(q)),
+        }
+    }
+
+    /// The exact values the method quantizes, and how (`None` for FreeType's method,
+    /// which makes its levels itself, and for f32 values that are not finite).
+    fn values(self, shapes: &[AreaShape], width: u32, height: u32) -> Option<(AreaImage, Quantization)> {
+        match self {
+            GreyMethod::Exact(s, q) => Some((exact::rasterize(shapes, width, height, s), q)),
+            GreyMethod::Supersampling(k, q) => Some((supersample::rasterize(shapes, width, height, k), q)),
+            GreyMethod::Float(q) => {
+                let values = crate::area::float::rasterize(shapes, width, height, Semantics::Accumulated);
+                Some((
+                    AreaImage::from_f32(width, height, Semantics::Accumulated, &values).ok()?,
+                    q,
+                ))
+            }
+            GreyMethod::FtGrays => None,
+        }
+    }
+
+    /// Its quantization (`None` for FreeType's method, which has its own).
+    fn quantization(self) -> Option<Quantization> {
+        match self {
+            GreyMethod::Exact(_, q) | GreyMethod::Supersampling(_, q) | GreyMethod::Float(q) => Some(q),
+            GreyMethod::FtGrays => None,
+        }
+    }
+
+    /// The same method under another quantization (FreeType's method has its own).
+    fn quantized(self, q: Quantization) -> GreyMethod {
+        match self {
+            GreyMethod::Exact(s, _) => GreyMethod::Exact(s, q),
+            GreyMethod::Supersampling(k, _) => GreyMethod::Supersampling(k, q),
+            GreyMethod::Float(_) => GreyMethod::Float(q),
+            GreyMethod::FtGrays => GreyMethod::FtGrays,
         }
     }
 
@@ -384,13 +413,30 @@ pub fn fit_grey(
             theirs.width, theirs.height
         ));
     }
-    let mut out: Vec<(GreyMethod, usize)> = GreyMethod::all(theirs.bits)
-        .into_iter()
-        .filter_map(|m| {
-            let levels = m.levels(shapes, width, height)?;
-            Some((m, levels.iter().zip(&theirs.levels).filter(|(a, b)| a != b).count()))
-        })
-        .collect();
+    // Each method's values are computed once (the exact ones are the costly part) and
+    // quantized as each of its methods asks.
+    let mut values: Vec<(GreyMethod, Option<(AreaImage, Quantization)>)> = Vec::new();
+    let mut out = Vec::new();
+    for m in GreyMethod::all(theirs.bits) {
+        let levels = if m == GreyMethod::FtGrays {
+            m.levels(shapes, width, height)
+        } else {
+            // Keyed by the method under a fixed quantization.
+            let key = m.quantized(Quantization::Round8);
+            if !values.iter().any(|(k, _)| *k == key) {
+                values.push((key, m.values(shapes, width, height)));
+            }
+            let q = m.quantization().unwrap_or(Quantization::Round8);
+            values
+                .iter()
+                .find(|(k, _)| *k == key)
+                .and_then(|(_, v)| v.as_ref())
+                .map(|(image, _)| image.levels(q))
+        };
+        if let Some(levels) = levels {
+            out.push((m, levels.iter().zip(&theirs.levels).filter(|(a, b)| a != b).count()));
+        }
+    }
     out.sort_by_key(|(_, n)| *n);
     Ok(out)
 }
