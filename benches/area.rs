@@ -1,5 +1,5 @@
 //! Area coverage speed, side by side in one run: the plain oracle (`area::exact`), exact
-//! cell accumulation (`area::cells`), f32 accumulation (`area::float`), FreeType's integer
+//! cell accumulation (`area::cells`), the planned exact engine (`area::planned`), f32 accumulation (`area::float`), FreeType's integer
 //! method (`area::ftgrays`) and 4x4 supersampling (`area::supersample`), on a glyph-like
 //! polygon (a 16-vertex star outline with a star hole, 1/64 px coordinates, 48 px across)
 //! on a 64x64 canvas. Mpix/s is criterion's element throughput (elements = the canvas's
@@ -9,7 +9,7 @@
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use num_rational::BigRational;
-use rasterproof::area::{cells, exact, float, ftgrays, supersample, Semantics};
+use rasterproof::area::{cells, exact, float, ftgrays, planned, supersample, Semantics};
 use rasterproof::geom::{FillRule, Point, Polygon};
 
 const SIDE: u32 = 64;
@@ -43,6 +43,9 @@ fn bench(c: &mut Criterion) {
     });
     g.bench_function("cells (exact accumulation)", |b| {
         b.iter(|| cells::rasterize(&shapes, SIDE, SIDE, Semantics::Accumulated));
+    });
+    g.bench_function("planned (exact accumulation, i128)", |b| {
+        b.iter(|| planned::rasterize(&shapes, SIDE, SIDE, Semantics::Accumulated));
     });
     g.bench_function("float (f32 accumulation)", |b| {
         b.iter(|| float::rasterize(&shapes, SIDE, SIDE, Semantics::Accumulated));

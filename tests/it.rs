@@ -22,6 +22,8 @@ mod tempdir;
 mod adapters;
 #[path = "area.rs"]
 mod area;
+#[path = "area_planned.rs"]
+mod area_planned;
 #[path = "check_cli.rs"]
 mod check_cli;
 #[path = "check_scale.rs"]

@@ -37,20 +37,23 @@ fn path_edges(shape: &AreaShape) -> Vec<(Point, Point)> {
     out
 }
 
-/// Adds the edge `a -> b` to `cells`.
-fn add_edge(cells: &mut Cells, a: &Point, b: &Point) {
+/// Adds the edge `a -> b` to `cells`, cut at the column lines `0..=width` and the row lines
+/// `0..=height` only: a piece left of the canvas gives all columns its cover wherever it
+/// lies, and pieces above, below or right of it give the canvas nothing.
+fn add_edge(cells: &mut Cells, a: &Point, b: &Point, width: u32, height: u32) {
     if a.y == b.y {
         return; // no cover, no area
     }
     // The parameters where the edge crosses a whole x or y, in order, with its ends.
     let mut ts = vec![BigRational::zero(), BigRational::one()];
-    for (from, to) in [(&a.x, &b.x), (&a.y, &b.y)] {
+    for (from, to, side) in [(&a.x, &b.x, width), (&a.y, &b.y, height)] {
         if from == to {
             continue;
         }
         let (lo, hi) = (from.min(to), from.max(to));
-        let mut k = lo.ceil();
-        while k <= *hi {
+        let last = BigRational::from_integer(side.into()).min(hi.clone());
+        let mut k = lo.ceil().max(BigRational::zero());
+        while k <= last {
             ts.push((&k - from) / (to - from));
             k += BigRational::one();
         }
@@ -88,7 +91,7 @@ fn integer(v: &BigRational) -> i64 {
 pub fn accumulate(shape: &AreaShape, width: u32, height: u32) -> Vec<(u32, u32, BigRational)> {
     let mut cells = Cells::new();
     for (a, b) in path_edges(shape) {
-        add_edge(&mut cells, &a, &b);
+        add_edge(&mut cells, &a, &b, width, height);
     }
     let mut out = Vec::new();
     let mut row_cells = cells.into_iter().peekable();

@@ -24,6 +24,8 @@
 //! The family: [`exact`], the plain oracle (each pixel cut into trapezoids between the
 //! edges, each trapezoid's area and winding numbers exact); [`cells`], the accumulated
 //! semantics by signed-area cell accumulation (the scanline renderers' method), exactly;
+//! [`planned`], the same accumulation in machine integers where the shape's numbers allow
+//! it (the planned engine, equal to the others);
 //! the contenders: [`float`], the same accumulation in f32 (font-rs, ab_glyph_rasterizer),
 //! [`ftgrays`], FreeType's smooth rasterizer's integer method (26.6 points, 24.8 cells,
 //! 8-bit levels),
@@ -34,6 +36,7 @@ pub mod cells;
 pub mod exact;
 pub mod float;
 pub mod ftgrays;
+pub mod planned;
 pub mod supersample;
 
 use num_bigint::BigInt;

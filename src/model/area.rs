@@ -4,7 +4,7 @@
 use std::fmt;
 
 use super::{prepare, Model, ModelError, Primitives, Shape};
-use crate::area::{exact, triangle_shape, AreaImage, AreaShape, Semantics};
+use crate::area::{exact, planned, triangle_shape, AreaImage, AreaShape, Semantics};
 use crate::convention::Target;
 
 /// Why a scene's area coverage cannot be computed.
@@ -57,8 +57,10 @@ pub fn area_shapes(primitives: &Primitives, target: &Target, model: Model) -> Re
         .collect())
 }
 
-/// The scene's exact area coverage under `semantics`, by the plain oracle
-/// ([`crate::area::exact`]).
+/// The scene's exact area coverage under `semantics`: by the plain oracle
+/// ([`crate::area::exact`]) under the plain models (`exact-plain`,
+/// `exact-snapped-plain`), by the planned engine ([`crate::area::planned`], equal to it)
+/// under the others (which computes true coverage with the plain oracle too).
 ///
 /// ```
 /// use rasterproof::area::Semantics;
@@ -86,5 +88,9 @@ pub fn render_area(
     semantics: Semantics,
 ) -> Result<AreaImage, AreaError> {
     let shapes = area_shapes(primitives, target, model)?;
-    Ok(exact::rasterize(&shapes, target.width, target.height, semantics))
+    let (w, h) = (target.width, target.height);
+    Ok(match model {
+        Model::ExactPlain | Model::ExactSnappedPlain => exact::rasterize(&shapes, w, h, semantics),
+        _ => planned::rasterize(&shapes, w, h, semantics),
+    })
 }

@@ -1,0 +1,446 @@
+//! Accumulated coverage by signed-area cell accumulation in machine integers, exactly: the
+//! planned engine. It computes what [`super::cells`] computes (and so what the plain
+//! oracle, [`super::exact`], gives under the accumulated semantics), at integer speed where
+//! a shape's numbers allow it, in big rationals where they do not.
+//!
+//! **Why integers can be exact.** Scale a shape by `S`, the least common multiple of its
+//! coordinates' denominators: its vertices become integers. An edge with integer steps
+//! `(dx, dy) = g (a, b)` (`a`, `b` coprime) crosses a column line at a `y` whose
+//! denominator divides `|a|`, and a row line at an `x` whose denominator divides `|b|`. So
+//! in *fine units* of `1 / F` pixel, `F = S |a| |b|` (`S |b|` for a vertical edge), every
+//! point where the edge is cut is an integer. A piece of the edge inside one cell, from
+//! `(x1, y1)` to `(x2, y2)` in fine units, adds `c = y2 - y1` to the cell's cover and
+//! `c (2 F (col + 1) - x1 - x2) / (2 F^2)` to its area (the part of the cell right of the
+//! piece), as in [`super::cells`]. Per pixel, each edge through it leaves one fraction over
+//! its own `2 F^2`; every edge left of it in the row leaves its whole cover of the row,
+//! which is an integer in units of `1 / S` (rows and vertices are whole in those units).
+//! The pixel's value is that integer sum over `S` plus its few fractions.
+//!
+//! **The plan** ([`plan`]): a shape is computed in `i128` when `S` and its scaled
+//! coordinates are below `2^62` in magnitude and every edge has `F <= 2^FINE_BITS`
+//! ([`FINE_BITS`] = 62); otherwise in big rationals ([`super::cells`]). Within that
+//! envelope, and on canvases below `2^31` a side (the scene reader's limits are far
+//! smaller), every number the walk forms fits `i128`: `M <= F`, so fine coordinates are
+//! below `2^124` and the walk's sums of them below `2^126`; a piece's cover is at most
+//! `F`, the factor beside it in the area at most `2 F`, so a pixel's numerator is at most
+//! `2 F^2 + 2 F^2 = 2^126` and its denominator `2 F^2 = 2^125`. The bound is tight: at
+//! `F = 2^63` the denominator alone leaves `i128`. A pixel's fractions are added with
+//! checked rational arithmetic (`num_rational::Ratio<i128>`'s `checked_add`, never its
+//! unchecked operators), and a pixel whose sum leaves `i128` is summed in big rationals.
+//!
+//! Semantics: the accumulated ones come out of the walk. True coverage does not in
+//! general (it needs each contour's winding, not the path's); [`rasterize`] computes it
+//! with the plain oracle.
+
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::{BigRational, Ratio};
+use num_traits::{CheckedAdd, Signed, ToPrimitive, Zero};
+
+use super::{cells, exact, AreaImage, AreaShape, Semantics};
+use crate::geom::FillRule;
+
+/// The largest fine unit, as a power of two: an edge is walked in `i128` when its
+/// `F = S |a| |b|` is at most `2^FINE_BITS` (see the module documentation).
+pub const FINE_BITS: u32 = 62;
+
+/// The bound on a scaled coordinate and on the scale, as a power of two.
+const SCALED_BITS: u32 = 62;
+
+/// The arithmetic the plan chose for a shape.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Width {
+    /// Every edge in `i128` (pixel sums that leave it are summed in big rationals).
+    I128,
+    /// Big rationals throughout ([`super::cells`]).
+    Big,
+}
+
+/// The arithmetic [`accumulate`] uses for `shape` (see the module documentation for the
+/// envelope).
+///
+/// ```
+/// use num_rational::BigRational;
+/// use rasterproof::area::planned::{plan, Width};
+/// use rasterproof::geom::{FillRule, Point, Polygon};
+/// let p = |x: i64, y: i64, d: i64| Point::new(BigRational::new(x.into(), d.into()), BigRational::new(y.into(), d.into()));
+/// let glyph = Polygon::new(vec![p(0, 0, 64), p(300, 0, 64), p(0, 200, 64)], FillRule::NonZero);
+/// assert_eq!(plan(&glyph), Width::I128);
+/// // A sliver 2^62 / 3 px long, in thirds: its slanted edge's F is 3 x 2^62.
+/// let far = Polygon::new(vec![p(0, 0, 3), p(1 << 62, 0, 3), p(0, 1, 3)], FillRule::NonZero);
+/// assert_eq!(plan(&far), Width::Big);
+/// ```
+pub fn plan(shape: &AreaShape) -> Width {
+    match scaled(shape) {
+        Some(s) if s.edges().all(|(a, b)| fine_units(s.scale, a, b).is_some()) => Width::I128,
+        _ => Width::Big,
+    }
+}
+
+/// A shape scaled to integers: `scale` and each contour's vertices times `scale`.
+struct Scaled {
+    scale: i128,
+    contours: Vec<Vec<(i128, i128)>>,
+}
+
+impl Scaled {
+    /// The directed edges of the path: every contour's, as given.
+    fn edges(&self) -> impl Iterator<Item = ((i128, i128), (i128, i128))> + '_ {
+        self.contours
+            .iter()
+            .flat_map(|c| (0..c.len()).map(move |i| (c[i], c[(i + 1) % c.len()])))
+    }
+}
+
+/// `shape` scaled by the least common multiple of its coordinates' denominators, when the
+/// scale and every scaled coordinate are below `2^SCALED_BITS`.
+fn scaled(shape: &AreaShape) -> Option<Scaled> {
+    let mut lcm = BigInt::from(1);
+    for p in shape.contours().flatten() {
+        lcm = lcm.lcm(p.x.denom()).lcm(p.y.denom());
+    }
+    let limit = 1i128 << SCALED_BITS;
+    let scale = lcm.to_i128().filter(|s| *s <= limit)?;
+    let whole = |v: &BigRational| -> Option<i128> {
+        let n = (v.numer() * (&lcm / v.denom())).to_i128()?;
+        (n.abs() < limit).then_some(n)
+    };
+    let contours = shape
+        .contours()
+        .map(|c| c.iter().map(|p| Some((whole(&p.x)?, whole(&p.y)?))).collect())
+        .collect::<Option<_>>()?;
+    Some(Scaled { scale, contours })
+}
+
+/// An edge in fine units: its vertices, its reduced steps `(a, b)`, `M = |a| |b|` (with
+/// `|a|` taken as 1 for a vertical edge) and `F = S M`.
+struct Fine {
+    x0: i128,
+    y0: i128,
+    y1: i128,
+    a: i128,
+    b: i128,
+    m: i128,
+    f: i128,
+}
+
+/// The edge `p -> q` (scaled by `scale`) in fine units, or `None` outside the envelope.
+/// A horizontal edge (no cover, no area) has no fine form either: callers skip it first.
+fn fine_units(scale: i128, p: (i128, i128), q: (i128, i128)) -> Option<Fine> {
+    let (dx, dy) = (q.0 - p.0, q.1 - p.1);
+    if dy == 0 {
+        return Some(Fine {
+            x0: 0,
+            y0: 0,
+            y1: 0,
+            a: 0,
+            b: 0,
+            m: 1,
+            f: scale,
+        });
+    }
+    let g = dx.abs().gcd(&dy.abs());
+    let (a, b) = (dx / g, dy / g);
+    let m = a.abs().max(1).checked_mul(b.abs())?;
+    let f = scale.checked_mul(m).filter(|f| *f <= 1i128 << FINE_BITS)?;
+    Some(Fine {
+        x0: p.0 * m,
+        y0: p.1 * m,
+        y1: q.1 * m,
+        a,
+        b,
+        m,
+        f,
+    })
+}
+
+impl Fine {
+    /// The x where the edge's line meets the row line (or vertex) at fine `y`: exact,
+    /// since `y - y0` is a multiple of `M`, so of `|b|`.
+    fn x_at(&self, y: i128) -> i128 {
+        self.x0 + (y - self.y0) / self.b * self.a
+    }
+
+    /// The y where the edge's line meets the column line at fine `x` (`a != 0`).
+    fn y_at(&self, x: i128) -> i128 {
+        self.y0 + (x - self.x0) / self.a * self.b
+    }
+}
+
+/// What one shape's edges leave in a canvas row.
+#[derive(Default)]
+struct Events {
+    /// `(row, column, amount)`: from `column` rightwards, `amount / S` is added to every
+    /// pixel of the row (an edge's whole cover of the row, negated).
+    tails: Vec<(u32, u32, i128)>,
+    /// `(row, column, numerator, denominator)`: a fraction added to one pixel (an edge
+    /// through it: the cover of its pieces left of the pixel and its area, negated).
+    fractions: Vec<(u32, u32, i128, i128)>,
+}
+
+/// Walks `e` row by row over a `width` x `height` canvas into `events`.
+fn walk(e: &Fine, width: u32, height: u32, events: &mut Events) {
+    let f = e.f;
+    let sign = (e.y1 - e.y0).signum();
+    let (top, bottom) = (e.y0.min(e.y1).max(0), e.y0.max(e.y1).min(i128::from(height) * f));
+    if top >= bottom {
+        return;
+    }
+    let (w, twice_f, den) = (i128::from(width), 2 * f, 2 * f * f);
+    for row in top / f..=(bottom - 1) / f {
+        let (ya, yb) = (top.max(row * f), bottom.min((row + 1) * f));
+        let (xa, xb) = (e.x_at(ya), e.x_at(yb));
+        // The row's piece, left to right.
+        let (mut xl, mut yl, xr, yr) = if xa <= xb { (xa, ya, xb, yb) } else { (xb, yb, xa, ya) };
+        let r = u32::try_from(row).expect("a row of the canvas");
+        let mut carry = 0; // the cover of the pieces left of the current column
+        let mut last = -1; // the last column with a piece
+        let mut push = |col: i128, carry: i128, area: i128| {
+            let c = u32::try_from(col).expect("a column of the canvas");
+            events.fractions.push((r, c, -(carry * twice_f + area), den));
+        };
+        if xl == xr {
+            // Vertical within the row: one piece, at the column right of a column line.
+            if xl >= 0 {
+                last = xl / f;
+                if last < w {
+                    push(last, 0, sign * (yr - yl).abs() * (twice_f * (last + 1) - 2 * xl));
+                }
+            }
+        } else {
+            if xl < 0 {
+                // Left of the canvas: only its cover matters.
+                let x_end = xr.min(0);
+                let y_end = if x_end == xr { yr } else { e.y_at(0) };
+                carry += sign * (y_end - yl).abs();
+                (xl, yl) = (x_end, y_end);
+            }
+            while xl < xr {
+                let col = xl / f;
+                if col >= w {
+                    last = w;
+                    break;
+                }
+                let x_next = xr.min((col + 1) * f);
+                let y_next = if x_next == xr { yr } else { e.y_at(x_next) };
+                let c = sign * (y_next - yl).abs();
+                push(col, carry, c * (twice_f * (col + 1) - xl - x_next));
+                carry += c;
+                last = col;
+                (xl, yl) = (x_next, y_next);
+            }
+        }
+        if last + 1 < w {
+            let cover = sign * (yb - ya);
+            let c = u32::try_from(last + 1).expect("a column of the canvas");
+            events.tails.push((r, c, -(cover / e.m)));
+        }
+    }
+}
+
+/// A pixel's exact value: in `i128` while it fits, in big rationals beyond.
+#[derive(Debug, Clone)]
+enum Value {
+    Small(Ratio<i128>),
+    Big(BigRational),
+}
+
+impl Value {
+    fn big(&self) -> BigRational {
+        match self {
+            Value::Small(r) => BigRational::new_raw(BigInt::from(*r.numer()), BigInt::from(*r.denom())),
+            Value::Big(b) => b.clone(),
+        }
+    }
+
+    fn add(self, other: &Value) -> Value {
+        if let (Value::Small(a), Value::Small(b)) = (&self, other) {
+            if let Some(sum) = a.checked_add(b) {
+                return Value::Small(sum);
+            }
+        }
+        Value::Big(self.big() + other.big())
+    }
+
+    fn is_zero(&self) -> bool {
+        match self {
+            Value::Small(r) => r.is_zero(),
+            Value::Big(b) => b.is_zero(),
+        }
+    }
+
+    /// [`super::fold`], in `i128` when it stays there.
+    fn fold(self, fill_rule: FillRule, semantics: Semantics) -> Value {
+        let Value::Small(r) = &self else {
+            return Value::Big(super::fold(fill_rule, &self.big(), semantics));
+        };
+        let (n, d) = (r.numer().abs(), *r.denom());
+        let folded = match (semantics, fill_rule) {
+            (Semantics::AccumulatedUnclamped | Semantics::True, _) => Some(n),
+            (Semantics::Accumulated, FillRule::NonZero) => Some(n.min(d)),
+            // n mod 2d, reflected above d; both keep n/d's lowest terms.
+            (Semantics::Accumulated, FillRule::EvenOdd) => d.checked_mul(2).map(|two_d| {
+                let m = n % two_d;
+                if m > d {
+                    two_d - m
+                } else {
+                    m
+                }
+            }),
+        };
+        match folded {
+            Some(v) if v == d => Value::Small(Ratio::from_integer(1)),
+            Some(v) => Value::Small(Ratio::new_raw(v, d)),
+            None => Value::Big(super::fold(fill_rule, &self.big(), semantics)),
+        }
+    }
+}
+
+/// `base / scale` plus each fraction.
+fn pixel_value(base: i128, scale: i128, fractions: &[(u32, u32, i128, i128)]) -> Value {
+    let mut v = Value::Small(if base % scale == 0 {
+        Ratio::from_integer(base / scale)
+    } else {
+        Ratio::new(base, scale)
+    });
+    for &(_, _, n, d) in fractions {
+        v = v.add(&Value::Small(Ratio::new(n, d)));
+    }
+    v
+}
+
+/// The integral of the path's winding number over every pixel with a non-zero value, in
+/// `i128` (`None`: `shape` is outside the envelope), by row, then column.
+fn accumulate_i128(shape: &AreaShape, width: u32, height: u32) -> Option<Vec<(u32, u32, Value)>> {
+    let s = scaled(shape)?;
+    let mut events = Events::default();
+    for (p, q) in s.edges() {
+        if p.1 != q.1 {
+            walk(&fine_units(s.scale, p, q)?, width, height, &mut events);
+        }
+    }
+    let by_place = |a: &(u32, u32), b: &(u32, u32)| a.cmp(b);
+    events.tails.sort_unstable_by(|a, b| by_place(&(a.0, a.1), &(b.0, b.1)));
+    events
+        .fractions
+        .sort_unstable_by(|a, b| by_place(&(a.0, a.1), &(b.0, b.1)));
+    let mut out = Vec::new();
+    let (mut t, mut k) = (0, 0);
+    let (tails, fractions) = (&events.tails, &events.fractions);
+    let run = |row: u32, from: u32, to: u32, base: i128, out: &mut Vec<(u32, u32, Value)>| {
+        if base != 0 && from < to {
+            let v = pixel_value(base, s.scale, &[]);
+            out.extend((from..to).map(|x| (x, row, v.clone())));
+        }
+    };
+    while t < tails.len() || k < fractions.len() {
+        let row = match (tails.get(t), fractions.get(k)) {
+            (Some(a), Some(b)) => a.0.min(b.0),
+            (Some(a), None) => a.0,
+            (None, Some(b)) => b.0,
+            (None, None) => unreachable!(),
+        };
+        let (mut base, mut cursor) = (0i128, 0u32);
+        loop {
+            let next_tail = tails.get(t).filter(|e| e.0 == row).map(|e| e.1);
+            let next_fraction = fractions.get(k).filter(|e| e.0 == row).map(|e| e.1);
+            let col = match (next_tail, next_fraction) {
+                (Some(a), Some(b)) => a.min(b),
+                (Some(a), None) => a,
+                (None, Some(b)) => b,
+                (None, None) => break,
+            };
+            run(row, cursor, col, base, &mut out);
+            while tails.get(t).is_some_and(|e| (e.0, e.1) == (row, col)) {
+                base += tails[t].2;
+                t += 1;
+            }
+            let first = k;
+            while fractions.get(k).is_some_and(|e| (e.0, e.1) == (row, col)) {
+                k += 1;
+            }
+            let v = pixel_value(base, s.scale, &fractions[first..k]);
+            if !v.is_zero() {
+                out.push((col, row, v));
+            }
+            cursor = col + 1;
+        }
+        run(row, cursor, width, base, &mut out);
+    }
+    Some(out)
+}
+
+/// One shape's values, by the plan's width.
+fn accumulate_values(shape: &AreaShape, width: u32, height: u32) -> Vec<(u32, u32, Value)> {
+    accumulate_i128(shape, width, height).unwrap_or_else(|| {
+        cells::accumulate(shape, width, height)
+            .into_iter()
+            .map(|(x, y, v)| (x, y, Value::Big(v)))
+            .collect()
+    })
+}
+
+/// The integral of `shape`'s path winding number over every pixel of a `width` x `height`
+/// canvas with a non-zero value: `(x, y, acc)` by row, then column; what
+/// [`super::cells::accumulate`] gives, by the plan's arithmetic.
+pub fn accumulate(shape: &AreaShape, width: u32, height: u32) -> Vec<(u32, u32, BigRational)> {
+    accumulate_values(shape, width, height)
+        .into_iter()
+        .map(|(x, y, v)| (x, y, v.big()))
+        .collect()
+}
+
+/// The scene's coverage under `semantics`: the accumulated semantics by the planned walk
+/// (each shape's value folded, summed over the shapes, as [`super::exact::rasterize`]
+/// gives it), true coverage by the plain oracle.
+///
+/// ```
+/// use num_rational::BigRational;
+/// use rasterproof::area::{planned, Semantics};
+/// use rasterproof::geom::{FillRule, Point, Polygon};
+/// let p = |x: i64, y: i64| Point::new(BigRational::from_integer(x.into()), BigRational::from_integer(y.into()));
+/// // The triangle (0,0) (2,0) (0,2): a whole pixel and two halves.
+/// let t = Polygon::new(vec![p(0, 0), p(2, 0), p(0, 2)], FillRule::NonZero);
+/// let image = planned::rasterize(&[t], 2, 2, Semantics::Accumulated);
+/// let half = BigRational::new(1.into(), 2.into());
+/// assert_eq!(image.pixels, vec![(0, 0, BigRational::from_integer(1.into())), (1, 0, half.clone()), (0, 1, half)]);
+/// ```
+pub fn rasterize(shapes: &[AreaShape], width: u32, height: u32, semantics: Semantics) -> AreaImage {
+    if semantics == Semantics::True {
+        return exact::rasterize(shapes, width, height, semantics);
+    }
+    let mut all: Vec<(u32, u32, Value)> = Vec::new();
+    for shape in shapes {
+        let rule = shape.fill_rule;
+        all.extend(
+            accumulate_values(shape, width, height)
+                .into_iter()
+                .map(|(x, y, v)| (x, y, v.fold(rule, semantics))),
+        );
+    }
+    if shapes.len() > 1 {
+        all.sort_by_key(|p| (p.1, p.0));
+    }
+    let mut pixels: Vec<(u32, u32, BigRational)> = Vec::with_capacity(all.len());
+    let mut sum: Option<(u32, u32, Value)> = None;
+    for (x, y, v) in all {
+        sum = match sum {
+            Some((sx, sy, acc)) if (sx, sy) == (x, y) => Some((x, y, acc.add(&v))),
+            previous => {
+                if let Some((sx, sy, acc)) = previous.filter(|(_, _, a)| !a.is_zero()) {
+                    pixels.push((sx, sy, acc.big()));
+                }
+                Some((x, y, v))
+            }
+        };
+    }
+    if let Some((sx, sy, acc)) = sum.filter(|(_, _, a)| !a.is_zero()) {
+        pixels.push((sx, sy, acc.big()));
+    }
+    AreaImage {
+        width,
+        height,
+        semantics,
+        pixels,
+    }
+}
