@@ -20,6 +20,8 @@ mod tempdir;
 // The test files.
 #[path = "adapters.rs"]
 mod adapters;
+#[path = "adapters_area.rs"]
+mod adapters_area;
 #[path = "area.rs"]
 mod area;
 #[path = "area_planned.rs"]

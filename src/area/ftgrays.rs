@@ -1,24 +1,30 @@
 //! FreeType's smooth rasterizer's method (`src/smooth/ftgrays.c`), a contender, in
 //! integers: its numbers, not its code.
 //!
-//! - The outline's points are in 26.6 fixed point (1/64 px; each coordinate rounded to the
-//!   nearest, ties away from zero, as an adapter handing our scene to FreeType writes
-//!   them), upscaled to 24.8 (`PIXEL_BITS = 8`), in FreeType's frame: y up, so the canvas
-//!   is flipped (`y' = height - y`) and row `r'` is our row `height - 1 - r'`.
-//! - Each edge is cut at every cell (pixel) boundary it crosses, each crossing point's
-//!   other coordinate taken by floor division; a piece from `(fx1, fy1)` to `(fx2, fy2)`
-//!   within its cell (local 24.8 coordinates, 0..=256) adds `fy2 - fy1` to the cell's
-//!   cover and `(fy2 - fy1) (fx1 + fx2)` to its area.
+//! - The outline's points are in 26.6 fixed point (1/64 px), in FreeType's frame: y up,
+//!   so the canvas is flipped (`y' = height - y`, exactly) and then each coordinate
+//!   rounded to the nearest 1/64, ties away from zero, as the FreeType adapter
+//!   (`adapters/freetype/render.py`) writes them; upscaled to 24.8 (`PIXEL_BITS = 8`).
+//!   FreeType's row `r'` is our row `height - 1 - r'`.
+//! - Each edge is walked cell by cell as `gray_render_line` walks it (its 64-bit form):
+//!   the exact integer `prod = dx fy1 - dy fx1` decides through which side the edge
+//!   leaves the cell, and the exit point's other coordinate is a division done as FreeType
+//!   does it, by a multiplication with the reciprocal `(2^56 - 1) / d` and a shift right
+//!   by 56 (`FT_UDIVPREP`, `FT_UDIV`), which can fall one unit of 1/256 px short of the
+//!   floor. A piece from `(fx1, fy1)` to `(fx2, fy2)` within its cell (local 24.8
+//!   coordinates, 0..=256) adds `fy2 - fy1` to the cell's cover and
+//!   `(fy2 - fy1) (fx1 + fx2)` to its area.
 //! - Each row swept left to right: a cell's value is `cover_sum x 512 - area` (the
 //!   covers of the cells left of it and its own), shifted right by 9 (floor) to the
 //!   0..=256 range; a negative value is complemented (`~v`, that is `-v - 1`); nonzero
 //!   clamps 256 to 255, even-odd keeps the value modulo 512 and reflects it above 255
 //!   (`511 - v`). Cells left of the canvas carry their cover into the row.
 //!
-//! It departs from the exact area by the 1/64 px rounding of the points, the floor
+//! It departs from the exact area by the 1/64 px rounding of the points, the reciprocal
 //! divisions and the truncation to 8 bits (and the asymmetry of `~` on negative values).
-//! FreeType computes the crossing points with a reciprocal multiplication where this
-//! takes the exact floor; both are within one unit of 1/256 px.
+//! Its levels equal FreeType 2.12.1's (Debian 12's libfreetype6) through the adapter,
+//! pixel for pixel: `tests/adapters.rs` checks it on every run where the library is
+//! installed.
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -43,71 +49,124 @@ fn to_24_8(v: &BigRational) -> Option<i64> {
     (out.abs() < LIMIT).then_some(out)
 }
 
-/// Floor division.
-fn floor_div(a: i64, b: i64) -> i64 {
-    a.div_euclid(b) - i64::from(b < 0 && a.rem_euclid(b) != 0)
-}
-
 /// The cells of one shape: `(row, column) -> (cover, area)`, in FreeType's frame.
 type Cells = std::collections::BTreeMap<(i64, i64), (i64, i64)>;
 
-/// Adds one piece within cell `(ex, ey)`, from `(x1, y1)` to `(x2, y2)` (24.8, absolute).
-fn add_piece(cells: &mut Cells, ex: i64, ey: i64, (x1, y1): (i64, i64), (x2, y2): (i64, i64)) {
-    let dy = y2 - y1;
-    if dy == 0 {
-        return;
-    }
-    let (fx1, fx2) = (x1 - ex * ONE_PIXEL, x2 - ex * ONE_PIXEL);
-    let cell = cells.entry((ey, ex)).or_insert((0, 0));
-    cell.0 += dy;
-    cell.1 += dy * (fx1 + fx2);
+/// FreeType's reciprocal for repeated division by `d` (`FT_UDIVPREP`): `(2^56 - 1) / d`,
+/// truncated towards zero (`2^64 - 1` shifted right by `PIXEL_BITS`, over a signed `d`).
+fn reciprocal(d: i64) -> i64 {
+    ((1i64 << (64 - PIXEL_BITS)) - 1) / d
 }
 
-/// `from`, every cell boundary (a multiple of `ONE_PIXEL`) strictly between `from` and
-/// `to` in the order of travel, and `to`.
-fn boundaries(from: i64, to: i64) -> Vec<i64> {
-    let (lo, hi) = (from.min(to), from.max(to));
-    let mut out = vec![from];
-    let mut k = floor_div(lo, ONE_PIXEL) + 1;
-    while k * ONE_PIXEL < hi {
-        out.push(k * ONE_PIXEL);
-        k += 1;
-    }
-    if to < from {
-        out[1..].reverse();
-    }
-    out.push(to);
-    out
+/// FreeType's division by multiplication (`FT_UDIV`): `a x r` in 64-bit unsigned
+/// arithmetic (wrapping, as C's `unsigned long` does), shifted right by `64 - PIXEL_BITS`.
+#[allow(clippy::cast_sign_loss, clippy::cast_possible_wrap)]
+fn udiv(a: i64, r: i64) -> i64 {
+    ((a as u64).wrapping_mul(r as u64) >> (64 - PIXEL_BITS)) as i64
 }
 
-/// Walks the edge `(x1, y1) -> (x2, y2)` (24.8) through the cells, row by row and, within a
-/// row, column by column.
+/// The current cell of the walk, its cover and area, as FreeType's worker holds them.
+struct Walker<'a> {
+    cells: &'a mut Cells,
+    ex: i64,
+    ey: i64,
+    cover: i64,
+    area: i64,
+}
+
+impl Walker<'_> {
+    /// Records the current cell's cover and area and moves to `(ex, ey)`.
+    fn set_cell(&mut self, ex: i64, ey: i64) {
+        if self.cover != 0 || self.area != 0 {
+            let cell = self.cells.entry((self.ey, self.ex)).or_insert((0, 0));
+            cell.0 += self.cover;
+            cell.1 += self.area;
+        }
+        (self.ex, self.ey, self.cover, self.area) = (ex, ey, 0, 0);
+    }
+}
+
+/// Walks the edge `(x1, y1) -> (x2, y2)` (24.8) through the cells as FreeType's
+/// `gray_render_line` does (the 64-bit form): from the cell of the start, one step per
+/// cell boundary crossed, the side of the exit decided by the exact integer
+/// `prod = dx fy1 - dy fx1` (the start's local position against the edge's direction),
+/// the exit point's other coordinate by the reciprocal division [`udiv`]; each piece adds
+/// `fy2 - fy1` to its cell's cover and `(fy2 - fy1) (fx1 + fx2)` to its area.
 fn add_edge(cells: &mut Cells, (x1, y1): (i64, i64), (x2, y2): (i64, i64)) {
-    if y1 == y2 {
-        return;
-    }
+    let one = ONE_PIXEL;
+    let (mut ex1, ex2) = (x1 >> PIXEL_BITS, x2 >> PIXEL_BITS);
+    let (mut ey1, ey2) = (y1 >> PIXEL_BITS, y2 >> PIXEL_BITS);
+    let mut w = Walker {
+        cells,
+        ex: ex1,
+        ey: ey1,
+        cover: 0,
+        area: 0,
+    };
     let (dx, dy) = (x2 - x1, y2 - y1);
-    let x_at = |y: i64| x1 + floor_div((y - y1) * dx, dy);
-    let ys = boundaries(y1, y2);
-    for w in ys.windows(2) {
-        let (ya, yb) = (w[0], w[1]);
-        let ey = floor_div(ya.min(yb), ONE_PIXEL);
-        let xa = if ya == y1 { x1 } else { x_at(ya) };
-        let xb = if yb == y2 { x2 } else { x_at(yb) };
-        let xs = boundaries(xa, xb);
-        let mut from = (xa, ya);
-        for pair in xs.windows(2) {
-            let xe = pair[1];
-            let to = if xe == xb {
-                (xb, yb)
+    let (mut fx1, mut fy1) = (x1 - ex1 * one, y1 - ey1 * one);
+    if ex1 == ex2 && ey1 == ey2 {
+        // Inside one cell: only the last piece.
+    } else if dy == 0 {
+        ex1 = ex2;
+        w.set_cell(ex1, ey1);
+    } else if dx == 0 {
+        let (to, from, step) = if dy > 0 { (one, 0, 1) } else { (0, one, -1) };
+        while ey1 != ey2 {
+            w.cover += to - fy1;
+            w.area += (to - fy1) * fx1 * 2;
+            fy1 = from;
+            ey1 += step;
+            w.set_cell(ex1, ey1);
+        }
+    } else {
+        let mut prod = dx * fy1 - dy * fx1;
+        let (rx, ry) = (reciprocal(dx), reciprocal(dy));
+        loop {
+            let (fx2, fy2);
+            if prod <= 0 && prod - dx * one > 0 {
+                // Out through the left side.
+                fx2 = 0;
+                fy2 = udiv(-prod, -rx);
+                prod -= dy * one;
+                (w.cover, w.area) = (w.cover + fy2 - fy1, w.area + (fy2 - fy1) * (fx1 + fx2));
+                (fx1, fy1) = (one, fy2);
+                ex1 -= 1;
+            } else if prod - dx * one <= 0 && prod - dx * one + dy * one > 0 {
+                // Out through the top (y up).
+                prod -= dx * one;
+                fx2 = udiv(-prod, ry);
+                fy2 = one;
+                (w.cover, w.area) = (w.cover + fy2 - fy1, w.area + (fy2 - fy1) * (fx1 + fx2));
+                (fx1, fy1) = (fx2, 0);
+                ey1 += 1;
+            } else if prod - dx * one + dy * one <= 0 && prod + dy * one >= 0 {
+                // Out through the right side.
+                prod += dy * one;
+                fx2 = one;
+                fy2 = udiv(prod, rx);
+                (w.cover, w.area) = (w.cover + fy2 - fy1, w.area + (fy2 - fy1) * (fx1 + fx2));
+                (fx1, fy1) = (0, fy2);
+                ex1 += 1;
             } else {
-                (xe, ya + floor_div((xe - xa) * (yb - ya), xb - xa))
-            };
-            let ex = floor_div(from.0.min(to.0), ONE_PIXEL);
-            add_piece(cells, ex, ey, from, to);
-            from = to;
+                // Out through the bottom.
+                fx2 = udiv(prod, -ry);
+                fy2 = 0;
+                prod += dx * one;
+                (w.cover, w.area) = (w.cover + fy2 - fy1, w.area + (fy2 - fy1) * (fx1 + fx2));
+                (fx1, fy1) = (fx2, one);
+                ey1 -= 1;
+            }
+            w.set_cell(ex1, ey1);
+            if ex1 == ex2 && ey1 == ey2 {
+                break;
+            }
         }
     }
+    let (fx2, fy2) = (x2 - ex2 * one, y2 - ey2 * one);
+    w.cover += fy2 - fy1;
+    w.area += (fy2 - fy1) * (fx1 + fx2);
+    w.set_cell(ex2, ey2);
 }
 
 /// The shapes as FreeType's smooth rasterizer draws them, each in its own pass (its own
@@ -124,14 +183,15 @@ pub fn rasterize(shapes: &[AreaShape], width: u32, height: u32) -> Result<Vec<u8
         for contour in shape.contours() {
             let mut points = Vec::with_capacity(contour.len());
             for p in contour {
-                let (Some(x), Some(y)) = (to_24_8(&p.x), to_24_8(&p.y)) else {
+                let flipped = BigRational::from_integer(h.into()) - &p.y;
+                let (Some(x), Some(y)) = (to_24_8(&p.x), to_24_8(&flipped)) else {
                     return Err(format!(
                         "shape {k}: ({}, {}) is outside FreeType's 24.8 envelope (|v| < 2^23 px)",
                         p.x, p.y
                     ));
                 };
                 // FreeType's frame: y up.
-                points.push((x, h * ONE_PIXEL - y));
+                points.push((x, y));
             }
             for i in 0..points.len() {
                 add_edge(&mut cells, points[i], points[(i + 1) % points.len()]);

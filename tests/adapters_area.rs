@@ -1,0 +1,227 @@
+//! The anti-aliasing adapters (adapters/README.md): FreeType's smooth rasterizer through
+//! `adapters/freetype/render.py` (Debian's libfreetype6 by ctypes), judged against the
+//! exact area coverage.
+//!
+//! What is asserted, and why it should hold independently of these runs:
+//! - `area::ftgrays` is written from FreeType's method (ftgrays.c's `gray_render_line`,
+//!   its reciprocal division and `gray_hline`'s levels), not from its output; on every
+//!   scene here (polygons with holes, nonzero and even-odd, tangled, on the 1/64, 1/256
+//!   and thirds grids, partly off the canvas, several triangles) the library's levels and
+//!   the model's must be the same, pixel for pixel;
+//! - `compare --as grey --fit` then names FreeType's method, alone, as the one that gives
+//!   FreeType's image (no exact quantization does: FreeType's divisions fall short).
+//!
+//! The tests need /usr/bin/python3 (or `RASTERPROOF_ADAPTER_PYTHON`) with python3-pil and
+//! libfreetype6: without them they print a skip message, unless `CI` is set (.ci/run
+//! installs them), where they fail.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+
+use rasterproof::area::ftgrays;
+use rasterproof::model::{area_shapes, Model};
+use rasterproof::scene::parse_scene;
+use serde_json::{json, Value};
+
+use crate::rng::Rng;
+use crate::tempdir;
+
+fn python() -> String {
+    std::env::var("RASTERPROOF_ADAPTER_PYTHON").unwrap_or_else(|_| "/usr/bin/python3".to_string())
+}
+
+fn adapter() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/freetype/render.py")
+}
+
+/// Whether the FreeType adapter can run here; without it: skip, or fail under CI.
+fn freetype_available() -> bool {
+    let probe = Command::new(python())
+        .args(["-c", "import ctypes, PIL; ctypes.CDLL('libfreetype.so.6')"])
+        .output();
+    let missing = match probe {
+        Ok(o) if o.status.success() => return true,
+        Ok(o) => String::from_utf8_lossy(&o.stderr)
+            .lines()
+            .last()
+            .unwrap_or("")
+            .to_string(),
+        Err(e) => format!("{}: {e}", python()),
+    };
+    let message = format!("FreeType or PIL is missing ({missing}); install libfreetype6 python3-pil");
+    assert!(
+        std::env::var_os("CI").is_none(),
+        "CI is set, so this is an error: {message}"
+    );
+    eprintln!("skipping the FreeType adapter tests: {message}");
+    false
+}
+
+/// Scene `k` of the family, on a 16x16 canvas, coordinates on a grid of 1/64, 1/256 or
+/// 1/3 px: three triangles in [-4, 20]^2; a tangled polygon of 3 to 9 random points there
+/// (nonzero or even-odd); or a star-shaped polygon of 5 to 9 points (radii 3 to 10 px
+/// about a point of [2, 14]^2) with a star-shaped hole of 3 to 5 points (radii 0.4 to
+/// 1 px), running either way.
+#[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation)]
+fn scene(k: u64) -> Value {
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15 ^ (k + 1).wrapping_mul(0x2545_F491_4F6C_DD1D));
+    let d: i64 = [64, 64, 256, 3][usize::try_from(rng.below(4)).unwrap()];
+    let on_grid = |v: f64| format!("{}/{d}", (v * d as f64).round() as i64);
+    let random_point = |rng: &mut Rng| {
+        json!([
+            on_grid(rng.range(-4 * d, 20 * d) as f64 / d as f64),
+            on_grid(rng.range(-4 * d, 20 * d) as f64 / d as f64)
+        ])
+    };
+    let rule = if rng.below(2) == 0 { "nonzero" } else { "even-odd" };
+    match rng.below(3) {
+        0 => {
+            let triangles: Vec<Value> = (0..3)
+                .map(|_| json!({"v": [random_point(&mut rng), random_point(&mut rng), random_point(&mut rng)]}))
+                .collect();
+            json!({"width": 16, "height": 16, "triangles": triangles})
+        }
+        1 => {
+            let outline: Vec<Value> = (0..3 + rng.below(7)).map(|_| random_point(&mut rng)).collect();
+            json!({"width": 16, "height": 16, "polygons": [{"v": outline, "fill_rule": rule}]})
+        }
+        _ => {
+            let (cx, cy) = (
+                rng.range(2 * 64, 14 * 64) as f64 / 64.0,
+                rng.range(2 * 64, 14 * 64) as f64 / 64.0,
+            );
+            let star = |n: i64, r_lo: f64, r_hi: f64, rng: &mut Rng| -> Vec<Value> {
+                (0..n)
+                    .map(|i| {
+                        let jitter = (rng.below(1001) as f64 / 1000.0 - 0.5) * std::f64::consts::PI / n as f64;
+                        let a = 2.0 * std::f64::consts::PI * i as f64 / n as f64 + jitter;
+                        let r = r_lo + (r_hi - r_lo) * rng.below(1001) as f64 / 1000.0;
+                        json!([on_grid(cx + r * a.cos()), on_grid(cy + r * a.sin())])
+                    })
+                    .collect()
+            };
+            let outline = star(5 + rng.below(5), 3.0, 10.0, &mut rng);
+            let mut hole = star(3 + rng.below(3), 0.4, 1.0, &mut rng);
+            if rng.below(2) == 0 {
+                hole.reverse();
+            }
+            json!({"width": 16, "height": 16, "polygons": [{"v": outline, "holes": [hole], "fill_rule": rule}]})
+        }
+    }
+}
+
+/// FreeType's levels for each scene, through one adapter kept alive (the stay-alive
+/// protocol), row by row.
+fn freetype_levels(scenes: &[Value], dir: &Path) -> Vec<Vec<u8>> {
+    let mut child = Command::new(python())
+        .arg(adapter())
+        .arg("--serve")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    {
+        let mut stdin = child.stdin.take().unwrap();
+        for (k, s) in scenes.iter().enumerate() {
+            let out = dir.join(format!("ft-{k}.png"));
+            let request = json!({"rasterproof": 1, "id": k, "scene": s, "out": out, "as": "grey"});
+            writeln!(stdin, "{request}").unwrap();
+        }
+    }
+    let output = child.wait_with_output().unwrap();
+    let answers = String::from_utf8_lossy(&output.stdout);
+    for (k, line) in answers.lines().enumerate() {
+        let answer: Value = serde_json::from_str(line).unwrap();
+        assert_eq!(
+            answer,
+            json!({"id": k, "ok": true}),
+            "{}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+    }
+    assert_eq!(answers.lines().count(), scenes.len());
+    (0..scenes.len())
+        .map(|k| {
+            image::open(dir.join(format!("ft-{k}.png")))
+                .unwrap()
+                .to_luma8()
+                .into_raw()
+        })
+        .collect()
+}
+
+#[test]
+fn freetype_draws_what_the_ftgrays_model_computes() {
+    if !freetype_available() {
+        return;
+    }
+    let dir = tempdir::Dir::new("freetype");
+    let mut scenes: Vec<Value> = (0..60).map(scene).collect();
+    for fixed in ["glyph.json", "glyph-even-odd.json"] {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("adapters/scenes")
+            .join(fixed);
+        scenes.push(serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap());
+    }
+    let theirs = freetype_levels(&scenes, dir.path());
+    for (k, (s, levels)) in scenes.iter().zip(&theirs).enumerate() {
+        let parsed = parse_scene(&s.to_string(), "scene").unwrap();
+        let target = parsed.target().unwrap();
+        let shapes = area_shapes(&parsed.primitives(), &target, Model::Exact).unwrap();
+        let ours = ftgrays::rasterize(&shapes, target.width, target.height).unwrap();
+        let differing: Vec<(usize, u8, u8)> = ours
+            .iter()
+            .zip(levels)
+            .enumerate()
+            .filter(|(_, (a, b))| a != b)
+            .map(|(i, (a, b))| (i, *a, *b))
+            .collect();
+        assert!(
+            differing.is_empty(),
+            "scene {k} {s}: (pixel, ours, FreeType's) {differing:?}"
+        );
+    }
+    // Not all blank: the scenes exercise the walk.
+    let lit: usize = theirs.iter().map(|l| l.iter().filter(|v| **v != 0).count()).sum();
+    assert!(lit > 5000, "{lit} lit pixels");
+}
+
+#[test]
+fn compare_fit_names_freetype() {
+    if !freetype_available() {
+        return;
+    }
+    let dir = tempdir::Dir::new("freetype-fit");
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/scenes/glyph.json");
+    let out = dir.path().join("glyph.png");
+    let output = Command::new(python())
+        .arg(adapter())
+        .arg(&scene)
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let output = assert_cmd::Command::cargo_bin("rasterproof")
+        .unwrap()
+        .arg("compare")
+        .arg(&scene)
+        .arg(&out)
+        .args(["--as", "grey", "--fit", "--format", "json"])
+        .output()
+        .unwrap();
+    let report: Value = serde_json::from_slice(&output.stdout).unwrap();
+    let exact: Vec<&str> = report["methods"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|m| m["differing"] == 0)
+        .map(|m| m["method"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        exact,
+        ["FreeType's smooth rasterizer (ftgrays.c's integer method)"],
+        "{report}"
+    );
+}
