@@ -95,7 +95,7 @@ fn text(output: &Output) -> String {
 
 /// The tiny-skia adapter's executable, built (if stale) with the profile `cargo test`
 /// builds examples with, so that a plain `cargo test` finds it up to date.
-fn tiny_skia_adapter() -> PathBuf {
+pub fn tiny_skia_adapter() -> PathBuf {
     let output = Command::new(env!("CARGO"))
         .args([
             "build",

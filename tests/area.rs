@@ -831,3 +831,37 @@ fn grey_fit_names_the_method() {
         "{exact:?}"
     );
 }
+
+/// tiny-skia's levels by hand, one pixel each (4 x 4 samples at odd eighths): a rectangle
+/// over the top three sample rows is 3 x 4 x 16 = 192; over the bottom three, 192 less 1
+/// for the full bottom row (64 - 1 on the pixel's last sub-scanline); the left half of the
+/// pixel, 8 samples, no full row, 128; the whole pixel 255 (not 256).
+#[test]
+fn tiny_skia_levels_by_hand() {
+    let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+    let rect = |x0: BigRational, y0: BigRational, x1: BigRational, y1: BigRational| {
+        Polygon::new(
+            vec![
+                Point::new(x0.clone(), y0.clone()),
+                Point::new(x1.clone(), y0),
+                Point::new(x1, y1.clone()),
+                Point::new(x0, y1),
+            ],
+            FillRule::NonZero,
+        )
+    };
+    let cases = [
+        (rect(q(0, 1), q(0, 1), q(1, 1), q(3, 4)), 192),
+        (rect(q(0, 1), q(1, 4), q(1, 1), q(1, 1)), 191),
+        (rect(q(0, 1), q(0, 1), q(1, 2), q(1, 1)), 128),
+        (rect(q(0, 1), q(0, 1), q(1, 1), q(1, 1)), 255),
+        (rect(q(0, 1), q(7, 8), q(1, 1), q(1, 1)), 63),
+    ];
+    for (shape, level) in cases {
+        assert_eq!(
+            supersample::tiny_skia_levels(std::slice::from_ref(&shape), 1, 1),
+            vec![level],
+            "{shape:?}"
+        );
+    }
+}

@@ -46,6 +46,10 @@
 //! --float32-exact` generates them); the adapter says on stderr how many were not, and
 //! a coordinate outside the f32 range is refused (exit 2).
 //!
+//! With `--grey` first (`tiny-skia-adapter --grey SCENE.json OUT.png`, `--grey --serve`)
+//! it draws anti-aliased area coverage instead, as an 8-bit grey PNG for `compare --as
+//! grey` (see `render_grey`).
+//!
 //! Exit status: 0 when the PNG was written, 2 with one line on stderr otherwise (bad
 //! arguments, an unreadable or invalid scene, a refused primitive, an unwritable output);
 //! under `--serve` each of these is an `"ok": false` answer instead.
@@ -69,18 +73,72 @@ const NAME: &str = "tiny-skia-adapter";
 const MAX_ENCODED: u32 = (1 << 24) - 1;
 
 fn main() -> ExitCode {
-    adapter_main(NAME, std::env::args_os().skip(1).collect(), |scene| {
+    let mut args: Vec<std::ffi::OsString> = std::env::args_os().skip(1).collect();
+    let grey = args.first().is_some_and(|a| a == "--grey");
+    if grey {
+        args.remove(0);
+    }
+    adapter_main(NAME, args, |scene| {
         let mut converter = Converter::default();
-        let rgba = render(scene, &mut converter)?;
+        let image: image::DynamicImage = if grey {
+            let levels = render_grey(scene, &mut converter)?;
+            image::GrayImage::from_raw(scene.width, scene.height, levels)
+                .ok_or_else(|| "internal: the pixmap's size does not match its data".to_string())?
+                .into()
+        } else {
+            let rgba = render(scene, &mut converter)?;
+            image::RgbaImage::from_raw(scene.width, scene.height, rgba)
+                .ok_or_else(|| "internal: the pixmap's size does not match its data".to_string())?
+                .into()
+        };
         if converter.inexact > 0 {
             eprintln!(
                 "{NAME}: note: {} coordinate(s) are not f32-exact; rounded to the nearest f32",
                 converter.inexact
             );
         }
-        image::RgbaImage::from_raw(scene.width, scene.height, rgba)
-            .ok_or_else(|| "internal: the pixmap's size does not match its data".to_string())
+        Ok(image)
     })
+}
+
+/// `--grey`: every triangle and polygon filled anti-aliased (`anti_alias = true`), opaque
+/// white, `BlendMode::SourceOver`, in id order, onto a transparent pixmap; the grey level
+/// is the pixmap's alpha. A polygon is one path of its outline and holes under its fill
+/// rule (as a vector renderer draws a glyph). Lines, clip windows and clip-space
+/// triangles are refused.
+fn render_grey(scene: &Scene, converter: &mut Converter) -> Result<Vec<u8>, String> {
+    if !scene.lines.is_empty() || scene.clip.is_some() || !scene.clip_space_triangles.is_empty() {
+        return Err("--grey draws triangles and polygons only (no lines, clip window or clip-space triangles)".into());
+    }
+    let mut pixmap = Pixmap::new(scene.width, scene.height)
+        .ok_or_else(|| format!("tiny-skia cannot allocate a {}x{} pixmap", scene.width, scene.height))?;
+    let mut paint = Paint::default();
+    paint.set_color_rgba8(255, 255, 255, 255);
+    paint.anti_alias = true;
+    paint.blend_mode = BlendMode::SourceOver;
+    let mut paths = Vec::new();
+    for (k, t) in scene.triangles.iter().enumerate() {
+        let path = converter.closed_path([(t.triangle.v.iter().collect(), format!("triangles[{k}].v"))])?;
+        paths.push(path.map(|p| (p, tiny_skia::FillRule::Winding)));
+    }
+    for (k, polygon) in scene.polygons.iter().enumerate() {
+        let rule = match polygon.fill_rule {
+            FillRule::NonZero => tiny_skia::FillRule::Winding,
+            FillRule::EvenOdd => tiny_skia::FillRule::EvenOdd,
+        };
+        let contours = std::iter::once((polygon.outline.iter().collect(), format!("polygons[{k}].v"))).chain(
+            polygon
+                .holes
+                .iter()
+                .enumerate()
+                .map(|(h, hole)| (hole.iter().collect(), format!("polygons[{k}].holes[{h}]"))),
+        );
+        paths.push(converter.closed_path(contours)?.map(|p| (p, rule)));
+    }
+    for (path, rule) in paths.iter().flatten() {
+        pixmap.fill_path(path, &paint, *rule, Transform::identity(), None);
+    }
+    Ok(pixmap.data().chunks_exact(4).map(|p| p[3]).collect())
 }
 
 /// Exact coordinates to tiny-skia's f32, counting those that did not fit exactly.

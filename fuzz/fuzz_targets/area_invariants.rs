@@ -1,6 +1,7 @@
 //! Exact area coverage: on any polygon (self-intersecting, with holes, degenerate) lying
-//! on a small canvas, the cell accumulation equals the plain oracle's signed integral at
-//! every pixel; the integrals add up to the path's signed area; true and folded values lie
+//! on a small canvas, the cell accumulation and the planned engine (i128) equal the plain
+//! oracle's signed integral at every pixel, and the planned engine's images equal the
+//! oracle's under the accumulated semantics; the integrals add up to the path's signed area; true and folded values lie
 //! in [0, 1]; FreeType's integer method and f32 accumulation stay near the exact values;
 //! and a spade triangulation of the outline's points adds up, pixel by pixel, to its hull.
 
@@ -11,7 +12,7 @@ use libfuzzer_sys::fuzz_target;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
-use rasterproof::area::{cells, exact, float, ftgrays, path_signed_area, triangle_shape, AreaImage, Quantization, Semantics};
+use rasterproof::area::{cells, exact, float, ftgrays, path_signed_area, planned, triangle_shape, AreaImage, Quantization, Semantics};
 use rasterproof::check::{check_area_additivity, check_area_bounds, check_area_conservation};
 use rasterproof::geom::{FillRule, Point, Polygon};
 use rasterproof::strategy::triangulate;
@@ -58,6 +59,12 @@ fuzz_target!(|input: Input| {
         }
     }
     assert_eq!(total, path_signed_area(&poly), "{poly:?}");
+    let from_planned: std::collections::BTreeMap<(u32, u32), BigRational> =
+        planned::accumulate(&poly, w, h).into_iter().map(|(x, y, v)| ((x, y), v)).collect();
+    assert_eq!(from_planned, from_cells, "{poly:?}");
+    for s in [Semantics::Accumulated, Semantics::AccumulatedUnclamped] {
+        assert_eq!(planned::rasterize(one, w, h, s), exact::rasterize(one, w, h, s), "{poly:?}");
+    }
     for s in [Semantics::True, Semantics::Accumulated] {
         let image = exact::rasterize(one, w, h, s);
         if let Err(v) = check_area_bounds(&image) {

@@ -39,18 +39,47 @@ pub fn rasterize(shapes: &[AreaShape], width: u32, height: u32, k: u32) -> AreaI
 /// (`k` of 0 read as 1).
 pub fn pixel(shapes: &[AreaShape], x: u32, y: u32, k: u32) -> BigRational {
     let k = k.max(1);
+    let count: u32 = row_counts(shapes, x, y, k).iter().sum();
+    BigRational::new(count.into(), (u64::from(k) * u64::from(k)).into())
+}
+
+/// How many of pixel `(x, y)`'s samples inside any shape lie in each of its `k` sample
+/// rows, top to bottom (`k` of 0 read as 1).
+pub fn row_counts(shapes: &[AreaShape], x: u32, y: u32, k: u32) -> Vec<u32> {
+    let k = k.max(1);
     let step = |i: u32| BigRational::new((2 * i64::from(i) + 1).into(), (2 * i64::from(k)).into());
-    let mut count = 0u64;
-    for j in 0..k {
-        for i in 0..k {
-            let p = Point::new(
-                BigRational::from_integer(x.into()) + step(i),
-                BigRational::from_integer(y.into()) + step(j),
-            );
-            if shapes.iter().any(|s| contains_exact(&p, s, TieRule::TopLeft)) {
-                count += 1;
-            }
+    (0..k)
+        .map(|j| {
+            let inside = (0..k).filter(|&i| {
+                let p = Point::new(
+                    BigRational::from_integer(x.into()) + step(i),
+                    BigRational::from_integer(y.into()) + step(j),
+                );
+                shapes.iter().any(|s| contains_exact(&p, s, TieRule::TopLeft))
+            });
+            u32::try_from(inside.count()).unwrap_or(u32::MAX)
+        })
+        .collect()
+}
+
+/// The 8-bit levels of tiny-skia's anti-aliased fill (after Skia's supersampling
+/// scan converter, `SkScan_AntiPath.cpp`; tiny-skia's `scan/path_aa.rs`), from exact 4 x 4
+/// samples, row by row: four sub-scanlines per pixel, each adding 16 per sample inside,
+/// except that a sub-scanline whose four samples are all inside adds the full-run value
+/// `64 - 1` on the pixel's last (bottom) sub-scanline, so that a whole pixel is 255, not
+/// 256. A pixel is `16 n`, less 1 when its bottom sample row is full. Shapes are taken
+/// as one union of samples (tiny-skia composites separate paths source-over, which this
+/// does not model), and tiny-skia's own fixed-point edges can move a sample that lies
+/// within about 1/256 px of an edge.
+pub fn tiny_skia_levels(shapes: &[AreaShape], width: u32, height: u32) -> Vec<u8> {
+    let mut out = Vec::with_capacity(width as usize * height as usize);
+    for y in 0..height {
+        for x in 0..width {
+            let rows = row_counts(shapes, x, y, 4);
+            let n: u32 = rows.iter().sum();
+            let level = 16 * n - u32::from(rows[3] == 4);
+            out.push(u8::try_from(level.min(255)).unwrap_or(u8::MAX));
         }
     }
-    BigRational::new(count.into(), (u64::from(k) * u64::from(k)).into())
+    out
 }

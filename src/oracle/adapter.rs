@@ -18,7 +18,7 @@ use std::ffi::OsString;
 use std::path::Path;
 use std::process::ExitCode;
 
-use image::RgbaImage;
+use image::DynamicImage;
 use serde_json::{json, Value};
 
 use crate::scene::{parse_scene, parse_scene_bytes, Scene};
@@ -26,12 +26,12 @@ use crate::scene::{parse_scene, parse_scene_bytes, Scene};
 /// Runs an adapter named `name` on its command-line `args` (without the program name):
 /// `SCENE.json OUT.png` renders one scene with `render` and writes the PNG (exit 0, or 2
 /// with one line on stderr); `--serve` answers requests until stdin ends (exit 0).
-/// `render` turns a scene into the PNG's pixels (an ids or mask PNG of the scene's canvas)
-/// or says why it cannot.
-pub fn adapter_main(
+/// `render` turns a scene into the PNG's pixels (an ids or mask PNG of the scene's canvas,
+/// an `RgbaImage`; or a grey image of its coverage, a `GrayImage`) or says why it cannot.
+pub fn adapter_main<I: Into<DynamicImage>>(
     name: &str,
     args: Vec<OsString>,
-    mut render: impl FnMut(&Scene) -> Result<RgbaImage, String>,
+    mut render: impl FnMut(&Scene) -> Result<I, String>,
 ) -> ExitCode {
     let result = match args.as_slice() {
         [flag] if flag == "--serve" => serve(name, std::io::stdin().lock(), &mut std::io::stdout(), &mut render),
@@ -48,19 +48,19 @@ pub fn adapter_main(
 }
 
 /// One scene from a file to a PNG.
-fn once(
+fn once<I: Into<DynamicImage>>(
     scene_path: &Path,
     out: &Path,
-    render: &mut impl FnMut(&Scene) -> Result<RgbaImage, String>,
+    render: &mut impl FnMut(&Scene) -> Result<I, String>,
 ) -> Result<(), String> {
     let bytes = std::fs::read(scene_path).map_err(|e| format!("{}: cannot read: {e}", scene_path.display()))?;
     let scene = parse_scene_bytes(&bytes, &scene_path.display().to_string()).map_err(|e| e.to_string())?;
     let image = render(&scene).map_err(|e| format!("{}: {e}", scene_path.display()))?;
-    write_png(&image, out)
+    write_png(image.into(), out)
 }
 
 /// `image` as a PNG at `out`.
-fn write_png(image: &RgbaImage, out: &Path) -> Result<(), String> {
+fn write_png(image: DynamicImage, out: &Path) -> Result<(), String> {
     image
         .save_with_format(out, image::ImageFormat::Png)
         .map_err(|e| format!("{}: cannot write the PNG: {e}", out.display()))
@@ -72,11 +72,11 @@ fn write_png(image: &RgbaImage, out: &Path) -> Result<(), String> {
 ///
 /// # Errors
 /// Only when `output` cannot be written (rasterproof is gone).
-pub fn serve(
+pub fn serve<I: Into<DynamicImage>>(
     name: &str,
     input: impl std::io::BufRead,
     output: &mut impl std::io::Write,
-    render: &mut impl FnMut(&Scene) -> Result<RgbaImage, String>,
+    render: &mut impl FnMut(&Scene) -> Result<I, String>,
 ) -> Result<(), String> {
     for line in input.lines() {
         let line = line.map_err(|e| format!("cannot read stdin: {e}"))?;
@@ -105,7 +105,10 @@ pub fn serve(
 }
 
 /// Renders one request's scene into its `out`.
-fn answer(request: &Value, render: &mut impl FnMut(&Scene) -> Result<RgbaImage, String>) -> Result<(), String> {
+fn answer<I: Into<DynamicImage>>(
+    request: &Value,
+    render: &mut impl FnMut(&Scene) -> Result<I, String>,
+) -> Result<(), String> {
     let version = request.get("rasterproof").and_then(Value::as_u64);
     if version != Some(u64::from(super::stay_alive::PROTOCOL_VERSION)) {
         return Err(format!(
@@ -121,7 +124,7 @@ fn answer(request: &Value, render: &mut impl FnMut(&Scene) -> Result<RgbaImage, 
     let scene = request.get("scene").ok_or("the request has no \"scene\"")?;
     let scene = parse_scene(&scene.to_string(), "the request's scene").map_err(|e| e.to_string())?;
     let image = render(&scene)?;
-    write_png(&image, Path::new(out))
+    write_png(image.into(), Path::new(out))
 }
 
 #[cfg(test)]
@@ -150,7 +153,7 @@ mod tests {
             if s.width == 5 {
                 Err("five is too wide".to_string())
             } else {
-                Ok(RgbaImage::new(s.width, s.height))
+                Ok(image::RgbaImage::new(s.width, s.height))
             }
         };
         serve("t", input.as_bytes(), &mut output, &mut render).unwrap();

@@ -319,6 +319,9 @@ pub enum GreyMethod {
     Float(Quantization),
     /// FreeType's smooth rasterizer's integer method ([`crate::area::ftgrays`]).
     FtGrays,
+    /// tiny-skia's anti-aliasing: 4 x 4 samples and its levels
+    /// ([`crate::area::supersample::tiny_skia_levels`]).
+    TinySkia,
 }
 
 impl GreyMethod {
@@ -329,6 +332,7 @@ impl GreyMethod {
             GreyMethod::Supersampling(k, q) => format!("{k}x{k} supersampling, quantized by {}", q.name()),
             GreyMethod::Float(q) => format!("f32 accumulation, quantized by {}", q.name()),
             GreyMethod::FtGrays => "FreeType's smooth rasterizer (ftgrays.c's integer method)".to_string(),
+            GreyMethod::TinySkia => "tiny-skia's anti-aliasing (4x4 supersampling, its 8-bit levels)".to_string(),
         }
     }
 
@@ -339,6 +343,12 @@ impl GreyMethod {
             GreyMethod::FtGrays => crate::area::ftgrays::rasterize(shapes, width, height)
                 .ok()
                 .map(|l| l.into_iter().map(u16::from).collect()),
+            GreyMethod::TinySkia => Some(
+                supersample::tiny_skia_levels(shapes, width, height)
+                    .into_iter()
+                    .map(u16::from)
+                    .collect(),
+            ),
             _ => self.values(shapes, width, height).map(|(image, q)| image.levels(q)),
         }
     }
@@ -356,15 +366,15 @@ impl GreyMethod {
                     q,
                 ))
             }
-            GreyMethod::FtGrays => None,
+            GreyMethod::FtGrays | GreyMethod::TinySkia => None,
         }
     }
 
-    /// Its quantization (`None` for FreeType's method, which has its own).
+    /// Its quantization (`None` for FreeType's and tiny-skia's methods, which have their own levels).
     fn quantization(self) -> Option<Quantization> {
         match self {
             GreyMethod::Exact(_, q) | GreyMethod::Supersampling(_, q) | GreyMethod::Float(q) => Some(q),
-            GreyMethod::FtGrays => None,
+            GreyMethod::FtGrays | GreyMethod::TinySkia => None,
         }
     }
 
@@ -375,6 +385,7 @@ impl GreyMethod {
             GreyMethod::Supersampling(k, _) => GreyMethod::Supersampling(k, q),
             GreyMethod::Float(_) => GreyMethod::Float(q),
             GreyMethod::FtGrays => GreyMethod::FtGrays,
+            GreyMethod::TinySkia => GreyMethod::TinySkia,
         }
     }
 
@@ -391,6 +402,7 @@ impl GreyMethod {
         out.extend(qs.iter().map(|&q| GreyMethod::Float(q)));
         if bits == 8 {
             out.push(GreyMethod::FtGrays);
+            out.push(GreyMethod::TinySkia);
         }
         out
     }
@@ -418,7 +430,7 @@ pub fn fit_grey(
     let mut values: Vec<(GreyMethod, Option<(AreaImage, Quantization)>)> = Vec::new();
     let mut out = Vec::new();
     for m in GreyMethod::all(theirs.bits) {
-        let levels = if m == GreyMethod::FtGrays {
+        let levels = if m.quantization().is_none() {
             m.levels(shapes, width, height)
         } else {
             // Keyed by the method under a fixed quantization.
