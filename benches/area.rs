@@ -5,6 +5,10 @@
 //! on a 64x64 canvas. Mpix/s is criterion's element throughput (elements = the canvas's
 //! pixels).
 //!
+//! A second group draws real glyphs: DejaVu Sans's "g@&B%" at 24 px per em
+//! (`adapters/scenes/dejavu.json`, made by the `glyph-scene` example: 14 polygons, curves
+//! flattened at dyadic parameters) on its 123x32 canvas.
+//!
 //! `cargo bench --bench area`
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
@@ -55,6 +59,32 @@ fn bench(c: &mut Criterion) {
     });
     g.bench_function("supersample 4x4 (exact samples)", |b| {
         b.iter(|| supersample::rasterize(&shapes, SIDE, SIDE, 4));
+    });
+    g.finish();
+
+    let text = include_str!("../adapters/scenes/dejavu.json");
+    let scene = rasterproof::scene::parse_scene(text, "dejavu.json").expect("the committed glyph scene");
+    let target = scene.target().expect("its canvas");
+    let glyphs = rasterproof::model::area_shapes(&scene.primitives(), &target, rasterproof::model::Model::Exact)
+        .expect("glyph shapes");
+    let (w, h) = (target.width, target.height);
+    let mut g = c.benchmark_group("area-glyphs");
+    g.throughput(Throughput::Elements(u64::from(w * h)));
+    g.sample_size(10);
+    g.bench_function("exact (plain oracle)", |b| {
+        b.iter(|| exact::rasterize(&glyphs, w, h, Semantics::Accumulated));
+    });
+    g.bench_function("cells (exact accumulation)", |b| {
+        b.iter(|| cells::rasterize(&glyphs, w, h, Semantics::Accumulated));
+    });
+    g.bench_function("planned (exact accumulation, i128)", |b| {
+        b.iter(|| planned::rasterize(&glyphs, w, h, Semantics::Accumulated));
+    });
+    g.bench_function("float (f32 accumulation)", |b| {
+        b.iter(|| float::rasterize(&glyphs, w, h, Semantics::Accumulated));
+    });
+    g.bench_function("ftgrays (24.8 integers)", |b| {
+        b.iter(|| ftgrays::rasterize(&glyphs, w, h).unwrap());
     });
     g.finish();
 }

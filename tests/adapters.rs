@@ -93,16 +93,21 @@ fn text(output: &Output) -> String {
     )
 }
 
-/// The tiny-skia adapter's executable, built (if stale) with the profile `cargo test`
-/// builds examples with, so that a plain `cargo test` finds it up to date.
+/// The tiny-skia adapter's executable (see [`example`]).
 pub fn tiny_skia_adapter() -> PathBuf {
+    example("tiny-skia-adapter")
+}
+
+/// The executable of the example `name`, built (if stale) with the profile `cargo test`
+/// builds examples with, so that a plain `cargo test` finds it up to date.
+pub fn example(name: &str) -> PathBuf {
     let output = Command::new(env!("CARGO"))
         .args([
             "build",
             "--profile",
             "test",
             "--example",
-            "tiny-skia-adapter",
+            name,
             "--message-format=json-render-diagnostics",
         ])
         .current_dir(env!("CARGO_MANIFEST_DIR"))
@@ -114,7 +119,7 @@ pub fn tiny_skia_adapter() -> PathBuf {
     String::from_utf8_lossy(&output.stdout)
         .lines()
         .filter_map(|line| serde_json::from_str::<Value>(line).ok())
-        .filter(|m| m["reason"] == "compiler-artifact" && m["target"]["name"] == "tiny-skia-adapter")
+        .filter(|m| m["reason"] == "compiler-artifact" && m["target"]["name"] == name)
         .find_map(|m| m["executable"].as_str().map(PathBuf::from))
         .expect("cargo names the example's executable")
 }

@@ -280,3 +280,62 @@ fn compare_fit_names_tiny_skia_aa() {
     assert_eq!(off.len() as u64, best);
     assert!(off.iter().all(|d| d.abs() == 16), "{off:?}");
 }
+
+/// Where Debian's fonts-dejavu-core puts DejaVu Sans.
+const DEJAVU: &str = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+/// Real glyphs: DejaVu Sans's "g@&B%" as the `glyph-scene` example flattens them (every
+/// point an exact dyadic fraction), at 9, 13, 24, 64 and 200 px per em. FreeType draws
+/// each exactly as the `area::ftgrays` model computes it, pixel for pixel; and the 24 px
+/// scene is the one committed as `adapters/scenes/dejavu.json` (the workload of the area
+/// bench), so that file is what the example makes.
+#[test]
+fn freetype_draws_real_glyphs_as_the_model() {
+    if !freetype_available() {
+        return;
+    }
+    if !Path::new(DEJAVU).exists() {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI is set, so this is an error: {DEJAVU} is missing (fonts-dejavu-core)"
+        );
+        eprintln!("skipping the real-glyph test: {DEJAVU} is missing (install fonts-dejavu-core)");
+        return;
+    }
+    let example = crate::adapters::example("glyph-scene");
+    let dir = tempdir::Dir::new("freetype-glyphs");
+    let mut scenes = Vec::new();
+    for px in ["9", "13", "24", "64", "200"] {
+        let output = Command::new(&example)
+            .args([DEJAVU, "g@&B%", "--px", px])
+            .output()
+            .unwrap();
+        assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+        let scene: Value = serde_json::from_slice(&output.stdout).unwrap();
+        if px == "24" {
+            let committed =
+                std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/scenes/dejavu.json"))
+                    .unwrap();
+            assert_eq!(
+                scene,
+                serde_json::from_str::<Value>(&committed).unwrap(),
+                "adapters/scenes/dejavu.json is stale"
+            );
+        }
+        scenes.push(scene);
+    }
+    let theirs = freetype_levels(&scenes, dir.path());
+    for (s, levels) in scenes.iter().zip(&theirs) {
+        let parsed = parse_scene(&s.to_string(), "glyphs").unwrap();
+        let target = parsed.target().unwrap();
+        let shapes = area_shapes(&parsed.primitives(), &target, Model::Exact).unwrap();
+        let ours = ftgrays::rasterize(&shapes, target.width, target.height).unwrap();
+        let differing = ours.iter().zip(levels).filter(|(a, b)| a != b).count();
+        assert_eq!(
+            differing, 0,
+            "{}x{}: {differing} pixels differ",
+            target.width, target.height
+        );
+        assert!(levels.iter().filter(|v| **v != 0).count() > 100, "the glyphs are drawn");
+    }
+}

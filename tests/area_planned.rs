@@ -180,3 +180,27 @@ fn the_coordinate_bound_by_hand() {
         assert_eq!(image.pixels, vec![(0, 0, q(1, 3)), (1, 0, q(1, 3))], "x = {x}");
     }
 }
+
+/// Edges on the canvas's border: a square [1, 3] x [0, 2] on a 3x3 canvas (its right side
+/// on the canvas's right border, its top on the top border), and the same square moved
+/// one pixel right (its right side one pixel past the border): whole pixels inside the
+/// canvas, nothing at column 3, under both fill rules and both ways round.
+#[test]
+fn edges_on_the_canvas_border_by_hand() {
+    let p = |x: i128, y: i128| Point::new(q(x, 1), q(y, 1));
+    let one = BigRational::one;
+    for (dx, expected) in [
+        (0, vec![(1, 0, one()), (2, 0, one()), (1, 1, one()), (2, 1, one())]),
+        (1, vec![(2, 0, one()), (2, 1, one())]),
+    ] {
+        for rule in [FillRule::NonZero, FillRule::EvenOdd] {
+            let mut square = Polygon::new(vec![p(1 + dx, 0), p(3 + dx, 0), p(3 + dx, 2), p(1 + dx, 2)], rule);
+            for _ in 0..2 {
+                assert_planned_is_exact(std::slice::from_ref(&square), 3).unwrap();
+                let image = planned::rasterize(std::slice::from_ref(&square), 3, 3, Semantics::Accumulated);
+                assert_eq!(image.pixels, expected, "{square:?}");
+                square.outline.reverse();
+            }
+        }
+    }
+}

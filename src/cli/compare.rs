@@ -24,10 +24,12 @@ pub struct Options {
     /// for a .json file, ids otherwise.
     #[arg(long = "as", value_name = "FORMAT")]
     theirs_as: Option<String>,
-    /// The oracle model: exact-snapped (default: the answer of a renderer that snaps
-    /// vertices to the subpixel grid) or exact (vertices as written), or their plain forms.
-    #[arg(long, default_value = "exact-snapped")]
-    model: String,
+    /// The oracle model: exact-snapped (the default for ids, masks and JSON: the answer of
+    /// a renderer that snaps vertices to the subpixel grid) or exact (vertices as written;
+    /// the default for `--as grey`: anti-aliasing renderers do not snap), or their plain
+    /// forms.
+    #[arg(long)]
+    model: Option<String>,
     #[command(flatten)]
     convention: ConventionArgs,
     /// The uncovered colour of a mask PNG, 8-bit channels (default: transparent black
@@ -126,7 +128,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     if o.semantics != "true" || o.quantization != "round" {
         return Err("--semantics and --quantization are for --as grey".to_string());
     }
-    let model = super::parse_model(&o.model)?;
+    let model = super::parse_model(o.model.as_deref().unwrap_or("exact-snapped"))?;
     let format = match &o.theirs_as {
         Some(f) => Format::from_name(f)
             .ok_or_else(|| format!("--as: unknown format {f:?} (expected mask, ids, json or grey)"))?,
@@ -204,7 +206,7 @@ fn run_grey(o: &Options) -> Result<ExitCode, String> {
     if o.diff_out.is_some() || o.html.is_some() || o.background.is_some() {
         return Err("--as grey prints its comparison (text or JSON); --diff-out, --html and --background are for the one-sample formats".to_string());
     }
-    let model = super::parse_model(&o.model)?;
+    let model = super::parse_model(o.model.as_deref().unwrap_or("exact"))?;
     let semantics = rasterproof::area::Semantics::from_name(&o.semantics).ok_or_else(|| {
         format!(
             "--semantics: unknown semantics {:?} (expected true, accumulated or unclamped)",

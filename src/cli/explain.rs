@@ -32,10 +32,10 @@ pub struct Options {
     /// pieces (the trapezoids between the edges) with their areas and winding numbers.
     #[arg(long, default_value = "sample", value_name = "sample|area")]
     coverage: String,
-    /// The model whose shapes `--coverage area` measures (exact-snapped or exact; the
-    /// plain forms give the same shapes).
-    #[arg(long, default_value = "exact-snapped")]
-    model: String,
+    /// The model whose shapes `--coverage area` measures (exact, the default, or
+    /// exact-snapped; the plain forms give the same shapes).
+    #[arg(long)]
+    model: Option<String>,
 }
 
 /// `--format`'s values for `explain`, with their help.
@@ -68,7 +68,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
                     target.width, target.height
                 ));
             }
-            let model = super::parse_model(&o.model)?;
+            let model = super::parse_model(o.model.as_deref().unwrap_or("exact"))?;
             let shapes = rasterproof::model::area_shapes(&scene.primitives(), &target, model)
                 .map_err(|e| format!("{name}: {e} (model {model})"))?;
             let why = rasterproof::area::exact::explain(&shapes, i64::from(x), i64::from(y));
@@ -80,7 +80,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         }
         other => return Err(format!("--coverage: unknown kind {other:?} (expected sample or area)")),
     }
-    if o.model != "exact-snapped" {
+    if o.model.is_some() {
         return Err("--model is for --coverage area (explain shows every model's decision for a sample)".to_string());
     }
     let why = explain_pixel(&scene.primitives(), &target, x, y).ok_or_else(|| {

@@ -23,10 +23,11 @@ use super::{OutputFormat, Outputs};
 pub struct Options {
     /// The scene file (JSON).
     scene: PathBuf,
-    /// The model (default exact-snapped); `--help` lists them and says what exact and
-    /// exact-snapped mean.
-    #[arg(long, default_value = "exact-snapped", long_help = crate::cli::model_help())]
-    model: String,
+    /// The model (default exact-snapped; exact with `--coverage area`: anti-aliasing
+    /// renderers do not snap); `--help` lists them and says what exact and exact-snapped
+    /// mean.
+    #[arg(long, long_help = crate::cli::model_help())]
+    model: Option<String>,
     #[command(flatten)]
     convention: super::ConventionArgs,
     /// Write the coverage picture (PNG): black where uncovered, one colour per primitive,
@@ -101,7 +102,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     if o.grey_out.is_some() || o.semantics != "true" || o.quantization != "round" {
         return Err("--grey-out, --semantics and --quantization need --coverage area".to_string());
     }
-    let model = super::parse_model(&o.model)?;
+    let model = super::parse_model(o.model.as_deref().unwrap_or("exact-snapped"))?;
     let scale_asked = o.scale.as_deref().map(parse_scale).transpose()?;
     let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
     let scale = match scale_asked {
@@ -173,7 +174,7 @@ fn run_area(o: &Options) -> Result<ExitCode, String> {
             "--coverage area writes --grey-out GREY.png (and the values on stdout); -o, --colors-out, --ids-out and --scale are for --coverage sample".to_string(),
         );
     }
-    let model = super::parse_model(&o.model)?;
+    let model = super::parse_model(o.model.as_deref().unwrap_or("exact"))?;
     let semantics = Semantics::from_name(&o.semantics).ok_or_else(|| {
         format!(
             "--semantics: unknown semantics {:?} (expected true, accumulated or unclamped)",

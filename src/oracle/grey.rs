@@ -9,7 +9,7 @@ use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 use serde_json::json;
 
-use crate::area::{exact, supersample, AreaImage, AreaShape, Quantization, Semantics};
+use crate::area::{exact, planned, supersample, AreaImage, AreaShape, Quantization, Semantics};
 use crate::num::exact::{exact_text, nearest_f64};
 
 /// The supersampling counts tried (per axis).
@@ -182,10 +182,12 @@ pub fn compare_grey(
     let mut pixels = Vec::new();
     let (mut max_error, mut total_error) = (BigRational::zero(), BigRational::zero());
     let mut histogram = BTreeMap::new();
+    // Every pixel's exact value at once (the planned engine, equal to the plain oracle).
+    let values = planned::rasterize(shapes, width, height, semantics);
     for y in 0..height {
         for x in 0..width {
             let level = theirs.levels[(y * width + x) as usize];
-            let v = exact::value(shapes, i64::from(x), i64::from(y), semantics);
+            let v = values.value(x, y);
             let ours = quantization.level(&v);
             let error = BigRational::from_integer(level.into()) - &v * BigRational::from_integer(s.into());
             max_error = max_error.max(error.abs());
@@ -357,7 +359,7 @@ impl GreyMethod {
     /// which makes its levels itself, and for f32 values that are not finite).
     fn values(self, shapes: &[AreaShape], width: u32, height: u32) -> Option<(AreaImage, Quantization)> {
         match self {
-            GreyMethod::Exact(s, q) => Some((exact::rasterize(shapes, width, height, s), q)),
+            GreyMethod::Exact(s, q) => Some((planned::rasterize(shapes, width, height, s), q)),
             GreyMethod::Supersampling(k, q) => Some((supersample::rasterize(shapes, width, height, k), q)),
             GreyMethod::Float(q) => {
                 let values = crate::area::float::rasterize(shapes, width, height, Semantics::Accumulated);
