@@ -204,3 +204,39 @@ fn edges_on_the_canvas_border_by_hand() {
         }
     }
 }
+
+/// Bands: on a 150x150 canvas (three bands of `BAND` = 64 rows), a triangle and a holed
+/// star crossing the band lines, with coordinates in thirds, give the cells' values, and
+/// `for_each_row` hands out every row once, top first, each row's pixels by column.
+#[test]
+fn bands_change_nothing() {
+    assert_eq!(planned::BAND, 64);
+    let p = |x: i128, y: i128| Point::new(q(x, 3), q(y, 3));
+    let triangle = Polygon::new(vec![p(10, 5), p(440, 190), p(30, 449)], FillRule::NonZero);
+    let star = |r: i128, turn: bool| -> Vec<Point> {
+        let pts = [(0, -3), (1, -1), (3, 0), (1, 1), (0, 3), (-1, 1), (-3, 0), (-1, -1)];
+        let mut v: Vec<Point> = pts.iter().map(|&(x, y)| p(225 + r * x, 200 + r * y)).collect();
+        if turn {
+            v.reverse();
+        }
+        v
+    };
+    let holed = Polygon {
+        outline: star(40, false),
+        holes: vec![star(10, true)],
+        fill_rule: FillRule::EvenOdd,
+    };
+    let shapes = [triangle, holed];
+    for s in [Semantics::Accumulated, Semantics::AccumulatedUnclamped] {
+        assert_eq!(
+            Some(planned::rasterize(&shapes, 150, 150, s)),
+            cells::rasterize(&shapes, 150, 150, s)
+        );
+    }
+    let mut rows = Vec::new();
+    planned::for_each_row(&shapes, 150, 150, Semantics::Accumulated, |y, pixels| {
+        assert!(pixels.windows(2).all(|w| w[0].0 < w[1].0), "row {y}");
+        rows.push(y);
+    });
+    assert_eq!(rows, (0..150).collect::<Vec<u32>>());
+}

@@ -32,6 +32,8 @@
 //! general (it needs each contour's winding, not the path's); [`rasterize`] computes it
 //! with the plain oracle.
 
+use std::ops::Range;
+
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::{BigRational, Ratio};
@@ -178,11 +180,14 @@ struct Events {
     fractions: Vec<(u32, u32, i128, i128)>,
 }
 
-/// Walks `e` row by row over a `width` x `height` canvas into `events`.
-fn walk(e: &Fine, width: u32, height: u32, events: &mut Events) {
+/// Walks `e` row by row over the `rows` of a `width`-wide canvas into `events`.
+fn walk(e: &Fine, width: u32, rows: &Range<u32>, events: &mut Events) {
     let f = e.f;
     let sign = (e.y1 - e.y0).signum();
-    let (top, bottom) = (e.y0.min(e.y1).max(0), e.y0.max(e.y1).min(i128::from(height) * f));
+    let (top, bottom) = (
+        e.y0.min(e.y1).max(i128::from(rows.start) * f),
+        e.y0.max(e.y1).min(i128::from(rows.end) * f),
+    );
     if top >= bottom {
         return;
     }
@@ -309,15 +314,51 @@ fn pixel_value(base: i128, scale: i128, fractions: &[(u32, u32, i128, i128)]) ->
     v
 }
 
-/// The integral of the path's winding number over every pixel with a non-zero value, in
-/// `i128` (`None`: `shape` is outside the envelope), by row, then column.
-fn accumulate_i128(shape: &AreaShape, width: u32, height: u32) -> Option<Vec<(u32, u32, Value)>> {
-    let s = scaled(shape)?;
-    let mut events = Events::default();
-    for (p, q) in s.edges() {
-        if p.1 != q.1 {
-            walk(&fine_units(s.scale, p, q)?, width, height, &mut events);
+/// A shape ready to walk: in `i128` (its scale and its non-horizontal edges in fine units),
+/// or, outside the envelope, its values from the big-rational cells.
+enum Prepared {
+    Small { scale: i128, edges: Vec<Fine> },
+    Big(Vec<(u32, u32, BigRational)>),
+}
+
+impl Prepared {
+    /// `shape` on a `width` x `height` canvas, by the plan's width.
+    fn new(shape: &AreaShape, width: u32, height: u32) -> Prepared {
+        let small = scaled(shape).and_then(|s| {
+            let edges = s
+                .edges()
+                .filter(|(p, q)| p.1 != q.1)
+                .map(|(p, q)| fine_units(s.scale, p, q));
+            Some((s.scale, edges.collect::<Option<Vec<Fine>>>()?))
+        });
+        match small {
+            Some((scale, edges)) => Prepared::Small { scale, edges },
+            None => Prepared::Big(cells::accumulate(shape, width, height)),
         }
+    }
+
+    /// The integral of the path's winding number over every pixel of `rows` with a
+    /// non-zero value, by row, then column.
+    fn band(&self, width: u32, rows: &Range<u32>) -> Vec<(u32, u32, Value)> {
+        match self {
+            Prepared::Small { scale, edges } => band_i128(*scale, edges, width, rows),
+            Prepared::Big(pixels) => {
+                let first = pixels.partition_point(|p| p.1 < rows.start);
+                let last = pixels.partition_point(|p| p.1 < rows.end);
+                pixels[first..last]
+                    .iter()
+                    .map(|(x, y, v)| (*x, *y, Value::Big(v.clone())))
+                    .collect()
+            }
+        }
+    }
+}
+
+/// [`Prepared::band`] in `i128`.
+fn band_i128(scale: i128, edges: &[Fine], width: u32, rows: &Range<u32>) -> Vec<(u32, u32, Value)> {
+    let mut events = Events::default();
+    for e in edges {
+        walk(e, width, rows, &mut events);
     }
     let by_place = |a: &(u32, u32), b: &(u32, u32)| a.cmp(b);
     events.tails.sort_unstable_by(|a, b| by_place(&(a.0, a.1), &(b.0, b.1)));
@@ -329,7 +370,7 @@ fn accumulate_i128(shape: &AreaShape, width: u32, height: u32) -> Option<Vec<(u3
     let (tails, fractions) = (&events.tails, &events.fractions);
     let run = |row: u32, from: u32, to: u32, base: i128, out: &mut Vec<(u32, u32, Value)>| {
         if base != 0 && from < to {
-            let v = pixel_value(base, s.scale, &[]);
+            let v = pixel_value(base, scale, &[]);
             out.extend((from..to).map(|x| (x, row, v.clone())));
         }
     };
@@ -359,7 +400,7 @@ fn accumulate_i128(shape: &AreaShape, width: u32, height: u32) -> Option<Vec<(u3
             while fractions.get(k).is_some_and(|e| (e.0, e.1) == (row, col)) {
                 k += 1;
             }
-            let v = pixel_value(base, s.scale, &fractions[first..k]);
+            let v = pixel_value(base, scale, &fractions[first..k]);
             if !v.is_zero() {
                 out.push((col, row, v));
             }
@@ -367,27 +408,98 @@ fn accumulate_i128(shape: &AreaShape, width: u32, height: u32) -> Option<Vec<(u3
         }
         run(row, cursor, width, base, &mut out);
     }
-    Some(out)
-}
-
-/// One shape's values, by the plan's width.
-fn accumulate_values(shape: &AreaShape, width: u32, height: u32) -> Vec<(u32, u32, Value)> {
-    accumulate_i128(shape, width, height).unwrap_or_else(|| {
-        cells::accumulate(shape, width, height)
-            .into_iter()
-            .map(|(x, y, v)| (x, y, Value::Big(v)))
-            .collect()
-    })
+    out
 }
 
 /// The integral of `shape`'s path winding number over every pixel of a `width` x `height`
 /// canvas with a non-zero value: `(x, y, acc)` by row, then column; what
 /// [`super::cells::accumulate`] gives, by the plan's arithmetic.
 pub fn accumulate(shape: &AreaShape, width: u32, height: u32) -> Vec<(u32, u32, BigRational)> {
-    accumulate_values(shape, width, height)
+    Prepared::new(shape, width, height)
+        .band(width, &(0..height))
         .into_iter()
         .map(|(x, y, v)| (x, y, v.big()))
         .collect()
+}
+
+/// The rows [`for_each_row`] computes at once.
+pub const BAND: u32 = 64;
+
+/// The scene's coverage under `semantics`, row by row: `emit(y, pixels)` for every row of
+/// the canvas, top first, with the row's non-zero `(x, value)` by column. Under the
+/// accumulated semantics the rows are computed [`BAND`] at a time (each shape's edges
+/// walked over the band only), so the memory is the shapes' and one band's, whatever the
+/// canvas (a shape outside the `i128` envelope holds its big-rational cells, whole); true
+/// coverage is computed by the plain oracle, whole, then handed out by row.
+pub fn for_each_row(
+    shapes: &[AreaShape],
+    width: u32,
+    height: u32,
+    semantics: Semantics,
+    mut emit: impl FnMut(u32, Vec<(u32, BigRational)>),
+) {
+    if semantics == Semantics::True {
+        let image = exact::rasterize(shapes, width, height, semantics);
+        let mut pixels = image.pixels.into_iter().peekable();
+        for y in 0..height {
+            let mut row = Vec::new();
+            while let Some((x, _, v)) = pixels.next_if(|p| p.1 == y) {
+                row.push((x, v));
+            }
+            emit(y, row);
+        }
+        return;
+    }
+    let prepared: Vec<(Prepared, FillRule)> = shapes
+        .iter()
+        .map(|s| (Prepared::new(s, width, height), s.fill_rule))
+        .collect();
+    let mut start = 0;
+    while start < height {
+        let rows = start..height.min(start.saturating_add(BAND));
+        let mut all: Vec<(u32, u32, Value)> = Vec::new();
+        for (p, rule) in &prepared {
+            all.extend(
+                p.band(width, &rows)
+                    .into_iter()
+                    .map(|(x, y, v)| (x, y, v.fold(*rule, semantics))),
+            );
+        }
+        if prepared.len() > 1 {
+            all.sort_by_key(|p| (p.1, p.0));
+        }
+        let mut summed = sum_places(all).into_iter().peekable();
+        for y in rows.clone() {
+            let mut row = Vec::new();
+            while let Some((x, _, v)) = summed.next_if(|p| p.1 == y) {
+                row.push((x, v));
+            }
+            emit(y, row);
+        }
+        start = rows.end;
+    }
+}
+
+/// Values by place (sorted by row, then column), those at one place summed, zeros left
+/// out, as big rationals.
+fn sum_places(all: Vec<(u32, u32, Value)>) -> Vec<(u32, u32, BigRational)> {
+    let mut pixels: Vec<(u32, u32, BigRational)> = Vec::with_capacity(all.len());
+    let mut sum: Option<(u32, u32, Value)> = None;
+    for (x, y, v) in all {
+        sum = match sum {
+            Some((sx, sy, acc)) if (sx, sy) == (x, y) => Some((x, y, acc.add(&v))),
+            previous => {
+                if let Some((sx, sy, acc)) = previous.filter(|(_, _, a)| !a.is_zero()) {
+                    pixels.push((sx, sy, acc.big()));
+                }
+                Some((x, y, v))
+            }
+        };
+    }
+    if let Some((sx, sy, acc)) = sum.filter(|(_, _, a)| !a.is_zero()) {
+        pixels.push((sx, sy, acc.big()));
+    }
+    pixels
 }
 
 /// The scene's coverage under `semantics`: the accumulated semantics by the planned walk
@@ -406,37 +518,10 @@ pub fn accumulate(shape: &AreaShape, width: u32, height: u32) -> Vec<(u32, u32, 
 /// assert_eq!(image.pixels, vec![(0, 0, BigRational::from_integer(1.into())), (1, 0, half.clone()), (0, 1, half)]);
 /// ```
 pub fn rasterize(shapes: &[AreaShape], width: u32, height: u32, semantics: Semantics) -> AreaImage {
-    if semantics == Semantics::True {
-        return exact::rasterize(shapes, width, height, semantics);
-    }
-    let mut all: Vec<(u32, u32, Value)> = Vec::new();
-    for shape in shapes {
-        let rule = shape.fill_rule;
-        all.extend(
-            accumulate_values(shape, width, height)
-                .into_iter()
-                .map(|(x, y, v)| (x, y, v.fold(rule, semantics))),
-        );
-    }
-    if shapes.len() > 1 {
-        all.sort_by_key(|p| (p.1, p.0));
-    }
-    let mut pixels: Vec<(u32, u32, BigRational)> = Vec::with_capacity(all.len());
-    let mut sum: Option<(u32, u32, Value)> = None;
-    for (x, y, v) in all {
-        sum = match sum {
-            Some((sx, sy, acc)) if (sx, sy) == (x, y) => Some((x, y, acc.add(&v))),
-            previous => {
-                if let Some((sx, sy, acc)) = previous.filter(|(_, _, a)| !a.is_zero()) {
-                    pixels.push((sx, sy, acc.big()));
-                }
-                Some((x, y, v))
-            }
-        };
-    }
-    if let Some((sx, sy, acc)) = sum.filter(|(_, _, a)| !a.is_zero()) {
-        pixels.push((sx, sy, acc.big()));
-    }
+    let mut pixels = Vec::new();
+    for_each_row(shapes, width, height, semantics, |y, row| {
+        pixels.extend(row.into_iter().map(|(x, v)| (x, y, v)));
+    });
     AreaImage {
         width,
         height,

@@ -12,7 +12,7 @@ use rasterproof::coverage::picture::{legend_path, upscale};
 use rasterproof::coverage::Coverage;
 use rasterproof::coverage::{Scale, ASCII_GRID_MAX_SIDE};
 use rasterproof::model::plan;
-use rasterproof::model::{prepare, render_area, PreparedScene};
+use rasterproof::model::{prepare, render_area_rows, PreparedScene};
 use rasterproof::num::exact::{exact_text, terminating_decimal};
 use std::time::{Duration, Instant};
 
@@ -188,20 +188,76 @@ fn run_area(o: &Options) -> Result<ExitCode, String> {
         )
     })?;
     let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
-    let image = render_area(&scene.primitives(), &target, model, semantics)
-        .map_err(|e| format!("{name}: {e} (model {model})"))?;
+    let primitives = scene.primitives();
+    let fail = |e: rasterproof::model::AreaError| format!("{name}: {e} (model {model})");
+    // Refusals first, before anything is written.
+    rasterproof::model::area_shapes(&primitives, &target, model).map_err(fail)?;
+    let (width, height) = (target.width, target.height);
+    let small = width <= ASCII_GRID_MAX_SIDE && height <= ASCII_GRID_MAX_SIDE;
+    let json = matches!(o.format, OutputFormat::Json);
+    // The rows are streamed: to stdout as JSON, into the grey levels, into the counts; only
+    // a canvas small enough for the text grid is kept whole.
+    let mut levels: Option<Vec<u16>> = o
+        .grey_out
+        .as_ref()
+        .map(|_| vec![0u16; width as usize * height as usize]);
+    let (mut count, mut whole, mut total) = (0usize, 0usize, BigRational::zero());
+    let mut kept = AreaImage {
+        width,
+        height,
+        semantics,
+        pixels: Vec::new(),
+    };
+    let mut stream = |out: Option<&mut dyn std::io::Write>| -> std::io::Result<()> {
+        let mut out = out;
+        if let Some(out) = out.as_mut() {
+            write!(
+                out,
+                "{{\"width\":{width},\"height\":{height},\"coverage\":\"area\",\"semantics\":\"{}\",\"model\":\"{model}\",\"pixels\":[",
+                semantics.name()
+            )?;
+        }
+        let mut written: std::io::Result<()> = Ok(());
+        render_area_rows(&primitives, &target, model, semantics, |y, row| {
+            for (x, v) in row {
+                if let (Some(out), Ok(())) = (out.as_mut(), &written) {
+                    let comma = if count == 0 { "" } else { "," };
+                    written = write!(out, "{comma}[{x},{y},\"{}\"]", exact_text(&v));
+                }
+                count += 1;
+                whole += usize::from(v.is_one());
+                total += &v;
+                if let Some(levels) = levels.as_mut() {
+                    levels[y as usize * width as usize + x as usize] = quantization.level(&v);
+                }
+                if small && !json {
+                    kept.pixels.push((x, y, v));
+                }
+            }
+        })
+        .map_err(|e| std::io::Error::other(e.to_string()))?;
+        written?;
+        if let Some(out) = out {
+            writeln!(out, "]}}")?;
+        }
+        Ok(())
+    };
+    if json {
+        crate::cli::write_stdout(|out| stream(Some(out)))?;
+    } else {
+        stream(None).map_err(|e| format!("{name}: {e}"))?;
+    }
     let mut outputs = Outputs::new();
     let mut wrote = String::new();
-    if let Some(path) = &o.grey_out {
-        let levels = image.levels(quantization);
+    if let (Some(path), Some(levels)) = (&o.grey_out, levels) {
         if quantization.bits() == 16 {
             let grey: image::ImageBuffer<image::Luma<u16>, Vec<u16>> =
-                image::ImageBuffer::from_raw(target.width, target.height, levels).ok_or("the grey image's size")?;
+                image::ImageBuffer::from_raw(width, height, levels).ok_or("the grey image's size")?;
             outputs.stage(path, "PNG", |out| grey.write_to(out, image::ImageFormat::Png))?;
         } else {
             let bytes = levels.iter().map(|&l| u8::try_from(l).unwrap_or(u8::MAX)).collect();
             let grey: image::GrayImage =
-                image::ImageBuffer::from_raw(target.width, target.height, bytes).ok_or("the grey image's size")?;
+                image::ImageBuffer::from_raw(width, height, bytes).ok_or("the grey image's size")?;
             outputs.stage_png(path, &grey)?;
         }
         wrote = format!(
@@ -212,39 +268,18 @@ fn run_area(o: &Options) -> Result<ExitCode, String> {
         );
     }
     outputs.commit()?;
-    let whole = image.pixels.iter().filter(|(_, _, v)| v.is_one()).count();
-    let total = image.total();
     let summary = format!(
-        "{name}: area coverage ({} semantics), model {model}, {}: {} pixels with area, {whole} of them whole; total {}{}{wrote}",
+        "{name}: area coverage ({} semantics), model {model}, {}: {count} pixels with area, {whole} of them whole; total {}{}{wrote}",
         semantics.name(),
         target.convention,
-        image.pixels.len(),
         exact_text(&total),
         terminating_decimal(&total).map_or(String::new(), |d| format!(" = {d}")),
     );
-    match o.format {
-        OutputFormat::Json => {
-            crate::cli::write_stdout(|out| {
-                write!(
-                    out,
-                    "{{\"width\":{},\"height\":{},\"coverage\":\"area\",\"semantics\":\"{}\",\"model\":\"{model}\",\"pixels\":[",
-                    image.width,
-                    image.height,
-                    semantics.name()
-                )?;
-                for (k, (x, y, v)) in image.pixels.iter().enumerate() {
-                    let comma = if k == 0 { "" } else { "," };
-                    write!(out, "{comma}[{x},{y},\"{}\"]", exact_text(v))?;
-                }
-                writeln!(out, "]}}")
-            })?;
-            eprintln!("{summary}");
-        }
-        OutputFormat::Text => {
-            let small = target.width <= ASCII_GRID_MAX_SIDE && target.height <= ASCII_GRID_MAX_SIDE;
-            let grid = if small { tenths_grid(&image) } else { String::new() };
-            crate::cli::print_stdout(&format!("{grid}{summary}"))?;
-        }
+    if json {
+        eprintln!("{summary}");
+    } else {
+        let grid = if small { tenths_grid(&kept) } else { String::new() };
+        crate::cli::print_stdout(&format!("{grid}{summary}"))?;
     }
     Ok(ExitCode::SUCCESS)
 }

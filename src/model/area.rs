@@ -94,3 +94,35 @@ pub fn render_area(
         _ => planned::rasterize(&shapes, w, h, semantics),
     })
 }
+
+/// The scene's exact area coverage under `semantics`, row by row (as [`render_area`]
+/// computes it): `emit(y, pixels)` for every row, top first, with its non-zero `(x,
+/// value)` by column. Under the planned models and an accumulated semantics the memory
+/// does not grow with the canvas ([`crate::area::planned::for_each_row`]).
+///
+/// # Errors
+/// As [`area_shapes`].
+pub fn render_area_rows(
+    primitives: &Primitives,
+    target: &Target,
+    model: Model,
+    semantics: Semantics,
+    mut emit: impl FnMut(u32, Vec<(u32, num_rational::BigRational)>),
+) -> Result<(), AreaError> {
+    let shapes = area_shapes(primitives, target, model)?;
+    let (w, h) = (target.width, target.height);
+    if matches!(model, Model::ExactPlain | Model::ExactSnappedPlain) {
+        let image = exact::rasterize(&shapes, w, h, semantics);
+        let mut pixels = image.pixels.into_iter().peekable();
+        for y in 0..h {
+            let mut row = Vec::new();
+            while let Some((x, _, v)) = pixels.next_if(|p| p.1 == y) {
+                row.push((x, v));
+            }
+            emit(y, row);
+        }
+    } else {
+        planned::for_each_row(&shapes, w, h, semantics, emit);
+    }
+    Ok(())
+}

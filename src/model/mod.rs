@@ -40,7 +40,7 @@ use crate::geom::Point;
 use crate::num::exact::{exact_text_short, nearest_f32, nearest_f64};
 use crate::tri::float::FloatRule;
 
-pub use area::{area_shapes, render_area, AreaError};
+pub use area::{area_shapes, render_area, render_area_rows, AreaError};
 pub use error::ModelError;
 pub use prepared::{prepare, render, render_triangles, PreparedScene, Primitives, Shape};
 
