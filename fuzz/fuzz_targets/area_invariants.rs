@@ -2,7 +2,8 @@
 //! on a small canvas, the cell accumulation and the planned engine (i128) equal the plain
 //! oracle's signed integral at every pixel, and the planned engine's images equal the
 //! oracle's under the accumulated semantics; the integrals add up to the path's signed area; true and folded values lie
-//! in [0, 1]; FreeType's integer method and f32 accumulation stay near the exact values;
+//! in [0, 1]; FreeType's integer method (within a level and two per edge meeting the
+//! pixel) and f32 accumulation stay near the exact values;
 //! and a spade triangulation of the outline's points adds up, pixel by pixel, to its hull.
 
 #![no_main]
@@ -80,11 +81,16 @@ fuzz_target!(|input: Input| {
     let f = float::rasterize(one, w, h, Semantics::Accumulated);
     let got = AreaImage::from_f32(w, h, Semantics::Accumulated, &f).expect("finite values");
     if den != 3 {
+        // FreeType's reciprocal division falls at most 1/256 px short at each crossing:
+        // a level per crossing point, two per edge meeting the pixel, and one for the
+        // truncation (fuzz_case_04 in tests/fuzz_cases.rs: 3 levels over 9 edges).
         let levels = folded.levels(Quantization::FtGrays);
         for (k, (&got, &want)) in ft.iter().zip(&levels).enumerate() {
+            let (x, y) = (k as i64 % i64::from(w), k as i64 / i64::from(w));
+            let edges = exact::explain(one, x, y).edges.len() as i32;
             assert!(
-                (i32::from(got) - i32::from(want)).abs() <= 2,
-                "pixel {k}: FreeType's method {got}, exactly {want}: {poly:?}"
+                (i32::from(got) - i32::from(want)).abs() <= 1 + 2 * edges,
+                "pixel {k}: FreeType's method {got}, exactly {want}, {edges} edges: {poly:?}"
             );
         }
         let bound = BigRational::new(1.into(), 65536.into());
