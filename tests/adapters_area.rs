@@ -188,6 +188,19 @@ fn freetype_draws_what_the_ftgrays_model_computes() {
     assert!(lit > 5000, "{lit} lit pixels");
 }
 
+/// `rasterproof compare SCENE THEIRS --as grey --fit --format json`: the report.
+fn grey_fit(scene: &Path, theirs: &Path) -> Value {
+    let output = assert_cmd::Command::cargo_bin("rasterproof")
+        .unwrap()
+        .arg("compare")
+        .arg(scene)
+        .arg(theirs)
+        .args(["--as", "grey", "--fit", "--format", "json"])
+        .output()
+        .unwrap();
+    serde_json::from_slice(&output.stdout).unwrap()
+}
+
 #[test]
 fn compare_fit_names_freetype() {
     if !freetype_available() {
@@ -203,15 +216,7 @@ fn compare_fit_names_freetype() {
         .output()
         .unwrap();
     assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
-    let output = assert_cmd::Command::cargo_bin("rasterproof")
-        .unwrap()
-        .arg("compare")
-        .arg(&scene)
-        .arg(&out)
-        .args(["--as", "grey", "--fit", "--format", "json"])
-        .output()
-        .unwrap();
-    let report: Value = serde_json::from_slice(&output.stdout).unwrap();
+    let report = grey_fit(&scene, &out);
     let exact: Vec<&str> = report["methods"]
         .as_array()
         .unwrap()
@@ -243,15 +248,7 @@ fn compare_fit_names_tiny_skia_aa() {
         .output()
         .unwrap();
     assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
-    let output = assert_cmd::Command::cargo_bin("rasterproof")
-        .unwrap()
-        .arg("compare")
-        .arg(&scene)
-        .arg(&out)
-        .args(["--as", "grey", "--fit", "--format", "json"])
-        .output()
-        .unwrap();
-    let report: Value = serde_json::from_slice(&output.stdout).unwrap();
+    let report = grey_fit(&scene, &out);
     let methods = report["methods"].as_array().unwrap();
     assert_eq!(
         methods[0]["method"], "tiny-skia's anti-aliasing (4x4 supersampling, its 8-bit levels)",

@@ -267,6 +267,19 @@ impl AreaImage {
         })
     }
 
+    /// Hands out the image row by row: `emit(y, pixels)` for every row of the canvas, top
+    /// first, with the row's `(x, value)` by column.
+    pub fn for_each_row(self, mut emit: impl FnMut(u32, Vec<(u32, BigRational)>)) {
+        let mut pixels = self.pixels.into_iter().peekable();
+        for y in 0..self.height {
+            let mut row = Vec::new();
+            while let Some((x, _, v)) = pixels.next_if(|p| p.1 == y) {
+                row.push((x, v));
+            }
+            emit(y, row);
+        }
+    }
+
     /// The grey levels, row by row (`width x height`), under `q`.
     pub fn levels(&self, q: Quantization) -> Vec<u16> {
         let mut out = vec![0u16; self.width as usize * self.height as usize];

@@ -439,15 +439,7 @@ pub fn for_each_row(
     mut emit: impl FnMut(u32, Vec<(u32, BigRational)>),
 ) {
     if semantics == Semantics::True {
-        let image = exact::rasterize(shapes, width, height, semantics);
-        let mut pixels = image.pixels.into_iter().peekable();
-        for y in 0..height {
-            let mut row = Vec::new();
-            while let Some((x, _, v)) = pixels.next_if(|p| p.1 == y) {
-                row.push((x, v));
-            }
-            emit(y, row);
-        }
+        exact::rasterize(shapes, width, height, semantics).for_each_row(emit);
         return;
     }
     let prepared: Vec<(Prepared, FillRule)> = shapes

@@ -107,20 +107,12 @@ pub fn render_area_rows(
     target: &Target,
     model: Model,
     semantics: Semantics,
-    mut emit: impl FnMut(u32, Vec<(u32, num_rational::BigRational)>),
+    emit: impl FnMut(u32, Vec<(u32, num_rational::BigRational)>),
 ) -> Result<(), AreaError> {
     let shapes = area_shapes(primitives, target, model)?;
     let (w, h) = (target.width, target.height);
     if matches!(model, Model::ExactPlain | Model::ExactSnappedPlain) {
-        let image = exact::rasterize(&shapes, w, h, semantics);
-        let mut pixels = image.pixels.into_iter().peekable();
-        for y in 0..h {
-            let mut row = Vec::new();
-            while let Some((x, _, v)) = pixels.next_if(|p| p.1 == y) {
-                row.push((x, v));
-            }
-            emit(y, row);
-        }
+        exact::rasterize(&shapes, w, h, semantics).for_each_row(emit);
     } else {
         planned::for_each_row(&shapes, w, h, semantics, emit);
     }
