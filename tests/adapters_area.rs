@@ -188,6 +188,12 @@ fn freetype_draws_what_the_ftgrays_model_computes() {
     assert!(lit > 5000, "{lit} lit pixels");
 }
 
+/// Runs an adapter's command on `scene` into `out`; asserts it succeeded.
+fn draw(command: &mut Command, scene: &Path, out: &Path) {
+    let output = command.arg(scene).arg(out).output().unwrap();
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+}
+
 /// `rasterproof compare SCENE THEIRS --as grey --fit --format json`: the report.
 fn grey_fit(scene: &Path, theirs: &Path) -> Value {
     let output = assert_cmd::Command::cargo_bin("rasterproof")
@@ -209,13 +215,7 @@ fn compare_fit_names_freetype() {
     let dir = tempdir::Dir::new("freetype-fit");
     let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/scenes/glyph.json");
     let out = dir.path().join("glyph.png");
-    let output = Command::new(python())
-        .arg(adapter())
-        .arg(&scene)
-        .arg(&out)
-        .output()
-        .unwrap();
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    draw(Command::new(python()).arg(adapter()), &scene, &out);
     let report = grey_fit(&scene, &out);
     let exact: Vec<&str> = report["methods"]
         .as_array()
@@ -241,13 +241,11 @@ fn compare_fit_names_tiny_skia_aa() {
     let dir = tempdir::Dir::new("tiny-skia-aa");
     let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/scenes/glyph.json");
     let out = dir.path().join("glyph.png");
-    let output = Command::new(crate::adapters::tiny_skia_adapter())
-        .arg("--grey")
-        .arg(&scene)
-        .arg(&out)
-        .output()
-        .unwrap();
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    draw(
+        Command::new(crate::adapters::tiny_skia_adapter()).arg("--grey"),
+        &scene,
+        &out,
+    );
     let report = grey_fit(&scene, &out);
     let methods = report["methods"].as_array().unwrap();
     assert_eq!(

@@ -25,6 +25,16 @@ fn int(v: i64) -> BigRational {
     BigRational::from_integer(v.into())
 }
 
+/// `n / d` as a rational.
+fn r(n: i64, d: i64) -> BigRational {
+    BigRational::new(n.into(), d.into())
+}
+
+/// The point `(x, y)`.
+fn p(x: BigRational, y: BigRational) -> Point {
+    Point::new(x, y)
+}
+
 /// The pixels `(px, py)` that the shapes' bounding box meets (negative ones too).
 fn pixels_of(shapes: &[AreaShape]) -> Vec<(i64, i64)> {
     let points: Vec<&Point> = shapes.iter().flat_map(Polygon::contours).flatten().collect();
@@ -296,7 +306,6 @@ fn quarter_grid_triangle_by_hand() {
     let t = Triangle::new(Point::new(q(1), q(1)), Point::new(q(5), q(1)), Point::new(q(1), q(5)));
     let shapes = [triangle_shape(&t)];
     let v = |x, y| value(&shapes, x, y, Semantics::True);
-    let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
     assert_eq!(v(0, 0), r(1, 4));
     assert_eq!(v(1, 0), r(1, 2));
     assert_eq!(v(1, 1), r(1, 2));
@@ -418,8 +427,6 @@ fn render_area_cli_by_hand() {
 /// (a sum of f32 values has a power-of-two denominator).
 #[test]
 fn the_contenders_break_conservation() {
-    let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
-    let p = |x: BigRational, y: BigRational| Point::new(x, y);
     let t = Triangle::new(p(r(0, 1), r(0, 1)), p(r(1, 1), r(0, 1)), p(r(0, 1), r(1, 1)));
     let sampled = supersample::rasterize(&[triangle_shape(&t)], 1, 1, 4);
     assert_eq!(sampled.value(0, 0), r(3, 8));
@@ -465,8 +472,6 @@ fn the_contenders_break_conservation() {
 /// halves do not, and the checker names the pixel.
 #[test]
 fn f32_accumulation_leaves_seams() {
-    let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
-    let p = |x: BigRational, y: BigRational| Point::new(x, y);
     // A square split along a shallow diagonal; the f32 values of the halves are added in
     // f32 per pixel by the renderer (its accumulation buffer), then read exactly.
     let (a, b, c, d) = (
@@ -552,8 +557,6 @@ fn explain_area_cli_by_hand() {
 /// the other way round they come out negative and `~v` takes one off the partial pixels.
 #[test]
 fn ftgrays_rectangle_by_hand() {
-    let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
-    let p = |x: BigRational, y: BigRational| Point::new(x, y);
     let rect = vec![
         p(r(1, 4), r(1, 2)),
         p(r(11, 4), r(1, 2)),
@@ -612,8 +615,6 @@ fn grey8(width: u32, height: u32, levels: &[u8]) -> rasterproof::oracle::grey::G
 #[test]
 fn grey_classes_by_hand() {
     use rasterproof::oracle::grey::{compare_grey, GreyClass};
-    let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
-    let p = |x: BigRational, y: BigRational| Point::new(x, y);
     let rect = vec![
         p(r(1, 4), r(1, 2)),
         p(r(11, 4), r(1, 2)),
@@ -788,8 +789,6 @@ fn compare_grey_cli() {
 #[test]
 fn grey_fit_names_the_method() {
     use rasterproof::oracle::grey::{fit_grey, GreyMethod};
-    let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
-    let p = |x: BigRational, y: BigRational| Point::new(x, y);
     let rect = vec![
         p(r(1, 4), r(1, 2)),
         p(r(11, 4), r(1, 2)),
@@ -843,7 +842,6 @@ fn grey_fit_names_the_method() {
 /// pixel, 8 samples, no full row, 128; the whole pixel 255 (not 256).
 #[test]
 fn tiny_skia_levels_by_hand() {
-    let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
     let rect = |x0: BigRational, y0: BigRational, x1: BigRational, y1: BigRational| {
         Polygon::new(
             vec![
@@ -856,11 +854,11 @@ fn tiny_skia_levels_by_hand() {
         )
     };
     let cases = [
-        (rect(q(0, 1), q(0, 1), q(1, 1), q(3, 4)), 192),
-        (rect(q(0, 1), q(1, 4), q(1, 1), q(1, 1)), 191),
-        (rect(q(0, 1), q(0, 1), q(1, 2), q(1, 1)), 128),
-        (rect(q(0, 1), q(0, 1), q(1, 1), q(1, 1)), 255),
-        (rect(q(0, 1), q(7, 8), q(1, 1), q(1, 1)), 63),
+        (rect(r(0, 1), r(0, 1), r(1, 1), r(3, 4)), 192),
+        (rect(r(0, 1), r(1, 4), r(1, 1), r(1, 1)), 191),
+        (rect(r(0, 1), r(0, 1), r(1, 2), r(1, 1)), 128),
+        (rect(r(0, 1), r(0, 1), r(1, 1), r(1, 1)), 255),
+        (rect(r(0, 1), r(7, 8), r(1, 1), r(1, 1)), 63),
     ];
     for (shape, level) in cases {
         assert_eq!(

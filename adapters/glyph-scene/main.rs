@@ -113,6 +113,9 @@ impl OutlineBuilder for Flattener {
     }
 }
 
+/// A contour with its twice signed area.
+type Measured<'a> = (&'a Contour, i128);
+
 /// Twice the signed area of a contour (font units, y up).
 fn twice_area(c: &Contour) -> i128 {
     (0..c.len())
@@ -206,22 +209,25 @@ fn scene(a: &Args) -> Result<Value, String> {
         };
         face.outline_glyph(glyph, &mut f);
         f.close();
-        let outer_sign = f
+        // Each contour with its twice signed area, once; zero-area contours dropped.
+        let areas: Vec<Measured> = f
             .contours
             .iter()
-            .map(twice_area)
+            .map(|c| (c, twice_area(c)))
+            .filter(|(_, a)| *a != 0)
+            .collect();
+        let outer_sign = areas
+            .iter()
+            .map(|(_, a)| *a)
             .max_by_key(|a| a.abs())
             .map_or(1, i128::signum);
-        let (outlines, holes): (Vec<&Contour>, Vec<&Contour>) = f
-            .contours
-            .iter()
-            .filter(|c| twice_area(c) != 0)
-            .partition(|c| twice_area(c).signum() == outer_sign);
+        let (outlines, holes): (Vec<Measured>, Vec<Measured>) =
+            areas.into_iter().partition(|(_, a)| a.signum() == outer_sign);
         let mut held: Vec<Vec<&Contour>> = vec![Vec::new(); outlines.len()];
-        for hole in holes {
+        for (hole, _) in holes {
             let owner = (0..outlines.len())
-                .filter(|&k| holds(outlines[k], hole[0]))
-                .min_by_key(|&k| twice_area(outlines[k]).abs())
+                .filter(|&k| holds(outlines[k].0, hole[0]))
+                .min_by_key(|&k| outlines[k].1.abs())
                 .ok_or(format!(
                     "{ch:?}: a counter outside every outline (the font's contours run an unexpected way)"
                 ))?;
@@ -232,7 +238,7 @@ fn scene(a: &Args) -> Result<Value, String> {
                 .map(|&(u, v)| json!([coordinate(a.margin, pen, u, 1), coordinate(a.margin, ascender, v, -1)]))
                 .collect()
         };
-        for (outline, holes) in outlines.iter().zip(held) {
+        for ((outline, _), holes) in outlines.iter().zip(held) {
             let holes: Vec<Vec<Value>> = holes.iter().map(|h| text(h)).collect();
             polygons.push(json!({"v": text(outline), "holes": holes, "fill_rule": "nonzero"}));
         }

@@ -73,10 +73,23 @@ pub enum Width {
 /// assert_eq!(plan(&far), Width::Big);
 /// ```
 pub fn plan(shape: &AreaShape) -> Width {
-    match scaled(shape) {
-        Some(s) if s.edges().all(|(a, b)| fine_units(s.scale, a, b).is_some()) => Width::I128,
-        _ => Width::Big,
+    if fine_edges(shape).is_some() {
+        Width::I128
+    } else {
+        Width::Big
     }
+}
+
+/// `shape`'s scale and its non-horizontal edges in fine units (a horizontal edge adds no
+/// cover and no area), or `None` when the shape is outside the `i128` envelope.
+fn fine_edges(shape: &AreaShape) -> Option<(i128, Vec<Fine>)> {
+    let s = scaled(shape)?;
+    let edges = s
+        .edges()
+        .filter(|(p, q)| p.1 != q.1)
+        .map(|(p, q)| fine_units(s.scale, p, q))
+        .collect::<Option<Vec<Fine>>>()?;
+    Some((s.scale, edges))
 }
 
 /// A shape scaled to integers: `scale` and each contour's vertices times `scale`.
@@ -130,17 +143,7 @@ struct Fine {
 /// A horizontal edge (no cover, no area) has no fine form either: callers skip it first.
 fn fine_units(scale: i128, p: (i128, i128), q: (i128, i128)) -> Option<Fine> {
     let (dx, dy) = (q.0 - p.0, q.1 - p.1);
-    if dy == 0 {
-        return Some(Fine {
-            x0: 0,
-            y0: 0,
-            y1: 0,
-            a: 0,
-            b: 0,
-            m: 1,
-            f: scale,
-        });
-    }
+    debug_assert_ne!(dy, 0, "a horizontal edge has no fine form");
     let g = dx.abs().gcd(&dy.abs());
     let (a, b) = (dx / g, dy / g);
     let m = a.abs().max(1).checked_mul(b.abs())?;
@@ -324,14 +327,7 @@ enum Prepared {
 impl Prepared {
     /// `shape` on a `width` x `height` canvas, by the plan's width.
     fn new(shape: &AreaShape, width: u32, height: u32) -> Prepared {
-        let small = scaled(shape).and_then(|s| {
-            let edges = s
-                .edges()
-                .filter(|(p, q)| p.1 != q.1)
-                .map(|(p, q)| fine_units(s.scale, p, q));
-            Some((s.scale, edges.collect::<Option<Vec<Fine>>>()?))
-        });
-        match small {
+        match fine_edges(shape) {
             Some((scale, edges)) => Prepared::Small { scale, edges },
             None => Prepared::Big(cells::accumulate(shape, width, height)),
         }
@@ -360,11 +356,8 @@ fn band_i128(scale: i128, edges: &[Fine], width: u32, rows: &Range<u32>) -> Vec<
     for e in edges {
         walk(e, width, rows, &mut events);
     }
-    let by_place = |a: &(u32, u32), b: &(u32, u32)| a.cmp(b);
-    events.tails.sort_unstable_by(|a, b| by_place(&(a.0, a.1), &(b.0, b.1)));
-    events
-        .fractions
-        .sort_unstable_by(|a, b| by_place(&(a.0, a.1), &(b.0, b.1)));
+    events.tails.sort_unstable_by_key(|e| (e.0, e.1));
+    events.fractions.sort_unstable_by_key(|e| (e.0, e.1));
     let mut out = Vec::new();
     let (mut t, mut k) = (0, 0);
     let (tails, fractions) = (&events.tails, &events.fractions);
@@ -510,6 +503,9 @@ fn sum_places(all: Vec<(u32, u32, Value)>) -> Vec<(u32, u32, BigRational)> {
 /// assert_eq!(image.pixels, vec![(0, 0, BigRational::from_integer(1.into())), (1, 0, half.clone()), (0, 1, half)]);
 /// ```
 pub fn rasterize(shapes: &[AreaShape], width: u32, height: u32, semantics: Semantics) -> AreaImage {
+    if semantics == Semantics::True {
+        return exact::rasterize(shapes, width, height, semantics);
+    }
     let mut pixels = Vec::new();
     for_each_row(shapes, width, height, semantics, |y, row| {
         pixels.extend(row.into_iter().map(|(x, v)| (x, y, v)));

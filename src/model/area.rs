@@ -87,11 +87,15 @@ pub fn render_area(
     model: Model,
     semantics: Semantics,
 ) -> Result<AreaImage, AreaError> {
-    let shapes = area_shapes(primitives, target, model)?;
-    let (w, h) = (target.width, target.height);
-    Ok(match model {
-        Model::ExactPlain | Model::ExactSnappedPlain => exact::rasterize(&shapes, w, h, semantics),
-        _ => planned::rasterize(&shapes, w, h, semantics),
+    let mut pixels = Vec::new();
+    render_area_rows(primitives, target, model, semantics, |y, row| {
+        pixels.extend(row.into_iter().map(|(x, v)| (x, y, v)));
+    })?;
+    Ok(AreaImage {
+        width: target.width,
+        height: target.height,
+        semantics,
+        pixels,
     })
 }
 
