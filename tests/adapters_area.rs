@@ -62,9 +62,10 @@ fn freetype_available() -> bool {
 /// 1/3 px: three triangles in [-4, 20]^2; a tangled polygon of 3 to 9 random points there
 /// (nonzero or even-odd); or a star-shaped polygon of 5 to 9 points (radii 3 to 10 px
 /// about a point of [2, 14]^2) with a star-shaped hole of 3 to 5 points (radii 0.4 to
-/// 1 px), running either way.
+/// 1 px), running either way. (`tests/adapters_aa_crates.rs` and
+/// `tests/area_crates_models.rs` draw the same scenes.)
 #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation)]
-fn scene(k: u64) -> Value {
+pub fn scene(k: u64) -> Value {
     let mut rng = Rng(0x9E37_79B9_7F4A_7C15 ^ (k + 1).wrapping_mul(0x2545_F491_4F6C_DD1D));
     let d: i64 = [64, 64, 256, 3][usize::try_from(rng.below(4)).unwrap()];
     let on_grid = |v: f64| format!("{}/{d}", (v * d as f64).round() as i64);

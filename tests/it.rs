@@ -20,10 +20,14 @@ mod tempdir;
 // The test files.
 #[path = "adapters.rs"]
 mod adapters;
+#[path = "adapters_aa_crates.rs"]
+mod adapters_aa_crates;
 #[path = "adapters_area.rs"]
 mod adapters_area;
 #[path = "area.rs"]
 mod area;
+#[path = "area_crates_models.rs"]
+mod area_crates_models;
 #[path = "area_planned.rs"]
 mod area_planned;
 #[path = "check_cli.rs"]
@@ -50,6 +54,8 @@ mod fuzz_cases;
 mod fuzz_layout;
 #[path = "golden.rs"]
 mod golden;
+#[path = "grey_hunt.rs"]
+mod grey_hunt;
 #[path = "homogeneous.rs"]
 mod homogeneous;
 #[path = "html_report.rs"]

@@ -7,7 +7,13 @@
 use std::sync::OnceLock;
 
 use assert_cmd::Command;
-use rasterproof::trade::{run, Config, Magnitude, Outcome, TradeReport};
+use num_rational::BigRational;
+use rasterproof::area::{planned, triangle_shape, AreaShape, Quantization, Semantics};
+use rasterproof::geom::{FillRule, Point, Polygon, Triangle};
+use rasterproof::trade::area::{
+    area_metrics, ftgrays_at, rasterize_f32_at, AreaModel, AreaOutput, COVERAGE_ERROR, OFF_HALF_QUANTUM,
+};
+use rasterproof::trade::{run, Config, Magnitude, Metric, Outcome, TradeReport};
 use serde_json::Value;
 
 use crate::tempdir;
@@ -169,6 +175,11 @@ fn check_schema(j: &Value) {
                                 has(m, "max", Value::is_number);
                                 has(m, "samples", Value::is_u64);
                             }
+                            "quanta" => {
+                                has(m, "max", Value::is_number);
+                                has(m, "mean", Value::is_number);
+                                has(m, "pixels", Value::is_u64);
+                            }
                             other => panic!("metric kind {other}"),
                         }
                     }
@@ -204,7 +215,7 @@ fn the_json_has_the_documented_schema_and_every_contender_at_every_magnitude() {
         .iter()
         .map(|w| w["family"].as_str().unwrap())
         .collect();
-    for f in ["triangles", "lines", "polygons", "clipping"] {
+    for f in ["triangles", "lines", "polygons", "clipping", "area"] {
         assert!(families.contains(&f), "{f}");
     }
     let md = r.to_markdown();
@@ -218,7 +229,13 @@ fn the_json_has_the_documented_schema_and_every_contender_at_every_magnitude() {
 fn the_pictures_decode() {
     let pictures = quick().pictures().unwrap();
     let names: Vec<&str> = pictures.iter().map(|p| p.name.as_str()).collect();
-    for stem in ["speed-vs-error", "error-vs-magnitude", "predicate-map"] {
+    for stem in [
+        "speed-vs-error",
+        "error-vs-magnitude",
+        "area-speed-vs-error",
+        "area-error-vs-magnitude",
+        "predicate-map",
+    ] {
         for ext in ["png", "svg"] {
             assert!(names.contains(&format!("{stem}.{ext}").as_str()), "{stem}.{ext}");
         }
@@ -265,6 +282,10 @@ fn the_command_writes_every_file_and_prints_the_json() {
     assert_eq!(
         files,
         [
+            "area-error-vs-magnitude.png",
+            "area-error-vs-magnitude.svg",
+            "area-speed-vs-error.png",
+            "area-speed-vs-error.svg",
             "error-vs-magnitude.png",
             "error-vs-magnitude.svg",
             "predicate-map.png",
@@ -301,4 +322,173 @@ fn bad_options_exit_2_and_write_nothing() {
     let err = String::from_utf8_lossy(&out.get_output().stderr).to_string();
     assert!(err.contains("names a file"), "{err}");
     assert_eq!(std::fs::read_to_string(&file).unwrap(), "keep");
+}
+
+/// The area family: every exact contender (the planned engine, exact cells, the plain
+/// oracle) shows exactly zero error at every magnitude, on every area workload; f32
+/// accumulation is off by more than half a quantum somewhere by 2^24 px; ftgrays is
+/// measured at 2^20 px and refused, with its envelope named, from 2^23 px.
+#[test]
+fn area_exact_contenders_are_exact_and_ftgrays_refuses_past_its_envelope() {
+    let r = quick();
+    let area: Vec<_> = r.workloads.iter().filter(|w| w.family.name() == "area").collect();
+    let names: Vec<&str> = area.iter().map(|w| w.name.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "glyphs at 9 px/em",
+            "glyphs at 24 px/em",
+            "glyphs at 64 px/em",
+            "glyphs at 200 px/em",
+            "abutting mesh",
+            "area slivers"
+        ]
+    );
+    for w in &area {
+        for name in ["area-plain", "area-cells", "area-planned"] {
+            for &m in &r.config.magnitudes {
+                let c = w.cell(name, m).unwrap_or_else(|| panic!("{} / {name} at {m}", w.name));
+                let Outcome::Measured { metrics, .. } = &c.outcome else {
+                    panic!("{} / {name} at {m}: {c:?}", w.name)
+                };
+                match c.outcome.metric(COVERAGE_ERROR) {
+                    Some(Metric::Quanta { max, mean, pixels, .. }) => {
+                        assert_eq!((*max, *mean), (0.0, 0.0), "{} / {name} at {m}", w.name);
+                        assert!(*pixels > 0, "{} / {name}: nothing measured", w.name);
+                    }
+                    other => panic!("{} / {name} at {m}: {other:?}", w.name),
+                }
+                assert!(
+                    metrics.iter().all(Metric::is_zero),
+                    "{} / {name} at {m}: {metrics:?}",
+                    w.name
+                );
+            }
+        }
+        let at = |name: &str, m: &str| &w.cell(name, Magnitude::parse(m).unwrap()).unwrap().outcome;
+        assert!(matches!(at("ftgrays", "2^20"), Outcome::Measured { .. }), "{}", w.name);
+        for m in ["2^23", "2^24", "2^30"] {
+            match at("ftgrays", m) {
+                Outcome::Refused(reason) => assert!(reason.contains("24.8 envelope"), "{reason}"),
+                other => panic!("{} / ftgrays at {m}: {other:?}", w.name),
+            }
+        }
+    }
+    let glyphs = area.iter().find(|w| w.name == "glyphs at 24 px/em").unwrap();
+    let f32_far = glyphs.cell("f32-accum", Magnitude::parse("2^24").unwrap()).unwrap();
+    assert!(!f32_far.outcome.headline().unwrap().is_zero(), "{f32_far:?}");
+    assert_eq!(f32_far.outcome.headline().unwrap().name(), OFF_HALF_QUANTUM);
+    // The Markdown has the area tables, in quanta.
+    let md = r.to_markdown();
+    assert!(md.contains("## glyphs at 24 px/em (area)"), "no area section");
+    assert!(md.contains("| coverage error (1/255 max/mean) |"), "no quanta table");
+}
+
+fn int(v: i64) -> BigRational {
+    BigRational::from_integer(v.into())
+}
+
+/// A half-pixel rectangle `[0, 1/2] x [0, 1]` placed at `(M, M)`: exactly 1/2 of pixel
+/// (0, 0) of the window. Below 2^23 every coordinate `M + 1/2` is an f32 (at 2^22 the f32
+/// step is 1/2), so f32 accumulation is exact; at 2^23 the step is 1 and `M + 1/2` ties to
+/// the even `M`: the rectangle has no width, the pixel reads 0, off by exactly 1/2, that
+/// is 127.5 quanta, one pixel in one off by more than half a quantum.
+#[test]
+fn f32_accumulation_loses_a_half_pixel_at_2_23_by_hand() {
+    let half = BigRational::new(1.into(), 2.into());
+    let rect = |m: i64| -> Vec<AreaShape> {
+        let p = |x: BigRational, y: i64| Point::new(x + int(m), int(y + m));
+        vec![Polygon::new(
+            vec![p(int(0), 0), p(half.clone(), 0), p(half.clone(), 1), p(int(0), 1)],
+            FillRule::NonZero,
+        )]
+    };
+    let reference = planned::rasterize(&rect(0), 2, 2, Semantics::Accumulated);
+    assert_eq!(reference.value(0, 0), half);
+    let metrics = |m: i64| area_metrics(&reference, &AreaOutput::F32(rasterize_f32_at(&rect(m), m, 2, 2)), None);
+    let at22 = metrics(1 << 22);
+    assert!(at22.iter().all(Metric::is_zero), "{at22:?}");
+    let at23 = metrics(1 << 23);
+    assert_eq!(
+        at23[0],
+        Metric::Rate {
+            name: OFF_HALF_QUANTUM,
+            count: 1,
+            of: 1
+        }
+    );
+    assert_eq!(
+        at23[1],
+        Metric::Quanta {
+            name: COVERAGE_ERROR,
+            max: 127.5,
+            mean: 127.5,
+            pixels: 1
+        }
+    );
+}
+
+/// The triangle (0,0) (1,0) (0,1) covers exactly 1/2 of its pixel. Of its 4 x 4 samples
+/// `((i + 1/2)/4, (j + 1/2)/4)`, the 6 with `i + j < 3` are inside and the 4 with
+/// `i + j = 3` lie on the hypotenuse, all taken or all left by the top-left rule: 6/16 or
+/// 10/16, off by exactly 1/8 = 31.875 quanta either way. The exact contenders are off by 0.
+#[test]
+fn supersampling_is_off_by_an_eighth_by_hand() {
+    let t = Triangle::new(Point::from_ints(0, 0), Point::from_ints(1, 0), Point::from_ints(0, 1));
+    let shapes = [triangle_shape(&t)];
+    let reference = planned::rasterize(&shapes, 1, 1, Semantics::Accumulated);
+    assert_eq!(reference.value(0, 0), BigRational::new(1.into(), 2.into()));
+    let ss = AreaModel::Supersample.draw(&shapes, 1, 1).unwrap();
+    let m = area_metrics(&reference, &ss, None);
+    assert_eq!(
+        m[1],
+        Metric::Quanta {
+            name: COVERAGE_ERROR,
+            max: 31.875,
+            mean: 31.875,
+            pixels: 1
+        }
+    );
+    assert_eq!(m[0].per_million(), Some(1e6));
+    for exact in [AreaModel::Plain, AreaModel::Cells, AreaModel::Planned] {
+        let out = exact.draw(&shapes, 1, 1).unwrap();
+        assert!(
+            area_metrics(&reference, &out, None).iter().all(Metric::is_zero),
+            "{exact:?}"
+        );
+    }
+    // ftgrays: the hypotenuse leaves the cell above through its corner (1, 1), and the
+    // reciprocal division (FT_UDIV: 2^16 x (2^48 - 1) >> 56 = 255) puts that exit at
+    // x = 255/256: the area is short by 1/512, floor(256 x (1/2 - 1/512)) = 127, where its
+    // own quantization of the exact 1/2 is 128. Read as 127/255 it is off by exactly
+    // 1/510, half a quantum (not more).
+    let ft = AreaModel::FtGrays.draw(&shapes, 1, 1).unwrap();
+    assert_eq!(ft, AreaOutput::Levels(vec![127]));
+    let m = area_metrics(&reference, &ft, Some(Quantization::FtGrays));
+    assert_eq!(m[0].per_million(), Some(0.0));
+    assert_eq!(m[2].per_million(), Some(1e6));
+    match &m[1] {
+        Metric::Quanta { max, .. } => assert_eq!(*max, 0.5),
+        other => panic!("{other:?}"),
+    }
+}
+
+/// ftgrays's envelope at the placed coordinates, one unit either side: a unit square whose
+/// right side lands on `2^23 - 1` px is drawn; one pixel further, at `2^23` px, it is
+/// refused with the model's own message.
+#[test]
+fn ftgrays_is_refused_beyond_its_envelope_by_hand() {
+    let square = vec![Polygon::new(
+        vec![
+            Point::from_ints(0, 0),
+            Point::from_ints(1, 0),
+            Point::from_ints(1, 1),
+            Point::from_ints(0, 1),
+        ],
+        FillRule::NonZero,
+    )];
+    let inside = ftgrays_at(&square, (1 << 23) - 2, 2, 2).unwrap();
+    assert_eq!(inside, vec![255, 0, 0, 0]);
+    let err = ftgrays_at(&square, (1 << 23) - 1, 2, 2).unwrap_err();
+    assert!(err.contains("24.8 envelope") && err.contains("8388608"), "{err}");
 }

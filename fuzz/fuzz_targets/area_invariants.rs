@@ -13,7 +13,9 @@ use libfuzzer_sys::fuzz_target;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
-use rasterproof::area::{cells, exact, float, ftgrays, path_signed_area, planned, triangle_shape, AreaImage, Quantization, Semantics};
+use rasterproof::area::{
+    cells, exact, float, ftgrays, path_signed_area, planned, triangle_shape, AreaImage, Quantization, Semantics,
+};
 use rasterproof::check::{check_area_additivity, check_area_bounds, check_area_conservation};
 use rasterproof::geom::{FillRule, Point, Polygon};
 use rasterproof::strategy::triangulate;
@@ -43,13 +45,23 @@ fuzz_target!(|input: Input| {
     if outline.len() < 3 || holes.iter().any(|c| c.len() < 3) {
         return;
     }
-    let fill_rule = if input.even_odd { FillRule::EvenOdd } else { FillRule::NonZero };
-    let poly = Polygon { outline, holes, fill_rule };
+    let fill_rule = if input.even_odd {
+        FillRule::EvenOdd
+    } else {
+        FillRule::NonZero
+    };
+    let poly = Polygon {
+        outline,
+        holes,
+        fill_rule,
+    };
     let one = std::slice::from_ref(&poly);
 
     // Cells against the plain oracle, and conservation of the signed integral.
-    let from_cells: std::collections::BTreeMap<(u32, u32), BigRational> =
-        cells::accumulate(&poly, w, h).into_iter().map(|(x, y, v)| ((x, y), v)).collect();
+    let from_cells: std::collections::BTreeMap<(u32, u32), BigRational> = cells::accumulate(&poly, w, h)
+        .into_iter()
+        .map(|(x, y, v)| ((x, y), v))
+        .collect();
     let mut total = BigRational::zero();
     for y in 0..h {
         for x in 0..w {
@@ -60,11 +72,17 @@ fuzz_target!(|input: Input| {
         }
     }
     assert_eq!(total, path_signed_area(&poly), "{poly:?}");
-    let from_planned: std::collections::BTreeMap<(u32, u32), BigRational> =
-        planned::accumulate(&poly, w, h).into_iter().map(|(x, y, v)| ((x, y), v)).collect();
+    let from_planned: std::collections::BTreeMap<(u32, u32), BigRational> = planned::accumulate(&poly, w, h)
+        .into_iter()
+        .map(|(x, y, v)| ((x, y), v))
+        .collect();
     assert_eq!(from_planned, from_cells, "{poly:?}");
     for s in [Semantics::Accumulated, Semantics::AccumulatedUnclamped] {
-        assert_eq!(planned::rasterize(one, w, h, s), exact::rasterize(one, w, h, s), "{poly:?}");
+        assert_eq!(
+            planned::rasterize(one, w, h, s),
+            exact::rasterize(one, w, h, s),
+            "{poly:?}"
+        );
     }
     for s in [Semantics::True, Semantics::Accumulated] {
         let image = exact::rasterize(one, w, h, s);

@@ -39,7 +39,7 @@ use rasterproof::oracle::reason::Snapping;
 use rasterproof::oracle::theirs::{Background, Format};
 use rasterproof::oracle::{compare, explain_pixel, Theirs};
 
-const FORMATS: [Format; 3] = [Format::Mask, Format::Ids, Format::Json];
+const FORMATS: [Format; 4] = [Format::Mask, Format::Ids, Format::Json, Format::Grey];
 /// The oracle models, the planned ones 3 times in 4 (the plain ones are slow, and
 /// `planned_exact` proves them equal).
 const MODELS: [Model; 8] = [
@@ -71,7 +71,7 @@ struct Edit {
 
 impl Input {
     fn format(&self) -> Format {
-        FORMATS[usize::from(self.params[0] % 3)]
+        FORMATS[usize::from(self.params[0] % 4)]
     }
 
     fn model(&self) -> Model {
@@ -163,6 +163,12 @@ fn file(ours: &Coverage, format: Format) -> Vec<u8> {
                 }
             });
             png(DynamicImage::ImageRgba8(mask))
+        }
+        Format::Grey => {
+            let grey = image::GrayImage::from_fn(ours.width(), ours.height(), |x, y| {
+                image::Luma([if ours.owners(x, y).is_empty() { 0 } else { 255 }])
+            });
+            png(DynamicImage::ImageLuma8(grey))
         }
     }
 }

@@ -24,10 +24,10 @@ use libfuzzer_sys::fuzz_target;
 use rasterproof::convention::{Preset, TieRule};
 use rasterproof::model::{render, Model};
 use rasterproof::oracle::hunt::{
-    generate_scene, hunt, judge, pixel_kinds, primitive_count, rust_test, shrink, signatures, SceneFamily, HuntConfig, HuntFinding,
-    HuntVerdict,
+    generate_scene, hunt, judge, pixel_kinds, primitive_count, rust_test, shrink, signatures, HuntConfig, HuntFinding,
+    HuntVerdict, SceneFamily,
 };
-use rasterproof::oracle::program::{RenderFailure, FailureKind};
+use rasterproof::oracle::program::{FailureKind, RenderFailure};
 use rasterproof::oracle::{Format, Theirs};
 use rasterproof::scene::{parse_scene, Scene};
 

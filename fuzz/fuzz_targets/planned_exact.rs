@@ -105,7 +105,9 @@ fn forced_widths(primitives: &Primitives, target: &Target, width: Width, written
         }
         let id = u32::try_from(primitives.triangles.len() + k).expect("few primitives");
         let forced = PlannedSegment::forced(&line.from, &line.to, target, width);
-        check_forced("diamond line", forced, width, &only(written, id), |p, c| p.rasterize(id, c));
+        check_forced("diamond line", forced, width, &only(written, id), |p, c| {
+            p.rasterize(id, c)
+        });
     }
     for (k, poly) in primitives.polygons.iter().enumerate() {
         let id = u32::try_from(first_polygon + k).expect("few primitives");

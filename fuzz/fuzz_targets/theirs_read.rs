@@ -49,6 +49,15 @@ fn consistent(t: &Theirs) {
             }
             match t.format() {
                 Format::Mask => assert!(p.ids.is_empty() && !p.several),
+                Format::Grey => {
+                    assert!(p.ids.is_empty() && !p.several);
+                    let level = t.grey().expect("read as grey").levels[(y * t.width() + x) as usize];
+                    assert_eq!(
+                        p.covered,
+                        level != 0,
+                        "a grey pixel is covered where its level is not 0"
+                    );
+                }
                 Format::Ids => assert_eq!(p.ids.len(), usize::from(p.covered), "an ids pixel names one owner"),
                 Format::Json => {
                     assert_eq!(p.covered, !p.ids.is_empty());
@@ -75,7 +84,7 @@ fn consistent(t: &Theirs) {
 }
 
 fn read(bytes: &[u8], background: Background) {
-    for format in [Format::Mask, Format::Ids, Format::Json] {
+    for format in [Format::Mask, Format::Ids, Format::Json, Format::Grey] {
         if format != Format::Json && !small_enough(bytes) {
             continue;
         }

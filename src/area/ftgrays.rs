@@ -34,9 +34,9 @@ use super::AreaShape;
 use crate::geom::FillRule;
 
 /// Subpixel bits of a cell coordinate (24.8).
-const PIXEL_BITS: u32 = 8;
+pub(super) const PIXEL_BITS: u32 = 8;
 /// One pixel in cell units.
-const ONE_PIXEL: i64 = 1 << PIXEL_BITS;
+pub(super) const ONE_PIXEL: i64 = 1 << PIXEL_BITS;
 /// The envelope: a 24.8 coordinate lies within `±2^31`, so `|v| < 2^23` px.
 const LIMIT: i64 = 1 << 31;
 
@@ -49,20 +49,37 @@ fn to_24_8(v: &BigRational) -> Option<i64> {
     (out.abs() < LIMIT).then_some(out)
 }
 
-/// The cells of one shape: `(row, column) -> (cover, area)`, in FreeType's frame.
-type Cells = std::collections::BTreeMap<(i64, i64), (i64, i64)>;
+/// The cells of a path: `(row, column) -> (cover, area)`, in the walk's frame (FreeType's,
+/// y up, here; zeno's, y down, in [`super::zeno`]).
+pub(super) type Cells = std::collections::BTreeMap<(i64, i64), (i64, i64)>;
 
-/// FreeType's reciprocal for repeated division by `d` (`FT_UDIVPREP`): `(2^56 - 1) / d`,
-/// truncated towards zero (`2^64 - 1` shifted right by `PIXEL_BITS`, over a signed `d`).
-fn reciprocal(d: i64) -> i64 {
-    ((1i64 << (64 - PIXEL_BITS)) - 1) / d
+/// How the walk divides: a reciprocal prepared once per edge and coordinate, then a
+/// multiplication and a shift per exit point (FreeType's `FT_UDIVPREP` and `FT_UDIV`).
+/// FreeType's 64-bit form is [`FreeType64`]; zeno's 32-bit form is in [`super::zeno`].
+pub(super) trait Reciprocal {
+    /// The reciprocal for repeated division by `d` (not zero).
+    fn prepare(d: i64) -> i64;
+    /// `a` divided by the `d` that `r` was prepared for (`a >= 0`, `r >= 0` on every path
+    /// of the walk).
+    fn divide(a: i64, r: i64) -> i64;
 }
 
-/// FreeType's division by multiplication (`FT_UDIV`): `a x r` in 64-bit unsigned
-/// arithmetic (wrapping, as C's `unsigned long` does), shifted right by `64 - PIXEL_BITS`.
-#[allow(clippy::cast_sign_loss, clippy::cast_possible_wrap)]
-fn udiv(a: i64, r: i64) -> i64 {
-    ((a as u64).wrapping_mul(r as u64) >> (64 - PIXEL_BITS)) as i64
+/// FreeType's 64-bit division by multiplication.
+pub(super) struct FreeType64;
+
+impl Reciprocal for FreeType64 {
+    /// `FT_UDIVPREP`: `(2^56 - 1) / d`, truncated towards zero (`2^64 - 1` shifted right by
+    /// `PIXEL_BITS`, over a signed `d`).
+    fn prepare(d: i64) -> i64 {
+        ((1i64 << (64 - PIXEL_BITS)) - 1) / d
+    }
+
+    /// `FT_UDIV`: `a x r` in 64-bit unsigned arithmetic (wrapping, as C's `unsigned long`
+    /// does), shifted right by `64 - PIXEL_BITS`.
+    #[allow(clippy::cast_sign_loss, clippy::cast_possible_wrap)]
+    fn divide(a: i64, r: i64) -> i64 {
+        ((a as u64).wrapping_mul(r as u64) >> (64 - PIXEL_BITS)) as i64
+    }
 }
 
 /// The current cell of the walk, its cover and area, as FreeType's worker holds them.
@@ -87,12 +104,14 @@ impl Walker<'_> {
 }
 
 /// Walks the edge `(x1, y1) -> (x2, y2)` (24.8) through the cells as FreeType's
-/// `gray_render_line` does (the 64-bit form): from the cell of the start, one step per
-/// cell boundary crossed, the side of the exit decided by the exact integer
-/// `prod = dx fy1 - dy fx1` (the start's local position against the edge's direction),
-/// the exit point's other coordinate by the reciprocal division [`udiv`]; each piece adds
-/// `fy2 - fy1` to its cell's cover and `(fy2 - fy1) (fx1 + fx2)` to its area.
-fn add_edge(cells: &mut Cells, (x1, y1): (i64, i64), (x2, y2): (i64, i64)) {
+/// `gray_render_line` does (the 64-bit form; zeno's `line_to` is the same walk): from the
+/// cell of the start, one step per cell boundary crossed, the side of the exit decided by
+/// the exact integer `prod = dx fy1 - dy fx1` (the start's local position against the
+/// edge's direction), the exit point's other coordinate by `R`'s reciprocal division
+/// (the reciprocal of `dx` prepared only when the edge changes column, of `dy` only when
+/// it changes row, as `FT_UDIVPREP( ex1 != ex2, dx )` does); each piece adds `fy2 - fy1`
+/// to its cell's cover and `(fy2 - fy1) (fx1 + fx2)` to its area.
+pub(super) fn add_edge<R: Reciprocal>(cells: &mut Cells, (x1, y1): (i64, i64), (x2, y2): (i64, i64)) {
     let one = ONE_PIXEL;
     let (mut ex1, ex2) = (x1 >> PIXEL_BITS, x2 >> PIXEL_BITS);
     let (mut ey1, ey2) = (y1 >> PIXEL_BITS, y2 >> PIXEL_BITS);
@@ -121,21 +140,22 @@ fn add_edge(cells: &mut Cells, (x1, y1): (i64, i64), (x2, y2): (i64, i64)) {
         }
     } else {
         let mut prod = dx * fy1 - dy * fx1;
-        let (rx, ry) = (reciprocal(dx), reciprocal(dy));
+        let rx = if ex1 == ex2 { 0 } else { R::prepare(dx) };
+        let ry = if ey1 == ey2 { 0 } else { R::prepare(dy) };
         loop {
             let (fx2, fy2);
             if prod <= 0 && prod - dx * one > 0 {
                 // Out through the left side.
                 fx2 = 0;
-                fy2 = udiv(-prod, -rx);
+                fy2 = R::divide(-prod, -rx);
                 prod -= dy * one;
                 (w.cover, w.area) = (w.cover + fy2 - fy1, w.area + (fy2 - fy1) * (fx1 + fx2));
                 (fx1, fy1) = (one, fy2);
                 ex1 -= 1;
             } else if prod - dx * one <= 0 && prod - dx * one + dy * one > 0 {
-                // Out through the top (y up).
+                // Out through the side of greater y (the top in FreeType's frame).
                 prod -= dx * one;
-                fx2 = udiv(-prod, ry);
+                fx2 = R::divide(-prod, ry);
                 fy2 = one;
                 (w.cover, w.area) = (w.cover + fy2 - fy1, w.area + (fy2 - fy1) * (fx1 + fx2));
                 (fx1, fy1) = (fx2, 0);
@@ -144,13 +164,13 @@ fn add_edge(cells: &mut Cells, (x1, y1): (i64, i64), (x2, y2): (i64, i64)) {
                 // Out through the right side.
                 prod += dy * one;
                 fx2 = one;
-                fy2 = udiv(prod, rx);
+                fy2 = R::divide(prod, rx);
                 (w.cover, w.area) = (w.cover + fy2 - fy1, w.area + (fy2 - fy1) * (fx1 + fx2));
                 (fx1, fy1) = (0, fy2);
                 ex1 += 1;
             } else {
-                // Out through the bottom.
-                fx2 = udiv(prod, -ry);
+                // Out through the side of smaller y.
+                fx2 = R::divide(prod, -ry);
                 fy2 = 0;
                 prod += dx * one;
                 (w.cover, w.area) = (w.cover + fy2 - fy1, w.area + (fy2 - fy1) * (fx1 + fx2));
@@ -194,39 +214,57 @@ pub fn rasterize(shapes: &[AreaShape], width: u32, height: u32) -> Result<Vec<u8
                 points.push((x, y));
             }
             for i in 0..points.len() {
-                add_edge(&mut cells, points[i], points[(i + 1) % points.len()]);
+                add_edge::<FreeType64>(&mut cells, points[i], points[(i + 1) % points.len()]);
             }
         }
-        sweep(&cells, shape.fill_rule, w, h, &mut out);
+        sweep_into(&cells, shape.fill_rule, w, h, &mut out);
     }
     Ok(out)
 }
 
-/// Sweeps the cells row by row into `out` (our rows: FreeType's row `r'` is `h - 1 - r'`).
-fn sweep(cells: &Cells, rule: FillRule, w: i64, h: i64, out: &mut [u8]) {
-    let level = |v: i64| -> i64 {
-        let mut c = v >> (PIXEL_BITS * 2 + 1 - 8);
-        if c < 0 {
-            c = !c;
-        }
-        match rule {
-            FillRule::EvenOdd => {
-                c &= 511;
-                if c >= 256 {
-                    511 - c
-                } else {
-                    c
-                }
-            }
-            FillRule::NonZero => c.min(255),
-        }
-    };
-    let mut put = |x: i64, row_ft: i64, v: i64| {
+/// Sweeps the cells row by row into `out` (our rows: FreeType's row `r'` is `h - 1 - r'`),
+/// adding each pass's levels, saturating.
+fn sweep_into(cells: &Cells, rule: FillRule, w: i64, h: i64, out: &mut [u8]) {
+    sweep(cells, w, |row_ft, x, v| {
         let y = h - 1 - row_ft;
-        if let (true, Ok(k)) = ((0..w).contains(&x) && (0..h).contains(&y), usize::try_from(y * w + x)) {
-            out[k] = out[k].saturating_add(u8::try_from(level(v)).unwrap_or(u8::MAX));
+        if let (true, Ok(k)) = ((0..h).contains(&y), usize::try_from(y * w + x)) {
+            out[k] = out[k].saturating_add(level(v, rule));
         }
+    });
+}
+
+/// The level of a cell's value `v` (`cover_sum x 512 - area`, FreeType's `gray_hline`):
+/// shifted right by 9 (floor) to the 0..=256 range, a negative value complemented (`~v`,
+/// that is `-v - 1`); nonzero clamps 256 to 255, even-odd keeps the value modulo 512 and
+/// reflects it above 255 (`511 - v`). zeno's `coverage` complements only under nonzero:
+/// under even-odd its `v & 511` reflected is the same level (reflection maps `v mod 512`
+/// and `~v mod 512 = 511 - v mod 512` to one value).
+pub(super) fn level(v: i64, rule: FillRule) -> u8 {
+    let mut c = v >> (PIXEL_BITS * 2 + 1 - 8);
+    if c < 0 {
+        c = !c;
+    }
+    let c = match rule {
+        FillRule::EvenOdd => {
+            c &= 511;
+            if c >= 256 {
+                511 - c
+            } else {
+                c
+            }
+        }
+        FillRule::NonZero => c.min(255),
     };
+    u8::try_from(c).unwrap_or(u8::MAX)
+}
+
+/// Sweeps the cells row by row, each row left to right as `gray_sweep` and `gray_hline`
+/// do: `emit(row, x, v)` for each column `x` in `0..w` the row's cells reach, `v` the
+/// value `cover_sum x 512 - area` (the covers of the cells left of it and its own) at a
+/// cell, `cover_sum x 512` between cells where `cover_sum` is not zero. Cells left of the
+/// canvas carry their cover into the row; nothing is emitted right of the last cell (a
+/// closed path's covers add up to zero across a row).
+pub(super) fn sweep(cells: &Cells, w: i64, mut emit: impl FnMut(i64, i64, i64)) {
     let mut rows = cells.iter().peekable();
     while let Some((&(row, _), _)) = rows.peek() {
         let mut cover = 0i64;
@@ -234,13 +272,14 @@ fn sweep(cells: &Cells, rule: FillRule, w: i64, h: i64, out: &mut [u8]) {
         while let Some(((_, column), &(c, a))) = rows.next_if(|((r, _), _)| *r == row) {
             if cover != 0 && x != i64::MIN {
                 for between in x.max(0)..(*column).min(w) {
-                    put(between, row, cover * (ONE_PIXEL * 2));
+                    emit(row, between, cover * (ONE_PIXEL * 2));
                 }
             }
             cover += c;
-            put(*column, row, cover * (ONE_PIXEL * 2) - a);
+            if (0..w).contains(column) {
+                emit(row, *column, cover * (ONE_PIXEL * 2) - a);
+            }
             x = column + 1;
         }
-        // A closed path's covers add up to zero across a row: nothing is left to its right.
     }
 }

@@ -29,15 +29,23 @@
 //! the contenders: [`float`], the same accumulation in f32 (font-rs, ab_glyph_rasterizer),
 //! [`ftgrays`], FreeType's smooth rasterizer's integer method (26.6 points, 24.8 cells,
 //! 8-bit levels),
-//! and [`supersample`], k x k point samples per pixel counted exactly. A grey image quantizes the
-//! exact values by a named [`Quantization`].
+//! [`supersample`], k x k point samples per pixel counted exactly, and [`conflate`], the
+//! shapes' own values blended one by one (source-over);
+//! and two real renderers modelled exactly, each as its adapter feeds it the whole scene
+//! as one path: [`abglyph`], ab_glyph_rasterizer 0.1.10's f32 arithmetic (one widened
+//! buffer, one running sum, 16-bit levels), and [`zeno`], zeno 0.3.3's integers
+//! (FreeType's walk y down, 24.8 straight from f32, a 32-bit reciprocal, 8-bit levels).
+//! A grey image quantizes the exact values by a named [`Quantization`].
 
+pub mod abglyph;
 pub mod cells;
+pub mod conflate;
 pub mod exact;
 pub mod float;
 pub mod ftgrays;
 pub mod planned;
 pub mod supersample;
+pub mod zeno;
 
 use num_bigint::BigInt;
 use num_rational::BigRational;

@@ -207,18 +207,8 @@ fn run_grey(o: &Options) -> Result<ExitCode, String> {
         return Err("--as grey prints its comparison (text or JSON); --diff-out, --html and --background are for the one-sample formats".to_string());
     }
     let model = super::parse_model(o.model.as_deref().unwrap_or("exact"))?;
-    let semantics = rasterproof::area::Semantics::from_name(&o.semantics).ok_or_else(|| {
-        format!(
-            "--semantics: unknown semantics {:?} (expected true, accumulated or unclamped)",
-            o.semantics
-        )
-    })?;
-    let quantization = rasterproof::area::Quantization::from_name(&o.quantization).ok_or_else(|| {
-        format!(
-            "--quantization: unknown quantization {:?} (expected round, truncate, ftgrays or round16)",
-            o.quantization
-        )
-    })?;
+    let semantics = super::parse_semantics(&o.semantics)?;
+    let quantization = super::parse_quantization(&o.quantization)?;
     let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
     let theirs_name = o.theirs.display().to_string();
     let bytes = std::fs::read(&o.theirs).map_err(|e| format!("{theirs_name}: cannot read: {e}"))?;

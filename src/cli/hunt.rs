@@ -8,9 +8,12 @@ use std::process::ExitCode;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 
+use rasterproof::area::{Quantization, Semantics};
 use rasterproof::convention::Preset;
+use rasterproof::oracle::grey::GreyImage;
 use rasterproof::oracle::hunt::{
-    fit_convention, hunt_interruptible, rust_test, FitFirst, HuntConfig, SceneFamily, FIT_PROBES,
+    fit_convention, hunt_grey, hunt_interruptible, rust_test, FitFirst, GreyHuntConfig, GreyVerdict, HuntConfig,
+    SceneFamily, AREA_FAMILIES, FIT_PROBES,
 };
 use rasterproof::oracle::program::{Program, Renderer};
 use rasterproof::oracle::stay_alive::StayAlive;
@@ -40,9 +43,23 @@ pub struct Options {
     /// costly start (Python, a GPU context).
     #[arg(long, value_name = "COMMAND")]
     serve: Option<String>,
-    /// How to read its output: ids (default), mask or json.
+    /// How to read its output: ids (default), mask or json; or grey: an 8- or 16-bit grey
+    /// PNG of anti-aliased coverage, judged against exact area coverage (see --semantics and
+    /// --quantization; the families default to those with area).
     #[arg(long = "as", value_name = "FORMAT", default_value = "ids")]
     theirs_as: String,
+    /// With --as grey: the exact area semantics their levels approximate (true,
+    /// accumulated or unclamped).
+    #[arg(long, default_value = "true")]
+    semantics: String,
+    /// With --as grey: how their levels quantize coverage (round, truncate, ftgrays,
+    /// round16); it fixes the bit depth.
+    #[arg(long, default_value = "round")]
+    quantization: String,
+    /// With --as grey: every coordinate rounded to the nearest multiple of 2^-BITS px
+    /// (0..=16), for a renderer whose input is fixed point (FreeType's 26.6: 6).
+    #[arg(long, value_name = "BITS")]
+    grid: Option<u32>,
     /// How many scenes.
     #[arg(long, default_value_t = 200)]
     cases: u64,
@@ -92,8 +109,30 @@ pub struct Options {
 /// prints the summary; exit 1 when something was found.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
     o.run.outputs.check_writable()?;
-    let format = Format::from_name(&o.theirs_as)
-        .ok_or_else(|| format!("--as: unknown format {:?} (expected ids, mask or json)", o.theirs_as))?;
+    let format = Format::from_name(&o.theirs_as).ok_or_else(|| {
+        format!(
+            "--as: unknown format {:?} (expected ids, mask, json or grey)",
+            o.theirs_as
+        )
+    })?;
+    let grey = if format == Format::Grey {
+        if o.fit_first || o.model != "exact-snapped" {
+            return Err(
+                "--fit-first and --model are for the binary hunt; --as grey is judged against exact area \
+                        coverage (--semantics, --quantization)"
+                    .to_string(),
+            );
+        }
+        if o.run.outputs.junit.is_some() {
+            return Err("--junit: the grey hunt writes --report (JSON) and --out".to_string());
+        }
+        Some(grey_options(o)?)
+    } else {
+        if o.semantics != "true" || o.quantization != "round" || o.grid.is_some() {
+            return Err("--semantics, --quantization and --grid are for --as grey".to_string());
+        }
+        None
+    };
     if !(o.timeout > 0.0 && o.timeout.is_finite()) {
         return Err(format!("--timeout: {} is not a positive number of seconds", o.timeout));
     }
@@ -104,7 +143,9 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             rasterproof::convention::MAX_CANVAS
         ));
     }
-    let families = if o.families.is_empty() {
+    let families = if o.families.is_empty() && grey.is_some() {
+        AREA_FAMILIES.to_vec()
+    } else if o.families.is_empty() {
         SceneFamily::ALL.to_vec()
     } else {
         let mut families = Vec::new();
@@ -170,6 +211,15 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             .ok_or_else(|| format!("--preset: unknown preset {p:?} (expected one of d3d11, vulkan, gl, cts)"))?;
     }
     o.convention.apply(&mut config.overrides)?;
+    if let Some((semantics, quantization)) = grey {
+        let config = GreyHuntConfig {
+            hunt: config,
+            semantics,
+            quantization,
+            grid: o.grid,
+        };
+        return run_grey(o, &config, program.as_ref(), cmd);
+    }
     config.model = match super::parse_model(&o.model)? {
         m @ (Model::Exact | Model::ExactSnapped) => m,
         m => {
@@ -239,6 +289,75 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     } else {
         ExitCode::from(1)
     })
+}
+
+/// `--semantics` and `--quantization` of a grey hunt.
+fn grey_options(o: &Options) -> Result<(Semantics, Quantization), String> {
+    let semantics = super::parse_semantics(&o.semantics)?;
+    let quantization = super::parse_quantization(&o.quantization)?;
+    if let Some(bits) = o.grid.filter(|b| *b > 16) {
+        return Err(format!("--grid: {bits} bits is outside 0..=16"));
+    }
+    Ok((semantics, quantization))
+}
+
+/// The grey hunt (`--as grey`): runs it, writes `--out` (each finding's minimal scene,
+/// their grey PNG of it and the comparison's text) and `--report`, prints the summary;
+/// exit 1 when something was found.
+fn run_grey(o: &Options, config: &GreyHuntConfig, renderer: &dyn Renderer, cmd: &str) -> Result<ExitCode, String> {
+    let bar = o
+        .run
+        .progress_bar(config.hunt.shard.case_count(config.hunt.cases), "scenes");
+    let report = hunt_grey(renderer, config, o.run.jobs, &|| bar.inc(1), &INTERRUPTED)?;
+    bar.finish_and_clear();
+    let text = report.to_text(8);
+    let mut outputs = Outputs::new();
+    if let Some(dir) = &o.out {
+        std::fs::create_dir_all(dir).map_err(|e| format!("--out {}: cannot create: {e}", dir.display()))?;
+        for (n, f) in report.findings.iter().enumerate() {
+            let n = n + 1;
+            let path = |ext: &str| dir.join(format!("finding-{n:02}.{ext}"));
+            outputs.stage_text(&path("json"), &f.minimal.to_json())?;
+            let mut about = format!("{}\n", f.signature.describe());
+            if let GreyVerdict::Differs(r) = &f.verdict {
+                about.push_str(&r.to_text(usize::MAX));
+            }
+            outputs.stage_text(&path("txt"), &about)?;
+            if let Some(theirs) = &f.theirs {
+                let image = grey_png(theirs)?;
+                outputs.stage(&path("png"), "PNG", |w| {
+                    image.write_to(w, image::ImageFormat::Png).map_err(|e| e.to_string())
+                })?;
+            }
+        }
+    }
+    if let Some(path) = &o.run.outputs.report {
+        outputs.stage_text(path, &report.to_json(cmd).to_string())?;
+    }
+    outputs.commit()?;
+    super::print_stdout(text.trim_end())?;
+    Ok(if report.interrupted {
+        ExitCode::from(130)
+    } else if report.findings.is_empty() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
+
+/// Their grey levels as an 8- or 16-bit grey PNG image.
+fn grey_png(g: &GreyImage) -> Result<image::DynamicImage, String> {
+    let bad = || format!("a {}x{} grey image of {} levels", g.width, g.height, g.levels.len());
+    if g.bits == 16 {
+        image::ImageBuffer::from_raw(g.width, g.height, g.levels.clone())
+            .map(image::DynamicImage::ImageLuma16)
+            .ok_or_else(bad)
+    } else {
+        let bytes = g.levels.iter().map(|&v| u8::try_from(v).unwrap_or(u8::MAX)).collect();
+        image::GrayImage::from_raw(g.width, g.height, bytes)
+            .map(image::DynamicImage::ImageLuma8)
+            .ok_or_else(bad)
+    }
 }
 
 /// Set by the first Ctrl-C (or SIGTERM) of a hunt.

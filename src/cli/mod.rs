@@ -342,3 +342,16 @@ pub fn write_stdout(body: impl FnOnce(&mut dyn std::io::Write) -> std::io::Resul
 pub fn print_stdout(line: &str) -> Result<(), String> {
     write_stdout(|out| writeln!(out, "{line}"))
 }
+
+/// `--semantics NAME` (area coverage).
+pub fn parse_semantics(name: &str) -> Result<rasterproof::area::Semantics, String> {
+    rasterproof::area::Semantics::from_name(name)
+        .ok_or_else(|| format!("--semantics: unknown semantics {name:?} (expected true, accumulated or unclamped)"))
+}
+
+/// `--quantization NAME` (area coverage).
+pub fn parse_quantization(name: &str) -> Result<rasterproof::area::Quantization, String> {
+    rasterproof::area::Quantization::from_name(name).ok_or_else(|| {
+        format!("--quantization: unknown quantization {name:?} (expected round, truncate, ftgrays or round16)")
+    })
+}

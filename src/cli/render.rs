@@ -6,7 +6,7 @@ use std::process::ExitCode;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use num_rational::BigRational;
 use num_traits::{One, ToPrimitive, Zero};
-use rasterproof::area::{AreaImage, Quantization, Semantics};
+use rasterproof::area::AreaImage;
 use rasterproof::convention::Target;
 use rasterproof::coverage::picture::{legend_path, upscale};
 use rasterproof::coverage::Coverage;
@@ -175,18 +175,8 @@ fn run_area(o: &Options) -> Result<ExitCode, String> {
         );
     }
     let model = super::parse_model(o.model.as_deref().unwrap_or("exact"))?;
-    let semantics = Semantics::from_name(&o.semantics).ok_or_else(|| {
-        format!(
-            "--semantics: unknown semantics {:?} (expected true, accumulated or unclamped)",
-            o.semantics
-        )
-    })?;
-    let quantization = Quantization::from_name(&o.quantization).ok_or_else(|| {
-        format!(
-            "--quantization: unknown quantization {:?} (expected round, truncate, ftgrays or round16)",
-            o.quantization
-        )
-    })?;
+    let semantics = super::parse_semantics(&o.semantics)?;
+    let quantization = super::parse_quantization(&o.quantization)?;
     let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
     let primitives = scene.primitives();
     let fail = |e: rasterproof::model::AreaError| format!("{name}: {e} (model {model})");

@@ -15,8 +15,8 @@ pub struct Options {
     /// Small workloads (128 px canvas) and 3 repetitions: well under a minute; what CI runs.
     #[arg(long)]
     quick: bool,
-    /// Only these families: triangles, lines, polygons, clipping (repeat the option or
-    /// separate with commas; default: all).
+    /// Only these families: triangles, lines, polygons, clipping, area (repeat the option
+    /// or separate with commas; default: all).
     #[arg(long = "family", value_name = "F", value_delimiter = ',', num_args = 1..)]
     families: Vec<String>,
     /// The window's distance from the origin, px, comma-separated: 0, 2^k (k <= 40) or a
@@ -27,7 +27,7 @@ pub struct Options {
     #[arg(long, default_value_t = 1)]
     seed: u64,
     /// Write trade.json, trade.md and the pictures (speed-vs-error, error-vs-magnitude,
-    /// predicate-map; PNG and SVG) into DIR, created if missing. All or nothing: a
+    /// predicate-map, area-speed-vs-error, area-error-vs-magnitude; PNG and SVG) into DIR, created if missing. All or nothing: a
     /// failing run leaves none of them behind.
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,

@@ -6,10 +6,10 @@
 use std::collections::BTreeMap;
 
 use num_rational::BigRational;
-use num_traits::{Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 use serde_json::json;
 
-use crate::area::{exact, planned, supersample, AreaImage, AreaShape, Quantization, Semantics};
+use crate::area::{conflate, exact, planned, supersample, AreaImage, AreaShape, Quantization, Semantics};
 use crate::num::exact::{exact_text, nearest_f64};
 
 /// The supersampling counts tried (per axis).
@@ -63,17 +63,33 @@ impl GreyImage {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum GreyClass {
     /// Their level is a legal rounding of the exact value (within one quantum): another
-    /// rounding than the one named.
+    /// rounding than the one named; or, where several shapes share the pixel, the sum of
+    /// a rounding of each shape's own value (each shape quantized on its own, the levels
+    /// added).
     Quantization,
-    /// Their level is the named quantization of another semantics' value (they integrate
-    /// the winding number where the stated semantics is true coverage, or the other way
-    /// round).
+    /// Their level is a rounding (down or up) of another semantics' value, or of the
+    /// accumulated value of the whole scene as one path (every shape's winding integral
+    /// added in one buffer, where shapes of opposite orientations cancel), further from
+    /// the stated one's than precision reaches (see [`GreyClass::Precision`]): they
+    /// integrate the winding number where the stated semantics is true coverage, or the
+    /// other way round, or accumulate the scene in one buffer.
     Accumulation,
-    /// Their level is a rounding of the share of `k x k` samples covered: they
-    /// supersample.
-    Supersampling(u32),
-    /// Within two quanta of the exact value: fixed- or floating-point error.
+    /// The pixel meets several shapes and their level is a rounding of the shapes blended
+    /// one by one, source-over ([`crate::area::conflate`]: `1 - (1 - a)(1 - b)` where the
+    /// exact union is `a + b`), each shape's own value exact or supersampled, further from
+    /// the union than precision reaches and nearer to their level than the union is: they
+    /// composite each shape on its own (a seam between abutting shapes).
+    Conflation,
+    /// Fixed- or floating-point error (and none of the above): within its reach of the
+    /// exact value, the larger of two quanta and `1/256 + 2/256` of coverage per edge
+    /// meeting the pixel (at 8 bits a level and two per edge; the reach of a cell rasterizer's rounded divisions: FreeType's `ftgrays.c`
+    /// makes each crossing at most 1/256 px short, as the crate's tests of
+    /// [`crate::area::ftgrays`] check).
     Precision,
+    /// Beyond the precision bound, and a rounding of the share of `k x k` samples
+    /// covered, samples on an edge decided by any of the tie rules
+    /// ([`crate::convention::AnyTieRule`]): they supersample.
+    Supersampling(u32),
     /// None of these.
     Gross,
 }
@@ -84,6 +100,7 @@ impl GreyClass {
         match self {
             GreyClass::Quantization => "quantization".into(),
             GreyClass::Accumulation => "accumulation".into(),
+            GreyClass::Conflation => "conflation".into(),
             GreyClass::Supersampling(k) => format!("supersampling ({k}x{k})"),
             GreyClass::Precision => "precision".into(),
             GreyClass::Gross => "gross".into(),
@@ -104,7 +121,7 @@ pub struct GreyPixel {
     pub ours: u16,
     /// The exact value.
     pub exact: BigRational,
-    /// Their level less the exact value, in quanta (exact).
+    /// Their level less the exact value clamped to `[0, 1]`, in quanta (exact).
     pub error: BigRational,
     /// Why.
     pub class: GreyClass,
@@ -123,7 +140,8 @@ pub struct GreyReport {
     pub quantization: Quantization,
     /// The pixels that differ, row by row.
     pub pixels: Vec<GreyPixel>,
-    /// The largest `|their level - exact value|` over the canvas, in quanta.
+    /// The largest `|their level - exact value|` over the canvas, in quanta (the exact value
+    /// clamped to `[0, 1]`, as every quantization clamps it).
     pub max_error: BigRational,
     /// The mean of `|their level - exact value|` over the canvas, in quanta.
     pub mean_error: BigRational,
@@ -147,6 +165,109 @@ fn rounds(level: u16, v: &BigRational, s: i64, top: u16) -> bool {
     let clamp = |b: num_bigint::BigInt| b.to_i64().unwrap_or(i64::MAX).clamp(0, i64::from(top));
     let (lo, hi) = (clamp(scaled.floor().to_integer()), clamp(scaled.ceil().to_integer()));
     (lo..=hi).contains(&i64::from(level))
+}
+
+/// Pixel `(x, y)`'s accumulated value with every shape in one path (one accumulation
+/// buffer, as ab_glyph_rasterizer and zeno are fed a whole scene): the signed integrals
+/// of all the shapes added, then folded by the first shape's fill rule (a shape of the
+/// opposite orientation cancels another there).
+fn one_path(shapes: &[AreaShape], x: u32, y: u32) -> BigRational {
+    let Some(first) = shapes.first() else {
+        return BigRational::zero();
+    };
+    let (_, accumulated) = exact::pixel(shapes, i64::from(x), i64::from(y));
+    let sum: BigRational = accumulated.iter().sum();
+    crate::area::fold(first.fill_rule, &sum, Semantics::Accumulated)
+}
+
+/// Whether two values (clamped to `[0, 1]`) differ by more than `reach` quanta: an
+/// explanation by another value (another semantics, the shapes blended) is claimed only
+/// where precision could not also explain the level.
+fn beyond(a: &BigRational, b: &BigRational, s: i64, reach: &BigRational) -> bool {
+    let clamp = |v: &BigRational| v.clone().max(BigRational::zero()).min(BigRational::one());
+    (clamp(a) - clamp(b)).abs() * BigRational::from_integer(s.into()) > *reach
+}
+
+/// How many shape edges meet pixel `(x, y)`'s square.
+fn edges_meeting(shapes: &[AreaShape], x: u32, y: u32) -> u32 {
+    let edges = exact::explain(shapes, i64::from(x), i64::from(y)).edges.len();
+    u32::try_from(edges).unwrap_or(u32::MAX / 4).min(u32::MAX / 4)
+}
+
+/// Whether `level` lies between the sums of the floors and of the ceilings of each shape's
+/// own value times `s` (each clamped to `[0, top]`, the sum too): a renderer that
+/// quantizes every shape on its own and adds the levels (a glyph at a time).
+fn rounds_per_shape(
+    shapes: &[AreaShape],
+    (x, y): (u32, u32),
+    (semantics, v): (Semantics, &BigRational),
+    level: u16,
+    s: i64,
+    top: u16,
+) -> bool {
+    if shapes.len() < 2 {
+        return false;
+    }
+    let values = conflate::own_values(shapes, x, y, conflate::Own::Exact(semantics));
+    // Only where the shapes' own values add up to the pixel's (no overlap under true
+    // coverage): then the levels added are a rounding of each part of it.
+    if values.len() < 2 || values.iter().sum::<BigRational>() != *v {
+        return false;
+    }
+    let scale = BigRational::from_integer(s.into());
+    let clamp = |b: num_bigint::BigInt| b.to_i64().unwrap_or(i64::MAX).clamp(0, i64::from(top));
+    let (mut lo, mut hi) = (0i64, 0i64);
+    for v in &values {
+        let scaled = v * &scale;
+        lo += clamp(scaled.floor().to_integer());
+        hi += clamp(scaled.ceil().to_integer());
+    }
+    let top = i64::from(top);
+    (lo.min(top)..=hi.min(top)).contains(&i64::from(level))
+}
+
+/// Whether `level` is explained by conflation at pixel `(x, y)` (see
+/// [`GreyClass::Conflation`]): two or more shapes have a share of the pixel, and their own
+/// values (exact under `semantics`, or supersampled `k x k`) blended one by one round to
+/// `level` (down or up), further than `reach` quanta from the exact value `v` and from
+/// what the same values give unblended
+/// (the exact value `v`; the `k x k` share of the union under true coverage, the shares
+/// summed under the accumulated semantics), which lies further from `level`.
+fn conflated(
+    shapes: &[AreaShape],
+    x: u32,
+    y: u32,
+    semantics: Semantics,
+    (level, top): (u16, u16),
+    v: &BigRational,
+    (s, reach): (i64, &BigRational),
+) -> bool {
+    if shapes.len() < 2 {
+        return false;
+    }
+    let scale = BigRational::from_integer(s.into());
+    let theirs = BigRational::from_integer(level.into());
+    let off = |value: &BigRational| (&theirs - value * &scale).abs();
+    std::iter::once(conflate::Own::Exact(semantics))
+        .chain(SUPERSAMPLING.into_iter().map(conflate::Own::Supersampled))
+        .any(|own| {
+            let values = conflate::own_values(shapes, x, y, own);
+            if values.len() < 2 {
+                return false;
+            }
+            // What the same values give without blending: the exact value, or the `k x k`
+            // share of the union (true coverage) or the shares summed (accumulated).
+            let union = match own {
+                conflate::Own::Exact(_) => v.clone(),
+                conflate::Own::Supersampled(k) if semantics == Semantics::True => supersample::pixel(shapes, x, y, k),
+                conflate::Own::Supersampled(_) => values.iter().sum(),
+            };
+            let blended = conflate::blend(&values);
+            rounds(level, &blended, s, top)
+                && off(&blended) < off(&union)
+                && beyond(&blended, &union, s, reach)
+                && beyond(&blended, v, s, reach)
+        })
 }
 
 /// Compares `theirs` with the exact area coverage of `shapes` under `semantics`, their
@@ -189,27 +310,42 @@ pub fn compare_grey(
             let level = theirs.levels[(y * width + x) as usize];
             let v = values.value(x, y);
             let ours = quantization.level(&v);
-            let error = BigRational::from_integer(level.into()) - &v * BigRational::from_integer(s.into());
+            // Against the value a level can show: clamped to [0, 1] (the accumulated
+            // semantics' sum over overlapping shapes exceeds 1; every quantization clamps).
+            let shown = v.clone().max(BigRational::zero()).min(BigRational::one());
+            let error = BigRational::from_integer(level.into()) - shown * BigRational::from_integer(s.into());
             max_error = max_error.max(error.abs());
             total_error += error.abs();
             *histogram.entry(u32::from(level.abs_diff(ours))).or_insert(0) += 1;
             if level == ours {
                 continue;
             }
-            let class = if rounds(level, &v, s, top) {
+            // How far fixed-point arithmetic may stray here, in quanta: two, or 1/256 of
+            // coverage and 2/256 per edge meeting the pixel (a level and two per edge at 8
+            // bits). Another value explains their level only where it lies further than
+            // that from the exact one.
+            let cells = BigRational::new((1 + 2 * edges_meeting(shapes, x, y)).into(), 256.into());
+            let reach = (cells * BigRational::from_integer(s.into())).max(BigRational::from_integer(2.into()));
+            let class = if rounds(level, &v, s, top) || rounds_per_shape(shapes, (x, y), (semantics, &v), level, s, top)
+            {
                 GreyClass::Quantization
             } else if others
                 .iter()
-                .any(|o| quantization.level(&exact::value(shapes, i64::from(x), i64::from(y), *o)) == level)
+                .map(|o| exact::value(shapes, i64::from(x), i64::from(y), *o))
+                .chain(std::iter::once(one_path(shapes, x, y)))
+                .any(|other| rounds(level, &other, s, top) && beyond(&other, &v, s, &reach))
             {
                 GreyClass::Accumulation
-            } else if let Some(k) = SUPERSAMPLING
-                .into_iter()
-                .find(|&k| rounds(level, &supersample::pixel(shapes, x, y, k), s, top))
-            {
-                GreyClass::Supersampling(k)
-            } else if error.abs() <= BigRational::from_integer(2.into()) {
+            } else if conflated(shapes, x, y, semantics, (level, top), &v, (s, &reach)) {
+                GreyClass::Conflation
+            } else if error.abs() <= reach {
                 GreyClass::Precision
+            } else if let Some(k) = SUPERSAMPLING.into_iter().find(|&k| {
+                supersample::pixel_under_each_rule(shapes, x, y, k)
+                    .iter()
+                    .any(|v| rounds(level, v, s, top))
+            }) {
+                GreyClass::Supersampling(k)
             } else {
                 GreyClass::Gross
             };
@@ -319,11 +455,20 @@ pub enum GreyMethod {
     /// f32 signed-area accumulation (font-rs, ab_glyph's method), folded as FreeType
     /// folds, quantized.
     Float(Quantization),
+    /// Each shape's exact accumulated coverage, blended one by one source-over
+    /// ([`crate::area::conflate`]), quantized.
+    Conflated(Quantization),
     /// FreeType's smooth rasterizer's integer method ([`crate::area::ftgrays`]).
     FtGrays,
     /// tiny-skia's anti-aliasing: 4 x 4 samples and its levels
     /// ([`crate::area::supersample::tiny_skia_levels`]).
     TinySkia,
+    /// ab_glyph_rasterizer's f32 accumulation of every shape in one buffer, 16-bit levels
+    /// rounded from its value clamped to 1 ([`crate::area::abglyph`]).
+    AbGlyph,
+    /// zeno's rasterizer, FreeType's method with a 32-bit reciprocal and f32 input
+    /// ([`crate::area::zeno`]).
+    Zeno,
 }
 
 impl GreyMethod {
@@ -333,13 +478,21 @@ impl GreyMethod {
             GreyMethod::Exact(s, q) => format!("exact {} coverage, quantized by {}", s.name(), q.name()),
             GreyMethod::Supersampling(k, q) => format!("{k}x{k} supersampling, quantized by {}", q.name()),
             GreyMethod::Float(q) => format!("f32 accumulation, quantized by {}", q.name()),
+            GreyMethod::Conflated(q) => format!(
+                "each shape's exact accumulated coverage blended source-over (conflation), quantized by {}",
+                q.name()
+            ),
             GreyMethod::FtGrays => "FreeType's smooth rasterizer (ftgrays.c's integer method)".to_string(),
             GreyMethod::TinySkia => "tiny-skia's anti-aliasing (4x4 supersampling, its 8-bit levels)".to_string(),
+            GreyMethod::AbGlyph => {
+                "ab_glyph_rasterizer's f32 accumulation (one buffer, round16 of its value clamped to 1)".to_string()
+            }
+            GreyMethod::Zeno => "zeno's rasterizer (FreeType's method, 32-bit reciprocal, f32 input)".to_string(),
         }
     }
 
     /// The levels this method gives `shapes` on the canvas, or `None` when it cannot draw
-    /// them (FreeType's envelope).
+    /// them (FreeType's, ab_glyph's or zeno's envelope or refusals).
     pub fn levels(self, shapes: &[AreaShape], width: u32, height: u32) -> Option<Vec<u16>> {
         match self {
             GreyMethod::FtGrays => crate::area::ftgrays::rasterize(shapes, width, height)
@@ -351,12 +504,16 @@ impl GreyMethod {
                     .map(u16::from)
                     .collect(),
             ),
+            GreyMethod::AbGlyph => crate::area::abglyph::levels(shapes, width, height).ok(),
+            GreyMethod::Zeno => crate::area::zeno::rasterize(shapes, width, height)
+                .ok()
+                .map(|l| l.into_iter().map(u16::from).collect()),
             _ => self.values(shapes, width, height).map(|(image, q)| image.levels(q)),
         }
     }
 
-    /// The exact values the method quantizes, and how (`None` for FreeType's method,
-    /// which makes its levels itself, and for f32 values that are not finite).
+    /// The exact values the method quantizes, and how (`None` for the renderers' own
+    /// methods, which make their levels themselves, and for f32 values that are not finite).
     fn values(self, shapes: &[AreaShape], width: u32, height: u32) -> Option<(AreaImage, Quantization)> {
         match self {
             GreyMethod::Exact(s, q) => Some((planned::rasterize(shapes, width, height, s), q)),
@@ -368,26 +525,32 @@ impl GreyMethod {
                     q,
                 ))
             }
-            GreyMethod::FtGrays | GreyMethod::TinySkia => None,
+            GreyMethod::Conflated(q) => Some((conflate::rasterize(shapes, width, height, Semantics::Accumulated), q)),
+            GreyMethod::FtGrays | GreyMethod::TinySkia | GreyMethod::AbGlyph | GreyMethod::Zeno => None,
         }
     }
 
-    /// Its quantization (`None` for FreeType's and tiny-skia's methods, which have their own levels).
+    /// Its quantization (`None` for the methods of FreeType, tiny-skia, ab_glyph and zeno,
+    /// which make their own levels).
     fn quantization(self) -> Option<Quantization> {
         match self {
-            GreyMethod::Exact(_, q) | GreyMethod::Supersampling(_, q) | GreyMethod::Float(q) => Some(q),
-            GreyMethod::FtGrays | GreyMethod::TinySkia => None,
+            GreyMethod::Exact(_, q)
+            | GreyMethod::Supersampling(_, q)
+            | GreyMethod::Float(q)
+            | GreyMethod::Conflated(q) => Some(q),
+            GreyMethod::FtGrays | GreyMethod::TinySkia | GreyMethod::AbGlyph | GreyMethod::Zeno => None,
         }
     }
 
-    /// The same method under another quantization (FreeType's method has its own).
+    /// The same method under another quantization (the renderers' own methods keep theirs).
     fn quantized(self, q: Quantization) -> GreyMethod {
         match self {
             GreyMethod::Exact(s, _) => GreyMethod::Exact(s, q),
             GreyMethod::Supersampling(k, _) => GreyMethod::Supersampling(k, q),
             GreyMethod::Float(_) => GreyMethod::Float(q),
+            GreyMethod::Conflated(_) => GreyMethod::Conflated(q),
             GreyMethod::FtGrays => GreyMethod::FtGrays,
-            GreyMethod::TinySkia => GreyMethod::TinySkia,
+            m @ (GreyMethod::TinySkia | GreyMethod::AbGlyph | GreyMethod::Zeno) => m,
         }
     }
 
@@ -402,9 +565,13 @@ impl GreyMethod {
             out.extend(qs.iter().map(|&q| GreyMethod::Supersampling(k, q)));
         }
         out.extend(qs.iter().map(|&q| GreyMethod::Float(q)));
+        out.extend(qs.iter().map(|&q| GreyMethod::Conflated(q)));
         if bits == 8 {
             out.push(GreyMethod::FtGrays);
             out.push(GreyMethod::TinySkia);
+            out.push(GreyMethod::Zeno);
+        } else {
+            out.push(GreyMethod::AbGlyph);
         }
         out
     }

@@ -1,5 +1,5 @@
-//! Another renderer's output, read: a PNG (as a coverage mask, or as an ids PNG) or the
-//! JSON of `render --format json`. Every error names the file and what is wrong with it;
+//! Another renderer's output, read: a PNG (as a coverage mask, as an ids PNG, or as the
+//! grey levels of anti-aliased coverage) or the JSON of `render --format json`. Every error names the file and what is wrong with it;
 //! nothing here panics on a file's content.
 
 use std::fmt;
@@ -7,6 +7,7 @@ use std::fmt;
 use image::DynamicImage;
 use serde_json::Value;
 
+use super::grey::GreyImage;
 use crate::coverage::{Coverage, CoverageSink, MAX_ID};
 
 /// How to read the other renderer's file.
@@ -21,6 +22,10 @@ pub enum Format {
     Ids,
     /// The JSON of `render --format json`: every pixel's owner list.
     Json,
+    /// A grey PNG of anti-aliased coverage, 8 or 16 bits ([`GreyImage`]), for
+    /// `compare --as grey` and the grey hunt; as a mask, a pixel is covered where its
+    /// level is not zero.
+    Grey,
 }
 
 impl Format {
@@ -30,12 +35,13 @@ impl Format {
             Format::Mask => "mask",
             Format::Ids => "ids",
             Format::Json => "json",
+            Format::Grey => "grey",
         }
     }
 
     /// Parses a name written by [`Format::name`].
     pub fn from_name(name: &str) -> Option<Format> {
-        [Format::Mask, Format::Ids, Format::Json]
+        [Format::Mask, Format::Ids, Format::Json, Format::Grey]
             .into_iter()
             .find(|f| f.name() == name)
     }
@@ -85,6 +91,7 @@ enum Data {
     Mask(Vec<bool>),
     Ids { values: Vec<u32>, several: Vec<bool> },
     Json(Coverage),
+    Grey(GreyImage),
 }
 
 /// Another renderer's output for one canvas.
@@ -99,7 +106,8 @@ pub struct Theirs {
 impl Theirs {
     /// A coverage as their output in `format`: what a renderer writing that format would
     /// have written for it (`Mask`: covered or not; `Ids`: the highest owner, several
-    /// marked; `Json`: every owner). For tests and for renderers driven from Rust.
+    /// marked; `Json`: every owner; `Grey`: 8-bit levels, 255 where covered). For tests
+    /// and for renderers driven from Rust.
     pub fn from_coverage(coverage: &Coverage, format: Format) -> Theirs {
         let (width, height) = (coverage.width(), coverage.height());
         let n = pixel_count(width, height);
@@ -120,6 +128,18 @@ impl Theirs {
                     several[k] = ids.len() > 1;
                 }
                 Data::Ids { values, several }
+            }
+            Format::Grey => {
+                let mut levels = vec![0; n];
+                for (x, y, _) in coverage.iter() {
+                    levels[index(width, x, y)] = 255;
+                }
+                Data::Grey(GreyImage {
+                    width,
+                    height,
+                    bits: 8,
+                    levels,
+                })
             }
         };
         Theirs {
@@ -148,6 +168,13 @@ impl Theirs {
         };
         match format {
             Format::Json => read_json(bytes).map_err(err),
+            Format::Grey => {
+                let grey = GreyImage::read_png(bytes, file).map_err(|e| TheirsError {
+                    file: file.to_string(),
+                    message: e.strip_prefix(&format!("{file}: ")).unwrap_or(&e).to_string(),
+                })?;
+                Ok(Theirs::from_grey(grey))
+            }
             Format::Mask | Format::Ids => {
                 if !bytes.starts_with(b"\x89PNG\r\n\x1a\n") {
                     return Err(err(format!(
@@ -163,6 +190,24 @@ impl Theirs {
                     read_ids(&image).map_err(err)
                 }
             }
+        }
+    }
+
+    /// A grey image as their output (`Format::Grey`).
+    pub fn from_grey(grey: GreyImage) -> Theirs {
+        Theirs {
+            width: grey.width,
+            height: grey.height,
+            format: Format::Grey,
+            data: Data::Grey(grey),
+        }
+    }
+
+    /// Their grey levels, when they were read as `Format::Grey`.
+    pub fn grey(&self) -> Option<&GreyImage> {
+        match &self.data {
+            Data::Grey(g) => Some(g),
+            _ => None,
         }
     }
 
@@ -187,6 +232,10 @@ impl Theirs {
         match &self.data {
             Data::Mask(m) => TheirPixel {
                 covered: m[k],
+                ..TheirPixel::default()
+            },
+            Data::Grey(g) => TheirPixel {
+                covered: g.levels[k] != 0,
                 ..TheirPixel::default()
             },
             Data::Ids { values, several } => TheirPixel {
@@ -221,6 +270,13 @@ impl Theirs {
                 .map(|(k, _)| at(k))
                 .collect(),
             Data::Json(c) => c.iter().map(|(x, y, _)| (x, y)).collect(),
+            Data::Grey(g) => g
+                .levels
+                .iter()
+                .enumerate()
+                .filter(|(_, &v)| v != 0)
+                .map(|(k, _)| at(k))
+                .collect(),
         }
     }
 
@@ -230,6 +286,7 @@ impl Theirs {
             Data::Mask(m) => m.iter().filter(|&&c| c).count(),
             Data::Ids { values, .. } => values.iter().filter(|&&v| v != 0).count(),
             Data::Json(c) => c.covered_pixels(),
+            Data::Grey(g) => g.levels.iter().filter(|&&v| v != 0).count(),
         }
     }
 }

@@ -25,29 +25,44 @@ pub enum Metric {
         /// How many samples.
         samples: u64,
     },
+    /// A distribution of absolute coverage errors, in quanta of 1/255 (area coverage).
+    Quanta {
+        /// What is measured.
+        name: &'static str,
+        /// The largest error (0 exactly when every pixel is exact).
+        max: f64,
+        /// The mean error over `pixels`.
+        mean: f64,
+        /// The pixels measured: those where the exact value or the model's is not zero.
+        pixels: u64,
+    },
 }
 
 impl Metric {
     /// The metric's name.
     pub fn name(&self) -> &'static str {
         match self {
-            Metric::Rate { name, .. } | Metric::Ulps { name, .. } => name,
+            Metric::Rate { name, .. } | Metric::Ulps { name, .. } | Metric::Quanta { name, .. } => name,
         }
     }
 
     /// The unit its [cells](Metric::cell) are written in, as a table's header says it:
-    /// `per million` for a rate, `ulps median/max` for a distribution in ulps.
+    /// `per million` for a rate, `ulps median/max` for a distribution in ulps,
+    /// `1/255 max/mean` for coverage errors in quanta.
     ///
     /// ```
     /// use rasterproof::trade::Metric;
     /// assert_eq!(Metric::Rate { name: "gaps", count: 1, of: 4 }.unit(), "per million");
     /// let ulps = Metric::Ulps { name: "sum", median: 0.5, max: 1.0, samples: 3 };
     /// assert_eq!(ulps.unit(), "ulps median/max");
+    /// let q = Metric::Quanta { name: "coverage error", max: 1.5, mean: 0.25, pixels: 9 };
+    /// assert_eq!((q.unit(), q.cell().as_str()), ("1/255 max/mean", "1.5/0.25"));
     /// ```
     pub fn unit(&self) -> &'static str {
         match self {
             Metric::Rate { .. } => "per million",
             Metric::Ulps { .. } => "ulps median/max",
+            Metric::Quanta { .. } => "1/255 max/mean",
         }
     }
 
@@ -55,7 +70,7 @@ impl Metric {
     pub fn is_zero(&self) -> bool {
         match self {
             Metric::Rate { count, .. } => *count == 0,
-            Metric::Ulps { max, .. } => *max == 0.0,
+            Metric::Ulps { max, .. } | Metric::Quanta { max, .. } => *max == 0.0,
         }
     }
 
@@ -67,7 +82,8 @@ impl Metric {
         }
     }
 
-    /// A short cell: `123.4` per million (`0` exactly), or `median/max` ulps.
+    /// A short cell: `123.4` per million (`0` exactly), `median/max` ulps, or `max/mean`
+    /// quanta.
     pub fn cell(&self) -> String {
         match self {
             Metric::Rate { count: 0, .. } => "0".into(),
@@ -75,6 +91,7 @@ impl Metric {
             Metric::Ulps {
                 median, max, samples, ..
             } => format!("{}/{} (n={samples})", short(*median), short(*max)),
+            Metric::Quanta { max, mean, .. } => format!("{}/{}", short(*max), short(*mean)),
         }
     }
 }

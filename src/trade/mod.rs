@@ -40,7 +40,13 @@
 //! The plain oracles (`exact-plain`, `exact-snapped-plain`, 10^3 to 10^4 pixels a
 //! second) run on a small subset of each workload: the primitives that cover a 32x32
 //! corner, in order, until about 1000 of its pixels.
+//!
+//! The family `area` ([`area`]) trades anti-aliased area coverage the same way: glyphs at
+//! 9 to 200 px per em, an abutting mesh and slivers; the planned exact engine against
+//! f32 accumulation, FreeType's 24.8 integers and 4 x 4 supersampling; per pixel the
+//! absolute coverage error against the exact value.
 
+pub mod area;
 mod clipping;
 mod exact_only;
 mod far;
@@ -104,11 +110,19 @@ pub enum Family {
     Polygons,
     /// Cohen-Sutherland and Sutherland-Hodgman, exact, f64 and f32.
     Clipping,
+    /// Anti-aliased area coverage: glyphs, an abutting mesh, slivers ([`area`]).
+    Area,
 }
 
 impl Family {
     /// Every family, in report order.
-    pub const ALL: [Family; 4] = [Family::Triangles, Family::Lines, Family::Polygons, Family::Clipping];
+    pub const ALL: [Family; 5] = [
+        Family::Triangles,
+        Family::Lines,
+        Family::Polygons,
+        Family::Clipping,
+        Family::Area,
+    ];
 
     /// The name on the command line and in the report.
     pub fn name(self) -> &'static str {
@@ -117,6 +131,7 @@ impl Family {
             Family::Lines => "lines",
             Family::Polygons => "polygons",
             Family::Clipping => "clipping",
+            Family::Area => "area",
         }
     }
 
@@ -273,6 +288,7 @@ impl Config {
                 min_pass_seconds: 0.002,
                 plain_pixels: 150,
                 samples: 400,
+                area_subset: 4,
             }
         } else {
             Sizes {
@@ -282,6 +298,7 @@ impl Config {
                 min_pass_seconds: 0.02,
                 plain_pixels: 1000,
                 samples: 4000,
+                area_subset: 12,
             }
         }
     }
@@ -302,6 +319,8 @@ pub(crate) struct Sizes {
     pub(crate) plain_pixels: u64,
     /// Barycentric and Gouraud samples per workload and magnitude.
     pub(crate) samples: usize,
+    /// The side of the area family's subset window, px.
+    pub(crate) area_subset: u32,
 }
 
 /// Runs the trade: every workload of `config`'s families, its speed, its plan and its
@@ -322,6 +341,7 @@ pub fn run(config: &Config, progress: &mut dyn FnMut(&str)) -> TradeReport {
             Family::Lines => lines::run(config, &sizes, progress),
             Family::Polygons => polygons::run(config, &sizes, progress),
             Family::Clipping => clipping::run(config, &sizes, progress),
+            Family::Area => area::run(config, &sizes, progress),
         };
         workloads.extend(reports);
     }

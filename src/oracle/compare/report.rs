@@ -476,7 +476,7 @@ fn owners_text(ids: &[u32]) -> String {
 fn their_text(t: &TheirPixel, format: Format) -> String {
     match (format, t.covered) {
         (_, false) => "none".to_string(),
-        (Format::Mask, true) => "covered".to_string(),
+        (Format::Mask | Format::Grey, true) => "covered".to_string(),
         (Format::Ids, true) if t.several => format!("{} and others (several owners)", owners_text(&t.ids)),
         _ => owners_text(&t.ids),
     }

@@ -14,12 +14,14 @@
 //! This module holds the configuration ([`HuntConfig`]) and the run loop ([`hunt`]); its
 //! parts, each re-exported here: the scene families (`families`), the verdict on one
 //! scene and the signatures of a failure (`verdict`), the report (`report`), a finding as
-//! a Rust test (`test_text`) and the convention a fit names (`convention`). The shrinker
+//! a Rust test (`test_text`), the convention a fit names (`convention`), and the grey
+//! hunt (`grey`: anti-aliased output against exact area coverage, [`hunt_grey`]). The shrinker
 //! is the harness's ([`crate::harness::shrink`], re-exported here as [`shrink`]), run
 //! with no grid step.
 
 mod convention;
 mod families;
+mod grey;
 mod html;
 mod merge;
 mod report;
@@ -34,6 +36,10 @@ use std::time::{Duration, Instant};
 pub use crate::harness::shrink::{primitive_count, shrink, shrink_batched};
 pub use convention::{fit_convention, hunt_convention, preferred, FitFirst, FIT_PROBES};
 pub use families::{float32_exact, generate_scene, SceneFamily};
+pub use grey::{
+    grey_signatures, hunt_grey, judge_grey, on_grid, GreyFinding, GreyHuntConfig, GreyHuntReport, GreySignature,
+    GreyVerdict, AREA_FAMILIES,
+};
 pub use merge::merge_reports;
 pub use report::{HuntFinding, HuntReport, REPORT_FORMAT, REPORT_VERSION};
 pub use test_text::rust_test;

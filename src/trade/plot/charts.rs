@@ -1,11 +1,13 @@
 //! Pictures (a) and (b) of the trade: speed against error per workload with the Pareto
-//! front, and error against coordinate magnitude, one line per contender.
+//! front, and error against coordinate magnitude, one line per contender; each for the
+//! binary models' workloads and again for the area family's (whose picture (b) also shows
+//! the largest coverage error in quanta).
 
 use plotters::prelude::*;
 
 use super::{colour, err, legend, legend_entries, Area, SANS};
 use crate::trade::report::{Outcome, SpeedOutcome, TradeReport, WorkloadReport};
-use crate::trade::Magnitude;
+use crate::trade::{Family, Magnitude};
 
 /// A rate of 0 is drawn here, on the tick labelled `0`.
 const ZERO: f64 = 0.1;
@@ -37,7 +39,7 @@ fn speed_label(v: f64) -> String {
 
 /// A workload's headline rate per million at `m` for `contender` (`None`: refused or
 /// not run).
-fn headline(w: &WorkloadReport, contender: &str, m: Magnitude) -> Option<f64> {
+pub(super) fn headline(w: &WorkloadReport, contender: &str, m: Magnitude) -> Option<f64> {
     let c = w.cell(contender, m)?;
     match &c.outcome {
         Outcome::Refused(_) => None,
@@ -71,25 +73,35 @@ fn grid_shape(n: usize) -> (usize, usize) {
     (n.div_ceil(cols).max(1), cols)
 }
 
-/// Picture (a).
-pub(super) fn speed_error<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport) -> Result<(), String> {
+/// The workloads of the area family (`area`) or of the others.
+pub(super) fn workloads_of(r: &TradeReport, area: bool) -> Vec<&WorkloadReport> {
+    r.workloads
+        .iter()
+        .filter(|w| (w.family == Family::Area) == area)
+        .collect()
+}
+
+/// Picture (a): the binary models' workloads, or (`area`) the area family's.
+pub(super) fn speed_error<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport, area: bool) -> Result<(), String> {
     root.fill(&WHITE).map_err(err)?;
     let m = speed_error_magnitude(r);
+    let workloads = workloads_of(r, area);
     let (_, h) = root.dim_in_pixel();
     let (top, rest) = root.split_vertically(56);
+    let what = if area { "Area coverage: speed" } else { "Speed" };
     top.titled(
         &format!(
-            "Speed against error at {m} px from the origin, per workload: each contender a point; ringed and joined \
-             in black: the Pareto front"
+            "{what} against error at {m} px from the origin, per workload: each contender a point; ringed and \
+             joined in black: the Pareto front"
         ),
         (SANS, 26),
     )
     .map_err(err)?;
     let (grid, bottom) = rest.split_vertically(h - 56 - 150);
-    let n = r.workloads.len();
+    let n = workloads.len();
     let (rows, cols) = grid_shape(n);
     let panels = grid.split_evenly((rows, cols));
-    for (panel, w) in panels.iter().zip(&r.workloads) {
+    for (panel, w) in panels.iter().zip(workloads.iter().copied()) {
         let points: Vec<(String, f64, f64, bool)> = w
             .speed
             .iter()
@@ -183,19 +195,166 @@ pub(super) fn speed_error<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport) 
             .map_err(err)?;
         }
     }
-    legend(
-        &bottom,
-        &legend_entries(r),
-        6,
+    let note = if area {
+        "Circles: exact models; triangles: the contenders. Speed: each model's own function at the origin, median of \
+         the round-robin repetitions.\nError: pixels whose coverage is off the exact value by more than 1/2 quantum \
+         (1/510), per million pixels that the exact answer or the model covers; 0 is exactly zero."
+    } else {
         "Circles: exact and integer models; triangles: float models. Speed: drawing the prepared workload at the \
          origin, median of the round-robin repetitions.\nError: per million pixels the exact answer or the model covers (lines: \
-         line pixels; clipping: output vertices); 0 is exactly zero. A refused contender is not drawn.",
-    )
+         line pixels; clipping: output vertices); 0 is exactly zero. A refused contender is not drawn."
+    };
+    legend(&bottom, &legend_entries(&workloads), 6, note)
 }
 
-/// Picture (b).
+/// A y axis of picture (b): what it shows and its log range.
+pub(super) struct YAxis {
+    /// The value of a contender at a magnitude (`None`: refused or not run); an exact zero
+    /// is [`YAxis::zero`].
+    pub(super) value: fn(&WorkloadReport, &str, Magnitude) -> Option<f64>,
+    /// The axis's ends.
+    pub(super) bottom: f64,
+    pub(super) top: f64,
+    /// Where zero is drawn (labelled `0`).
+    pub(super) zero: f64,
+    /// Where the refusal crosses start.
+    pub(super) cross: f64,
+    /// Its description.
+    pub(super) desc: String,
+}
+
+impl YAxis {
+    /// The headline rate per million, as the binary workloads' panels show it.
+    fn headline(first: &str) -> YAxis {
+        YAxis {
+            value: headline,
+            bottom: BOTTOM,
+            top: TOP,
+            zero: ZERO,
+            cross: 1.5e6,
+            desc: format!("{first} per million"),
+        }
+    }
+}
+
+/// The largest coverage error in quanta of 1/255 at `m` (the area family's
+/// [`Metric::Quanta`](crate::trade::Metric::Quanta)); zero at [`QUANTA_ZERO`].
+pub(super) fn max_quanta(w: &WorkloadReport, contender: &str, m: Magnitude) -> Option<f64> {
+    let c = w.cell(contender, m)?;
+    match &c.outcome {
+        Outcome::Refused(_) => None,
+        Outcome::Measured { metrics, .. } => metrics.iter().find_map(|x| match x {
+            crate::trade::Metric::Quanta { max, .. } if *max == 0.0 => Some(QUANTA_ZERO),
+            crate::trade::Metric::Quanta { max, .. } => Some(max.max(QUANTA_SMALLEST)),
+            _ => None,
+        }),
+    }
+}
+
+/// A coverage error of 0 quanta is drawn here; non-zero errors below
+/// [`QUANTA_SMALLEST`] at it.
+pub(super) const QUANTA_ZERO: f64 = 1e-7;
+const QUANTA_SMALLEST: f64 = 2e-7;
+
+/// One panel of picture (b): `w`'s contenders over the magnitudes on `axis`.
+fn magnitude_panel<DB: DrawingBackend>(
+    panel: &Area<DB>,
+    w: &WorkloadReport,
+    mags: &[Magnitude],
+    axis: &YAxis,
+) -> Result<(), String> {
+    let labels: Vec<String> = mags.iter().map(|m| m.label()).collect();
+    let n = mags.len();
+    let last = u32::try_from(n.saturating_sub(1)).map_err(err)?;
+    let mut chart = ChartBuilder::on(panel)
+        .caption(w.name.clone(), (SANS, 16))
+        .margin(10)
+        .x_label_area_size(44)
+        .y_label_area_size(64)
+        .build_cartesian_2d((0u32..last).into_segmented(), (axis.bottom..axis.top).log_scale())
+        .map_err(err)?;
+    let label_of = |v: &SegmentValue<u32>| match v {
+        SegmentValue::CenterOf(i) | SegmentValue::Exact(i) => labels
+            .get(usize::try_from(*i).unwrap_or(usize::MAX))
+            .cloned()
+            .unwrap_or_default(),
+        SegmentValue::Last => String::new(),
+    };
+    let zero = axis.zero;
+    chart
+        .configure_mesh()
+        .x_desc("magnitude M, px (2^k)")
+        .y_desc(axis.desc.clone())
+        .x_labels(n)
+        .y_labels(8)
+        .x_label_formatter(&label_of)
+        .y_label_formatter(&|v| {
+            if (v / zero - 1.0).abs() < 1e-6 {
+                "0".into()
+            } else if *v < zero {
+                String::new()
+            } else if *v >= 1.0 {
+                format!("{v:.0}")
+            } else {
+                format!("{v:.0e}")
+            }
+        })
+        .axis_desc_style((SANS, 14))
+        .label_style((SANS, 12))
+        .draw()
+        .map_err(err)?;
+    let mut refusing = 0;
+    for s in &w.speed {
+        let c = colour(&s.contender);
+        let mut run: Vec<(SegmentValue<u32>, f64)> = Vec::new();
+        let any_refused = w
+            .cells
+            .iter()
+            .any(|c| c.contender == s.contender && matches!(c.outcome, Outcome::Refused(_)));
+        // Each refusing contender's crosses a little lower than the last one's.
+        let cross_y = axis.cross / 2f64.powi(refusing);
+        if any_refused {
+            refusing += 1;
+        }
+        let mut runs = Vec::new();
+        for (k, &m) in mags.iter().enumerate() {
+            let x = SegmentValue::CenterOf(u32::try_from(k).map_err(err)?);
+            match w.cell(&s.contender, m).map(|c| &c.outcome) {
+                Some(Outcome::Measured { .. }) => {
+                    run.push((x, (axis.value)(w, &s.contender, m).unwrap_or(axis.zero)));
+                }
+                Some(Outcome::Refused(_)) => {
+                    runs.push(std::mem::take(&mut run));
+                    chart
+                        .draw_series(std::iter::once(Cross::new((x, cross_y), 7, c.stroke_width(3))))
+                        .map_err(err)?;
+                }
+                None => runs.push(std::mem::take(&mut run)),
+            }
+        }
+        runs.push(run);
+        for line in runs.into_iter().filter(|l| !l.is_empty()) {
+            let width = if s.exact { 2 } else { 3 };
+            chart
+                .draw_series(LineSeries::new(line.clone(), c.stroke_width(width)))
+                .map_err(err)?;
+            for p in line {
+                if s.exact {
+                    chart.draw_series(std::iter::once(Circle::new(p, 4, c.filled())))
+                } else {
+                    chart.draw_series(std::iter::once(TriangleMarker::new(p, 6, c.filled())))
+                }
+                .map_err(err)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Picture (b): the binary models' workloads, one panel each on the headline rate.
 pub(super) fn error_magnitude<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport) -> Result<(), String> {
     root.fill(&WHITE).map_err(err)?;
+    let workloads = workloads_of(r, false);
     let (_, h) = root.dim_in_pixel();
     let (top, rest) = root.split_vertically(56);
     top.titled(
@@ -204,95 +363,62 @@ pub(super) fn error_magnitude<DB: DrawingBackend>(root: &Area<DB>, r: &TradeRepo
     )
     .map_err(err)?;
     let (grid, bottom) = rest.split_vertically(h - 56 - 150);
-    let mags = r.config.magnitudes.clone();
-    let labels: Vec<String> = mags.iter().map(|m| m.label()).collect();
-    let n = mags.len();
-    let (rows, cols) = grid_shape(r.workloads.len());
+    let (rows, cols) = grid_shape(workloads.len());
     let panels = grid.split_evenly((rows, cols));
-    let last = u32::try_from(n.saturating_sub(1)).map_err(err)?;
-    for (panel, w) in panels.iter().zip(&r.workloads) {
+    for (panel, w) in panels.iter().zip(workloads.iter().copied()) {
         let first = w
             .cells
             .iter()
             .find_map(|c| c.outcome.headline().map(|h| h.name()))
             .unwrap_or("errors");
-        let mut chart = ChartBuilder::on(panel)
-            .caption(w.name.clone(), (SANS, 16))
-            .margin(10)
-            .x_label_area_size(44)
-            .y_label_area_size(64)
-            .build_cartesian_2d((0u32..last).into_segmented(), (BOTTOM..TOP).log_scale())
-            .map_err(err)?;
-        let label_of = |v: &SegmentValue<u32>| match v {
-            SegmentValue::CenterOf(i) | SegmentValue::Exact(i) => labels
-                .get(usize::try_from(*i).unwrap_or(usize::MAX))
-                .cloned()
-                .unwrap_or_default(),
-            SegmentValue::Last => String::new(),
-        };
-        chart
-            .configure_mesh()
-            .x_desc("magnitude M, px (2^k)")
-            .y_desc(format!("{first} per million"))
-            .x_labels(n)
-            .y_labels(8)
-            .x_label_formatter(&label_of)
-            .y_label_formatter(&|v| rate_label(*v))
-            .axis_desc_style((SANS, 14))
-            .label_style((SANS, 12))
-            .draw()
-            .map_err(err)?;
-        let mut refusing = 0;
-        for s in &w.speed {
-            let c = colour(&s.contender);
-            let mut run: Vec<(SegmentValue<u32>, f64)> = Vec::new();
-            let any_refused = w
-                .cells
-                .iter()
-                .any(|c| c.contender == s.contender && matches!(c.outcome, Outcome::Refused(_)));
-            // Each refusing contender's crosses a little lower than the last one's.
-            let cross_y = 1.5e6 / 2f64.powi(refusing);
-            if any_refused {
-                refusing += 1;
-            }
-            let mut runs = Vec::new();
-            for (k, &m) in mags.iter().enumerate() {
-                let x = SegmentValue::CenterOf(u32::try_from(k).map_err(err)?);
-                match w.cell(&s.contender, m).map(|c| &c.outcome) {
-                    Some(Outcome::Measured { .. }) => {
-                        run.push((x, headline(w, &s.contender, m).unwrap_or(ZERO)));
-                    }
-                    Some(Outcome::Refused(_)) => {
-                        runs.push(std::mem::take(&mut run));
-                        chart
-                            .draw_series(std::iter::once(Cross::new((x, cross_y), 7, c.stroke_width(3))))
-                            .map_err(err)?;
-                    }
-                    None => runs.push(std::mem::take(&mut run)),
-                }
-            }
-            runs.push(run);
-            for line in runs.into_iter().filter(|l| !l.is_empty()) {
-                let width = if s.exact { 2 } else { 3 };
-                chart
-                    .draw_series(LineSeries::new(line.clone(), c.stroke_width(width)))
-                    .map_err(err)?;
-                for p in line {
-                    if s.exact {
-                        chart.draw_series(std::iter::once(Circle::new(p, 4, c.filled())))
-                    } else {
-                        chart.draw_series(std::iter::once(TriangleMarker::new(p, 6, c.filled())))
-                    }
-                    .map_err(err)?;
-                }
-            }
-        }
+        magnitude_panel(panel, w, &r.config.magnitudes, &YAxis::headline(first))?;
     }
     legend(
         &bottom,
-        &legend_entries(r),
+        &legend_entries(&workloads),
         6,
         "A cross near the top: the model refuses the workload there (integer envelope, Bresenham endpoints beyond \
          2^24, float range). Error per million as in the tables; 0 is exactly zero.",
+    )
+}
+
+/// The area picture of error against magnitude: one column per area workload, the
+/// pixels off by more than half a quantum per million above, the largest coverage error
+/// in quanta of 1/255 below.
+pub(super) fn area_error_magnitude<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport) -> Result<(), String> {
+    root.fill(&WHITE).map_err(err)?;
+    let workloads = workloads_of(r, true);
+    let (_, h) = root.dim_in_pixel();
+    let (top, rest) = root.split_vertically(56);
+    top.titled(
+        "Area coverage: error against coordinate magnitude (the window at M px from the origin), one line per \
+         contender",
+        (SANS, 26),
+    )
+    .map_err(err)?;
+    let (grid, bottom) = rest.split_vertically(h - 56 - 150);
+    let cols = workloads.len().max(1);
+    let panels = grid.split_evenly((2, cols));
+    let quanta = YAxis {
+        value: max_quanta,
+        bottom: 3e-8,
+        top: 1e5,
+        zero: QUANTA_ZERO,
+        cross: 5e4,
+        desc: "largest coverage error, quanta of 1/255".into(),
+    };
+    for (k, w) in workloads.iter().enumerate() {
+        let rate = YAxis::headline(crate::trade::area::OFF_HALF_QUANTUM);
+        magnitude_panel(&panels[k], w, &r.config.magnitudes, &rate)?;
+        magnitude_panel(&panels[cols + k], w, &r.config.magnitudes, &quanta)?;
+    }
+    legend(
+        &bottom,
+        &legend_entries(&workloads),
+        7,
+        "Above: pixels off the exact coverage by more than 1/2 quantum (1/510) per million covered; below: the \
+         largest error in quanta of 1/255 (log; 0 is exactly zero). Circles: exact models; triangles: the contenders.\n\
+         A cross near the top: refused (ftgrays's 24.8 envelope ends at 2^23 px). Exact models and supersampling: \
+         translation-invariant, measured at the origin; f32 and ftgrays: computed at the placed coordinates.",
     )
 }

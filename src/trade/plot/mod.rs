@@ -1,6 +1,7 @@
 //! The trade's pictures, drawn with plotters as PNG and SVG: (a) speed against error per
 //! workload with the Pareto front, (b) error against coordinate magnitude, one line per
-//! contender (both in `charts`), (c) the predicate map (`map`). Text is drawn with DejaVu
+//! contender, each for the binary models' workloads and again for the area family's (all
+//! in `charts`), (c) the predicate map (`map`). Text is drawn with DejaVu
 //! Sans, compiled in from `assets/fonts/` (its licence beside it), so no system font
 //! library is needed. [`TradeReport::pictures`] draws them all.
 
@@ -12,7 +13,7 @@ use std::sync::OnceLock;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::report::TradeReport;
+use super::report::{TradeReport, WorkloadReport};
 
 /// DejaVu Sans 2.37 (Debian's fonts-dejavu-core; licence: assets/fonts/LICENSE-DejaVu.txt).
 static FONT: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
@@ -74,7 +75,8 @@ fn svg(w: u32, h: u32, f: impl FnOnce(&Area<SVGBackend<'_>>) -> Result<(), Strin
 
 /// The colour of a contender, the same in every picture: blues for the exact models,
 /// oranges and browns for the integer ones, red for f32, purple for f64 (lighter:
-/// naive).
+/// naive); the area contenders alike (`ftgrays` orange, supersampling purple, tiny-skia
+/// pink).
 fn colour(name: &str) -> RGBColor {
     match name {
         "exact-plain" => RGBColor(8, 48, 107),
@@ -87,14 +89,21 @@ fn colour(name: &str) -> RGBColor {
         "float64" | "dda64" | "cs-f64" | "sh-f64" => RGBColor(117, 50, 160),
         "float32-naive" => RGBColor(247, 129, 191),
         "float64-naive" => RGBColor(150, 150, 150),
+        "area-plain" => RGBColor(8, 48, 107),
+        "area-cells" => RGBColor(0, 109, 44),
+        "area-planned" => RGBColor(33, 113, 181),
+        "f32-accum" => RGBColor(215, 25, 28),
+        "ftgrays" => RGBColor(230, 120, 0),
+        "supersample-4x4" => RGBColor(117, 50, 160),
+        "tiny-skia-4x4" => RGBColor(247, 129, 191),
         _ => RGBColor(0, 0, 0),
     }
 }
 
-/// Every contender of the report, in first-seen order, with whether it is exact.
-fn contenders(r: &TradeReport) -> Vec<(String, bool)> {
+/// Every contender of `workloads`, in first-seen order, with whether it is exact.
+fn contenders(workloads: &[&WorkloadReport]) -> Vec<(String, bool)> {
     let mut out: Vec<(String, bool)> = Vec::new();
-    for w in &r.workloads {
+    for w in workloads {
         for s in &w.speed {
             if !out.iter().any(|(n, _)| *n == s.contender) {
                 out.push((s.contender.clone(), s.exact));
@@ -135,16 +144,17 @@ fn legend<DB: DrawingBackend>(
     Ok(())
 }
 
-fn legend_entries(r: &TradeReport) -> Vec<(String, RGBColor, bool)> {
-    contenders(r)
+fn legend_entries(workloads: &[&WorkloadReport]) -> Vec<(String, RGBColor, bool)> {
+    contenders(workloads)
         .into_iter()
         .map(|(n, e)| (n.clone(), colour(&n), e))
         .collect()
 }
 
 impl TradeReport {
-    /// The pictures, PNG and SVG: `speed-vs-error`, `error-vs-magnitude`,
-    /// `predicate-map` (see the module docs of [`crate::trade`]).
+    /// The pictures, PNG and SVG: `speed-vs-error`, `error-vs-magnitude` (the binary
+    /// models' workloads), `area-speed-vs-error`, `area-error-vs-magnitude` (the area
+    /// family's), `predicate-map` (see the module docs of [`crate::trade`]).
     ///
     /// # Errors
     /// Drawing fails (the compiled-in font unreadable, an encoder error).
@@ -158,8 +168,14 @@ impl TradeReport {
                 bytes,
             });
         };
-        push("speed-vs-error.png", png(w, h, |a| charts::speed_error(a, self))?);
-        push("speed-vs-error.svg", svg(w, h, |a| charts::speed_error(a, self))?);
+        push(
+            "speed-vs-error.png",
+            png(w, h, |a| charts::speed_error(a, self, false))?,
+        );
+        push(
+            "speed-vs-error.svg",
+            svg(w, h, |a| charts::speed_error(a, self, false))?,
+        );
         push(
             "error-vs-magnitude.png",
             png(w, h, |a| charts::error_magnitude(a, self))?,
@@ -167,6 +183,23 @@ impl TradeReport {
         push(
             "error-vs-magnitude.svg",
             svg(w, h, |a| charts::error_magnitude(a, self))?,
+        );
+        push(
+            "area-speed-vs-error.png",
+            png(w, 1100, |a| charts::speed_error(a, self, true))?,
+        );
+        push(
+            "area-speed-vs-error.svg",
+            svg(w, 1100, |a| charts::speed_error(a, self, true))?,
+        );
+        let (aw, ah) = (2400, 1200);
+        push(
+            "area-error-vs-magnitude.png",
+            png(aw, ah, |a| charts::area_error_magnitude(a, self))?,
+        );
+        push(
+            "area-error-vs-magnitude.svg",
+            svg(aw, ah, |a| charts::area_error_magnitude(a, self))?,
         );
         let (mw, mh) = (1300, 1360);
         push(

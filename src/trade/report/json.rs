@@ -15,7 +15,7 @@ impl TradeReport {
     /// ```text
     /// {"format": "rasterproof trade report", "version": 1, "rasterproof": "0.1.0",
     ///  "quick": bool, "seed": u64, "canvas": side px, "repetitions": n,
-    ///  "families": ["triangles", ...], "magnitudes": [{"label": "2^24", "px": 16777216}, ...],
+    ///  "families": ["triangles", ..., "area"], "magnitudes": [{"label": "2^24", "px": 16777216}, ...],
     ///  "workloads": [{
     ///     "name", "family", "description", "primitives", "unit" ("Mpix/s" | "Mprim/s"),
     ///     "baseline" (the contender ratios divide by), "on_grid" (snapping moves nothing),
@@ -44,7 +44,12 @@ impl TradeReport {
     /// reference` of the reference's line pixels; `clipped vertices outside` of the
     /// output vertices; `barycentric sums not exact` of the samples) or `{"metric",
     /// "kind": "ulps", "median", "max", "samples"}` (`barycentric sum error (ulps)`, in
-    /// ulps of 1 of the model's float type). The first metric is the family's headline.
+    /// ulps of 1 of the model's float type) or `{"metric", "kind": "quanta", "max", "mean",
+    /// "pixels"}` (family `area`: `coverage error`, the absolute error of a pixel's
+    /// coverage in quanta of 1/255, largest and mean over the pixels where the exact value
+    /// or the model's is not zero). Area rates: `pixels off by > 1/2 quantum` and (ftgrays)
+    /// `levels off its quantization of the exact value`, of those pixels. The first metric
+    /// is the family's headline.
     pub fn to_json(&self) -> Value {
         let magnitudes: Vec<Value> = self
             .config
@@ -147,8 +152,9 @@ fn workload_json(w: &WorkloadReport, config: &Config) -> Value {
     })
 }
 
-/// One metric as JSON: `{"metric", "kind": "rate", "count", "of", "per_million"}` or
-/// `{"metric", "kind": "ulps", "median", "max", "samples"}`.
+/// One metric as JSON: `{"metric", "kind": "rate", "count", "of", "per_million"}`,
+/// `{"metric", "kind": "ulps", "median", "max", "samples"}` or `{"metric", "kind":
+/// "quanta", "max", "mean", "pixels"}`.
 fn metric_json(m: &Metric) -> Value {
     match m {
         Metric::Rate { name, count, of } => json!({
@@ -161,5 +167,13 @@ fn metric_json(m: &Metric) -> Value {
             max,
             samples,
         } => json!({"metric": name, "kind": "ulps", "median": median, "max": max, "samples": samples}),
+        Metric::Quanta {
+            name,
+            max,
+            mean,
+            pixels,
+        } => {
+            json!({"metric": name, "kind": "quanta", "max": max, "mean": mean, "pixels": pixels})
+        }
     }
 }
