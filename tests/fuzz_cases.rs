@@ -113,3 +113,31 @@ fn fuzz_case_04_freetype_three_levels_short() {
     assert_eq!(exact_levels, vec![255, 64, 192, 64]);
     assert_eq!(ftgrays::rasterize(&shapes, 2, 2).unwrap(), vec![255, 61, 192, 64]);
 }
+
+/// Found by theirs_read once it read every input as a grey image too: a palette PNG whose
+/// PLTE chunk holds 13 bytes (not a whole number of RGB entries) panicked inside the png
+/// crate when `--as grey` decoded it with `image::load_from_memory` (the readers of mask
+/// and ids PNGs already went through the crate's guarded decoder, `seed-crash-03` of the
+/// corpus). The grey reader now takes the same decoder: a clear error naming the file.
+#[test]
+fn fuzz_case_05_grey_png_with_a_13_byte_palette() {
+    let bytes: [u8; 72] = [
+        137, 80, 78, 71, 13, 10, 26, 10, 0, 0, 0, 13, 73, 72, 68, 82, 0, 0, 0, 2, 0, 0, 0, 4, 2, 3, 0, 0, 0, 212, 159,
+        118, 237, 0, 0, 0, 13, 80, 76, 84, 69, 0, 0, 0, 255, 0, 0, 0, 255, 0, 244, 102, 99, 84, 76, 126, 131, 0, 191,
+        0, 0, 12, 73, 68, 65, 84, 120, 156, 99, 0, 131, 130,
+    ];
+    let e = rasterproof::oracle::Theirs::read(
+        &bytes,
+        "theirs.png",
+        rasterproof::oracle::Format::Grey,
+        rasterproof::oracle::Background::default(),
+    )
+    .unwrap_err();
+    assert!(e.to_string().starts_with("theirs.png: "), "{e}");
+    assert!(
+        e.to_string().contains("PLTE") || e.to_string().contains("palette"),
+        "{e}"
+    );
+    let e = rasterproof::oracle::grey::GreyImage::read_png(&bytes, "theirs.png").unwrap_err();
+    assert!(e.starts_with("theirs.png: not a PNG this reader takes"), "{e}");
+}

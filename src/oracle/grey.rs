@@ -35,8 +35,10 @@ impl GreyImage {
     /// # Errors
     /// Not a PNG, or another colour type: the error names the file and what it holds.
     pub fn read_png(bytes: &[u8], name: &str) -> Result<GreyImage, String> {
-        let image = image::load_from_memory_with_format(bytes, image::ImageFormat::Png)
-            .map_err(|e| format!("{name}: not a PNG this reader takes: {e}"))?;
+        // The crate's guarded decoder: a malformed palette or a hostile size is an error,
+        // not a panic inside the decoder or an allocation of gigabytes.
+        let image = crate::fill::flood::decode_png_as_decoded(bytes, name, crate::convention::MAX_CANVAS)
+            .map_err(|e| format!("{name}: not a PNG this reader takes: {}", e.detail()))?;
         let (width, height) = (image.width(), image.height());
         match image {
             image::DynamicImage::ImageLuma8(_) | image::DynamicImage::ImageLumaA8(_) => Ok(GreyImage {
