@@ -331,6 +331,12 @@ pub fn compare_grey(
             let class = if rounds(level, &v, s, top) || rounds_per_shape(shapes, (x, y), (semantics, &v), level, s, top)
             {
                 GreyClass::Quantization
+            } else if error.abs() + BigRational::one() <= reach {
+                // Another value explains a level only as one of its roundings (within a
+                // quantum) and only beyond the reach from the exact value, so a level
+                // within the reach less a quantum is precision: the costly checks below
+                // could not name it (the same answer, sooner).
+                GreyClass::Precision
             } else if others
                 .iter()
                 .map(|o| exact::value(shapes, i64::from(x), i64::from(y), *o))
