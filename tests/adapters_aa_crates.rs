@@ -28,9 +28,8 @@
 //!   `accumulation`, and shapes of opposite orientation cancel in the one buffer;
 //! - `--serve` answers the PNG the per-scene command writes, byte for byte.
 
-use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::process::{Command, Output};
 
 use num_rational::BigRational;
 use rasterproof::area::{exact, AreaShape, Quantization, Semantics};
@@ -79,27 +78,12 @@ fn draw(exe: &Path, scene: &Value, dir: &Path, name: &str) -> GreyImage {
 
 /// Every scene through one `exe --serve`: per scene the PNG's path, or the refusal.
 fn serve(exe: &Path, scenes: &[Value], dir: &Path) -> Vec<Result<PathBuf, String>> {
-    let mut child = Command::new(exe)
-        .arg("--serve")
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    {
-        let mut stdin = child.stdin.take().unwrap();
-        for (k, s) in scenes.iter().enumerate() {
-            let out = dir.join(format!("serve-{k}.png"));
-            writeln!(stdin, "{}", json!({"rasterproof": 1, "id": k, "scene": s, "out": out})).unwrap();
-        }
-    }
-    let output = child.wait_with_output().unwrap();
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
-    let answers: Vec<Value> = String::from_utf8_lossy(&output.stdout)
-        .lines()
-        .map(|l| serde_json::from_str(l).unwrap())
+    let requests: Vec<Value> = scenes
+        .iter()
+        .enumerate()
+        .map(|(k, s)| json!({"rasterproof": 1, "id": k, "scene": s, "out": dir.join(format!("serve-{k}.png"))}))
         .collect();
-    assert_eq!(answers.len(), scenes.len(), "one answer per request");
+    let (answers, _) = crate::adapters_area::serve_answers(Command::new(exe), &requests);
     answers
         .iter()
         .enumerate()

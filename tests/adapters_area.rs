@@ -112,11 +112,10 @@ pub fn scene(k: u64) -> Value {
     }
 }
 
-/// FreeType's levels for each scene, through one adapter kept alive (the stay-alive
-/// protocol), row by row.
-fn freetype_levels(scenes: &[Value], dir: &Path) -> Vec<Vec<u8>> {
-    let mut child = Command::new(python())
-        .arg(adapter())
+/// Every request of `requests` (one JSON object each) through one `command` kept alive
+/// (the stay-alive protocol): its answers, one per request, in order, and its stderr.
+pub fn serve_answers(mut command: Command, requests: &[Value]) -> (Vec<Value>, String) {
+    let mut child = command
         .arg("--serve")
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
@@ -125,24 +124,35 @@ fn freetype_levels(scenes: &[Value], dir: &Path) -> Vec<Vec<u8>> {
         .unwrap();
     {
         let mut stdin = child.stdin.take().unwrap();
-        for (k, s) in scenes.iter().enumerate() {
-            let out = dir.join(format!("ft-{k}.png"));
-            let request = json!({"rasterproof": 1, "id": k, "scene": s, "out": out, "as": "grey"});
+        for request in requests {
             writeln!(stdin, "{request}").unwrap();
         }
     }
     let output = child.wait_with_output().unwrap();
-    let answers = String::from_utf8_lossy(&output.stdout);
-    for (k, line) in answers.lines().enumerate() {
-        let answer: Value = serde_json::from_str(line).unwrap();
-        assert_eq!(
-            answer,
-            json!({"id": k, "ok": true}),
-            "{}",
-            String::from_utf8_lossy(&output.stderr)
-        );
+    let stderr = String::from_utf8_lossy(&output.stderr).to_string();
+    assert!(output.status.success(), "{stderr}");
+    let answers: Vec<Value> = String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(answers.len(), requests.len(), "one answer per request");
+    (answers, stderr)
+}
+
+/// FreeType's levels for each scene, through one adapter kept alive (the stay-alive
+/// protocol), row by row.
+fn freetype_levels(scenes: &[Value], dir: &Path) -> Vec<Vec<u8>> {
+    let mut command = Command::new(python());
+    command.arg(adapter());
+    let requests: Vec<Value> = scenes
+        .iter()
+        .enumerate()
+        .map(|(k, s)| json!({"rasterproof": 1, "id": k, "scene": s, "out": dir.join(format!("ft-{k}.png")), "as": "grey"}))
+        .collect();
+    let (answers, stderr) = serve_answers(command, &requests);
+    for (k, answer) in answers.iter().enumerate() {
+        assert_eq!(*answer, json!({"id": k, "ok": true}), "{stderr}");
     }
-    assert_eq!(answers.lines().count(), scenes.len());
     (0..scenes.len())
         .map(|k| {
             image::open(dir.join(format!("ft-{k}.png")))

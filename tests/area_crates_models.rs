@@ -22,9 +22,8 @@
 //! - the adapters' executables themselves on the glyph scenes and some random ones;
 //! - the refusals: each model refuses what its adapter refuses, with the reason named.
 
-use std::io::Write;
 use std::path::Path;
-use std::process::{Command, Stdio};
+use std::process::Command;
 
 use ab_glyph_rasterizer::{point, Rasterizer};
 use num_rational::BigRational;
@@ -399,27 +398,12 @@ fn models_equal_the_adapters_executables() {
     for exe in ["ab-glyph-adapter", "zeno-adapter"] {
         let sub = dir.path().join(exe);
         std::fs::create_dir_all(&sub).unwrap();
-        let mut child = Command::new(crate::adapters::example(exe))
-            .arg("--serve")
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .unwrap();
-        {
-            let mut stdin = child.stdin.take().unwrap();
-            for (k, s) in scenes.iter().enumerate() {
-                let out = sub.join(format!("{k}.png"));
-                writeln!(stdin, "{}", json!({"rasterproof": 1, "id": k, "scene": s, "out": out})).unwrap();
-            }
-        }
-        let output = child.wait_with_output().unwrap();
-        assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
-        let answers: Vec<Value> = String::from_utf8_lossy(&output.stdout)
-            .lines()
-            .map(|l| serde_json::from_str(l).unwrap())
+        let requests: Vec<Value> = scenes
+            .iter()
+            .enumerate()
+            .map(|(k, s)| json!({"rasterproof": 1, "id": k, "scene": s, "out": sub.join(format!("{k}.png"))}))
             .collect();
-        assert_eq!(answers.len(), scenes.len());
+        let (answers, _) = crate::adapters_area::serve_answers(Command::new(crate::adapters::example(exe)), &requests);
         for (k, (s, answer)) in scenes.iter().zip(&answers).enumerate() {
             let (sh, w, h) = shapes(s);
             let ours: Result<Vec<u16>, String> = if exe == "ab-glyph-adapter" {
