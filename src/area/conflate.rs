@@ -28,6 +28,23 @@ pub enum Own {
     Supersampled(u32),
 }
 
+/// Each shape's pixel box (the pixels its bounding box meets; a pixel outside has a value
+/// of zero), computed once per scene for [`own_values`], which asks at every pixel.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Boxes(Vec<Option<(i64, i64, i64, i64)>>);
+
+impl Boxes {
+    /// The boxes of `shapes`, in order.
+    pub fn of(shapes: &[AreaShape]) -> Boxes {
+        Boxes(shapes.iter().map(pixel_box).collect())
+    }
+
+    /// Whether shape `k`'s box holds pixel `(x, y)`.
+    fn meets(&self, k: usize, x: u32, y: u32) -> bool {
+        self.0.get(k).copied().flatten().is_some_and(|b| meets(b, x, y))
+    }
+}
+
 /// The pixels `(x0, y0, x1, y1)` (half-open) that the shape's bounding box meets, or
 /// `None` for a shape with no vertex. A pixel outside it has a value of zero.
 fn pixel_box(shape: &AreaShape) -> Option<(i64, i64, i64, i64)> {
@@ -77,16 +94,18 @@ fn meets(b: (i64, i64, i64, i64), x: u32, y: u32) -> bool {
 /// assert_eq!(v, BigRational::new(3.into(), 4.into()));
 /// ```
 pub fn pixel(shapes: &[AreaShape], x: u32, y: u32, own: Own) -> BigRational {
-    blend(&own_values(shapes, x, y, own))
+    blend(&own_values(shapes, &Boxes::of(shapes), x, y, own))
 }
 
 /// The shapes' own values at pixel `(x, y)` that are not zero, in shape order, each
 /// clamped to `[0, 1]` (what [`pixel`] blends; two or more is where conflation can show).
-pub fn own_values(shapes: &[AreaShape], x: u32, y: u32, own: Own) -> Vec<BigRational> {
+/// `boxes` are the shapes' ([`Boxes::of`]), computed once for every pixel asked.
+pub fn own_values(shapes: &[AreaShape], boxes: &Boxes, x: u32, y: u32, own: Own) -> Vec<BigRational> {
     shapes
         .iter()
-        .filter(|shape| pixel_box(shape).is_some_and(|b| meets(b, x, y)))
-        .map(|shape| value(shape, x, y, own).max(BigRational::zero()).min(BigRational::one()))
+        .enumerate()
+        .filter(|(k, _)| boxes.meets(*k, x, y))
+        .map(|(_, shape)| value(shape, x, y, own).max(BigRational::zero()).min(BigRational::one()))
         .filter(|a| !a.is_zero())
         .collect()
 }
@@ -109,14 +128,14 @@ fn value(shape: &Polygon, x: u32, y: u32, own: Own) -> BigRational {
 /// The shapes blended one by one on a `width` x `height` canvas, each shape's own value
 /// exact under `semantics` (every pixel some shape's bounding box meets, by [`pixel`]).
 pub fn rasterize(shapes: &[AreaShape], width: u32, height: u32, semantics: Semantics) -> AreaImage {
-    let boxes: Vec<Option<(i64, i64, i64, i64)>> = shapes.iter().map(pixel_box).collect();
+    let boxes = Boxes::of(shapes);
     let mut pixels = Vec::new();
     for y in 0..height {
         for x in 0..width {
-            if !boxes.iter().any(|b| b.is_some_and(|b| meets(b, x, y))) {
+            if !(0..shapes.len()).any(|k| boxes.meets(k, x, y)) {
                 continue;
             }
-            let v = pixel(shapes, x, y, Own::Exact(semantics));
+            let v = blend(&own_values(shapes, &boxes, x, y, Own::Exact(semantics)));
             if !v.is_zero() {
                 pixels.push((x, y, v));
             }

@@ -200,7 +200,7 @@ fn edges_meeting(shapes: &[AreaShape], x: u32, y: u32) -> u32 {
 /// own value times `s` (each clamped to `[0, top]`, the sum too): a renderer that
 /// quantizes every shape on its own and adds the levels (a glyph at a time).
 fn rounds_per_shape(
-    shapes: &[AreaShape],
+    (shapes, boxes): (&[AreaShape], &conflate::Boxes),
     (x, y): (u32, u32),
     (semantics, v): (Semantics, &BigRational),
     level: u16,
@@ -210,7 +210,7 @@ fn rounds_per_shape(
     if shapes.len() < 2 {
         return false;
     }
-    let values = conflate::own_values(shapes, x, y, conflate::Own::Exact(semantics));
+    let values = conflate::own_values(shapes, boxes, x, y, conflate::Own::Exact(semantics));
     // Only where the shapes' own values add up to the pixel's (no overlap under true
     // coverage): then the levels added are a rounding of each part of it.
     if values.len() < 2 || values.iter().sum::<BigRational>() != *v {
@@ -236,9 +236,8 @@ fn rounds_per_shape(
 /// (the exact value `v`; the `k x k` share of the union under true coverage, the shares
 /// summed under the accumulated semantics), which lies further from `level`.
 fn conflated(
-    shapes: &[AreaShape],
-    x: u32,
-    y: u32,
+    (shapes, boxes): (&[AreaShape], &conflate::Boxes),
+    (x, y): (u32, u32),
     semantics: Semantics,
     (level, top): (u16, u16),
     v: &BigRational,
@@ -253,7 +252,7 @@ fn conflated(
     std::iter::once(conflate::Own::Exact(semantics))
         .chain(SUPERSAMPLING.into_iter().map(conflate::Own::Supersampled))
         .any(|own| {
-            let values = conflate::own_values(shapes, x, y, own);
+            let values = conflate::own_values(shapes, boxes, x, y, own);
             if values.len() < 2 {
                 return false;
             }
@@ -307,6 +306,8 @@ pub fn compare_grey(
     let mut histogram = BTreeMap::new();
     // Every pixel's exact value at once (the planned engine, equal to the plain oracle).
     let values = planned::rasterize(shapes, width, height, semantics);
+    // The shapes' pixel boxes, once: the per-shape classes ask at every differing pixel.
+    let boxes = conflate::Boxes::of(shapes);
     for y in 0..height {
         for x in 0..width {
             let level = theirs.levels[(y * width + x) as usize];
@@ -328,7 +329,8 @@ pub fn compare_grey(
             // that from the exact one.
             let cells = BigRational::new((1 + 2 * edges_meeting(shapes, x, y)).into(), 256.into());
             let reach = (cells * BigRational::from_integer(s.into())).max(BigRational::from_integer(2.into()));
-            let class = if rounds(level, &v, s, top) || rounds_per_shape(shapes, (x, y), (semantics, &v), level, s, top)
+            let class = if rounds(level, &v, s, top)
+                || rounds_per_shape((shapes, &boxes), (x, y), (semantics, &v), level, s, top)
             {
                 GreyClass::Quantization
             } else if error.abs() + BigRational::one() <= reach {
@@ -344,7 +346,7 @@ pub fn compare_grey(
                 .any(|other| rounds(level, &other, s, top) && beyond(&other, &v, s, &reach))
             {
                 GreyClass::Accumulation
-            } else if conflated(shapes, x, y, semantics, (level, top), &v, (s, &reach)) {
+            } else if conflated((shapes, &boxes), (x, y), semantics, (level, top), &v, (s, &reach)) {
                 GreyClass::Conflation
             } else if error.abs() <= reach {
                 GreyClass::Precision
