@@ -98,6 +98,7 @@ pub mod line;
 pub mod model;
 pub mod num;
 pub mod oracle;
+pub mod pattern;
 pub mod raster;
 pub mod scene;
 #[cfg(feature = "proptest")]

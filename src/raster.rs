@@ -221,6 +221,28 @@ where
     )
 }
 
+/// The pixels whose closed square `[i, i + 1] x [j, j + 1]` meets the closed bounding box
+/// of `points` (exact), on the canvas; `None` when empty. Every sample of a pattern
+/// ([`crate::pattern`]) that lies in the box belongs to one of them: the per-sample
+/// oracles' loop.
+pub fn exact_pixel_range<'a, I>(points: I, target: &Target) -> Option<PixelRange>
+where
+    I: Iterator<Item = &'a Point> + Clone,
+{
+    let xs = points.clone().map(|p| &p.x);
+    let ys = points.map(|p| &p.y);
+    let (min_x, max_x) = (xs.clone().min()?, xs.max()?);
+    let (min_y, max_y) = (ys.clone().min()?, ys.max()?);
+    let lo = |m: &BigRational| saturating_index(m.ceil().to_integer() - 1);
+    let hi = |m: &BigRational| saturating_index(m.floor().to_integer());
+    PixelRange::clamped(
+        [lo(min_x), lo(min_y)],
+        [hi(max_x), hi(max_y)],
+        target.width,
+        target.height,
+    )
+}
+
 /// The pixels whose sample lies in the closed bounding box of `points` (in subpixels of
 /// `target`'s grid), on the canvas; `None` when empty.
 #[inline]

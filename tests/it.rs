@@ -24,6 +24,8 @@ mod adapters;
 mod adapters_aa_crates;
 #[path = "adapters_area.rs"]
 mod adapters_area;
+#[path = "adapters_wgpu.rs"]
+mod adapters_wgpu;
 #[path = "area.rs"]
 mod area;
 #[path = "area_crates_models.rs"]
@@ -86,6 +88,8 @@ mod polygons;
 mod properties;
 #[path = "renderer_processes.rs"]
 mod renderer_processes;
+#[path = "samples.rs"]
+mod samples;
 #[path = "scanline.rs"]
 mod scanline;
 #[path = "scene_file_errors.rs"]

@@ -17,7 +17,7 @@ mod map;
 /// for a file, or a `crate::X` reference, whose module is not in this table).
 const LAYERS: &[(u32, &[&str])] = &[
     (0, &["num"]),
-    (1, &["geom", "convention", "raster"]),
+    (1, &["geom", "convention", "raster", "pattern"]),
     (2, &["coverage", "edge"]),
     (3, &["tri", "line", "clip", "fill", "interp", "area"]),
     (4, &["model"]),

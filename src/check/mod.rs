@@ -28,7 +28,7 @@ pub use line::{
     check_diamond_agreement, check_line_pixels, check_line_reference, check_line_symmetry, line_departures,
     SymmetryReport,
 };
-pub use watertight::{check_no_double_cover, check_watertight};
+pub use watertight::{check_no_double_cover, check_watertight, check_watertight_samples};
 
 /// A broken invariant, with an exact explanation.
 #[derive(Debug, Clone, PartialEq, Eq)]

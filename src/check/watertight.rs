@@ -13,9 +13,11 @@ use num_traits::Zero;
 use super::explain::explain_sample;
 use super::Violation;
 use crate::convention::Target;
+use crate::coverage::samples::SampleCoverage;
 use crate::coverage::Coverage;
 use crate::edge::exact::ExactEdge;
 use crate::geom::{Point, Triangle};
+use crate::pattern::SamplePattern;
 
 /// No pixel has more than one owner.
 pub fn check_no_double_cover(coverage: &Coverage) -> Result<(), Violation> {
@@ -81,6 +83,59 @@ pub fn check_watertight(
         }
     }
     Err(Violation::new("watertight", msg))
+}
+
+/// [`check_watertight`] at every sample of `pattern`: each sample of each pixel strictly
+/// inside the convex `outline` (after the ε move of the tie rule) is owned exactly once in
+/// `coverage`, and no other sample is covered. The samples are the exact points
+/// `(i + x_s, j + y_s)`.
+pub fn check_watertight_samples(
+    mesh: &[Triangle],
+    outline: &[Point],
+    coverage: &SampleCoverage,
+    pattern: &SamplePattern,
+    target: &Target,
+) -> Result<(), Violation> {
+    let edges = outline_edges(outline, target);
+    let inside = |p: &Point| !edges.is_empty() && edges.iter().all(|e| e.contains(p));
+    let mut problems = Vec::new();
+    for s in 0..coverage.sample_count() {
+        for (x, y, ids) in coverage.sample(s).iter() {
+            if ids.len() != 1 || !inside(&pattern.sample(x, y, s)) {
+                problems.push((x, y, s, ids.to_vec()));
+            }
+        }
+    }
+    if let Some(r) = crate::raster::exact_pixel_range(outline.iter(), target) {
+        for y in r.y0..=r.y1 {
+            for x in r.x0..=r.x1 {
+                for s in 0..pattern.len() {
+                    if coverage.owners(x, y, s).is_empty() && inside(&pattern.sample(x, y, s)) {
+                        problems.push((x, y, s, Vec::new()));
+                    }
+                }
+            }
+        }
+    }
+    let Some((x, y, s, ids)) = problems.first().cloned() else {
+        return Ok(());
+    };
+    let what = if ids.is_empty() {
+        "is inside the region but covered by no triangle (a gap)".to_string()
+    } else if ids.len() > 1 {
+        format!("is covered {} times, by {ids:?}", ids.len())
+    } else {
+        format!("is outside the region but covered by {ids:?}")
+    };
+    Err(Violation::new(
+        "watertight",
+        format!(
+            "sample {s} {} of pixel ({x}, {y}) {what}; {} such samples, of a mesh of {} triangles",
+            pattern.position_text(s),
+            problems.len(),
+            mesh.len()
+        ),
+    ))
 }
 
 /// The outline's edges oriented so that its interior is `E > 0`.

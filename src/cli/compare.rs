@@ -63,6 +63,13 @@ pub struct Options {
     /// when one does, 1 when none does.
     #[arg(long, conflicts_with_all = ["diff_out", "model", "html"])]
     fit: bool,
+    /// The sample pattern of their output, replacing the scene's `samples`: N samples per
+    /// pixel at the standard positions (1, 2, 4, 8 or 16). Under a pattern of several
+    /// samples THEIRS is one ids (or mask) image per sample index, stacked (width W,
+    /// height N x H, sample s in rows s H .. (s + 1) H; what `render --ids-out` writes),
+    /// and each sample index is compared (or, with `--fit`, fitted) on its own.
+    #[arg(long, value_name = "N")]
+    samples: Option<usize>,
     /// With `--as grey`: the exact area semantics their levels approximate (`true`,
     /// `accumulated` or `unclamped`; see `render --coverage area`).
     #[arg(long, default_value = "true", value_name = "true|accumulated|unclamped")]
@@ -148,6 +155,29 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let theirs_name = o.theirs.display().to_string();
     let bytes = std::fs::read(&o.theirs).map_err(|e| format!("{theirs_name}: cannot read: {e}"))?;
     let theirs = Theirs::read(&bytes, &theirs_name, format, background).map_err(|e| e.to_string())?;
+    let pattern = match o.samples {
+        Some(n) => Some(super::parse_samples(n)?),
+        None => scene.samples.clone(),
+    };
+    if let Some(pattern) = pattern.filter(|p| !p.is_single(&target.convention)) {
+        if o.diff_out.is_some() || o.html.is_some() {
+            return Err(format!(
+                "{name}: under the {pattern} sample pattern compare prints its comparison per sample (text or JSON); --diff-out and --html are for one sample per pixel"
+            ));
+        }
+        let per_sample = Samples {
+            name: &name,
+            theirs_name: &theirs_name,
+            primitives: scene.primitives(),
+            target,
+            pattern,
+        };
+        return if o.fit {
+            per_sample.fit(o, &theirs)
+        } else {
+            per_sample.compare(o, model, &theirs)
+        };
+    }
     if o.fit {
         let found = rasterproof::oracle::fit(&scene.primitives(), &target, &theirs).map_err(|e| match e {
             rasterproof::oracle::FitError::Size(_) => format!("{theirs_name}: {e} ({name})"),
@@ -198,6 +228,110 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     } else {
         ExitCode::from(1)
     })
+}
+
+/// A comparison under a pattern of several samples.
+struct Samples<'a> {
+    name: &'a str,
+    theirs_name: &'a str,
+    primitives: rasterproof::model::Primitives,
+    target: rasterproof::convention::Target,
+    pattern: rasterproof::pattern::SamplePattern,
+}
+
+impl Samples<'_> {
+    /// Every sample index compared; exit 0 when all are identical, 1 otherwise.
+    fn compare(&self, o: &Options, model: rasterproof::model::Model, theirs: &Theirs) -> Result<ExitCode, String> {
+        let report = rasterproof::oracle::samples::compare_samples(
+            &self.primitives,
+            &self.target,
+            &self.pattern,
+            theirs,
+            model,
+            o.classify.0,
+        )
+        .map_err(|e| match e {
+            rasterproof::oracle::CompareError::Samples(_) => format!("{}: {e} ({})", self.theirs_name, self.name),
+            other => format!("{}: {other} (model {model}, {} samples)", self.name, self.pattern),
+        })?;
+        match o.format_out {
+            OutputFormat::Text => super::write_stdout(|out| {
+                out.write_all(report.to_text(self.name, self.theirs_name, o.limit).as_bytes())
+            })?,
+            OutputFormat::Json => super::print_stdout(&report.to_json(self.name, self.theirs_name).to_string())?,
+        }
+        Ok(if report.identical() {
+            ExitCode::SUCCESS
+        } else {
+            ExitCode::from(1)
+        })
+    }
+
+    /// `--fit` per sample index: each sample's image against every convention, the scene
+    /// moved exactly to that sample (unsnapped: each candidate snaps the moved scene, which
+    /// is the snapped scene moved except at a coordinate exactly halfway between two
+    /// subpixels); then the conventions that give every sample. Exit 0 when one does.
+    fn fit(&self, o: &Options, theirs: &Theirs) -> Result<ExitCode, String> {
+        use rasterproof::model::{at_sample, Model};
+        let per_sample = theirs
+            .unstack(self.pattern.len(), self.target.height)
+            .map_err(|e| format!("{}: {e} ({})", self.theirs_name, self.name))?;
+        let mut fits = Vec::new();
+        for (s, theirs) in per_sample.iter().enumerate() {
+            let moved = at_sample(&self.primitives, &self.target, &self.pattern, s, Model::Exact)
+                .map_err(|e| format!("{}: {e}", self.name))?;
+            let found = rasterproof::oracle::fit(&moved, &self.target, theirs)
+                .map_err(|e| format!("{}: sample {s}: {e}", self.name))?;
+            fits.push(found);
+        }
+        let common: Vec<_> = fits[0]
+            .exact
+            .iter()
+            .filter(|c| fits.iter().all(|f| f.exact.contains(c)))
+            .collect();
+        match o.format_out {
+            OutputFormat::Text => super::write_stdout(|out| {
+                writeln!(
+                    out,
+                    "compare --fit: {} against {}, {} samples, each sample index on its own",
+                    self.theirs_name, self.name, self.pattern
+                )?;
+                for (s, f) in fits.iter().enumerate() {
+                    writeln!(out, "sample {s} at {}:", self.pattern.position_text(s))?;
+                    for line in f.to_text().lines() {
+                        writeln!(out, "  {line}")?;
+                    }
+                }
+                if common.is_empty() {
+                    writeln!(out, "no convention gives every sample's image exactly (if each sample has fits of its own, their sample positions are not the {}'s)", self.pattern)
+                } else {
+                    writeln!(
+                        out,
+                        "{} conventions give every sample's image exactly, at the {} positions:",
+                        common.len(),
+                        self.pattern
+                    )?;
+                    for c in &common {
+                        writeln!(out, "  {c}")?;
+                    }
+                    Ok(())
+                }
+            })?,
+            OutputFormat::Json => super::print_stdout(
+                &serde_json::json!({
+                    "pattern": self.pattern.to_json(),
+                    "every_sample": common.iter().map(ToString::to_string).collect::<Vec<_>>(),
+                    "samples": fits.iter().map(|f| f.to_json()).collect::<Vec<_>>(),
+                })
+                .to_string(),
+            )?,
+        }
+        Ok(if common.is_empty() {
+            ExitCode::from(1)
+        } else {
+            ExitCode::SUCCESS
+        })
+    }
 }
 
 /// `compare --as grey`: their grey levels against the exact area coverage; exit 0 when

@@ -349,6 +349,13 @@ pub fn parse_semantics(name: &str) -> Result<rasterproof::area::Semantics, Strin
         .ok_or_else(|| format!("--semantics: unknown semantics {name:?} (expected true, accumulated or unclamped)"))
 }
 
+/// `--samples N`: the standard pattern of N samples.
+pub fn parse_samples(n: usize) -> Result<rasterproof::pattern::SamplePattern, String> {
+    rasterproof::pattern::SamplePattern::standard(n).ok_or_else(|| {
+        format!("--samples: {n} has no standard pattern (expected 1, 2, 4, 8 or 16; a scene's samples field takes any positions)")
+    })
+}
+
 /// `--quantization NAME` (area coverage).
 pub fn parse_quantization(name: &str) -> Result<rasterproof::area::Quantization, String> {
     rasterproof::area::Quantization::from_name(name).ok_or_else(|| {

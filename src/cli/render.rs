@@ -75,6 +75,20 @@ pub struct Options {
     /// to the nearest, ties to even; 16-bit PNG).
     #[arg(long, default_value = "round", value_name = "round|truncate|ftgrays|round16")]
     quantization: String,
+    /// The sample pattern, replacing the scene's `samples`: N samples per pixel at the
+    /// standard positions of Vulkan and Direct3D (1, 2, 4, 8 or 16). Under a pattern of
+    /// several samples a pixel's answer is its sample mask: `--ids-out` writes one ids
+    /// image per sample index, stacked (width W, height N x H, sample s in rows s H ..
+    /// (s + 1) H), `--count-out` the covered samples as a grey level, `--format json`
+    /// `{"width","height","samples","pixels":[[x,y,mask,[ids of sample 0],...],...]}`, and
+    /// the text grid the number of covered samples (`.` none, `1`-`9`, `a`-`f`, `#` all).
+    #[arg(long, value_name = "N")]
+    samples: Option<usize>,
+    /// With a pattern: write the coverage count (PNG, 8-bit grey): round(255 k / N) for k
+    /// of the N samples covered, what resolving a multisampled target holding the scene in
+    /// opaque white on black gives.
+    #[arg(long = "count-out", value_name = "COUNT.png")]
+    count_out: Option<PathBuf>,
 }
 
 /// `--format`'s values for `render`, with their help.
@@ -105,6 +119,18 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let model = super::parse_model(o.model.as_deref().unwrap_or("exact-snapped"))?;
     let scale_asked = o.scale.as_deref().map(parse_scale).transpose()?;
     let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
+    let pattern = match o.samples {
+        Some(n) => Some(super::parse_samples(n)?),
+        None => scene.samples.clone(),
+    };
+    if let Some(pattern) = pattern.filter(|p| !p.is_single(&target.convention)) {
+        return run_samples(o, model, &name, &scene, &target, &pattern);
+    }
+    if o.count_out.is_some() {
+        return Err(format!(
+            "--count-out needs a pattern of several samples (--samples N, or the scene's samples); {name} has one sample per pixel"
+        ));
+    }
     let scale = match scale_asked {
         Some(k) => Scale::new(k, target.width, target.height).map_err(|e| format!("--scale: {e} (scene {name})"))?,
         None => Scale::default_for(target.width, target.height),
@@ -160,6 +186,79 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         OutputFormat::Text => {
             let small = target.width <= ASCII_GRID_MAX_SIDE && target.height <= ASCII_GRID_MAX_SIDE;
             let grid = if small { coverage.to_ascii() } else { String::new() };
+            crate::cli::print_stdout(&format!("{grid}{summary}"))?;
+        }
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `render` under a pattern of several samples: every sample's coverage, the stacked ids
+/// PNG, the count PNG, the masks as JSON or the count grid; exit 0.
+fn run_samples(
+    o: &Options,
+    model: rasterproof::model::Model,
+    name: &str,
+    scene: &rasterproof::scene::Scene,
+    target: &Target,
+    pattern: &rasterproof::pattern::SamplePattern,
+) -> Result<ExitCode, String> {
+    if o.out.is_some() || o.colors_out.is_some() || o.scale.is_some() {
+        return Err(format!(
+            "{name}: under the {pattern} sample pattern render writes --ids-out (one ids image per sample, stacked) and --count-out; -o, --colors-out and --scale are for one sample per pixel"
+        ));
+    }
+    let primitives = scene.primitives();
+    let coverage = rasterproof::model::render_samples(&primitives, target, pattern, model)
+        .map_err(|e| format!("{name}: {e} (model {model}, {pattern} samples)"))?;
+    let mut outputs = Outputs::new();
+    let mut wrote = Vec::new();
+    if let Some(path) = &o.ids_out {
+        let ids = coverage
+            .to_stacked_ids_image()
+            .map_err(|e| format!("--ids-out {}: {e} (scene {name})", path.display()))?;
+        outputs.stage_png(path, &ids)?;
+        wrote.push(format!("{} (ids, {} samples stacked)", path.display(), pattern.len()));
+    }
+    if let Some(path) = &o.count_out {
+        outputs.stage_png(path, &coverage.to_count_image())?;
+        wrote.push(format!("{} (covered samples, grey)", path.display()));
+    }
+    outputs.commit()?;
+    let n = u32::try_from(pattern.len()).expect("at most 64 samples");
+    let counts: Vec<(u32, u32, u32)> = coverage
+        .covered_pixels()
+        .into_iter()
+        .map(|(x, y)| (x, y, coverage.covered_count(x, y)))
+        .collect();
+    let samples: u64 = counts.iter().map(|c| u64::from(c.2)).sum();
+    let full = counts.iter().filter(|c| c.2 == n).count();
+    let mut summary = format!(
+        "{name}: model {model}, {}, {pattern} samples: {samples} samples covered, {} pixels with some, {full} with all",
+        target.convention,
+        counts.len()
+    );
+    if !wrote.is_empty() {
+        summary.push_str(&format!("; wrote {}", wrote.join(", ")));
+    }
+    match o.format {
+        OutputFormat::Json => {
+            crate::cli::print_stdout(&coverage.to_json())?;
+            eprintln!("{summary}");
+        }
+        OutputFormat::Text => {
+            let (w, h) = (target.width, target.height);
+            let mut grid = String::new();
+            if w <= ASCII_GRID_MAX_SIDE && h <= ASCII_GRID_MAX_SIDE {
+                let mut cells = vec![b'.'; w as usize * h as usize];
+                for &(x, y, k) in &counts {
+                    let digit = char::from_digit(k.min(15), 16).expect("a hex digit");
+                    cells[(y * w + x) as usize] = if k == n { b'#' } else { digit as u8 };
+                }
+                for row in cells.chunks(w as usize) {
+                    grid.push_str(std::str::from_utf8(row).expect("ASCII"));
+                    grid.push('\n');
+                }
+            }
             crate::cli::print_stdout(&format!("{grid}{summary}"))?;
         }
     }

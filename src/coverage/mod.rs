@@ -11,6 +11,7 @@ use std::fmt;
 pub mod ids;
 mod json;
 pub mod picture;
+pub mod samples;
 mod tiles;
 
 use tiles::TileGrid;

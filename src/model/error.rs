@@ -84,6 +84,36 @@ pub enum ModelError {
     },
     /// Clip-space triangles given without a viewport to map them with.
     NoViewport,
+    /// Lines under a pattern of several samples: a line's pixels are decided by its own
+    /// rule (Bresenham, diamond exit), not per sample.
+    LinesUnderPattern {
+        /// How many lines the scene has.
+        lines: usize,
+        /// The pattern, named.
+        pattern: String,
+    },
+    /// A sample a model that snaps to the subpixel grid cannot place: its offset from the
+    /// convention's one sample is not a whole number of subpixels.
+    SampleOffGrid {
+        /// The sample index.
+        sample: usize,
+        /// Its position in the pixel, as exact text.
+        position: String,
+        /// The convention's subpixel bits.
+        bits: u32,
+        /// The model.
+        model: Model,
+    },
+    /// The scene moved to bring one sample to the pixel's sample position is one the model
+    /// cannot take (a coordinate pushed past the envelope).
+    AtSample {
+        /// The sample index.
+        sample: usize,
+        /// Its position in the pixel, as exact text.
+        position: String,
+        /// Why.
+        error: Box<ModelError>,
+    },
 }
 
 impl fmt::Display for ModelError {
@@ -131,6 +161,22 @@ impl fmt::Display for ModelError {
                 write!(f, "{what}: a value does not fit the {model} model's float type")
             }
             ModelError::NoViewport => f.write_str("clip_space_triangles: no viewport to map them with"),
+            ModelError::LinesUnderPattern { lines, pattern } => write!(
+                f,
+                "lines: {lines} line(s) under the {pattern} sample pattern; lines are drawn by their own rule, one answer per pixel, so a scene with samples has none"
+            ),
+            ModelError::SampleOffGrid {
+                sample,
+                position,
+                bits,
+                model,
+            } => write!(
+                f,
+                "samples[{sample}]: {position} is not a whole number of subpixels (1/2^{bits}) from the pixel's sample position, so the {model} model, which snaps to that grid, cannot place it"
+            ),
+            ModelError::AtSample { sample, position, error } => {
+                write!(f, "at sample {sample} {position} (the scene moved to it): {error}")
+            }
         }
     }
 }

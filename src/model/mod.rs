@@ -30,6 +30,7 @@ mod lines;
 pub mod plan;
 mod polygons;
 mod prepared;
+mod samples;
 mod triangles;
 
 use std::fmt;
@@ -43,6 +44,7 @@ use crate::tri::float::FloatRule;
 pub use area::{area_shapes, render_area, render_area_rows, AreaError};
 pub use error::ModelError;
 pub use prepared::{prepare, render, render_triangles, PreparedScene, Primitives, Shape};
+pub use samples::{at_sample, render_samples};
 
 /// A model: one arithmetic for every primitive of a scene (the CLI's `--model`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -216,6 +218,12 @@ impl Model {
     /// must hold (a float model's violations are the measured trade).
     pub fn is_exact(self) -> bool {
         !matches!(self.arithmetic(), Arithmetic::Float(..))
+    }
+
+    /// Whether the model is a plain oracle (`exact-plain`, `exact-snapped-plain`): a
+    /// bounding-box loop of exact predicates, written to be read.
+    pub fn is_plain(self) -> bool {
+        matches!(self.arithmetic(), Arithmetic::Exact { plain: true, .. })
     }
 
     /// Whether the model rasterizes the snapped scene (so `exact-snapped-plain` is its

@@ -19,6 +19,7 @@ pub mod grey;
 pub mod hunt;
 pub mod program;
 pub mod reason;
+pub mod samples;
 pub mod stay_alive;
 pub mod svg;
 pub mod theirs;

@@ -193,6 +193,55 @@ impl Theirs {
         }
     }
 
+    /// A multisampled output read as one image of `samples` images stacked (width `W`,
+    /// height `samples x H`, sample `s` in rows `s H .. (s + 1) H`, as `render --ids-out`
+    /// writes under a pattern), split into one output per sample index.
+    ///
+    /// # Errors
+    /// A height that is not `samples` times the canvas's `height`; a format that is not a
+    /// stacked PNG (`mask` or `ids`).
+    pub fn unstack(&self, samples: usize, height: u32) -> Result<Vec<Theirs>, String> {
+        let stacked = u32::try_from(samples).ok().and_then(|n| n.checked_mul(height));
+        if samples == 0 || stacked != Some(self.height) {
+            return Err(format!(
+                "their image is {}x{}; {samples} sample images of the {}x{height} canvas stacked are {}x{}",
+                self.width,
+                self.height,
+                self.width,
+                self.width,
+                u64::try_from(samples)
+                    .unwrap_or(u64::MAX)
+                    .saturating_mul(u64::from(height))
+            ));
+        }
+        let h = height;
+        let rows = pixel_count(self.width, h);
+        let part = |v: usize| v * rows..(v + 1) * rows;
+        (0..samples)
+            .map(|v| {
+                let data = match &self.data {
+                    Data::Mask(m) => Data::Mask(m[part(v)].to_vec()),
+                    Data::Ids { values, several } => Data::Ids {
+                        values: values[part(v)].to_vec(),
+                        several: several[part(v)].to_vec(),
+                    },
+                    Data::Json(_) | Data::Grey(_) => {
+                        return Err(format!(
+                            "a multisampled output is a stacked PNG, read --as ids or mask, not --as {}",
+                            self.format.name()
+                        ))
+                    }
+                };
+                Ok(Theirs {
+                    width: self.width,
+                    height: h,
+                    format: self.format,
+                    data,
+                })
+            })
+            .collect()
+    }
+
     /// A grey image as their output (`Format::Grey`).
     pub fn from_grey(grey: GreyImage) -> Theirs {
         Theirs {

@@ -17,6 +17,7 @@ use crate::geom::{Point, Polygon, Triangle};
 use crate::line::{Line, LineRule};
 use crate::model::Primitives;
 use crate::num::exact::{exact_text, json_pair};
+use crate::pattern::SamplePattern;
 
 pub use parse::{parse_scene, parse_scene_bytes};
 
@@ -80,6 +81,9 @@ pub struct Scene {
     pub viewport: Option<Viewport>,
     /// `clip`: the window every primitive is clipped against before rasterization.
     pub clip: Option<Window>,
+    /// `samples`: the pixel's sample pattern (multisampling); `None` is the convention's
+    /// one sample per pixel.
+    pub samples: Option<SamplePattern>,
 }
 
 impl Scene {
@@ -102,6 +106,7 @@ impl Scene {
             clip_space_triangles: Vec::new(),
             viewport: None,
             clip: None,
+            samples: None,
         }
     }
 
@@ -356,6 +361,9 @@ impl Scene {
                 let pts: Vec<String> = pts.iter().map(pt).collect();
                 let _ = write!(s, ",\n  \"clip\": {{\"convex\": [{}]}}", pts.join(", "));
             }
+        }
+        if let Some(pattern) = &self.samples {
+            let _ = write!(s, ",\n  \"samples\": {}", pattern.to_json());
         }
         s.push_str("\n}\n");
         s

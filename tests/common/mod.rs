@@ -61,6 +61,18 @@ pub fn snap(x: &BigRational, bits: u32, half_away: bool) -> i128 {
 
 /// Pixel -> sorted owner ids, for triangles given as exact vertices, samples at centres.
 pub fn render(tris: &[[[BigRational; 2]; 3]], w: u32, h: u32, conv: Conv) -> BTreeMap<(u32, u32), Vec<u32>> {
+    let half = 1i128 << (conv.bits - 1);
+    render_at(tris, w, h, conv, [half, half])
+}
+
+/// [`render`] with each pixel's sample at `at` subpixels from its top-left corner.
+pub fn render_at(
+    tris: &[[[BigRational; 2]; 3]],
+    w: u32,
+    h: u32,
+    conv: Conv,
+    at: [i128; 2],
+) -> BTreeMap<(u32, u32), Vec<u32>> {
     let mut out: BTreeMap<(u32, u32), Vec<u32>> = BTreeMap::new();
     for (id, t) in tris.iter().enumerate() {
         let v: Vec<[i128; 2]> = t
@@ -80,7 +92,7 @@ pub fn render(tris: &[[[BigRational; 2]; 3]], w: u32, h: u32, conv: Conv) -> BTr
         for j in 0..h {
             for i in 0..w {
                 let one = 1i128 << conv.bits;
-                let p = [i128::from(i) * one + one / 2, i128::from(j) * one + one / 2];
+                let p = [i128::from(i) * one + at[0], i128::from(j) * one + at[1]];
                 let inside = (0..3).all(|k| {
                     let a = v[order[k]];
                     let b = v[order[(k + 1) % 3]];

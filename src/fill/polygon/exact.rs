@@ -24,10 +24,12 @@ use num_traits::{Signed, Zero};
 
 use super::{closed_edges, crosses_moved_row};
 use crate::convention::{AnyTieRule, MovedSample, Target, TieRule};
+use crate::coverage::samples::SampleCoverage;
 use crate::coverage::CoverageSink;
 use crate::edge::exact::edge_function;
 use crate::geom::{Point, Polygon};
-use crate::raster::{exact_sample_range, ExactGrid};
+use crate::pattern::SamplePattern;
+use crate::raster::{exact_pixel_range, exact_sample_range, ExactGrid};
 
 /// The winding number of the moved sample of `p` around one closed contour, exactly
 /// (see the [module docs](super)), in the contour's own orientation.
@@ -252,6 +254,30 @@ pub fn rasterize_exact_with<S: CoverageSink + ?Sized>(
             let sample = grid.sample(i, j);
             if contains_exact_with(&sample, poly, rule) {
                 sink.cover(i, j, id);
+            }
+        }
+    }
+}
+
+/// Covers every sample of `pattern` inside `poly` under `target`'s tie rule
+/// ([`contains_exact`] at the exact point `(i + x_s, j + y_s)` of each sample `s` of each
+/// pixel `(i, j)`). The plain per-sample oracle.
+pub fn rasterize_exact_samples(
+    poly: &Polygon,
+    id: u32,
+    target: &Target,
+    pattern: &SamplePattern,
+    sink: &mut SampleCoverage,
+) {
+    let Some(range) = exact_pixel_range(poly.outline.iter().chain(poly.holes.iter().flatten()), target) else {
+        return;
+    };
+    for j in range.y0..=range.y1 {
+        for i in range.x0..=range.x1 {
+            for s in 0..pattern.len() {
+                if contains_exact(&pattern.sample(i, j, s), poly, target.convention.tie_rule) {
+                    sink.cover(i, j, s, id);
+                }
             }
         }
     }

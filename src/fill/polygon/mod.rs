@@ -38,7 +38,10 @@ pub mod planned;
 mod rows;
 mod scanline;
 
-pub use exact::{contains_exact, contains_exact_with, contour_winding_exact, rasterize_exact, rasterize_exact_with};
+pub use exact::{
+    contains_exact, contains_exact_with, contour_winding_exact, rasterize_exact, rasterize_exact_samples,
+    rasterize_exact_with,
+};
 pub use float::{contour_winding_f32, contour_winding_f64, rasterize_f32, rasterize_f64, PolygonF32, PolygonF64};
 pub use planned::PlannedPolygon;
 pub use rows::rasterize_rows_exact;

@@ -133,6 +133,8 @@ pub enum CompareError {
     NotExact(Model),
     /// The oracle model refused the scene.
     Model(ModelError),
+    /// Their multisampled image is not the pattern's images stacked.
+    Samples(String),
 }
 
 impl fmt::Display for CompareError {
@@ -145,6 +147,7 @@ impl fmt::Display for CompareError {
                 m.name()
             ),
             CompareError::Model(e) => write!(f, "{e}"),
+            CompareError::Samples(e) => write!(f, "{e}"),
         }
     }
 }

@@ -95,6 +95,7 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
             "clip_space_triangles",
             "viewport",
             "clip",
+            "samples",
         ],
     )?;
     let width = p.canvas_side(root, "width")?;
@@ -136,6 +137,10 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
         None => None,
         Some(v) => Some(p.clip(v)?),
     };
+    let samples = match root.get("samples") {
+        None => None,
+        Some(v) => Some(p.samples(v)?),
+    };
     if triangles.len() + lines.len() + polygons.len() + clip_space_triangles.len() > MAX_TRIANGLES {
         return Err(p.err("", format!("more than {MAX_TRIANGLES} primitives")));
     }
@@ -150,6 +155,7 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
         clip_space_triangles,
         viewport,
         clip,
+        samples,
     })
 }
 

@@ -1,5 +1,5 @@
 //! The shape fields of a scene: `triangles`, `lines`, `polygons`, `clip_space_triangles`,
-//! and the clipping fields `viewport` and `clip`.
+//! the clipping fields `viewport` and `clip`, and the sample pattern `samples`.
 
 use super::json::{Map, Value};
 use num_rational::BigRational;
@@ -14,6 +14,7 @@ use crate::fill::polygon::{locate_exact, Location};
 use crate::geom::Rgb;
 use crate::geom::{FillRule, Point, Polygon, Triangle};
 use crate::line::{BresenhamTie, Line, LineRule, MAX_BRESENHAM_COORD};
+use crate::pattern::{PatternError, SamplePattern, MAX_SAMPLES, STANDARD_COUNTS};
 use crate::scene::{SceneError, SceneTriangle};
 
 impl Reader<'_> {
@@ -362,5 +363,40 @@ impl Reader<'_> {
             }
             _ => Err(self.err("clip", "expected exactly one of \"rect\" and \"convex\"".into())),
         }
+    }
+
+    /// `samples`: the count of a standard pattern (1, 2, 4, 8, 16), or a list of positions
+    /// `[x, y]`, each an exact fraction of the pixel from its top-left corner.
+    pub(super) fn samples(&self, v: &Value) -> Result<SamplePattern, SceneError> {
+        if let Value::Number(_) = v {
+            let n = self.integer(v, "samples")?;
+            return usize::try_from(n)
+                .ok()
+                .and_then(SamplePattern::standard)
+                .ok_or_else(|| {
+                    let counts: Vec<String> = STANDARD_COUNTS.iter().map(ToString::to_string).collect();
+                    self.err(
+                        "samples",
+                        format!(
+                            "{n} has no standard pattern (standard counts: {}); give the positions as a list of [x, y] instead",
+                            counts.join(", ")
+                        ),
+                    )
+                });
+        }
+        let positions = self.each(v, "samples", MAX_SAMPLES, |p, at| {
+            let point = self.point(Some(p), at)?;
+            Ok([point.x, point.y])
+        })?;
+        SamplePattern::custom(positions).map_err(|e| {
+            let at = match &e {
+                PatternError::Outside { index, axis, .. } => {
+                    format!("samples[{index}][{}]", if *axis == 'x' { 0 } else { 1 })
+                }
+                PatternError::Duplicate { second, .. } => format!("samples[{second}]"),
+                PatternError::Empty | PatternError::TooMany(_) => "samples".to_string(),
+            };
+            self.err(&at, e.to_string())
+        })
     }
 }

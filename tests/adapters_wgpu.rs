@@ -1,0 +1,1 @@
+//! The wgpu adapter (adapters/wgpu/): filled in by its author.
