@@ -1,1 +1,466 @@
-//! The wgpu adapter (adapters/wgpu/): filled in by its author.
+//! The wgpu adapter (adapters/wgpu/, its own crate: a real GPU API as the renderer; Mesa's
+//! lavapipe, a Vulkan driver on the CPU, in CI), run on small fixed scenes.
+//!
+//! What is asserted, and why it should hold independently of these runs:
+//! - one sample per pixel: a conformant Vulkan rasterizer with 8 subpixel bits
+//!   (lavapipe's `subPixelPrecisionBits`), the top-left rule and samples at pixel centres
+//!   is the `vulkan` preset, so scenes whose vertices are f32-exact and reach the GPU
+//!   exactly (the adapter's mapping, adapters/wgpu/src/main.rs) must equal the oracle
+//!   pixel for pixel, ties and several owners (alpha 254) included: a grid whose edges run
+//!   through pixel centres, a mesh on the 1/4096 grid, a scene with vertices off the
+//!   canvas (negative, so the adapter's integer offset is used); `--fit` must name
+//!   top-left and no fewer than 8 bits; and a stay-alive hunt of the families the
+//!   adapter draws finds nothing;
+//! - four samples: the expected sample masks are derived by hand from Vulkan's standard
+//!   4x positions (below), not taken from the adapter;
+//! - a polygon, an unsupported sample count and (where the adapter lacks it)
+//!   `--conservative` are refused with one clear line; `--info` is one JSON line.
+//!
+//! The adapter is looked for at adapters/wgpu/target/release/rasterproof-wgpu-adapter
+//! (`cargo build --release --manifest-path adapters/wgpu/Cargo.toml`). Missing, or no
+//! GPU adapter found (`apt-get install mesa-vulkan-drivers libvulkan1` gives lavapipe):
+//! the tests print a skip message, unless the environment variable `CI` is set (.ci/run
+//! builds it and installs lavapipe), where they fail.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use serde_json::Value;
+
+use crate::tempdir;
+
+/// A 3x3 grid of squares of side 3 on a 10x10 canvas, vertices on pixel centres (every
+/// edge runs through samples).
+const TIE_GRID: &str = include_str!("../adapters/scenes/tie-grid.json");
+
+/// Six overlapping triangles, vertices on the 1/64 grid, no sample on an edge.
+const NO_TIES: &str = include_str!("../adapters/scenes/no-ties.json");
+
+/// An 8x8 mesh of 8 px cells on a 64x64 canvas, vertices on the 1/4096 grid.
+const FINE_MESH: &str = include_str!("../adapters/scenes/fine-mesh.json");
+
+/// A 13x7 canvas: two triangles sharing the edge (13, 0)-(0, 7), which passes through the
+/// sample (6.5, 3.5), one with a vertex at (-3, -2) and one reaching (16, 9) (off the
+/// canvas: the adapter's target is 32 px with the canvas at offset (3, 2)); over them two
+/// triangles on pixel centres (edges through samples, several owners).
+const THIRTEEN_BY_SEVEN: &str = r#"{"width": 13, "height": 7, "triangles": [
+  {"v": [["-3", "-2"], ["13", "0"], ["0", "7"]]},
+  {"v": [["13", "0"], ["16", "9"], ["0", "7"]]},
+  {"v": [["1/2", "1/2"], ["25/2", "1/2"], ["13/2", "13/2"]]},
+  {"v": [["13/2", "1/2"], ["25/2", "13/2"], ["1/2", "13/2"]]}
+]}"#;
+
+/// The adapter's executable, when it is built and finds a GPU adapter; otherwise `None`
+/// after a skip message (a failure when `CI` is set).
+fn adapter() -> Option<PathBuf> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/wgpu/target/release/rasterproof-wgpu-adapter");
+    let missing = if path.is_file() {
+        match Command::new(&path).arg("--info").output() {
+            Ok(o) if o.status.success() => return Some(path),
+            Ok(o) => format!(
+                "it finds no usable GPU adapter ({}); apt-get install mesa-vulkan-drivers libvulkan1 gives lavapipe",
+                String::from_utf8_lossy(&o.stderr).trim()
+            ),
+            Err(e) => format!("{}: {e}", path.display()),
+        }
+    } else {
+        format!(
+            "{} is not built (cargo build --release --manifest-path adapters/wgpu/Cargo.toml)",
+            path.display()
+        )
+    };
+    let message = format!("the wgpu adapter cannot run: {missing}");
+    assert!(
+        std::env::var_os("CI").is_none(),
+        "CI is set, so this is an error: {message}"
+    );
+    eprintln!("skipping the wgpu adapter tests: {message}");
+    None
+}
+
+fn write(dir: &tempdir::Dir, name: &str, text: &str) -> PathBuf {
+    let path = dir.path().join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+fn text(output: &Output) -> String {
+    format!(
+        "status {:?}\nstdout:\n{}\nstderr:\n{}",
+        output.status.code(),
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr)
+    )
+}
+
+/// Runs the adapter with `args` then `SCENE OUT`; asserts it succeeded.
+fn render(adapter: &Path, args: &[&str], scene: &Path, out: &Path) {
+    let output = Command::new(adapter).args(args).arg(scene).arg(out).output().unwrap();
+    assert!(output.status.success(), "wgpu adapter {args:?}:\n{}", text(&output));
+}
+
+/// `rasterproof compare SCENE THEIRS --as ids --format json ARGS`: (exit code, report).
+fn compare(scene: &Path, theirs: &Path, args: &[&str]) -> (i32, Value) {
+    let output = assert_cmd::Command::cargo_bin("rasterproof")
+        .unwrap()
+        .arg("compare")
+        .arg(scene)
+        .arg(theirs)
+        .args(["--as", "ids", "--format", "json"])
+        .args(args)
+        .output()
+        .unwrap();
+    let code = output.status.code().expect("compare exits");
+    assert!(code == 0 || code == 1, "compare {args:?}:\n{}", text(&output));
+    (code, serde_json::from_slice(&output.stdout).expect("compare's JSON"))
+}
+
+/// One sample per pixel: every scene identical to the oracle under `--preset vulkan`.
+#[test]
+fn single_sample_equals_the_vulkan_preset() {
+    let Some(adapter) = adapter() else { return };
+    let dir = tempdir::Dir::new("wgpu-single");
+    for (name, scene) in [
+        ("tie-grid", TIE_GRID),
+        ("no-ties", NO_TIES),
+        ("fine-mesh", FINE_MESH),
+        ("thirteen", THIRTEEN_BY_SEVEN),
+    ] {
+        let scene = write(&dir, &format!("{name}.json"), scene);
+        let out = dir.path().join(format!("{name}.png"));
+        render(&adapter, &[], &scene, &out);
+        let (code, report) = compare(&scene, &out, &["--preset", "vulkan"]);
+        assert_eq!(code, 0, "{name}: not identical under the vulkan preset: {report}");
+    }
+}
+
+/// `--fit`: the ties of the grid and of the 13x7 scene are top-left's alone; the fine
+/// mesh fits 8 bits (nearest-even) and nothing coarser; samples at pixel centres.
+#[test]
+fn fit_names_top_left_and_8_bits() {
+    let Some(adapter) = adapter() else { return };
+    let dir = tempdir::Dir::new("wgpu-fit");
+    for (name, scene) in [("tie-grid", TIE_GRID), ("thirteen", THIRTEEN_BY_SEVEN)] {
+        let scene = write(&dir, &format!("{name}.json"), scene);
+        let out = dir.path().join(format!("{name}.png"));
+        render(&adapter, &[], &scene, &out);
+        let (code, report) = compare(&scene, &out, &["--fit"]);
+        assert_eq!(code, 0, "{name}: no convention fits: {report}");
+        let exact = report["exact"].as_array().expect("exact fits");
+        assert!(!exact.is_empty(), "{report}");
+        for fit in exact {
+            assert_eq!(fit["tie_rule"], "top-left", "{name}: {report}");
+        }
+    }
+    let scene = write(&dir, "fine-mesh.json", FINE_MESH);
+    let out = dir.path().join("fine-mesh.png");
+    render(&adapter, &[], &scene, &out);
+    let (code, report) = compare(&scene, &out, &["--fit"]);
+    assert_eq!(code, 0, "fine mesh: no convention fits: {report}");
+    let exact = report["exact"].as_array().expect("exact fits");
+    let bits: Vec<u64> = exact.iter().filter_map(|f| f["subpixel_bits"].as_u64()).collect();
+    assert_eq!(bits.iter().min(), Some(&8), "{report}");
+    assert!(
+        exact
+            .iter()
+            .any(|f| f["subpixel_bits"] == 8 && f["rounding"] == "nearest-even"),
+        "{report}"
+    );
+    for fit in exact {
+        assert_eq!(fit["pixel_centre"], "0.5", "{report}");
+    }
+}
+
+/// The stay-alive protocol under a hunt: 200 scenes of the families whose vertices the
+/// adapter's target holds, all identical under the vulkan preset (`hunt` exits 0).
+#[test]
+fn stay_alive_hunt_finds_nothing() {
+    let Some(adapter) = adapter() else { return };
+    let dir = tempdir::Dir::new("wgpu-hunt");
+    let output = assert_cmd::Command::cargo_bin("rasterproof")
+        .unwrap()
+        .arg("hunt")
+        .arg("--serve")
+        .arg(format!("{} --serve", adapter.display()))
+        .args(["--preset", "vulkan", "--float32-exact", "--cases", "200", "--jobs", "2"])
+        .args(["--family", "mesh,delaunay,slivers,fine", "--quiet", "--out"])
+        .arg(dir.path())
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "hunt found something:\n{}", text(&output));
+    assert!(
+        String::from_utf8_lossy(&output.stdout).contains("200 identical"),
+        "{}",
+        text(&output)
+    );
+}
+
+/// A 4x case: name, scene, canvas width and height, the expected id + 1 of each pixel
+/// (row order) at samples 0..4.
+type Case = (&'static str, &'static str, u32, u32, [&'static [u32]; 4]);
+
+/// Vulkan's standard 4x sample positions (the spec's table "Standard sample locations";
+/// D3D's too), within a pixel, y down: sample 0 (0.375, 0.125), 1 (0.875, 0.375),
+/// 2 (0.125, 0.625), 3 (0.625, 0.875).
+///
+/// Each scene's expected ids per sample (id + 1, 0 uncovered), pixels in row order,
+/// derived from those positions:
+/// - A (2x2): one triangle whose right edge is the vertical x = 3/2 (the other two edges
+///   far to the left): pixel column 0 is covered at every sample; in column 1, the
+///   samples at x = 1.375 (0) and 1.125 (2) lie left of the edge, those at 1.875 (1) and
+///   1.625 (3) right of it.
+/// - B (1x1): a triangle below the horizontal edge y = 1/2: samples 2 (y 0.625) and 3
+///   (0.875) only.
+/// - C (1x1): a triangle on the side x − y > 3/8 of the edge through (-9.625, -10) and
+///   (10.375, 10): x − y at the samples is 0.25, 0.5, −0.5, −0.25, so sample 1 only.
+/// - D (1x1): two triangles sharing the vertical edge x = 3/8, which passes exactly
+///   through sample 0 (0.375, 0.125): id 0 left of it, id 1 right. Sample 2 (x 0.125) is
+///   id 0's; samples 1 and 3 id 1's; sample 0 lies on the edge, which is id 1's left edge
+///   (owned under the top-left rule) and id 0's right edge (not owned): id 1's alone, no
+///   second owner (alpha 255).
+#[test]
+fn four_samples_hold_the_hand_derived_masks() {
+    let Some(adapter) = adapter() else { return };
+    let info = info(&adapter);
+    let counts: Vec<u64> = info["sample_counts"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(Value::as_u64)
+        .collect();
+    if !counts.contains(&4) {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI (lavapipe) offers 4 samples: {info}"
+        );
+        eprintln!("skipping the 4x test: this adapter offers {counts:?} samples");
+        return;
+    }
+    let cases: [Case; 4] = [
+        (
+            "A",
+            r#"{"width": 2, "height": 2, "triangles": [{"v": [["3/2", "-10"], ["3/2", "10"], ["-20", "0"]]}]}"#,
+            2,
+            2,
+            [&[1, 1, 1, 1], &[1, 0, 1, 0], &[1, 1, 1, 1], &[1, 0, 1, 0]],
+        ),
+        (
+            "B",
+            r#"{"width": 1, "height": 1, "triangles": [{"v": [["-10", "1/2"], ["10", "1/2"], ["0", "20"]]}]}"#,
+            1,
+            1,
+            [&[0], &[0], &[1], &[1]],
+        ),
+        (
+            "C",
+            r#"{"width": 1, "height": 1, "triangles": [{"v": [["-9.625", "-10"], ["10.375", "10"], ["10.375", "-10"]]}]}"#,
+            1,
+            1,
+            [&[0], &[1], &[0], &[0]],
+        ),
+        (
+            "D",
+            r#"{"width": 1, "height": 1, "triangles": [
+                {"v": [["0.375", "-10"], ["0.375", "10"], ["-20", "0"]]},
+                {"v": [["0.375", "-10"], ["20", "0"], ["0.375", "10"]]}]}"#,
+            1,
+            1,
+            [&[2], &[2], &[1], &[2]],
+        ),
+    ];
+    let dir = tempdir::Dir::new("wgpu-4x");
+    for (name, scene, w, h, expected) in cases {
+        let scene = write(&dir, &format!("{name}.json"), scene);
+        let out = dir.path().join(format!("{name}.png"));
+        render(&adapter, &["--samples", "4"], &scene, &out);
+        let image = image::open(&out).unwrap().to_rgba8();
+        assert_eq!(image.dimensions(), (w, 4 * h), "{name}: the stacked PNG is W x 4H");
+        for (s, ids) in expected.iter().enumerate() {
+            let s = u32::try_from(s).unwrap();
+            let got: Vec<u32> = (0..h)
+                .flat_map(|y| (0..w).map(move |x| (x, y)))
+                .map(|(x, y)| {
+                    let [r, g, b, a] = image.get_pixel(x, s * h + y).0;
+                    assert!(a == 0 || a == 255, "{name}: sample {s} ({x}, {y}): alpha {a}");
+                    u32::from(r) | u32::from(g) << 8 | u32::from(b) << 16
+                })
+                .collect();
+            assert_eq!(&got, ids, "{name}: sample {s}");
+        }
+    }
+}
+
+/// `--info`: one JSON line with the adapter and what it offers.
+fn info(adapter: &Path) -> Value {
+    let output = Command::new(adapter).arg("--info").output().unwrap();
+    assert!(output.status.success(), "--info:\n{}", text(&output));
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert_eq!(stdout.lines().count(), 1, "{stdout}");
+    serde_json::from_str(&stdout).expect("--info prints JSON")
+}
+
+#[test]
+fn info_is_json_with_the_fields() {
+    let Some(adapter) = adapter() else { return };
+    let info = info(&adapter);
+    for field in ["adapter", "backend", "driver", "driver_info"] {
+        assert!(info[field].is_string(), "{field}: {info}");
+    }
+    let counts = info["sample_counts"].as_array().expect("sample_counts");
+    assert!(counts.contains(&Value::from(1)), "{info}");
+    assert!(info["r32uint_sample_counts"].is_array(), "{info}");
+    assert!(info["conservative_rasterization"].is_boolean(), "{info}");
+}
+
+/// Runs the adapter expecting a refusal: exit 2, one line on stderr; returns it.
+fn refusal(adapter: &Path, args: &[&str], scene: &Path, out: &Path) -> String {
+    let output = Command::new(adapter).args(args).arg(scene).arg(out).output().unwrap();
+    assert_eq!(output.status.code(), Some(2), "{args:?}:\n{}", text(&output));
+    let stderr = String::from_utf8_lossy(&output.stderr).to_string();
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    stderr
+}
+
+#[test]
+fn refusals_are_one_clear_line() {
+    let Some(adapter) = adapter() else { return };
+    let dir = tempdir::Dir::new("wgpu-refusals");
+    let out = dir.path().join("out.png");
+    let polygon = write(
+        &dir,
+        "polygon.json",
+        r#"{"width": 4, "height": 4, "polygons": [{"v": [[0, 0], [4, 0], [0, 4]]}]}"#,
+    );
+    let message = refusal(&adapter, &[], &polygon, &out);
+    assert!(
+        message.contains("triangles only") && message.contains("polygons"),
+        "{message}"
+    );
+    let triangle = write(
+        &dir,
+        "triangle.json",
+        r#"{"width": 4, "height": 4, "triangles": [{"v": [[0, 0], [4, 0], [0, 4]]}]}"#,
+    );
+    // No API offers 3 samples; the message names the counts this adapter does offer.
+    let message = refusal(&adapter, &["--samples", "3"], &triangle, &out);
+    assert!(message.contains("not 3") && message.contains("[1"), "{message}");
+    // A vertex far beyond the largest target: refused, unless --clip lets the GPU clip.
+    let far = write(
+        &dir,
+        "far.json",
+        r#"{"width": 4, "height": 4, "triangles": [{"v": [[0, 0], [4, 0], [0, 1000000]]}]}"#,
+    );
+    let message = refusal(&adapter, &[], &far, &out);
+    assert!(message.contains("beyond") && message.contains("--clip"), "{message}");
+    render(&adapter, &["--clip"], &far, &out);
+    if info(&adapter)["conservative_rasterization"] == false {
+        let message = refusal(&adapter, &["--conservative"], &triangle, &out);
+        assert!(
+            message.contains("does not offer conservative rasterization"),
+            "{message}"
+        );
+    }
+    // Under --serve, a refusal is an `ok: false` answer and the next scene is drawn.
+    let request = |id: u32, scene: &str| {
+        serde_json::json!({"rasterproof": 1, "id": id, "scene": serde_json::from_str::<Value>(scene).unwrap(), "out": out})
+            .to_string()
+    };
+    let input = format!(
+        "{}\n{}\n",
+        request(
+            1,
+            r#"{"width": 4, "height": 4, "polygons": [{"v": [[0, 0], [4, 0], [0, 4]]}]}"#
+        ),
+        request(
+            2,
+            r#"{"width": 4, "height": 4, "triangles": [{"v": [[0, 0], [4, 0], [0, 4]]}]}"#
+        )
+    );
+    let output = assert_cmd::Command::new(&adapter)
+        .arg("--serve")
+        .write_stdin(input)
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{}", text(&output));
+    let answers: Vec<Value> = String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(answers.len(), 2, "{}", text(&output));
+    assert_eq!(answers[0]["ok"], false);
+    assert!(answers[0]["error"].as_str().unwrap().contains("triangles only"));
+    assert_eq!(answers[1], serde_json::json!({"id": 2, "ok": true}));
+}
+
+/// The same at four samples per pixel: `hunt --samples 4` writes the standard 4x pattern
+/// into every scene, the adapter draws a 4-sample target and reads every sample back, and
+/// each sample index is judged on its own; 200 scenes, all identical.
+#[test]
+fn four_sample_hunt_finds_nothing() {
+    let Some(adapter) = adapter() else { return };
+    let dir = tempdir::Dir::new("wgpu-hunt-4x");
+    let output = assert_cmd::Command::cargo_bin("rasterproof")
+        .unwrap()
+        .arg("hunt")
+        .arg("--serve")
+        .arg(format!("{} --samples 4 --serve", adapter.display()))
+        .args([
+            "--samples",
+            "4",
+            "--preset",
+            "vulkan",
+            "--float32-exact",
+            "--cases",
+            "200",
+            "--jobs",
+            "2",
+        ])
+        .args(["--family", "mesh,delaunay,slivers,fine", "--quiet", "--out"])
+        .arg(dir.path())
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "hunt found something:\n{}", text(&output));
+    assert!(
+        String::from_utf8_lossy(&output.stdout).contains("200 identical"),
+        "{}",
+        text(&output)
+    );
+}
+
+/// The committed 4x findings (adapters/fixtures/wgpu-lavapipe/, found with `--clip`: the
+/// GPU clips a far vertex in floats): `compare` finds the signature in the committed
+/// stacked PNG (no GPU needed), and the adapter, where it runs, still draws that PNG.
+#[test]
+fn the_clipping_fixtures_show_their_findings() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/fixtures/wgpu-lavapipe");
+    let fixtures = [
+        ("01-near-edge-clipped-far-vertex-4x", "near-edge, triangles", 0),
+        ("02-snapping-clipped-vertex-left-of-target-4x", "snapping, triangles", 1),
+    ];
+    let adapter = adapter();
+    for (name, signature, sample) in fixtures {
+        let scene = root.join(format!("{name}.json"));
+        let png = root.join(format!("{name}.png"));
+        let (code, report) = compare(&scene, &png, &[]);
+        assert_eq!(code, 1, "{name}");
+        assert_eq!(report["differing_samples"], 1, "{name}");
+        let pixels = &report["samples"][sample]["report"]["pixels"];
+        let classes: Vec<String> = pixels[0]["findings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|f| f["class"].as_str().unwrap().to_string())
+            .collect();
+        assert!(signature.starts_with(classes[0].as_str()), "{name}: {classes:?}");
+        if let Some(adapter) = &adapter {
+            let dir = tempdir::Dir::new("wgpu-fixture");
+            let out = dir.path().join("out.png");
+            render(adapter, &["--samples", "4", "--clip"], &scene, &out);
+            assert_eq!(
+                image::open(&out).unwrap().to_rgba8(),
+                image::open(&png).unwrap().to_rgba8(),
+                "{name}"
+            );
+        }
+    }
+}

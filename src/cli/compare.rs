@@ -70,6 +70,12 @@ pub struct Options {
     /// and each sample index is compared (or, with `--fit`, fitted) on its own.
     #[arg(long, value_name = "N")]
     samples: Option<usize>,
+    /// Judge THEIRS (read as a mask, or the pixels an ids image covers) as conservative
+    /// rasterization under RULE (`d3d12-tier1`, `d3d12-tier2`, `d3d12-tier3`, `vulkan`;
+    /// see `render --conservative`): right when every pixel it must cover is covered and
+    /// none beyond those it may cover is. Exit 0 when right, 1 otherwise.
+    #[arg(long, value_name = "RULE", conflicts_with_all = ["fit", "diff_out", "html", "samples"])]
+    conservative: Option<String>,
     /// With `--as grey`: the exact area semantics their levels approximate (`true`,
     /// `accumulated` or `unclamped`; see `render --coverage area`).
     #[arg(long, default_value = "true", value_name = "true|accumulated|unclamped")]
@@ -155,6 +161,24 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let theirs_name = o.theirs.display().to_string();
     let bytes = std::fs::read(&o.theirs).map_err(|e| format!("{theirs_name}: cannot read: {e}"))?;
     let theirs = Theirs::read(&bytes, &theirs_name, format, background).map_err(|e| e.to_string())?;
+    if let Some(rule) = &o.conservative {
+        let rule = super::parse_conservative(rule)?;
+        let sets = rasterproof::model::render_conservative(&scene.primitives(), &target, &rule)
+            .map_err(|e| format!("{name}: {e}"))?;
+        let report = rasterproof::oracle::conservative::judge_conservative(&sets, &rule, &theirs)
+            .map_err(|e| format!("{theirs_name}: {e} ({name})"))?;
+        match o.format_out {
+            OutputFormat::Text => {
+                super::write_stdout(|out| out.write_all(report.to_text(&name, &theirs_name, o.limit).as_bytes()))?
+            }
+            OutputFormat::Json => super::print_stdout(&report.to_json().to_string())?,
+        }
+        return Ok(if report.right() {
+            ExitCode::SUCCESS
+        } else {
+            ExitCode::from(1)
+        });
+    }
     let pattern = match o.samples {
         Some(n) => Some(super::parse_samples(n)?),
         None => scene.samples.clone(),

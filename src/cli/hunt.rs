@@ -100,6 +100,12 @@ pub struct Options {
     /// Runs of the renderer allowed per shrink.
     #[arg(long, default_value_t = 400)]
     shrink_runs: usize,
+    /// Every scene states the standard pattern of N samples (`samples`: 2, 4, 8 or 16):
+    /// the renderer answers with one ids image per sample index, stacked (width W, height
+    /// N x H), and each sample index is judged on its own (`compare --samples`). The
+    /// families default to the triangle-only ones; lines have no samples.
+    #[arg(long, value_name = "N")]
+    samples: Option<usize>,
     /// Renderers run at once (--jobs), shard, time budget, progress bar, reports.
     #[command(flatten)]
     run: RunArgs,
@@ -143,8 +149,17 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             rasterproof::convention::MAX_CANVAS
         ));
     }
+    let samples = o.samples.map(super::parse_samples).transpose()?.filter(|p| p.len() > 1);
+    if samples.is_some() && (grey.is_some() || o.fit_first) {
+        return Err(
+            "--samples: a multisample hunt judges ids or masks per sample; leave out --as grey and --fit-first"
+                .to_string(),
+        );
+    }
     let families = if o.families.is_empty() && grey.is_some() {
         AREA_FAMILIES.to_vec()
+    } else if o.families.is_empty() && samples.is_some() {
+        SceneFamily::TRIANGLES_ONLY.to_vec()
     } else if o.families.is_empty() {
         SceneFamily::ALL.to_vec()
     } else {
@@ -204,8 +219,12 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         shrink_runs: o.shrink_runs,
         shard: o.run.shard(),
         budget: o.run.time,
+        samples,
         ..HuntConfig::default()
     };
+    if config.samples.is_some() && config.families.contains(&SceneFamily::Lines) {
+        return Err("--family lines: lines have no samples (a line decides a pixel by its own rule); leave it out with --samples".to_string());
+    }
     if let Some(p) = &o.convention.preset {
         config.preset = Preset::from_name(p)
             .ok_or_else(|| format!("--preset: unknown preset {p:?} (expected one of d3d11, vulkan, gl, cts)"))?;

@@ -356,6 +356,13 @@ pub fn parse_samples(n: usize) -> Result<rasterproof::pattern::SamplePattern, St
     })
 }
 
+/// `--conservative RULE`.
+pub fn parse_conservative(name: &str) -> Result<rasterproof::model::ConservativeRule, String> {
+    rasterproof::model::ConservativeRule::from_name(name).ok_or_else(|| {
+        format!("--conservative: unknown rule {name:?} (expected d3d12-tier1, d3d12-tier2, d3d12-tier3 or vulkan)")
+    })
+}
+
 /// `--quantization NAME` (area coverage).
 pub fn parse_quantization(name: &str) -> Result<rasterproof::area::Quantization, String> {
     rasterproof::area::Quantization::from_name(name).ok_or_else(|| {

@@ -89,6 +89,17 @@ pub struct Options {
     /// opaque white on black gives.
     #[arg(long = "count-out", value_name = "COUNT.png")]
     count_out: Option<PathBuf>,
+    /// Conservative rasterization instead of samples: the pixels a renderer must cover and
+    /// those it may, exactly, under `d3d12-tier1` (uncertainty 1/2 px, post-snap
+    /// degenerates may be culled), `d3d12-tier2` (1/256 px, degenerates kept),
+    /// `d3d12-tier3` (as tier 2, with inner coverage) or `vulkan` (1/256 px of
+    /// overestimation, touching pixels must be covered, with underestimation). Triangles
+    /// only. The text grid shows `#` must, `+` may, `.` neither (then the inner coverage
+    /// the same way); `--format json` gives `{"rule","must":[[x,y,[ids]]...],"may":...,
+    /// "inner_must","inner_may","one_of":[[id,[[x,y]...]]]}`; `-o SETS.png` a grey PNG:
+    /// 255 must, 128 may, 0 neither.
+    #[arg(long, value_name = "RULE")]
+    conservative: Option<String>,
 }
 
 /// `--format`'s values for `render`, with their help.
@@ -119,6 +130,9 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let model = super::parse_model(o.model.as_deref().unwrap_or("exact-snapped"))?;
     let scale_asked = o.scale.as_deref().map(parse_scale).transpose()?;
     let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
+    if let Some(rule) = &o.conservative {
+        return run_conservative(o, rule, &name, &scene, &target);
+    }
     let pattern = match o.samples {
         Some(n) => Some(super::parse_samples(n)?),
         None => scene.samples.clone(),
@@ -257,6 +271,99 @@ fn run_samples(
                 for row in cells.chunks(w as usize) {
                     grid.push_str(std::str::from_utf8(row).expect("ASCII"));
                     grid.push('\n');
+                }
+            }
+            crate::cli::print_stdout(&format!("{grid}{summary}"))?;
+        }
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `render --conservative RULE`: the must and may sets, as text, JSON or a grey PNG.
+fn run_conservative(
+    o: &Options,
+    rule: &str,
+    name: &str,
+    scene: &rasterproof::scene::Scene,
+    target: &Target,
+) -> Result<ExitCode, String> {
+    let rule = super::parse_conservative(rule)?;
+    if o.colors_out.is_some()
+        || o.ids_out.is_some()
+        || o.count_out.is_some()
+        || o.samples.is_some()
+        || o.model.is_some()
+    {
+        return Err(format!(
+            "--conservative writes -o SETS.png and the sets on stdout; --colors-out, --ids-out, --count-out, --samples and --model are for sample coverage ({name})"
+        ));
+    }
+    let sets = rasterproof::model::render_conservative(&scene.primitives(), target, &rule)
+        .map_err(|e| format!("{name}: {e}"))?;
+    let (w, h) = (target.width, target.height);
+    let level = |must: &Coverage, may: &Coverage, x: u32, y: u32| {
+        if !must.owners(x, y).is_empty() {
+            2
+        } else {
+            u8::from(!may.owners(x, y).is_empty())
+        }
+    };
+    let mut outputs = Outputs::new();
+    if let Some(path) = &o.out {
+        let image = image::GrayImage::from_fn(w, h, |x, y| {
+            image::Luma([[0, 128, 255][usize::from(level(&sets.must, &sets.may, x, y))]])
+        });
+        outputs.stage_png(path, &image)?;
+    }
+    outputs.commit()?;
+    let summary = format!(
+        "{name}: conservative {rule}, {}: {} pixels must be covered, {} may{}",
+        target.convention,
+        sets.must.covered_pixels(),
+        sets.may.covered_pixels(),
+        match &sets.inner {
+            Some((must, may)) => format!(
+                "; inner coverage: {} must, {} may",
+                must.covered_pixels(),
+                may.covered_pixels()
+            ),
+            None => String::new(),
+        }
+    );
+    match o.format {
+        OutputFormat::Json => {
+            let pixels = |c: &Coverage| {
+                c.iter()
+                    .map(|(x, y, ids)| serde_json::json!([x, y, ids]))
+                    .collect::<Vec<_>>()
+            };
+            let mut v = serde_json::json!({
+                "width": w, "height": h, "rule": rule.to_string(),
+                "must": pixels(&sets.must), "may": pixels(&sets.may),
+                "one_of": sets.one_of.iter().map(|(id, px)| serde_json::json!([id, px.iter().map(|(x, y)| [x, y]).collect::<Vec<_>>()])).collect::<Vec<_>>(),
+            });
+            if let Some((must, may)) = &sets.inner {
+                v["inner_must"] = serde_json::json!(pixels(must));
+                v["inner_may"] = serde_json::json!(pixels(may));
+            }
+            crate::cli::print_stdout(&v.to_string())?;
+            eprintln!("{summary}");
+        }
+        OutputFormat::Text => {
+            let mut grid = String::new();
+            if w <= ASCII_GRID_MAX_SIDE && h <= ASCII_GRID_MAX_SIDE {
+                let draw = |grid: &mut String, must: &Coverage, may: &Coverage| {
+                    for y in 0..h {
+                        for x in 0..w {
+                            grid.push(['.', '+', '#'][usize::from(level(must, may, x, y))]);
+                        }
+                        grid.push('\n');
+                    }
+                };
+                draw(&mut grid, &sets.must, &sets.may);
+                if let Some((must, may)) = &sets.inner {
+                    grid.push_str("inner coverage:\n");
+                    draw(&mut grid, must, may);
                 }
             }
             crate::cli::print_stdout(&format!("{grid}{summary}"))?;

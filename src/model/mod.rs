@@ -25,6 +25,7 @@
 //!   this way).
 
 mod area;
+mod conservative;
 mod error;
 mod lines;
 pub mod plan;
@@ -42,6 +43,7 @@ use crate::num::exact::{exact_text_short, nearest_f32, nearest_f64};
 use crate::tri::float::FloatRule;
 
 pub use area::{area_shapes, render_area, render_area_rows, AreaError};
+pub use conservative::{render_conservative, ConservativeCoverage, ConservativeError, ConservativeRule};
 pub use error::ModelError;
 pub use prepared::{prepare, render, render_triangles, PreparedScene, Primitives, Shape};
 pub use samples::{at_sample, render_samples};

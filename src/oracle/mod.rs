@@ -11,6 +11,7 @@
 pub mod adapter;
 mod candidate;
 pub mod compare;
+pub mod conservative;
 pub mod evidence;
 pub mod explain;
 pub mod fit;

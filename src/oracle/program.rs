@@ -394,15 +394,26 @@ pub(super) fn read_output(
     };
     let theirs =
         Theirs::read(&bytes, "{out}", format, background).map_err(|e| fail(FailureKind::BadOutput, e.message))?;
-    if (theirs.width(), theirs.height()) != (scene.width, scene.height) {
+    // Under a pattern of several samples the image is one per sample index, stacked.
+    let samples = scene
+        .samples
+        .as_ref()
+        .filter(|p| scene.target().is_some_and(|t| !p.is_single(&t.convention)))
+        .map_or(1, |p| u32::try_from(p.len()).unwrap_or(u32::MAX));
+    let height = scene.height.saturating_mul(samples);
+    if (theirs.width(), theirs.height()) != (scene.width, height) {
+        let stacked = if samples > 1 {
+            format!(" ({samples} sample images of {}x{} stacked)", scene.width, scene.height)
+        } else {
+            String::new()
+        };
         return Err(fail(
             FailureKind::BadOutput,
             format!(
-                "its image is {}x{}, the scene's canvas {}x{}",
+                "its image is {}x{}, the scene's canvas {}x{height}{stacked}",
                 theirs.width(),
                 theirs.height(),
                 scene.width,
-                scene.height
             ),
         ));
     }

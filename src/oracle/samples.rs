@@ -6,7 +6,7 @@
 //! multisampled target). Sample index `s` is compared as a one-sample image of the scene
 //! moved so that sample `s` comes to the pixel's sample position ([`at_sample`]: snapped
 //! first for a snapping model, then moved by whole subpixels), so the difference is exact
-//! and every reason class of [`compare`] applies to it: a tie at that sample, snapping,
+//! and every reason class of [`super::compare()`] applies to it: a tie at that sample, snapping,
 //! near-edge, gross. A pixel's explanation is written in that moved frame: its sample is
 //! the pixel's centre, and the coordinates it quotes are the scene's moved by
 //! `(c - x_s, c - y_s)` (the report says by how much).

@@ -15,7 +15,10 @@
 //!   (`area::cells`) and the plain oracle (`area::exact`), both on the subset below; f32
 //!   accumulation (`area::float`, font-rs and ab_glyph's method); FreeType's 24.8 integer
 //!   cells with 8-bit output (`area::ftgrays`); 4 x 4 exact point samples
-//!   (`area::supersample`) and tiny-skia's levels from them, both on the subset. The
+//!   (`area::supersample`) and tiny-skia's levels from them, both on the subset;
+//!   multisampling at the standard 4x, 8x and 16x positions (`msaa-4x` ... : the
+//!   `scanline` model per sample, snapped to 8 subpixel bits, on every pixel; whole-pixel
+//!   moves leave it unchanged, so its cells beyond 0 are the origin's). The
 //!   sample-counting models are run on one shape at a time and their results added (the
 //!   counts exactly, the 8-bit levels saturating, as `ftgrays` adds its passes), so that
 //!   every contender answers the same accumulated question.
@@ -52,7 +55,10 @@ use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 
 use crate::area::{cells, exact, float, ftgrays, planned, supersample, AreaImage, AreaShape, Quantization, Semantics};
+use crate::convention::{Preset, Target};
 use crate::geom::{FillRule, Point, Polygon};
+use crate::model::{render_samples, Model, Primitives};
+use crate::pattern::SamplePattern;
 use crate::strategy::{triangle, Scale};
 
 use super::metric::Metric;
@@ -97,11 +103,19 @@ pub enum AreaModel {
     Supersample,
     /// `area::supersample::tiny_skia_levels`, tiny-skia's 4 sub-scanlines (subset).
     TinySkia,
+    /// Multisampling at the standard 4x positions: the `scanline` model per sample
+    /// (`model::render_samples`), vertices snapped to 8 subpixel bits as a GPU snaps them,
+    /// each shape's covered samples counted.
+    Msaa4,
+    /// The same at the standard 8x positions.
+    Msaa8,
+    /// The same at the standard 16x positions.
+    Msaa16,
 }
 
 impl AreaModel {
     /// Every contender, in report order.
-    pub const ALL: [AreaModel; 7] = [
+    pub const ALL: [AreaModel; 10] = [
         AreaModel::Plain,
         AreaModel::Cells,
         AreaModel::Planned,
@@ -109,6 +123,9 @@ impl AreaModel {
         AreaModel::FtGrays,
         AreaModel::Supersample,
         AreaModel::TinySkia,
+        AreaModel::Msaa4,
+        AreaModel::Msaa8,
+        AreaModel::Msaa16,
     ];
 
     /// Its name in the report.
@@ -121,6 +138,9 @@ impl AreaModel {
             AreaModel::FtGrays => "ftgrays",
             AreaModel::Supersample => "supersample-4x4",
             AreaModel::TinySkia => "tiny-skia-4x4",
+            AreaModel::Msaa4 => "msaa-4x",
+            AreaModel::Msaa8 => "msaa-8x",
+            AreaModel::Msaa16 => "msaa-16x",
         }
     }
 
@@ -175,8 +195,34 @@ impl AreaModel {
                 }
                 AreaOutput::Levels(levels)
             }
+            AreaModel::Msaa4 => msaa(shapes, width, height, 4)?,
+            AreaModel::Msaa8 => msaa(shapes, width, height, 8)?,
+            AreaModel::Msaa16 => msaa(shapes, width, height, 16)?,
         })
     }
+}
+
+/// The shapes' covered samples at the standard pattern of `n`, each shape's added: the
+/// `scanline` model per sample under D3D11's convention (8 subpixel bits, nearest-even,
+/// top-left), what a multisampling GPU resolves.
+fn msaa(shapes: &[AreaShape], width: u32, height: u32, n: usize) -> Result<AreaOutput, String> {
+    let pattern = SamplePattern::standard(n).ok_or_else(|| format!("no standard {n}x pattern"))?;
+    let target = Target::new(width, height, Preset::D3d11.convention()).ok_or("canvas outside the limits")?;
+    let primitives = Primitives {
+        polygons: shapes.to_vec(),
+        ..Primitives::default()
+    };
+    let coverage = render_samples(&primitives, &target, &pattern, Model::Scanline).map_err(|e| e.to_string())?;
+    let mut counts = vec![0u32; width as usize * height as usize];
+    for c in coverage.samples() {
+        for (x, y, ids) in c.iter() {
+            counts[y as usize * width as usize + x as usize] += u32::try_from(ids.len()).unwrap_or(u32::MAX);
+        }
+    }
+    Ok(AreaOutput::Counts {
+        counts,
+        of: u32::try_from(n).expect("at most 16"),
+    })
 }
 
 /// What an area model outputs, row-major where dense.

@@ -6,6 +6,7 @@
 //! that `fixed` and `planned` share.
 
 mod blocks;
+pub mod conservative;
 pub mod exact;
 pub mod fixed;
 pub mod float;

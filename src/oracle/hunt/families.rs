@@ -155,6 +155,7 @@ pub fn generate_scene(config: &HuntConfig, k: u64) -> Result<Scene, String> {
     scene.polygons = polygons;
     scene.preset = config.preset;
     scene.overrides = config.overrides;
+    scene.samples = config.samples.clone();
     if config.float32_exact {
         float32_exact(&mut scene);
     }

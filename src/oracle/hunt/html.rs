@@ -48,6 +48,18 @@ fn finding_html(f: &HuntFinding, n: usize, renderer: &str, model: Model) -> Stri
     );
     match &f.verdict {
         HuntVerdict::Differs(r) => s.push_str(&r.html_views(&format!("-{nn}"))),
+        HuntVerdict::DiffersPerSample(r) => {
+            for (k, one) in r.samples.iter().enumerate().filter(|(_, one)| !one.identical()) {
+                let _ = writeln!(
+                    s,
+                    "<p>sample {k} at {} (the scene moved by ({}, {}), this sample at the pixel centre):</p>",
+                    escape(&r.pattern.position_text(k)),
+                    escape(&r.moved_by[k][0]),
+                    escape(&r.moved_by[k][1])
+                );
+                s.push_str(&one.html_views(&format!("-{nn}-s{k}")));
+            }
+        }
         HuntVerdict::Failed(failure) => {
             let _ = writeln!(
                 s,

@@ -16,13 +16,14 @@ use super::report::{REPORT_FORMAT, REPORT_VERSION};
 use crate::oracle::compare::PixelKind;
 
 /// The settings the shards of one run must share.
-const SHARED: [&str; 11] = [
+const SHARED: [&str; 12] = [
     "cmd",
     "seed",
     "cases",
     "families",
     "canvas",
     "float32_exact",
+    "samples",
     "shrink_runs",
     "time_budget_ms",
     "convention",

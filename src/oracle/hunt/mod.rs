@@ -53,6 +53,7 @@ use crate::harness::suite::Shard;
 use crate::model::Model;
 use crate::oracle::compare::PixelKind;
 use crate::oracle::program::Renderer;
+use crate::pattern::SamplePattern;
 use crate::scene::{Overrides, Scene};
 
 /// How a hunt runs.
@@ -82,6 +83,9 @@ pub struct HuntConfig {
     /// No case starts once this much time has passed since the hunt started (the running
     /// ones finish, and what was found is still shrunk); `None`: no limit.
     pub budget: Option<Duration>,
+    /// The sample pattern every scene states (`samples`): their renderer answers with the
+    /// stacked per-sample image and each sample index is judged; `None`: one sample.
+    pub samples: Option<SamplePattern>,
 }
 
 impl Default for HuntConfig {
@@ -98,6 +102,7 @@ impl Default for HuntConfig {
             shrink_runs: 400,
             shard: Shard::WHOLE,
             budget: None,
+            samples: None,
         }
     }
 }

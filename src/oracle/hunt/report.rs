@@ -103,6 +103,9 @@ impl HuntFinding {
         );
         match &self.verdict {
             HuntVerdict::Differs(r) => s.push_str(&r.to_text(&format!("finding-{n:02}.json"), "their output", 50)),
+            HuntVerdict::DiffersPerSample(r) => {
+                s.push_str(&r.to_text(&format!("finding-{n:02}.json"), "their output", 50));
+            }
             HuntVerdict::Failed(failure) => s.push_str(&format!("their renderer: {failure}\n")),
             HuntVerdict::Same => s.push_str("(the minimal scene no longer fails: the renderer is not deterministic)\n"),
             HuntVerdict::Refused(e) => s.push_str(&format!("the oracle refused the minimal scene: {e}\n")),
@@ -212,7 +215,8 @@ impl HuntReport {
     /// - `cases` (the whole run's, `0..cases`), `cases_requested` (the shard's among them),
     ///   `cases_run` (the first of the shard's, in order), `stopped_by_time` (the budget
     ///   stopped the hunt before every requested case ran);
-    /// - `families` (names), `canvas`, `float32_exact`, `shrink_runs` (the runs allowed
+    /// - `families` (names), `canvas`, `float32_exact`, `samples` (the sample pattern every
+    ///   scene states, as a scene writes it; `null`: one sample), `shrink_runs` (the runs allowed
     ///   per shrink), `time_budget_ms` (`null`: none), `convention` (`{"preset",
     ///   "tie_rule", "pixel_centre", "subpixel_bits", "rounding"}`), `model` (the oracle:
     ///   `exact-snapped` or `exact`);
@@ -272,7 +276,7 @@ impl HuntReport {
         let runs = self
             .renderer_runs
             .map(|r| object(&[("calls", j(&r.calls)), ("starts", j(&r.starts))]));
-        let fields: [(&str, String); 21] = [
+        let fields: [(&str, String); 22] = [
             ("format", j(REPORT_FORMAT)),
             ("version", j(&REPORT_VERSION)),
             ("rasterproof", j(env!("CARGO_PKG_VERSION"))),
@@ -290,6 +294,12 @@ impl HuntReport {
             ("families", j(&families)),
             ("canvas", j(&c.canvas)),
             ("float32_exact", j(&c.float32_exact)),
+            (
+                "samples",
+                c.samples
+                    .as_ref()
+                    .map_or_else(|| "null".to_string(), |p| p.to_json().to_string()),
+            ),
             ("shrink_runs", j(&c.shrink_runs)),
             ("time_budget_ms", j(&c.budget.map(|b| b.as_millis()))),
             ("convention", self.convention_json()),
@@ -456,6 +466,7 @@ mod tests {
             "families",
             "canvas",
             "float32_exact",
+            "samples",
             "shrink_runs",
             "time_budget_ms",
             "convention",
@@ -466,7 +477,8 @@ mod tests {
         ] {
             assert!(keys.contains(&key), "{key}: {keys:?}");
         }
-        assert_eq!(keys.len(), 21);
+        assert_eq!(keys.len(), 22);
+        assert_eq!(v["samples"], serde_json::Value::Null, "one sample per pixel");
         assert_eq!(
             v["renderer_runs"],
             serde_json::Value::Null,

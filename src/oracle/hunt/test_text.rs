@@ -52,6 +52,36 @@ pub fn rust_test(f: &HuntFinding, n: usize, model: Model) -> String {
                 );
             }
         }
+        HuntVerdict::DiffersPerSample(r) => {
+            let _ = writeln!(
+                s,
+                "    // Their renderer differed at {} samples of the {} pattern; the oracle's owners there:",
+                r.differing_samples(),
+                r.pattern
+            );
+            let _ = writeln!(
+                s,
+                "    let samples = rasterproof::model::render_samples(&scene.primitives(), &target, scene.samples.as_ref().unwrap(), rasterproof::model::Model::{model_path}).unwrap();"
+            );
+            for (k, one) in r.samples.iter().enumerate() {
+                for p in &one.pixels {
+                    let ids: Vec<String> = p.ours.iter().map(u32::to_string).collect();
+                    let _ = writeln!(
+                        s,
+                        "    assert_eq!(samples.owners({}, {}, {k}), &[{}][..]); // sample {k}, theirs: {}",
+                        p.x,
+                        p.y,
+                        ids.join(", "),
+                        if p.theirs.covered {
+                            format!("{:?}", p.theirs.ids)
+                        } else {
+                            "uncovered".to_string()
+                        }
+                    );
+                }
+            }
+            s.push_str("    let _ = oracle;\n");
+        }
         HuntVerdict::Failed(failure) => {
             let _ = writeln!(s, "    // Their renderer failed on this scene: {failure}");
             s.push_str("    let _ = oracle;\n");

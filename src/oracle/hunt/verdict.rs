@@ -3,9 +3,10 @@
 //! ([`signatures`]).
 
 use crate::model::Model;
-use crate::oracle::compare::{compare, CompareReport, PixelKind};
+use crate::oracle::compare::{compare, CompareReport, PixelKind, CLASSIFY_AT_MOST};
 use crate::oracle::program::{FailureKind, RenderFailure};
 use crate::oracle::reason::ReasonClass;
+use crate::oracle::samples::{compare_samples, SampleCompareReport};
 use crate::oracle::theirs::Theirs;
 use crate::scene::Scene;
 
@@ -16,13 +17,17 @@ pub enum HuntVerdict {
     Same,
     /// Different: the comparison.
     Differs(Box<CompareReport>),
+    /// Different under a pattern of several samples: every sample index's comparison.
+    DiffersPerSample(Box<SampleCompareReport>),
     /// Their renderer failed.
     Failed(RenderFailure),
     /// The oracle refused the scene (it is outside the model's envelope): not their fault.
     Refused(String),
 }
 
-/// Compares their output (or failure) on `scene` with `model`'s.
+/// Compares their output (or failure) on `scene` with `model`'s: sample index by sample
+/// index when the scene has a pattern of several samples (their output is then the
+/// stacked per-sample image).
 pub fn judge(scene: &Scene, theirs: Result<Theirs, RenderFailure>, model: Model) -> HuntVerdict {
     let theirs = match theirs {
         Ok(t) => t,
@@ -31,6 +36,24 @@ pub fn judge(scene: &Scene, theirs: Result<Theirs, RenderFailure>, model: Model)
     let Some(target) = scene.target() else {
         return HuntVerdict::Refused("invalid canvas or convention".to_string());
     };
+    if let Some(pattern) = scene.samples.as_ref().filter(|p| !p.is_single(&target.convention)) {
+        return match compare_samples(
+            &scene.primitives(),
+            &target,
+            pattern,
+            &theirs,
+            model,
+            Some(CLASSIFY_AT_MOST),
+        ) {
+            Ok(r) if r.identical() => HuntVerdict::Same,
+            Ok(r) => HuntVerdict::DiffersPerSample(Box::new(r)),
+            Err(crate::oracle::CompareError::Samples(message)) => HuntVerdict::Failed(RenderFailure {
+                kind: FailureKind::BadOutput,
+                message,
+            }),
+            Err(e) => HuntVerdict::Refused(e.to_string()),
+        };
+    }
     match compare(&scene.primitives(), &target, &theirs, model) {
         Ok(r) if r.identical() => HuntVerdict::Same,
         Ok(r) => HuntVerdict::Differs(Box::new(r)),
@@ -56,7 +79,7 @@ impl CaseOutcome {
     pub(super) fn of(verdict: &HuntVerdict) -> CaseOutcome {
         match verdict {
             HuntVerdict::Same => CaseOutcome::Same,
-            HuntVerdict::Differs(_) => CaseOutcome::Differs,
+            HuntVerdict::Differs(_) | HuntVerdict::DiffersPerSample(_) => CaseOutcome::Differs,
             HuntVerdict::Failed(_) => CaseOutcome::Failed,
             HuntVerdict::Refused(_) => CaseOutcome::Refused,
         }
@@ -114,14 +137,25 @@ impl Signature {
     }
 }
 
+/// The comparisons a verdict holds: one, or one per sample index.
+fn reports(verdict: &HuntVerdict) -> Vec<&CompareReport> {
+    match verdict {
+        HuntVerdict::Differs(r) => vec![r],
+        HuntVerdict::DiffersPerSample(r) => r.samples.iter().collect(),
+        _ => Vec::new(),
+    }
+}
+
 /// Every signature a verdict shows (none for `Same` and `Refused`).
 pub fn signatures(verdict: &HuntVerdict) -> Vec<Signature> {
     let mut out = Vec::new();
     match verdict {
-        HuntVerdict::Differs(r) => {
-            for p in &r.pixels {
-                for f in &p.findings {
-                    out.push(Signature::Pixel(f.reason.class(), primitive_kind(f)));
+        HuntVerdict::Differs(_) | HuntVerdict::DiffersPerSample(_) => {
+            for r in reports(verdict) {
+                for p in &r.pixels {
+                    for f in &p.findings {
+                        out.push(Signature::Pixel(f.reason.class(), primitive_kind(f)));
+                    }
                 }
             }
         }
@@ -137,8 +171,8 @@ pub fn signatures(verdict: &HuntVerdict) -> Vec<Signature> {
 /// `signature` in `verdict`, in [`PixelKind`] order; empty for a renderer failure.
 pub fn pixel_kinds(verdict: &HuntVerdict, signature: &Signature) -> Vec<PixelKind> {
     let mut out = Vec::new();
-    if let (HuntVerdict::Differs(r), Signature::Pixel(class, primitive)) = (verdict, signature) {
-        for p in &r.pixels {
+    if let Signature::Pixel(class, primitive) = signature {
+        for p in reports(verdict).into_iter().flat_map(|r| &r.pixels) {
             if p.findings
                 .iter()
                 .any(|f| f.reason.class() == *class && primitive_kind(f) == *primitive)

@@ -96,6 +96,9 @@ fn colour(name: &str) -> RGBColor {
         "ftgrays" => RGBColor(230, 120, 0),
         "supersample-4x4" => RGBColor(117, 50, 160),
         "tiny-skia-4x4" => RGBColor(247, 129, 191),
+        "msaa-4x" => RGBColor(161, 217, 155),
+        "msaa-8x" => RGBColor(65, 171, 93),
+        "msaa-16x" => RGBColor(0, 90, 50),
         _ => RGBColor(0, 0, 0),
     }
 }

@@ -1,0 +1,139 @@
+//! A conservative renderer's output judged against the exact pair of sets
+//! ([`crate::model::render_conservative`]): right when every pixel it must cover is
+//! covered, no pixel beyond those it may cover is, and each degenerate triangle that must
+//! not vanish covers one of the pixels it touches. Pixels in the band between the two
+//! sets are counted, never wrong.
+//!
+//! Their output is read as a mask (covered or not): conservative coverage is a per-pixel
+//! answer of the whole scene, and an ids image's one id per pixel cannot say which of
+//! several triangles reached a pixel.
+
+use std::fmt::Write as _;
+
+use serde_json::{json, Value};
+
+use super::theirs::Theirs;
+use crate::model::{ConservativeCoverage, ConservativeRule};
+
+/// The judgement of one image.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ConservativeReport {
+    /// The rule judged under, as text.
+    pub rule: String,
+    /// Pixels that must be covered and are not, with the triangles that require them.
+    pub missing: Vec<(u32, u32, Vec<u32>)>,
+    /// Pixels covered beyond every triangle's uncertainty region.
+    pub beyond: Vec<(u32, u32)>,
+    /// Band pixels (may, not must) they cover.
+    pub band_covered: usize,
+    /// Band pixels they leave uncovered.
+    pub band_uncovered: usize,
+    /// Degenerate triangles that must not vanish of which they cover none of the pixels
+    /// touched.
+    pub vanished: Vec<u32>,
+}
+
+impl ConservativeReport {
+    /// `must ⊆ theirs ⊆ may`, and no degenerate triangle vanished.
+    pub fn right(&self) -> bool {
+        self.missing.is_empty() && self.beyond.is_empty() && self.vanished.is_empty()
+    }
+
+    /// The report as text, listing at most `limit` pixels of each kind.
+    pub fn to_text(&self, scene: &str, theirs: &str, limit: usize) -> String {
+        let mut s = format!("{theirs} against {scene}, conservative {}: ", self.rule);
+        if self.right() {
+            s.push_str("right (every must-pixel covered, none beyond the may-pixels)\n");
+        } else {
+            let _ = writeln!(
+                s,
+                "{} missing, {} beyond the uncertainty region, {} degenerate triangles vanished",
+                self.missing.len(),
+                self.beyond.len(),
+                self.vanished.len()
+            );
+        }
+        let _ = writeln!(
+            s,
+            "band (may, not must): {} covered, {} not",
+            self.band_covered, self.band_uncovered
+        );
+        for (x, y, ids) in self.missing.iter().take(limit) {
+            let _ = writeln!(s, "  ({x}, {y}) missing: triangles {ids:?} overlap the pixel's square");
+        }
+        for (x, y) in self.beyond.iter().take(limit) {
+            let _ = writeln!(
+                s,
+                "  ({x}, {y}) beyond: no triangle's uncertainty region reaches the pixel"
+            );
+        }
+        for id in &self.vanished {
+            let _ = writeln!(
+                s,
+                "  triangles[{id}] vanished: degenerate, it must cover one of the pixels it touches"
+            );
+        }
+        s
+    }
+
+    /// The report as JSON: `{"rule", "right", "missing": [[x, y, [ids]]], "beyond": [[x,
+    /// y]], "band_covered", "band_uncovered", "vanished": [ids]}`.
+    pub fn to_json(&self) -> Value {
+        json!({
+            "rule": self.rule,
+            "right": self.right(),
+            "missing": self.missing.iter().map(|(x, y, ids)| json!([x, y, ids])).collect::<Vec<_>>(),
+            "beyond": self.beyond.iter().map(|(x, y)| json!([x, y])).collect::<Vec<_>>(),
+            "band_covered": self.band_covered,
+            "band_uncovered": self.band_uncovered,
+            "vanished": self.vanished,
+        })
+    }
+}
+
+/// Judges `theirs` (same canvas) against `sets` under `rule`.
+///
+/// # Errors
+/// Their canvas is not the sets'.
+pub fn judge_conservative(
+    sets: &ConservativeCoverage,
+    rule: &ConservativeRule,
+    theirs: &Theirs,
+) -> Result<ConservativeReport, String> {
+    let (w, h) = (sets.must.width(), sets.must.height());
+    if (theirs.width(), theirs.height()) != (w, h) {
+        return Err(format!(
+            "their image is {}x{} but the scene's canvas is {w}x{h}",
+            theirs.width(),
+            theirs.height()
+        ));
+    }
+    let mut report = ConservativeReport {
+        rule: rule.to_string(),
+        missing: Vec::new(),
+        beyond: Vec::new(),
+        band_covered: 0,
+        band_uncovered: 0,
+        vanished: Vec::new(),
+    };
+    for y in 0..h {
+        for x in 0..w {
+            let covered = theirs.pixel(x, y).covered;
+            let must = sets.must.owners(x, y);
+            let may = !sets.may.owners(x, y).is_empty();
+            match (covered, !must.is_empty(), may) {
+                (false, true, _) => report.missing.push((x, y, must.to_vec())),
+                (true, _, false) => report.beyond.push((x, y)),
+                (true, false, true) => report.band_covered += 1,
+                (false, false, true) => report.band_uncovered += 1,
+                _ => {}
+            }
+        }
+    }
+    for (id, pixels) in &sets.one_of {
+        if !pixels.iter().any(|&(x, y)| theirs.pixel(x, y).covered) {
+            report.vanished.push(*id);
+        }
+    }
+    Ok(report)
+}
