@@ -206,10 +206,7 @@ pub fn exact_sample_range<'a, I>(points: I, target: &Target) -> Option<PixelRang
 where
     I: Iterator<Item = &'a Point> + Clone,
 {
-    let xs = points.clone().map(|p| &p.x);
-    let ys = points.map(|p| &p.y);
-    let (min_x, max_x) = (xs.clone().min()?, xs.max()?);
-    let (min_y, max_y) = (ys.clone().min()?, ys.max()?);
+    let [min_x, min_y, max_x, max_y] = bounding_box(points)?;
     let grid = ExactGrid::of(target);
     let lo = |m: &BigRational| grid.first_at_or_after(m);
     let hi = |m: &BigRational| grid.last_at_or_before(m);
@@ -221,6 +218,16 @@ where
     )
 }
 
+/// The exact bounding box of `points`, `[min_x, min_y, max_x, max_y]`; `None` when empty.
+fn bounding_box<'a, I>(points: I) -> Option<[&'a BigRational; 4]>
+where
+    I: Iterator<Item = &'a Point> + Clone,
+{
+    let xs = points.clone().map(|p| &p.x);
+    let ys = points.map(|p| &p.y);
+    Some([xs.clone().min()?, ys.clone().min()?, xs.max()?, ys.max()?])
+}
+
 /// The pixels whose closed square `[i, i + 1] x [j, j + 1]` meets the closed bounding box
 /// of `points` (exact), on the canvas; `None` when empty. Every sample of a pattern
 /// ([`crate::pattern`]) that lies in the box belongs to one of them: the per-sample
@@ -229,10 +236,7 @@ pub fn exact_pixel_range<'a, I>(points: I, target: &Target) -> Option<PixelRange
 where
     I: Iterator<Item = &'a Point> + Clone,
 {
-    let xs = points.clone().map(|p| &p.x);
-    let ys = points.map(|p| &p.y);
-    let (min_x, max_x) = (xs.clone().min()?, xs.max()?);
-    let (min_y, max_y) = (ys.clone().min()?, ys.max()?);
+    let [min_x, min_y, max_x, max_y] = bounding_box(points)?;
     let lo = |m: &BigRational| saturating_index(m.ceil().to_integer() - 1);
     let hi = |m: &BigRational| saturating_index(m.floor().to_integer());
     PixelRange::clamped(

@@ -592,3 +592,91 @@ fn compare_judges_each_sample_index() {
         "{err}"
     );
 }
+
+/// `explain X,Y` under a pattern lists every sample: on the edge scene of
+/// [`compare_judges_each_sample_index`], sample 0 of pixel (1, 0) is the point (11/8, 1/8)
+/// on the shared horizontal edge y = 1/8: a top edge of triangle 0 (inclusive, top-left)
+/// and a bottom edge of triangle 2 (exclusive); samples 1 to 3 lie below it, in triangle
+/// 0. Every model's owners per sample index are listed.
+#[test]
+fn explain_lists_every_sample() {
+    let dir = crate::tempdir::Dir::new("samples-explain");
+    let scene = dir.path().join("edge.json");
+    std::fs::write(
+        &scene,
+        r#"{"width": 4, "height": 4, "samples": 4, "triangles": [
+            {"v": [[0, "1/8"], [4, "1/8"], [0, 4]]}, {"v": [[4, "1/8"], [4, 4], [0, 4]]},
+            {"v": [[4, "1/8"], [0, "1/8"], [2, -3]]}]}"#,
+    )
+    .unwrap();
+    let out = Command::cargo_bin("rasterproof")
+        .unwrap()
+        .arg("explain")
+        .arg(&scene)
+        .args(["1,0", "--format", "json"])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let why: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(why["pattern"], "standard 4x");
+    let sample0 = &why["samples"][0];
+    assert_eq!(sample0["position"], "(3/8, 1/8)");
+    assert!(sample0["point"].as_str().unwrap().starts_with("(11/8, 1/8)"));
+    let evidence: Vec<&str> = sample0["primitives"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["as_written"].as_str().unwrap())
+        .collect();
+    assert!(
+        evidence[0].contains("E=0 (inclusive)") && evidence[0].ends_with("-> inside"),
+        "{evidence:?}"
+    );
+    assert!(
+        evidence[2].contains("E=0 (exclusive)") && evidence[2].ends_with("-> outside"),
+        "{evidence:?}"
+    );
+    let models = why["models"].as_array().unwrap();
+    assert_eq!(models.len(), Model::ALL.len() - 2);
+    for m in models
+        .iter()
+        .filter(|m| ["exact", "exact-snapped", "fixed", "scanline"].contains(&m["model"].as_str().unwrap()))
+    {
+        assert_eq!(m["owners"], serde_json::json!([[0], [0], [0], [0]]), "{m}");
+    }
+    let text = Command::cargo_bin("rasterproof")
+        .unwrap()
+        .arg("explain")
+        .arg(&scene)
+        .args(["1,0", "--samples", "2"])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(text.stdout).unwrap();
+    assert!(
+        text.contains("pixel (1, 0), standard 2x samples") && text.contains("sample 1 at (1/4, 1/4)"),
+        "{text}"
+    );
+}
+
+/// A clip-space triangle moves with its viewport: NDC (-1, 1) (0, 1) (0, -1) at w = 1,
+/// through the default viewport of a 2x2 canvas (d3d11: NDC y up), is the window-space
+/// triangle (0, 0) (1, 0) (1, 2): inside where y <= 2x and x <= 1. Of pixel (0, 0)'s
+/// standard 4x samples, (3/8, 1/8), (7/8, 3/8) and (5/8, 7/8) are (1/8 <= 3/4, 3/8 <= 7/4,
+/// 7/8 <= 5/4), (1/8, 5/8) is not (5/8 > 1/4); none lies on an edge, so every model,
+/// floats included, has mask 0b1011 there, and pixel (1, 0)'s samples (x > 1) none.
+#[test]
+fn clip_space_triangles_are_drawn_per_sample() {
+    let scene = parse_scene(
+        r#"{"width": 2, "height": 2, "samples": 4,
+            "clip_space_triangles": [{"v": [[-1, 1, 0, 1], [0, 1, 0, 1], [0, -1, 0, 1]]}]}"#,
+        "clip-space.json",
+    )
+    .unwrap();
+    let target = scene.target().unwrap();
+    let four = scene.samples.clone().unwrap();
+    for model in Model::ALL {
+        let c = render_samples(&scene.primitives(), &target, &four, model).unwrap();
+        assert_eq!(c.mask(0, 0), 0b1011, "{model}");
+        assert_eq!(c.mask(1, 0), 0, "{model}");
+    }
+}

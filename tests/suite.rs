@@ -14,7 +14,7 @@ use rasterproof::scene::Scene;
 
 /// Every (invariant, model) row of `rasterproof check --cases 300 --seed 7`, copied from
 /// its table.
-const TABLE_ROWS: [(&str, &str); 51] = [
+const TABLE_ROWS: [(&str, &str); 55] = [
     ("agreement (fine mesh)", "float32"),
     ("agreement (fine mesh)", "float64"),
     ("agreement (mesh)", "exact"),
@@ -64,6 +64,10 @@ const TABLE_ROWS: [(&str, &str); 51] = [
     ("watertight", "float32-naive"),
     ("watertight", "float64"),
     ("watertight", "scanline"),
+    ("watertight (4x)", "exact"),
+    ("watertight (4x)", "exact-snapped"),
+    ("watertight (4x)", "fixed"),
+    ("watertight (4x)", "scanline"),
     ("watertight (fine mesh)", "float32"),
     ("watertight (fine mesh)", "float64"),
 ];

@@ -68,13 +68,7 @@ pub fn check_watertight(
     let Some((x, y, ids)) = problems.first().cloned() else {
         return Ok(());
     };
-    let what = if ids.is_empty() {
-        "is inside the region but covered by no triangle (a gap)".to_string()
-    } else if ids.len() > 1 {
-        format!("is covered {} times, by {ids:?}", ids.len())
-    } else {
-        format!("is outside the region but covered by {ids:?}")
-    };
+    let what = problem_text(&ids);
     let mut msg = format!("pixel ({x}, {y}) {what}; {} such pixels", problems.len());
     for (k, t) in mesh.iter().enumerate() {
         let why = explain_sample(t, x, y, target);
@@ -120,13 +114,7 @@ pub fn check_watertight_samples(
     let Some((x, y, s, ids)) = problems.first().cloned() else {
         return Ok(());
     };
-    let what = if ids.is_empty() {
-        "is inside the region but covered by no triangle (a gap)".to_string()
-    } else if ids.len() > 1 {
-        format!("is covered {} times, by {ids:?}", ids.len())
-    } else {
-        format!("is outside the region but covered by {ids:?}")
-    };
+    let what = problem_text(&ids);
     Err(Violation::new(
         "watertight",
         format!(
@@ -136,6 +124,18 @@ pub fn check_watertight_samples(
             mesh.len()
         ),
     ))
+}
+
+/// What is wrong with a sample whose owners are `ids`: none (a gap), several, or one
+/// outside the region.
+fn problem_text(ids: &[u32]) -> String {
+    if ids.is_empty() {
+        "is inside the region but covered by no triangle (a gap)".to_string()
+    } else if ids.len() > 1 {
+        format!("is covered {} times, by {ids:?}", ids.len())
+    } else {
+        format!("is outside the region but covered by {ids:?}")
+    }
 }
 
 /// The outline's edges oriented so that its interior is `E > 0`.

@@ -296,14 +296,15 @@ impl Samples<'_> {
     /// is the snapped scene moved except at a coordinate exactly halfway between two
     /// subpixels); then the conventions that give every sample. Exit 0 when one does.
     fn fit(&self, o: &Options, theirs: &Theirs) -> Result<ExitCode, String> {
-        use rasterproof::model::{at_sample, Model};
+        use rasterproof::model::{Model, SampleFrames};
         let per_sample = theirs
             .unstack(self.pattern.len(), self.target.height)
             .map_err(|e| format!("{}: {e} ({})", self.theirs_name, self.name))?;
+        let frames = SampleFrames::new(&self.primitives, &self.target, &self.pattern, Model::Exact)
+            .map_err(|e| format!("{}: {e}", self.name))?;
         let mut fits = Vec::new();
         for (s, theirs) in per_sample.iter().enumerate() {
-            let moved = at_sample(&self.primitives, &self.target, &self.pattern, s, Model::Exact)
-                .map_err(|e| format!("{}: {e}", self.name))?;
+            let moved = frames.at(s).map_err(|e| format!("{}: {e}", self.name))?;
             let found = rasterproof::oracle::fit(&moved, &self.target, theirs)
                 .map_err(|e| format!("{}: sample {s}: {e}", self.name))?;
             fits.push(found);

@@ -36,6 +36,12 @@ pub struct Options {
     /// exact-snapped; the plain forms give the same shapes).
     #[arg(long)]
     model: Option<String>,
+    /// The sample pattern, replacing the scene's `samples`: the standard pattern of N (2,
+    /// 4, 8, 16). Under a pattern of several samples explain lists every sample of the
+    /// pixel (its position, each nearby primitive's exact evidence there) and what every
+    /// model decides at each sample index.
+    #[arg(long, value_name = "N")]
+    samples: Option<usize>,
 }
 
 /// `--format`'s values for `explain`, with their help.
@@ -82,6 +88,37 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     }
     if o.model.is_some() {
         return Err("--model is for --coverage area (explain shows every model's decision for a sample)".to_string());
+    }
+    let pattern = match o.samples {
+        Some(n) => Some(super::parse_samples(n)?),
+        None => scene.samples.clone(),
+    };
+    if let Some(pattern) = pattern.filter(|p| !p.is_single(&target.convention)) {
+        if o.svg.is_some() {
+            return Err(
+                "--svg draws one sample per pixel; leave it out under a pattern of several samples".to_string(),
+            );
+        }
+        if !scene.lines.is_empty() {
+            return Err(format!(
+                "{name}: lines: a line has no samples; explain it without a pattern"
+            ));
+        }
+        let why = rasterproof::oracle::explain::explain_samples(&scene.primitives(), &target, &pattern, x, y)
+            .ok_or_else(|| {
+                format!(
+                    "pixel: ({x}, {y}) is off the {}x{} canvas of {name}",
+                    target.width, target.height
+                )
+            })?;
+        match o.format {
+            OutputFormat::Text => super::write_stdout(|out| {
+                writeln!(out, "{name}: {}", target.convention)?;
+                out.write_all(why.to_text().as_bytes())
+            })?,
+            OutputFormat::Json => super::print_stdout(&why.to_json().to_string())?,
+        }
+        return Ok(ExitCode::SUCCESS);
     }
     let why = explain_pixel(&scene.primitives(), &target, x, y).ok_or_else(|| {
         format!(

@@ -46,7 +46,7 @@ pub use area::{area_shapes, render_area, render_area_rows, AreaError};
 pub use conservative::{render_conservative, ConservativeCoverage, ConservativeError, ConservativeRule};
 pub use error::ModelError;
 pub use prepared::{prepare, render, render_triangles, PreparedScene, Primitives, Shape};
-pub use samples::{at_sample, render_samples};
+pub use samples::{render_samples, SampleFrames};
 
 /// A model: one arithmetic for every primitive of a scene (the CLI's `--model`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

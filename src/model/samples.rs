@@ -80,9 +80,10 @@ pub fn render_samples(
     if let (Some(shapes), true) = (prepared.shapes(), model.is_plain()) {
         return Ok(plain(&shapes, target, pattern));
     }
+    let frames = SampleFrames::new(primitives, target, pattern, model)?;
     let mut samples = Vec::with_capacity(pattern.len());
     for s in 0..pattern.len() {
-        let moved = at_sample(primitives, target, pattern, s, model)?;
+        let moved = frames.at(s)?;
         let coverage = render(&moved, target, model).map_err(|error| ModelError::AtSample {
             sample: s,
             position: pattern.position_text(s),
@@ -93,40 +94,65 @@ pub fn render_samples(
     Ok(SampleCoverage::from_samples(samples))
 }
 
-/// The scene `model` renders to decide sample `s` of `pattern` at the convention's one
-/// sample position: `primitives` moved by the sample's offset (snapped exactly first when
-/// the model snaps; see the module docs). What [`render_samples`] renders for each sample,
-/// and what a comparison of one sample index judges.
-///
-/// # Errors
-/// A model that snaps and a sample off its subpixel grid ([`ModelError::SampleOffGrid`]);
-/// lines ([`ModelError::LinesUnderPattern`]).
-pub fn at_sample(
-    primitives: &Primitives,
-    target: &Target,
-    pattern: &SamplePattern,
-    s: usize,
+/// A scene ready to be moved to each sample of a pattern for one model: snapped exactly
+/// once, up front, when the model snaps (see the module docs). [`SampleFrames::at`] gives
+/// the scene the model renders to decide one sample index; [`render_samples`] renders
+/// each, and a per-sample comparison judges each.
+#[derive(Debug, Clone)]
+pub struct SampleFrames {
+    base: Primitives,
+    target: Target,
+    pattern: SamplePattern,
     model: Model,
-) -> Result<Primitives, ModelError> {
-    let convention = &target.convention;
-    if !primitives.lines.is_empty() {
-        return Err(ModelError::LinesUnderPattern {
-            lines: primitives.lines.len(),
-            pattern: pattern.name(),
-        });
-    }
-    if !model.snaps() {
-        return Ok(moved(primitives, &pattern.offset(s, convention)));
-    }
-    if pattern.offset_subpixels(s, convention).is_none() {
-        return Err(ModelError::SampleOffGrid {
-            sample: s,
-            position: pattern.position_text(s),
-            bits: convention.subpixel_bits,
+}
+
+impl SampleFrames {
+    /// `primitives` for `model` on `target`, at the samples of `pattern`.
+    ///
+    /// # Errors
+    /// Lines ([`ModelError::LinesUnderPattern`]: a line has no samples).
+    pub fn new(
+        primitives: &Primitives,
+        target: &Target,
+        pattern: &SamplePattern,
+        model: Model,
+    ) -> Result<SampleFrames, ModelError> {
+        if !primitives.lines.is_empty() {
+            return Err(ModelError::LinesUnderPattern {
+                lines: primitives.lines.len(),
+                pattern: pattern.name(),
+            });
+        }
+        let base = if model.snaps() {
+            snapped(primitives, target)
+        } else {
+            primitives.clone()
+        };
+        Ok(SampleFrames {
+            base,
+            target: *target,
+            pattern: pattern.clone(),
             model,
-        });
+        })
     }
-    Ok(moved(&snapped(primitives, target), &pattern.offset(s, convention)))
+
+    /// The scene moved so that sample `s` of the pattern sits at the convention's one
+    /// sample position.
+    ///
+    /// # Errors
+    /// A model that snaps and a sample off its subpixel grid ([`ModelError::SampleOffGrid`]).
+    pub fn at(&self, s: usize) -> Result<Primitives, ModelError> {
+        let (convention, pattern) = (&self.target.convention, &self.pattern);
+        if self.model.snaps() && pattern.offset_subpixels(s, convention).is_none() {
+            return Err(ModelError::SampleOffGrid {
+                sample: s,
+                position: pattern.position_text(s),
+                bits: convention.subpixel_bits,
+                model: self.model,
+            });
+        }
+        Ok(moved(&self.base, &pattern.offset(s, convention)))
+    }
 }
 
 /// The plain per-sample oracle over a plain model's exact shapes (no lines: refused

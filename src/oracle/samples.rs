@@ -4,7 +4,7 @@
 //! Their output is one ids (or mask) image per sample index, stacked (what `render
 //! --ids-out` writes under a pattern, and what a GPU adapter reads back from a
 //! multisampled target). Sample index `s` is compared as a one-sample image of the scene
-//! moved so that sample `s` comes to the pixel's sample position ([`at_sample`]: snapped
+//! moved so that sample `s` comes to the pixel's sample position ([`SampleFrames`]: snapped
 //! first for a snapping model, then moved by whole subpixels), so the difference is exact
 //! and every reason class of [`super::compare()`] applies to it: a tie at that sample, snapping,
 //! near-edge, gross. A pixel's explanation is written in that moved frame: its sample is
@@ -18,7 +18,7 @@ use serde_json::{json, Value};
 use super::compare::{compare_classifying, CompareError, CompareReport};
 use super::theirs::Theirs;
 use crate::convention::Target;
-use crate::model::{at_sample, Model, Primitives};
+use crate::model::{Model, Primitives, SampleFrames};
 use crate::num::exact::exact_text;
 use crate::pattern::SamplePattern;
 
@@ -143,10 +143,11 @@ pub fn compare_samples(
     let per_sample = theirs
         .unstack(pattern.len(), target.height)
         .map_err(CompareError::Samples)?;
+    let frames = SampleFrames::new(primitives, target, pattern, model).map_err(CompareError::Model)?;
     let mut samples = Vec::with_capacity(pattern.len());
     let mut moved_by = Vec::with_capacity(pattern.len());
     for (s, theirs) in per_sample.iter().enumerate() {
-        let moved = at_sample(primitives, target, pattern, s, model).map_err(CompareError::Model)?;
+        let moved = frames.at(s).map_err(CompareError::Model)?;
         samples.push(compare_classifying(&moved, target, theirs, model, at_most)?);
         let [dx, dy] = pattern.offset(s, &target.convention);
         moved_by.push([exact_text(&-dx), exact_text(&-dy)]);

@@ -6,7 +6,8 @@ use super::{models, Case, CaseRun, CheckOutcome, Skip, CANVAS};
 use crate::check::{
     check_agreement, check_barycentric_exact, check_barycentric_fixed, check_clip_raster, check_diamond_agreement,
     check_inside, check_line_pixels, check_line_reference, check_line_symmetry, check_rotation_and_winding,
-    check_segment_clip, check_translation, check_triangulation, check_watertight, float_sum_error_ulps, Violation,
+    check_segment_clip, check_translation, check_triangulation, check_watertight, check_watertight_samples,
+    float_sum_error_ulps, Violation,
 };
 use crate::clip::halfplane::HalfPlane;
 use crate::clip::sutherland_hodgman::{self, clip_polygon};
@@ -16,7 +17,8 @@ use crate::fill::triangulate::{triangulate, validate};
 use crate::geom::{FixedTriangle, Point, Polygon, Triangle};
 use crate::interp::barycentric_exact;
 use crate::line::{bresenham, dda, BresenhamTie, Line, LineRule};
-use crate::model::{render, render_triangles, Model, Primitives};
+use crate::model::{render, render_samples, render_triangles, Model, Primitives};
+use crate::pattern::SamplePattern;
 use crate::raster::sample_exact;
 use crate::scene::Scene;
 
@@ -163,6 +165,18 @@ fn triangle_checks(c: &Case, out: &mut Vec<CheckOutcome>, skipped: &mut Vec<Skip
             push(w_name, model, watertight, &mesh.triangles, side);
             push(a_name, model, agreement, &mesh.triangles, side);
         }
+    }
+
+    // The watertightness invariant per sample: the case's mesh at the standard 4x
+    // positions, every sample inside its outline owned once, in each model that must hold.
+    let four = SamplePattern::standard(4).expect("the standard 4x pattern");
+    let mesh_target = target(c.mesh_canvas, c.preset);
+    let mesh_scene = Primitives::from_triangles(&c.mesh.triangles);
+    for model in models::must_hold() {
+        let result = render_samples(&mesh_scene, &mesh_target, &four, model)
+            .map_err(|e| Violation::new("watertight", e.to_string()))
+            .and_then(|cov| check_watertight_samples(&c.mesh.triangles, &c.mesh.outline, &cov, &four, &mesh_target));
+        push("watertight (4x)", model, result, &c.mesh.triangles, c.mesh_canvas);
     }
 
     // The agreement invariant on a single random triangle (every family), against the

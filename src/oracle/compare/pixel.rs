@@ -164,17 +164,35 @@ pub(super) fn point_text(p: &Point) -> String {
 /// The oracle's evidence for `shape` at pixel `(x, y)`, one line.
 pub(crate) fn evidence(shape: &Shape, x: u32, y: u32, target: &Target) -> String {
     let p = sample_exact(x, y, target);
-    let rule = target.convention.tie_rule;
-    let s = format!("sample {}{}: ", point_text(&p), decimal_pair_text(&p.x, &p.y));
     match shape {
-        Shape::Triangle(t) => match triangle_at(t, &p, rule.into()) {
+        Shape::Triangle(_) | Shape::Polygon(_) => evidence_at(shape, &p, target),
+        Shape::Diamond { .. } | Shape::Bresenham { .. } => line_evidence(shape, &p, x, y, target),
+    }
+}
+
+/// The oracle's evidence for an area `shape` (a triangle or a polygon) at the point `p`
+/// (a pixel's sample, or one sample of a pattern), one line; a line's is its pixel's.
+pub(crate) fn evidence_at(shape: &Shape, p: &Point, target: &Target) -> String {
+    let rule = target.convention.tie_rule;
+    let s = format!("sample {}{}: ", point_text(p), decimal_pair_text(&p.x, &p.y));
+    match shape {
+        Shape::Triangle(t) => match triangle_at(t, p, rule.into()) {
             Some(at) => s + &at.to_string(),
             None => s + "zero-area triangle -> outside",
         },
         Shape::Polygon(poly) => {
-            let at = polygon_at(poly, &p, rule);
+            let at = polygon_at(poly, p, rule);
             format!("{s}{} ({}) {at}", "polygon", poly.fill_rule.name())
         }
+        Shape::Diamond { .. } | Shape::Bresenham { .. } => s + "a line has no samples",
+    }
+}
+
+/// A line's evidence at its pixel `(x, y)` (sample `p`).
+fn line_evidence(shape: &Shape, p: &Point, x: u32, y: u32, target: &Target) -> String {
+    let s = format!("sample {}{}: ", point_text(p), decimal_pair_text(&p.x, &p.y));
+    match shape {
+        Shape::Triangle(_) | Shape::Polygon(_) => evidence_at(shape, p, target),
         Shape::Diamond { from, to } => {
             let exits = crate::line::exact::diamond_exits(from, to, i64::from(x), i64::from(y), target);
             format!(

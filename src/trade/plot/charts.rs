@@ -418,7 +418,7 @@ pub(super) fn area_error_magnitude<DB: DrawingBackend>(root: &Area<DB>, r: &Trad
         7,
         "Above: pixels off the exact coverage by more than 1/2 quantum (1/510) per million covered; below: the \
          largest error in quanta of 1/255 (log; 0 is exactly zero). Circles: exact models; triangles: the contenders.\n\
-         A cross near the top: refused (ftgrays's 24.8 envelope ends at 2^23 px). Exact models and supersampling: \
-         translation-invariant, measured at the origin; f32 and ftgrays: computed at the placed coordinates.",
+         A cross near the top: refused (ftgrays's 24.8 envelope ends at 2^23 px). Exact models, supersampling and \
+         multisampling: translation-invariant, measured at the origin; f32 and ftgrays: computed at the placed coordinates.",
     )
 }
