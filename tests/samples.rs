@@ -680,3 +680,60 @@ fn clip_space_triangles_are_drawn_per_sample() {
         assert_eq!(c.mask(1, 0), 0, "{model}");
     }
 }
+
+/// `compare --fit` under a pattern names where their samples sit: their image is drawn
+/// at the 4x pattern with sample 2 moved from (1/8, 5/8) to (3/16, 9/16) (a renderer with
+/// a programmable position); the fit says the standard position does not give sample 2's
+/// image and lists (3/16, 9/16) among the 1/16 px positions that do, while the three other
+/// standard positions fit.
+#[test]
+fn fit_names_a_moved_sample_position() {
+    let dir = crate::tempdir::Dir::new("samples-fit-positions");
+    let triangles = r#""triangles": [{"v": [[0, 0], [8, "3/16"], ["1/16", 8]]}, {"v": [[8, "3/16"], [8, 8], ["1/16", 8]]},
+        {"v": [["1/32", "5/2"], [8, "7/3"], [5, "43/8"]]}, {"v": [["2/3", "1/8"], ["7/2", 8], ["3/16", "9/2"]]}]"#;
+    let scene = dir.path().join("scene.json");
+    std::fs::write(&scene, format!(r#"{{"width": 8, "height": 8, {triangles}}}"#)).unwrap();
+    let moved = dir.path().join("moved.json");
+    std::fs::write(
+        &moved,
+        format!(r#"{{"width": 8, "height": 8, "samples": [["3/8", "1/8"], ["7/8", "3/8"], ["3/16", "9/16"], ["5/8", "7/8"]], {triangles}}}"#),
+    )
+    .unwrap();
+    let theirs = dir.path().join("theirs.png");
+    let cli = || Command::cargo_bin("rasterproof").unwrap();
+    assert!(cli()
+        .arg("render")
+        .arg(&moved)
+        .arg("--ids-out")
+        .arg(&theirs)
+        .output()
+        .unwrap()
+        .status
+        .success());
+    let out = cli()
+        .arg("compare")
+        .arg(&scene)
+        .arg(&theirs)
+        .args(["--samples", "4", "--fit", "--format", "json"])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "no convention fits sample 2 at the standard position"
+    );
+    let fit: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let positions = fit["positions"].as_array().unwrap();
+    let fits = |s: usize| positions[s]["pattern_fits"].as_bool().unwrap();
+    assert_eq!([fits(0), fits(1), fits(2), fits(3)], [true, true, false, true]);
+    let listed: Vec<&str> = positions[2]["fits"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p.as_str().unwrap())
+        .collect();
+    assert!(
+        listed.contains(&"(3/16, 9/16)") && !listed.contains(&"(1/8, 5/8)"),
+        "{listed:?}"
+    );
+}

@@ -67,7 +67,8 @@ pub struct Options {
     /// pixel at the standard positions (1, 2, 4, 8 or 16). Under a pattern of several
     /// samples THEIRS is one ids (or mask) image per sample index, stacked (width W,
     /// height N x H, sample s in rows s H .. (s + 1) H; what `render --ids-out` writes),
-    /// and each sample index is compared (or, with `--fit`, fitted) on its own.
+    /// and each sample index is compared (or, with `--fit`, fitted, and the positions on the
+    /// 1/16 px grid that give its image listed) on its own.
     #[arg(long, value_name = "N")]
     samples: Option<usize>,
     /// Judge THEIRS (read as a mask, or the pixels an ids image covers) as conservative
@@ -254,6 +255,10 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     })
 }
 
+/// `--fit` under a pattern tries every sample position on this grid (1/16 px: the grid of
+/// the standard patterns and of D3D's and Vulkan's programmable sample positions).
+const POSITION_GRID: u32 = 16;
+
 /// A comparison under a pattern of several samples.
 struct Samples<'a> {
     name: &'a str,
@@ -314,6 +319,24 @@ impl Samples<'_> {
             .iter()
             .filter(|c| fits.iter().all(|f| f.exact.contains(c)))
             .collect();
+        // Where their samples sit: every 1/16 px position that gives each sample index's
+        // image under the scene's own convention.
+        let positions = rasterproof::oracle::samples::fit_positions(
+            &self.primitives,
+            &self.target,
+            &self.pattern,
+            &per_sample,
+            Model::ExactSnapped,
+            POSITION_GRID,
+        )
+        .map_err(|e| format!("{}: {e}", self.name))?;
+        let exact_text = |p: &[num_rational::BigRational; 2]| {
+            format!(
+                "({}, {})",
+                rasterproof::num::exact::exact_text(&p[0]),
+                rasterproof::num::exact::exact_text(&p[1])
+            )
+        };
         match o.format_out {
             OutputFormat::Text => super::write_stdout(|out| {
                 writeln!(
@@ -326,6 +349,34 @@ impl Samples<'_> {
                     for line in f.to_text().lines() {
                         writeln!(out, "  {line}")?;
                     }
+                }
+                writeln!(
+                    out,
+                    "sample positions on the 1/{POSITION_GRID} px grid that give each sample's image under {}:",
+                    self.target.convention
+                )?;
+                for p in &positions {
+                    let listed: Vec<String> = p.fits.iter().take(8).map(exact_text).collect();
+                    let more = p.fits.len().saturating_sub(8);
+                    writeln!(
+                        out,
+                        "  sample {}: the pattern's {} {}; {} of {} positions fit{}{}",
+                        p.index,
+                        self.pattern.position_text(p.index),
+                        if p.standard_fits { "fits" } else { "does NOT fit" },
+                        p.fits.len(),
+                        POSITION_GRID * POSITION_GRID,
+                        if listed.is_empty() {
+                            String::new()
+                        } else {
+                            format!(": {}", listed.join(" "))
+                        },
+                        if more > 0 {
+                            format!(" and {more} more")
+                        } else {
+                            String::new()
+                        }
+                    )?;
                 }
                 if common.is_empty() {
                     writeln!(out, "no convention gives every sample's image exactly (if each sample has fits of its own, their sample positions are not the {}'s)", self.pattern)
@@ -347,6 +398,11 @@ impl Samples<'_> {
                     "pattern": self.pattern.to_json(),
                     "every_sample": common.iter().map(ToString::to_string).collect::<Vec<_>>(),
                     "samples": fits.iter().map(|f| f.to_json()).collect::<Vec<_>>(),
+                    "positions": positions.iter().map(|p| serde_json::json!({
+                        "index": p.index,
+                        "pattern_fits": p.standard_fits,
+                        "fits": p.fits.iter().map(exact_text).collect::<Vec<_>>(),
+                    })).collect::<Vec<_>>(),
                 })
                 .to_string(),
             )?,
