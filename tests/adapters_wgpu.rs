@@ -171,17 +171,17 @@ fn fit_names_top_left_and_8_bits() {
     }
 }
 
-/// The stay-alive protocol under a hunt: 200 scenes of the families whose vertices the
-/// adapter's target holds, all identical under the vulkan preset (`hunt` exits 0).
-#[test]
-fn stay_alive_hunt_finds_nothing() {
-    let Some(adapter) = adapter() else { return };
+/// `rasterproof hunt` against the adapter (started with `adapter_args`, then `--serve`),
+/// 200 scenes of the families whose vertices its target holds, under the vulkan preset,
+/// with `hunt_args`: asserts all 200 are identical (`hunt` exits 0).
+fn hunt_finds_nothing(adapter: &Path, adapter_args: &str, hunt_args: &[&str]) {
     let dir = tempdir::Dir::new("wgpu-hunt");
     let output = assert_cmd::Command::cargo_bin("rasterproof")
         .unwrap()
         .arg("hunt")
         .arg("--serve")
-        .arg(format!("{} --serve", adapter.display()))
+        .arg(format!("{} {adapter_args}--serve", adapter.display()))
+        .args(hunt_args)
         .args(["--preset", "vulkan", "--float32-exact", "--cases", "200", "--jobs", "2"])
         .args(["--family", "mesh,delaunay,slivers,fine", "--quiet", "--out"])
         .arg(dir.path())
@@ -193,6 +193,22 @@ fn stay_alive_hunt_finds_nothing() {
         "{}",
         text(&output)
     );
+}
+
+/// The stay-alive protocol under a hunt: 200 scenes, all identical.
+#[test]
+fn stay_alive_hunt_finds_nothing() {
+    let Some(adapter) = adapter() else { return };
+    hunt_finds_nothing(&adapter, "", &[]);
+}
+
+/// The same at four samples per pixel: `hunt --samples 4` writes the standard 4x pattern
+/// into every scene, the adapter draws a 4-sample target and reads every sample back, and
+/// each sample index is judged on its own; 200 scenes, all identical.
+#[test]
+fn four_sample_hunt_finds_nothing() {
+    let Some(adapter) = adapter() else { return };
+    hunt_finds_nothing(&adapter, "--samples 4 ", &["--samples", "4"]);
 }
 
 /// A 4x case: name, scene, canvas width and height, the expected id + 1 of each pixel
@@ -390,41 +406,6 @@ fn refusals_are_one_clear_line() {
     assert_eq!(answers[0]["ok"], false);
     assert!(answers[0]["error"].as_str().unwrap().contains("triangles only"));
     assert_eq!(answers[1], serde_json::json!({"id": 2, "ok": true}));
-}
-
-/// The same at four samples per pixel: `hunt --samples 4` writes the standard 4x pattern
-/// into every scene, the adapter draws a 4-sample target and reads every sample back, and
-/// each sample index is judged on its own; 200 scenes, all identical.
-#[test]
-fn four_sample_hunt_finds_nothing() {
-    let Some(adapter) = adapter() else { return };
-    let dir = tempdir::Dir::new("wgpu-hunt-4x");
-    let output = assert_cmd::Command::cargo_bin("rasterproof")
-        .unwrap()
-        .arg("hunt")
-        .arg("--serve")
-        .arg(format!("{} --samples 4 --serve", adapter.display()))
-        .args([
-            "--samples",
-            "4",
-            "--preset",
-            "vulkan",
-            "--float32-exact",
-            "--cases",
-            "200",
-            "--jobs",
-            "2",
-        ])
-        .args(["--family", "mesh,delaunay,slivers,fine", "--quiet", "--out"])
-        .arg(dir.path())
-        .output()
-        .unwrap();
-    assert!(output.status.success(), "hunt found something:\n{}", text(&output));
-    assert!(
-        String::from_utf8_lossy(&output.stdout).contains("200 identical"),
-        "{}",
-        text(&output)
-    );
 }
 
 /// The committed 4x findings (adapters/fixtures/wgpu-lavapipe/, found with `--clip`: the

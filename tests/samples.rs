@@ -492,6 +492,20 @@ fn snapping_models_snap_before_moving_to_a_sample() {
     );
 }
 
+/// The 4x4 scene (standard 4x pattern) whose horizontal edges sit at y = 1/8, written into
+/// `dir`: triangles 0 and 1 below the edge, triangle 2 above it.
+fn edge_scene(dir: &crate::tempdir::Dir) -> std::path::PathBuf {
+    let scene = dir.path().join("edge.json");
+    std::fs::write(
+        &scene,
+        r#"{"width": 4, "height": 4, "samples": 4, "triangles": [
+            {"v": [[0, "1/8"], [4, "1/8"], [0, 4]]}, {"v": [[4, "1/8"], [4, 4], [0, 4]]},
+            {"v": [[4, "1/8"], [0, "1/8"], [2, -3]]}]}"#,
+    )
+    .unwrap();
+    scene
+}
+
 /// `compare` per sample: a scene whose horizontal edges sit at y = 1/8, the height of
 /// sample 0 of the 4x pattern in every pixel of row 0 (and of nothing else). Rendered
 /// under gl's bottom-left rule, sample 0 of the four pixels of row 0 goes to the triangle
@@ -501,14 +515,7 @@ fn snapping_models_snap_before_moving_to_a_sample() {
 #[test]
 fn compare_judges_each_sample_index() {
     let dir = crate::tempdir::Dir::new("samples-compare");
-    let scene = dir.path().join("edge.json");
-    std::fs::write(
-        &scene,
-        r#"{"width": 4, "height": 4, "samples": 4, "triangles": [
-            {"v": [[0, "1/8"], [4, "1/8"], [0, 4]]}, {"v": [[4, "1/8"], [4, 4], [0, 4]]},
-            {"v": [[4, "1/8"], [0, "1/8"], [2, -3]]}]}"#,
-    )
-    .unwrap();
+    let scene = edge_scene(&dir);
     let cli = || Command::cargo_bin("rasterproof").unwrap();
     let ids = |preset: &str| {
         let path = dir.path().join(format!("{preset}.png"));
@@ -601,14 +608,7 @@ fn compare_judges_each_sample_index() {
 #[test]
 fn explain_lists_every_sample() {
     let dir = crate::tempdir::Dir::new("samples-explain");
-    let scene = dir.path().join("edge.json");
-    std::fs::write(
-        &scene,
-        r#"{"width": 4, "height": 4, "samples": 4, "triangles": [
-            {"v": [[0, "1/8"], [4, "1/8"], [0, 4]]}, {"v": [[4, "1/8"], [4, 4], [0, 4]]},
-            {"v": [[4, "1/8"], [0, "1/8"], [2, -3]]}]}"#,
-    )
-    .unwrap();
+    let scene = edge_scene(&dir);
     let out = Command::cargo_bin("rasterproof")
         .unwrap()
         .arg("explain")
