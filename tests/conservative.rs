@@ -315,6 +315,10 @@ fn render_and_compare_conservatively() {
         "{beyond}"
     );
     assert!(beyond.contains("band (may, not must): 3 covered, 0 not"), "{beyond}");
+    assert!(
+        beyond.contains("(2, 0) band, covered: within the uncertainty region of triangles [0], not overlapped"),
+        "{beyond}"
+    );
     let poly = dir.path().join("p.json");
     std::fs::write(
         &poly,

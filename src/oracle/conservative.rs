@@ -24,9 +24,10 @@ pub struct ConservativeReport {
     pub missing: Vec<(u32, u32, Vec<u32>)>,
     /// Pixels covered beyond every triangle's uncertainty region.
     pub beyond: Vec<(u32, u32)>,
-    /// Band pixels (may, not must) they cover.
-    pub band_covered: usize,
-    /// Band pixels they leave uncovered.
+    /// Band pixels (may, not must) they cover, with the triangles whose uncertainty
+    /// region reaches them.
+    pub band_covered: Vec<(u32, u32, Vec<u32>)>,
+    /// Band pixels they leave uncovered (either answer is right there).
     pub band_uncovered: usize,
     /// Degenerate triangles that must not vanish of which they cover none of the pixels
     /// touched.
@@ -56,7 +57,8 @@ impl ConservativeReport {
         let _ = writeln!(
             s,
             "band (may, not must): {} covered, {} not",
-            self.band_covered, self.band_uncovered
+            self.band_covered.len(),
+            self.band_uncovered
         );
         for (x, y, ids) in self.missing.iter().take(limit) {
             let _ = writeln!(s, "  ({x}, {y}) missing: triangles {ids:?} overlap the pixel's square");
@@ -65,6 +67,12 @@ impl ConservativeReport {
             let _ = writeln!(
                 s,
                 "  ({x}, {y}) beyond: no triangle's uncertainty region reaches the pixel"
+            );
+        }
+        for (x, y, ids) in self.band_covered.iter().take(limit) {
+            let _ = writeln!(
+                s,
+                "  ({x}, {y}) band, covered: within the uncertainty region of triangles {ids:?}, not overlapped"
             );
         }
         for id in &self.vanished {
@@ -77,14 +85,14 @@ impl ConservativeReport {
     }
 
     /// The report as JSON: `{"rule", "right", "missing": [[x, y, [ids]]], "beyond": [[x,
-    /// y]], "band_covered", "band_uncovered", "vanished": [ids]}`.
+    /// y]], "band_covered": [[x, y, [ids]]], "band_uncovered" (a count), "vanished": [ids]}`.
     pub fn to_json(&self) -> Value {
         json!({
             "rule": self.rule,
             "right": self.right(),
             "missing": self.missing.iter().map(|(x, y, ids)| json!([x, y, ids])).collect::<Vec<_>>(),
             "beyond": self.beyond.iter().map(|(x, y)| json!([x, y])).collect::<Vec<_>>(),
-            "band_covered": self.band_covered,
+            "band_covered": self.band_covered.iter().map(|(x, y, ids)| json!([x, y, ids])).collect::<Vec<_>>(),
             "band_uncovered": self.band_uncovered,
             "vanished": self.vanished,
         })
@@ -112,7 +120,7 @@ pub fn judge_conservative(
         rule: rule.to_string(),
         missing: Vec::new(),
         beyond: Vec::new(),
-        band_covered: 0,
+        band_covered: Vec::new(),
         band_uncovered: 0,
         vanished: Vec::new(),
     };
@@ -120,11 +128,11 @@ pub fn judge_conservative(
         for x in 0..w {
             let covered = theirs.pixel(x, y).covered;
             let must = sets.must.owners(x, y);
-            let may = !sets.may.owners(x, y).is_empty();
-            match (covered, !must.is_empty(), may) {
+            let may = sets.may.owners(x, y);
+            match (covered, !must.is_empty(), !may.is_empty()) {
                 (false, true, _) => report.missing.push((x, y, must.to_vec())),
                 (true, _, false) => report.beyond.push((x, y)),
-                (true, false, true) => report.band_covered += 1,
+                (true, false, true) => report.band_covered.push((x, y, may.to_vec())),
                 (false, false, true) => report.band_uncovered += 1,
                 _ => {}
             }
