@@ -29,7 +29,7 @@
 use glam::{DVec2, Vec2};
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::ToPrimitive;
+use num_traits::{ToPrimitive, Zero};
 
 use crate::convention::{Convention, Target};
 use crate::geom::Point;
@@ -236,9 +236,19 @@ pub fn exact_pixel_range<'a, I>(points: I, target: &Target) -> Option<PixelRange
 where
     I: Iterator<Item = &'a Point> + Clone,
 {
+    exact_pixel_range_grown(points, &BigRational::zero(), target)
+}
+
+/// [`exact_pixel_range`] with each pixel's square grown by `grow` on every side: the
+/// pixels whose square `[i - grow, i + 1 + grow] x [j - grow, j + 1 + grow]` meets the box
+/// (what conservative rasterization's uncertainty region reaches).
+pub fn exact_pixel_range_grown<'a, I>(points: I, grow: &BigRational, target: &Target) -> Option<PixelRange>
+where
+    I: Iterator<Item = &'a Point> + Clone,
+{
     let [min_x, min_y, max_x, max_y] = bounding_box(points)?;
-    let lo = |m: &BigRational| saturating_index(m.ceil().to_integer() - 1);
-    let hi = |m: &BigRational| saturating_index(m.floor().to_integer());
+    let lo = |m: &BigRational| saturating_index((m - grow).ceil().to_integer() - 1);
+    let hi = |m: &BigRational| saturating_index((m + grow).floor().to_integer());
     PixelRange::clamped(
         [lo(min_x), lo(min_y)],
         [hi(max_x), hi(max_y)],

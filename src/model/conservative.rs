@@ -38,7 +38,8 @@ use super::Primitives;
 use crate::convention::Target;
 use crate::coverage::{Coverage, CoverageSink};
 use crate::geom::Triangle;
-use crate::tri::conservative::{is_degenerate, pixel_square, square_inside, square_meets};
+use crate::raster::exact_pixel_range_grown;
+use crate::tri::conservative::{pixel_square, ConservativeTriangle};
 
 /// A conservative rasterization rule.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -190,17 +191,21 @@ pub fn render_conservative(
     };
     let zero = BigRational::zero();
     for (id, t) in (0u32..).zip(&primitives.triangles) {
-        let snapped = t.snapped(&target.convention).to_exact();
-        let culled = rule.cull_degenerate && is_degenerate(&snapped);
-        let keep_one = !rule.cull_degenerate && is_degenerate(&snapped);
+        let snapped_triangle = t.snapped(&target.convention).to_exact();
+        let (given, snapped) = (
+            ConservativeTriangle::new(t),
+            ConservativeTriangle::new(&snapped_triangle),
+        );
+        let culled = rule.cull_degenerate && snapped.is_degenerate();
+        let keep_one = !rule.cull_degenerate && snapped.is_degenerate();
         let mut touched = Vec::new();
         let mut must_any = false;
-        for (i, j) in pixels_near(t, &snapped, &rule.uncertainty, target) {
+        for (i, j) in pixels_near(t, &snapped_triangle, &rule.uncertainty, target) {
             let (x, y) = (i64::from(i), i64::from(j));
             let square = pixel_square(x, y, &zero);
-            let must = !culled && square_meets(t, &square, rule.touching_must);
+            let must = !culled && given.meets(&square, rule.touching_must);
             let grown = pixel_square(x, y, &rule.uncertainty);
-            let may = must || square_meets(&snapped, &grown, true) || square_meets(t, &square, true);
+            let may = must || snapped.meets(&grown, true) || given.meets(&square, true);
             if must {
                 out.must.cover(i, j, id);
                 must_any = true;
@@ -208,13 +213,13 @@ pub fn render_conservative(
             if may {
                 out.may.cover(i, j, id);
             }
-            if keep_one && square_meets(&snapped, &square, true) {
+            if keep_one && snapped.meets(&square, true) {
                 touched.push((i, j));
             }
             if let Some((inner_must, inner_may)) = &mut out.inner {
-                if square_inside(t, &square) {
+                if given.contains_square(&square) {
                     inner_may.cover(i, j, id);
-                    if square_inside(t, &grown) && square_inside(&snapped, &grown) {
+                    if given.contains_square(&grown) && snapped.contains_square(&grown) {
                         inner_must.cover(i, j, id);
                     }
                 }
@@ -228,36 +233,10 @@ pub fn render_conservative(
 }
 
 /// The canvas pixels whose square grown by `grow` may meet `a` or `b`: those whose grown
-/// square meets the bounding box of both, on each axis.
+/// square meets the bounding box of both.
 fn pixels_near(a: &Triangle, b: &Triangle, grow: &BigRational, target: &Target) -> Vec<(u32, u32)> {
-    widened(a.v.iter().chain(b.v.iter()), grow, target)
-}
-
-/// Pixels `i` with `[i - grow, i + 1 + grow]` meeting the points' bounding box (each axis),
-/// on the canvas.
-fn widened<'a>(
-    points: impl Iterator<Item = &'a crate::geom::Point> + Clone,
-    grow: &BigRational,
-    target: &Target,
-) -> Vec<(u32, u32)> {
-    let xs: Vec<&BigRational> = points.clone().map(|p| &p.x).collect();
-    let ys: Vec<&BigRational> = points.map(|p| &p.y).collect();
-    let range = |vs: &[&BigRational], side: u32| {
-        let lo = vs.iter().min().map(|v| (*v - grow).ceil().to_integer() - 1);
-        let hi = vs.iter().max().map(|v| (*v + grow).floor().to_integer());
-        let clamp = |v: num_bigint::BigInt| {
-            let v = crate::raster::saturating_index(v);
-            u32::try_from(v.clamp(0, i64::from(side) - 1)).expect("on the canvas")
-        };
-        match (lo, hi) {
-            (Some(lo), Some(hi)) if hi >= num_bigint::BigInt::zero() && lo < num_bigint::BigInt::from(side) => {
-                Some(clamp(lo)..=clamp(hi))
-            }
-            _ => None,
-        }
-    };
-    let (Some(xr), Some(yr)) = (range(&xs, target.width), range(&ys, target.height)) else {
+    let Some(r) = exact_pixel_range_grown(a.v.iter().chain(b.v.iter()), grow, target) else {
         return Vec::new();
     };
-    yr.flat_map(|j| xr.clone().map(move |i| (i, j))).collect()
+    (r.y0..=r.y1).flat_map(|j| (r.x0..=r.x1).map(move |i| (i, j))).collect()
 }

@@ -17,7 +17,7 @@
 //! Written to be read: exact rationals, one pixel at a time.
 
 use num_rational::BigRational;
-use num_traits::{One, Zero};
+use num_traits::{One, Signed, Zero};
 
 use crate::geom::{Point, Triangle};
 
@@ -40,26 +40,113 @@ fn corners(sq: &[BigRational; 4]) -> [Point; 4] {
     ]
 }
 
-/// The smallest and largest of `a x + b y` over `points`.
-fn project(points: &[Point], a: &BigRational, b: &BigRational) -> (BigRational, BigRational) {
-    let dot = |p: &Point| a * &p.x + b * &p.y;
-    let mut lo = dot(&points[0]);
-    let mut hi = lo.clone();
-    for p in &points[1..] {
-        let d = dot(p);
-        if d < lo {
-            lo = d.clone();
-        }
-        if d > hi {
-            hi = d;
+/// One separating axis `a x + b y` and the triangle's extent along it.
+#[derive(Debug, Clone)]
+struct Axis {
+    a: BigRational,
+    b: BigRational,
+    lo: BigRational,
+    hi: BigRational,
+}
+
+impl Axis {
+    /// The axis `(a, b)` with `points`' smallest and largest `a x + b y`.
+    fn new(a: BigRational, b: BigRational, points: &[Point]) -> Axis {
+        let dots: Vec<BigRational> = points.iter().map(|p| &a * &p.x + &b * &p.y).collect();
+        let lo = dots.iter().min().expect("a triangle has points").clone();
+        let hi = dots.iter().max().expect("a triangle has points").clone();
+        Axis { a, b, lo, hi }
+    }
+
+    /// Whether the square `[x0, y0, x1, y1]`'s extent along the axis overlaps the
+    /// triangle's: touching counts with `closed`. The square's extent is read from the
+    /// signs of `a` and `b` (the smallest `a x` is at `x0` when `a >= 0`), no corner
+    /// needed.
+    fn overlaps(&self, sq: &[BigRational; 4], closed: bool) -> bool {
+        let [x0, y0, x1, y1] = sq;
+        let (ax_lo, ax_hi) = if self.a.is_negative() { (x1, x0) } else { (x0, x1) };
+        let (by_lo, by_hi) = if self.b.is_negative() { (y1, y0) } else { (y0, y1) };
+        let s_lo = &self.a * ax_lo + &self.b * by_lo;
+        let s_hi = &self.a * ax_hi + &self.b * by_hi;
+        if closed {
+            s_hi >= self.lo && self.hi >= s_lo
+        } else {
+            s_hi > self.lo && self.hi > s_lo
         }
     }
-    (lo, hi)
+}
+
+/// A triangle ready for the conservative tests at every pixel: its separating axes with
+/// its extent along each, and its orientation, computed once.
+#[derive(Debug, Clone)]
+pub struct ConservativeTriangle {
+    v: [Point; 3],
+    axes: Vec<Axis>,
+    /// `Some(true)` for a positive signed area (`cross(b - a, c - a) > 0`), `None` for
+    /// zero area.
+    positive: Option<bool>,
+}
+
+impl ConservativeTriangle {
+    /// The axes of `tri`: the square's two, and the normals of its non-degenerate edges.
+    pub fn new(tri: &Triangle) -> ConservativeTriangle {
+        let (zero, one) = (BigRational::zero(), BigRational::one());
+        let mut axes = vec![
+            Axis::new(one.clone(), zero.clone(), &tri.v),
+            Axis::new(zero, one, &tri.v),
+        ];
+        for k in 0..3 {
+            let (a, b) = (&tri.v[k], &tri.v[(k + 1) % 3]);
+            let (dx, dy) = (&b.x - &a.x, &b.y - &a.y);
+            if !(dx.is_zero() && dy.is_zero()) {
+                axes.push(Axis::new(-dy, dx, &tri.v));
+            }
+        }
+        let area = cross(&tri.v[0], &tri.v[1], &tri.v[2]);
+        ConservativeTriangle {
+            v: tri.v.clone(),
+            axes,
+            positive: (!area.is_zero()).then(|| area.is_positive()),
+        }
+    }
+
+    /// Whether the square `sq` (`[x0, y0, x1, y1]`, `x0 < x1`, `y0 < y1`) meets the
+    /// triangle: the closed square against the closed triangle with `closed`, the open
+    /// square against the closed triangle without (see the module docs).
+    pub fn meets(&self, sq: &[BigRational; 4], closed: bool) -> bool {
+        self.axes.iter().all(|axis| axis.overlaps(sq, closed))
+    }
+
+    /// Whether the square `sq` lies inside the closed triangle (all four corners in it);
+    /// false for a triangle of zero area.
+    pub fn contains_square(&self, sq: &[BigRational; 4]) -> bool {
+        let Some(positive) = self.positive else {
+            return false;
+        };
+        let [a, b, c] = &self.v;
+        let inside = |p: &Point| {
+            [cross(a, b, p), cross(b, c, p), cross(c, a, p)]
+                .iter()
+                .all(|e| e.is_zero() || e.is_positive() == positive)
+        };
+        corners(sq).iter().all(inside)
+    }
+
+    /// Whether the triangle has zero area.
+    pub fn is_degenerate(&self) -> bool {
+        self.positive.is_none()
+    }
+}
+
+/// `cross(q - p, r - p)`: twice the signed area of `p, q, r`.
+fn cross(p: &Point, q: &Point, r: &Point) -> BigRational {
+    (&q.x - &p.x) * (&r.y - &p.y) - (&q.y - &p.y) * (&r.x - &p.x)
 }
 
 /// Whether the square `sq` (`[x0, y0, x1, y1]`, `x0 < x1`, `y0 < y1`) meets `tri`: closed
 /// square against the closed triangle with `closed`, open square against the closed
-/// triangle without (see the module docs).
+/// triangle without (see the module docs). One test; at many pixels, set the triangle up
+/// once with [`ConservativeTriangle`].
 ///
 /// ```
 /// use num_rational::BigRational;
@@ -73,25 +160,7 @@ fn project(points: &[Point], a: &BigRational, b: &BigRational) -> (BigRational, 
 /// assert!(!square_meets(&t, &p11, false));
 /// ```
 pub fn square_meets(tri: &Triangle, sq: &[BigRational; 4], closed: bool) -> bool {
-    let square = corners(sq);
-    let (zero, one) = (BigRational::zero(), BigRational::one());
-    let mut axes = vec![(one.clone(), zero.clone()), (zero.clone(), one)];
-    for k in 0..3 {
-        let (a, b) = (&tri.v[k], &tri.v[(k + 1) % 3]);
-        let (dx, dy) = (&b.x - &a.x, &b.y - &a.y);
-        if !(dx.is_zero() && dy.is_zero()) {
-            axes.push((-dy, dx));
-        }
-    }
-    axes.iter().all(|(a, b)| {
-        let (s_lo, s_hi) = project(&square, a, b);
-        let (t_lo, t_hi) = project(&tri.v, a, b);
-        if closed {
-            s_hi >= t_lo && t_hi >= s_lo
-        } else {
-            s_hi > t_lo && t_hi > s_lo
-        }
-    })
+    ConservativeTriangle::new(tri).meets(sq, closed)
 }
 
 /// Whether the square `sq` lies inside the closed triangle `tri` (all four corners in it);
@@ -107,25 +176,12 @@ pub fn square_meets(tri: &Triangle, sq: &[BigRational; 4], closed: bool) -> bool
 /// assert!(!square_inside(&t, &pixel_square(2, 1, &BigRational::zero())));  // (3, 2): 5 > 4
 /// ```
 pub fn square_inside(tri: &Triangle, sq: &[BigRational; 4]) -> bool {
-    let [a, b, c] = &tri.v;
-    let cross = |p: &Point, q: &Point, r: &Point| (&q.x - &p.x) * (&r.y - &p.y) - (&q.y - &p.y) * (&r.x - &p.x);
-    let area = cross(a, b, c);
-    if area.is_zero() {
-        return false;
-    }
-    let positive = area > BigRational::zero();
-    let inside = |p: &Point| {
-        [cross(a, b, p), cross(b, c, p), cross(c, a, p)]
-            .iter()
-            .all(|e| e.is_zero() || (*e > BigRational::zero()) == positive)
-    };
-    corners(sq).iter().all(inside)
+    ConservativeTriangle::new(tri).contains_square(sq)
 }
 
 /// Whether `tri` has zero area.
 pub fn is_degenerate(tri: &Triangle) -> bool {
-    let [a, b, c] = &tri.v;
-    ((&b.x - &a.x) * (&c.y - &a.y) - (&b.y - &a.y) * (&c.x - &a.x)).is_zero()
+    cross(&tri.v[0], &tri.v[1], &tri.v[2]).is_zero()
 }
 
 #[cfg(test)]

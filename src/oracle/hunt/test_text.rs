@@ -5,6 +5,7 @@ use std::fmt::Write as _;
 use super::report::HuntFinding;
 use super::verdict::HuntVerdict;
 use crate::model::Model;
+use crate::oracle::compare::DiffPixel;
 
 /// A Rust `#[test]` that pastes into a project's tests: the minimal scene, the oracle's
 /// owners of every pixel where their renderer differed (asserted: they hold), and where to
@@ -34,19 +35,14 @@ pub fn rust_test(f: &HuntFinding, n: usize, model: Model) -> String {
         HuntVerdict::Differs(r) => {
             s.push_str("    // The oracle's owners where their renderer differed:\n");
             for p in &r.pixels {
-                let ids: Vec<String> = p.ours.iter().map(u32::to_string).collect();
                 let classes: Vec<&str> = p.findings.iter().map(|f| f.reason.class().name()).collect();
                 let _ = writeln!(
                     s,
                     "    assert_eq!(oracle.owners({}, {}), &[{}][..]); // theirs: {} ({}: {})",
                     p.x,
                     p.y,
-                    ids.join(", "),
-                    if p.theirs.covered {
-                        format!("{:?}", p.theirs.ids)
-                    } else {
-                        "uncovered".to_string()
-                    },
+                    ours(p),
+                    theirs(p),
                     p.kind.name(),
                     classes.join(", ")
                 );
@@ -65,18 +61,13 @@ pub fn rust_test(f: &HuntFinding, n: usize, model: Model) -> String {
             );
             for (k, one) in r.samples.iter().enumerate() {
                 for p in &one.pixels {
-                    let ids: Vec<String> = p.ours.iter().map(u32::to_string).collect();
                     let _ = writeln!(
                         s,
                         "    assert_eq!(samples.owners({}, {}, {k}), &[{}][..]); // sample {k}, theirs: {}",
                         p.x,
                         p.y,
-                        ids.join(", "),
-                        if p.theirs.covered {
-                            format!("{:?}", p.theirs.ids)
-                        } else {
-                            "uncovered".to_string()
-                        }
+                        ours(p),
+                        theirs(p)
                     );
                 }
             }
@@ -90,4 +81,18 @@ pub fn rust_test(f: &HuntFinding, n: usize, model: Model) -> String {
     }
     s.push_str("    // Render `scene` with your renderer here and assert it equals `oracle`.\n}\n");
     s
+}
+
+/// The oracle's owners of a differing pixel, as the test's array literal: `1, 4`.
+fn ours(p: &DiffPixel) -> String {
+    p.ours.iter().map(u32::to_string).collect::<Vec<_>>().join(", ")
+}
+
+/// Their answer at a differing pixel, for the test's comment: `[3]` or `uncovered`.
+fn theirs(p: &DiffPixel) -> String {
+    if p.theirs.covered {
+        format!("{:?}", p.theirs.ids)
+    } else {
+        "uncovered".to_string()
+    }
 }
