@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Wall time and peak memory of `render` on large canvases (issue 11): two triangles
+# Wall time and peak memory of `render` on large canvases (issue 11) and whole frames of
+# small triangles (issue 31, at the end): two triangles
 # covering a SIDE x SIDE canvas (default 4096), rendered to `--format json` (streamed to a
 # file), to `-o` (the coverage PNG) only and to `--ids-out` only; then one triangle
 # covering half of the largest canvas, 16384 x 16384, to `--ids-out`. MODEL (default
@@ -41,3 +42,25 @@ measure "json" "$full" --format json
 measure "png" "$full" -o "$dir/x.png"
 measure "ids" "$full" --ids-out "$dir/ids.png"
 measure "half-16384-ids" "$half" --ids-out "$dir/half-ids.png"
+
+# Whole frames of small triangles (issue 31): N triangles of 3-decimal coordinates, each
+# within 4 px of a random point of a 1024 x 1024 canvas, rendered by `fixed` to
+# `--ids-out` (the figures of `cargo bench --bench pipeline`, with the peak memory).
+# SMALL (default "100000 1000000") picks the sizes.
+for n in ${SMALL:-100000 1000000}; do
+    small=$dir/small-$n.json
+    awk -v n="$n" 'BEGIN {
+        srand(7); printf "{\"width\":1024,\"height\":1024,\"triangles\":[";
+        for (k = 0; k < n; k++) {
+            x = int(rand() * 1020000); y = int(rand() * 1020000);
+            printf "%s{\"v\":[", (k ? "," : "");
+            for (i = 0; i < 3; i++) {
+                vx = x + int(rand() * 4000); vy = y + int(rand() * 4000);
+                printf "%s[%d.%03d,%d.%03d]", (i ? "," : ""), vx / 1000, vx % 1000, vy / 1000, vy % 1000;
+            }
+            printf "]}";
+        }
+        printf "]}\n";
+    }' >"$small"
+    model=fixed measure "small-$n-ids" "$small" --ids-out "$dir/small-ids.png"
+done

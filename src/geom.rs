@@ -5,6 +5,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 
 use crate::convention::Convention;
+use crate::num::compact::Compact;
 use crate::num::exact::{dyadic, nearest_f32, nearest_f64, pair_text};
 use crate::num::fixed::snap;
 use crate::num::{EnvelopeError, SubPixel};
@@ -117,6 +118,90 @@ impl Triangle {
     pub fn to_f64(&self) -> Option<[glam::DVec2; 3]> {
         let [a, b, c] = &self.v;
         Some([a.to_f64()?, b.to_f64()?, c.to_f64()?])
+    }
+}
+
+/// A triangle's exact vertices in compact form: each coordinate a [`Compact`], 16 bytes
+/// when it is small, so a triangle of a scene file's decimals costs 96 bytes and no heap.
+/// How a scene holds its triangles ([`crate::model::Primitives`]); the integer models snap
+/// it without a big rational, the exact models read it as a [`Triangle`].
+///
+/// ```
+/// use rasterproof::geom::{CompactTriangle, Point, Triangle};
+/// let t = Triangle::new(Point::from_ints(0, 0), Point::from_fractions(9, 2, 0, 1), Point::from_ints(0, 4));
+/// let c = CompactTriangle::from(&t);
+/// assert_eq!(c.to_triangle(), t);
+/// assert_eq!(std::mem::size_of::<CompactTriangle>(), 96);
+/// ```
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct CompactTriangle {
+    /// `[x, y]` of each vertex, in pixels.
+    pub v: [[Compact; 2]; 3],
+}
+
+impl CompactTriangle {
+    /// The exact triangle.
+    pub fn to_triangle(&self) -> Triangle {
+        Triangle {
+            v: self.v.clone().map(|[x, y]| Point::new(x.to_big(), y.to_big())),
+        }
+    }
+
+    /// The vertices snapped to the convention's grid: [`Triangle::snapped`] of
+    /// [`CompactTriangle::to_triangle`].
+    pub fn snapped(&self, convention: &Convention) -> SnappedTriangle {
+        let s = |x: &Compact| x.snap(convention.subpixel_bits, convention.rounding);
+        SnappedTriangle {
+            v: self.v.each_ref().map(|[x, y]| [s(x), s(y)]),
+            bits: convention.subpixel_bits,
+        }
+    }
+
+    /// The vertices snapped to the convention's grid, as exact pixel coordinates again
+    /// (`snapped(convention).to_exact()`, for the `exact-snapped` model), compact.
+    pub fn snapped_exact(&self, convention: &Convention) -> CompactTriangle {
+        let (bits, rounding) = (convention.subpixel_bits, convention.rounding);
+        let snap_one = |x: &Compact| match x.snap_i64(bits, rounding) {
+            Some(s) => Compact::dyadic(s, bits),
+            None => Compact::from_big(dyadic(&x.snap(bits, rounding), bits)),
+        };
+        CompactTriangle {
+            v: self.v.each_ref().map(|[x, y]| [snap_one(x), snap_one(y)]),
+        }
+    }
+
+    /// The snapped triangle in the integer models' form (`snapped(convention).to_fixed()`),
+    /// in machine integers when every coordinate is small.
+    ///
+    /// # Errors
+    /// The first vertex coordinate outside the envelope, as `(vertex, axis, error)`.
+    pub fn to_fixed(&self, convention: &Convention) -> Result<FixedTriangle, (usize, char, EnvelopeError)> {
+        let (bits, rounding) = (convention.subpixel_bits, convention.rounding);
+        let fast = |x: &Compact| x.snap_i64(bits, rounding).and_then(SubPixel::new);
+        let mut v = [[SubPixel::new(0).expect("0 is inside the envelope"); 2]; 3];
+        for (k, [x, y]) in self.v.iter().enumerate() {
+            match (fast(x), fast(y)) {
+                (Some(x), Some(y)) => v[k] = [x, y],
+                _ => return self.snapped(convention).to_fixed(),
+            }
+        }
+        Ok(FixedTriangle { v, bits })
+    }
+}
+
+impl From<&Triangle> for CompactTriangle {
+    fn from(t: &Triangle) -> CompactTriangle {
+        CompactTriangle {
+            v: t.v.each_ref().map(|p| [Compact::from(&p.x), Compact::from(&p.y)]),
+        }
+    }
+}
+
+impl From<Triangle> for CompactTriangle {
+    fn from(t: Triangle) -> CompactTriangle {
+        CompactTriangle {
+            v: t.v.map(|p| [Compact::from_big(p.x), Compact::from_big(p.y)]),
+        }
     }
 }
 

@@ -196,11 +196,7 @@ fn every_model_renders_a_mixed_scene() {
     let mut poly = Polygon::new(pts(&[(16, 16), (30, 16), (30, 30), (16, 30)]), FillRule::NonZero);
     poly.holes.push(pts(&[(20, 20), (26, 20), (26, 26), (20, 26)]));
     let scene = Primitives {
-        triangles: vec![Triangle::new(
-            Point::from_ints(0, 0),
-            Point::from_ints(8, 0),
-            Point::from_ints(0, 8),
-        )],
+        triangles: vec![Triangle::new(Point::from_ints(0, 0), Point::from_ints(8, 0), Point::from_ints(0, 8)).into()],
         lines: vec![
             Line {
                 from: Point::from_ints(0, 12),

@@ -42,6 +42,8 @@ mod cli;
 mod clip;
 #[path = "clip_scene.rs"]
 mod clip_scene;
+#[path = "compact.rs"]
+mod compact;
 #[path = "conservative.rs"]
 mod conservative;
 #[path = "float_fill.rs"]

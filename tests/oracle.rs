@@ -431,7 +431,7 @@ fn shapes_are_what_the_exact_models_draw() {
                 let id = u32::try_from(k).unwrap();
                 let mut one = Primitives::default();
                 match shape {
-                    Shape::Triangle(t) => one.triangles.push(t.clone()),
+                    Shape::Triangle(t) => one.triangles.push(t.into()),
                     Shape::Polygon(p) => one.polygons.push(p.clone()),
                     Shape::Bresenham { from, to, tie } => one.lines.push(rasterproof::line::Line {
                         from: rasterproof::geom::Point::from_ints(from[0], from[1]),
@@ -707,10 +707,11 @@ fn mirrored(s: &Scene) -> Scene {
     for t in &mut m.triangles {
         t.triangle = rasterproof::geom::Triangle {
             v: t.triangle
+                .to_triangle()
                 .v
-                .clone()
                 .map(|p| rasterproof::geom::Point::new(&w - &p.x, p.y)),
-        };
+        }
+        .into();
     }
     m
 }
@@ -1118,10 +1119,11 @@ fn defective_renderers_are_classified_as_what_they_are() {
                 let half = num_rational::BigRational::new(1.into(), 2.into());
                 t.triangle = rasterproof::geom::Triangle {
                     v: t.triangle
+                        .to_triangle()
                         .v
-                        .clone()
                         .map(|p| rasterproof::geom::Point::new(p.x + &half, p.y + &half)),
-                };
+                }
+                .into();
             }
             m
         };

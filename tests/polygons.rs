@@ -403,7 +403,7 @@ fn polygon_ids_follow_triangles_and_lines() {
     let poly = Polygon::new(pts(&[(10, 10), (14, 10), (14, 14), (10, 14)]), FillRule::NonZero);
     let c = render(
         &Primitives {
-            triangles: vec![tri],
+            triangles: vec![tri.into()],
             lines: vec![line],
             polygons: vec![poly],
             ..Primitives::default()

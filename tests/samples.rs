@@ -66,7 +66,7 @@ fn scene() -> impl Strategy<Value = Primitives> {
     let polygon = prop::option::of(any_polygon(SIDE, 7));
     let window = prop::option::of((0i64..4, 0i64..4, 6i64..12, 6i64..12));
     (triangles, polygon, window).prop_map(|(triangles, polygon, window)| Primitives {
-        triangles,
+        triangles: triangles.into_iter().map(Into::into).collect(),
         polygons: polygon.into_iter().collect(),
         clip: window.map(|(x0, y0, x1, y1)| {
             let r = |v: i64| BigRational::new(v.into(), 2.into()) + q(1, 4);

@@ -20,11 +20,7 @@ use rasterproof::scene::Scene;
 /// failure needs a negative coordinate, however tiny, and survives at integers.
 fn culls_negative(s: &Scene) -> Result<Theirs, RenderFailure> {
     let target = s.target().unwrap();
-    let negative = s
-        .clone()
-        .coordinates_mut()
-        .iter()
-        .any(|c| **c < BigRational::from_integer(0.into()));
+    let negative = s.coordinates().iter().any(|c| *c < BigRational::from_integer(0.into()));
     let c = if negative {
         Coverage::new(s.width, s.height)
     } else {
@@ -62,18 +58,13 @@ fn tiny_fractions_shrink_to_integers_within_the_budget() {
     assert!(keeps(&scene));
     let (minimal, runs) = shrink(&scene, &mut keeps, budget, None);
     assert!(keeps(&minimal));
-    let coordinates: Vec<String> = minimal
-        .clone()
-        .coordinates_mut()
-        .iter()
-        .map(|c| c.to_string())
-        .collect();
+    let coordinates: Vec<String> = minimal.coordinates().iter().map(|c| c.to_string()).collect();
     assert!(
         runs < budget,
         "the shrink spent its whole budget ({runs} runs); coordinates {coordinates:?}"
     );
     assert!(
-        minimal.clone().coordinates_mut().iter().all(|c| *c.denom() <= 2.into()),
+        minimal.coordinates().iter().all(|c| *c.denom() <= 2.into()),
         "coordinates not integers or halves: {coordinates:?}"
     );
 }
@@ -106,7 +97,7 @@ proptest! {
             let reaching = s
                 .triangles
                 .iter()
-                .filter(|t| t.triangle.v.iter().any(|p| p.x >= threshold || p.y >= threshold))
+                .filter(|t| t.triangle.to_triangle().v.iter().any(|p| p.x >= threshold || p.y >= threshold))
                 .count();
             reaching >= need && s.width.min(s.height) >= side
         };
@@ -146,11 +137,13 @@ fn drops_go_on_with_the_primitive_before() {
     let name = |s: &Scene| -> String {
         s.triangles
             .iter()
-            .map(|k| match k.triangle.v[0].x.to_integer().to_string().as_str() {
-                "0" => "A",
-                "2" => "B",
-                _ => "C",
-            })
+            .map(
+                |k| match k.triangle.to_triangle().v[0].x.to_integer().to_string().as_str() {
+                    "0" => "A",
+                    "2" => "B",
+                    _ => "C",
+                },
+            )
             .collect()
     };
     for width in [1, 2, 3] {

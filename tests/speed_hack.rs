@@ -103,7 +103,7 @@ fn assert_genuine(found: &Counterexample, test: Test) {
         Coverage::new(target.width, target.height),
         Coverage::new(target.width, target.height),
     );
-    rasterproof::tri::exact::rasterize(&scene.triangles[0].triangle, 0, &target, &mut oracle);
+    rasterproof::tri::exact::rasterize(&scene.triangles[0].triangle.to_triangle(), 0, &target, &mut oracle);
     speed_hack(test)(&t, 0, &target, &mut hack);
     assert_ne!(oracle, hack);
 }
@@ -145,7 +145,12 @@ fn harness_catches_the_sign_bit_test_at_ties() {
         Coverage::new(target.width, target.height),
         Coverage::new(target.width, target.height),
     );
-    rasterproof::tri::exact::rasterize(&found.scene.triangles[0].triangle, 0, &target, &mut oracle);
+    rasterproof::tri::exact::rasterize(
+        &found.scene.triangles[0].triangle.to_triangle(),
+        0,
+        &target,
+        &mut oracle,
+    );
     speed_hack(Test::SignBits)(&found.triangle, 0, &target, &mut hack);
     let first = rasterproof::check::differing_pixels(&oracle, &hack).remove(0);
     assert!(first.reference.is_empty() && first.candidate == [0], "{first:?}");

@@ -65,7 +65,7 @@ use std::process::ExitCode;
 use ab_glyph_rasterizer::{point, Rasterizer};
 use num_rational::BigRational;
 use num_traits::ToPrimitive;
-use rasterproof::geom::{FillRule, Point};
+use rasterproof::geom::{FillRule, Point, Triangle};
 use rasterproof::oracle::adapter::adapter_main;
 use rasterproof::scene::Scene;
 
@@ -112,8 +112,9 @@ struct Drawn {
     largest: f32,
 }
 
-/// The scene's contours, each a list of exact points, named for messages.
-fn contours(scene: &Scene) -> Result<Vec<Contour<'_>>, String> {
+/// The scene's contours, each a list of exact points, named for messages; `triangles` are
+/// the scene's, read exactly.
+fn contours<'a>(scene: &'a Scene, triangles: &'a [Triangle]) -> Result<Vec<Contour<'a>>, String> {
     if !scene.lines.is_empty() {
         return Err(format!(
             "lines: {} line(s): refused, this adapter draws area coverage of triangles and polygons only",
@@ -130,8 +131,8 @@ fn contours(scene: &Scene) -> Result<Vec<Contour<'_>>, String> {
         ));
     }
     let mut out = Vec::new();
-    for (k, t) in scene.triangles.iter().enumerate() {
-        out.push((t.triangle.v.iter().collect(), format!("triangles[{k}].v")));
+    for (k, t) in triangles.iter().enumerate() {
+        out.push((t.v.iter().collect(), format!("triangles[{k}].v")));
     }
     for (k, polygon) in scene.polygons.iter().enumerate() {
         if polygon.fill_rule == FillRule::EvenOdd {
@@ -150,7 +151,8 @@ fn contours(scene: &Scene) -> Result<Vec<Contour<'_>>, String> {
 
 /// The scene drawn into one ab_glyph `Rasterizer` and quantized.
 fn render(scene: &Scene) -> Result<Drawn, String> {
-    let contours = contours(scene)?;
+    let triangles = scene.triangles();
+    let contours = contours(scene, &triangles)?;
     // The columns the rasterizer must hold: the canvas's and every point's.
     let (mut lo, mut hi) = (0i64, i64::from(scene.width));
     for p in contours.iter().flat_map(|(c, _)| c.iter()) {

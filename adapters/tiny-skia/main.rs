@@ -117,8 +117,8 @@ fn render_grey(scene: &Scene, converter: &mut Converter) -> Result<Vec<u8>, Stri
     paint.anti_alias = true;
     paint.blend_mode = BlendMode::SourceOver;
     let mut paths = Vec::new();
-    for (k, t) in scene.triangles.iter().enumerate() {
-        let path = converter.closed_path([(t.triangle.v.iter().collect(), format!("triangles[{k}].v"))])?;
+    for (k, t) in scene.triangles().iter().enumerate() {
+        let path = converter.closed_path([(t.v.iter().collect(), format!("triangles[{k}].v"))])?;
         paths.push(path.map(|p| (p, tiny_skia::FillRule::Winding)));
     }
     for (k, polygon) in scene.polygons.iter().enumerate() {
@@ -326,8 +326,8 @@ fn shapes(scene: &Scene, converter: &mut Converter) -> Result<Vec<Option<Shape>>
         ));
     }
     let mut shapes = Vec::new();
-    for (k, t) in scene.triangles.iter().enumerate() {
-        let contour = t.triangle.v.iter().collect();
+    for (k, t) in scene.triangles().iter().enumerate() {
+        let contour = t.v.iter().collect();
         let path = converter.closed_path([(contour, format!("triangles[{k}].v"))])?;
         shapes.push(path.map(|p| Shape::Fill(p, tiny_skia::FillRule::Winding)));
     }

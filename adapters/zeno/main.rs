@@ -53,7 +53,7 @@
 use std::process::ExitCode;
 
 use num_rational::BigRational;
-use rasterproof::geom::{FillRule, Point};
+use rasterproof::geom::{FillRule, Point, Triangle};
 use rasterproof::oracle::adapter::adapter_main;
 use rasterproof::scene::Scene;
 use zeno::{Command, Fill, Mask};
@@ -79,8 +79,8 @@ fn main() -> ExitCode {
 }
 
 /// The scene's contours, each a list of exact points named for messages, and the one
-/// fill rule they are filled under.
-fn contours(scene: &Scene) -> Result<(Vec<Contour<'_>>, Fill), String> {
+/// fill rule they are filled under; `triangles` are the scene's, read exactly.
+fn contours<'a>(scene: &'a Scene, triangles: &'a [Triangle]) -> Result<(Vec<Contour<'a>>, Fill), String> {
     if !scene.lines.is_empty() {
         return Err(format!(
             "lines: {} line(s): refused, this adapter draws area coverage of triangles and polygons only",
@@ -112,8 +112,8 @@ fn contours(scene: &Scene) -> Result<(Vec<Contour<'_>>, Fill), String> {
         _ => Fill::NonZero,
     };
     let mut out = Vec::new();
-    for (k, t) in scene.triangles.iter().enumerate() {
-        out.push((t.triangle.v.iter().collect(), format!("triangles[{k}].v")));
+    for (k, t) in triangles.iter().enumerate() {
+        out.push((t.v.iter().collect(), format!("triangles[{k}].v")));
     }
     for (k, polygon) in scene.polygons.iter().enumerate() {
         out.push((polygon.outline.iter().collect(), format!("polygons[{k}].v")));
@@ -126,7 +126,8 @@ fn contours(scene: &Scene) -> Result<(Vec<Contour<'_>>, Fill), String> {
 
 /// zeno's mask of the scene, row by row, and how many coordinates were not f32-exact.
 fn render(scene: &Scene) -> Result<(Vec<u8>, usize), String> {
-    let (contours, fill) = contours(scene)?;
+    let triangles = scene.triangles();
+    let (contours, fill) = contours(scene, &triangles)?;
     let mut path = Vec::new();
     let mut inexact = 0;
     for (contour, what) in &contours {

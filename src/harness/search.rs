@@ -149,7 +149,7 @@ fn on_the_grid(scene: &Scene) -> Option<FixedTriangle> {
         return None;
     }
     let snapped = t.triangle.snapped(&scene.convention());
-    if snapped.to_exact() != t.triangle {
+    if snapped.to_exact() != t.triangle.to_triangle() {
         return None;
     }
     snapped.to_fixed().ok()

@@ -82,12 +82,14 @@ fn rounded(s: &Scene, bits: u32) -> Option<Scene> {
     let mut out = s.clone();
     let limit = BigInt::from(1u32 << bits);
     let mut changed = false;
-    for c in out.coordinates_mut() {
+    out.map_coordinates(|_, c| {
         if *c.denom() > limit {
-            *c = nearest_on_grid(c, bits);
             changed = true;
+            nearest_on_grid(c, bits)
+        } else {
+            c.clone()
         }
-    }
+    });
     changed.then_some(out)
 }
 
@@ -100,17 +102,14 @@ fn moved(s: &Scene, dx: i64, dy: i64, width: u32, height: u32) -> Scene {
         BigRational::from_integer(dx.into()),
         BigRational::from_integer(dy.into()),
     );
-    let mut cs = out.coordinates_mut();
-    for (k, c) in cs.iter_mut().enumerate() {
-        **c -= if k % 2 == 0 { &fx } else { &fy };
-    }
+    out.map_coordinates(|k, c| c - if k % 2 == 0 { &fx } else { &fy });
     out
 }
 
 /// Shrinks `scene` while `keeps` holds: drops triangles, lines and polygons (never the
 /// last primitive) and the clip window, crops the canvas (halves, then one pixel from a
 /// side; a crop from the left or the top moves the scene by whole pixels), and simplifies
-/// the coordinates ([`Scene::coordinates_mut`]), the simplest values first, so that the
+/// the coordinates ([`Scene::coordinates`]), the simplest values first, so that the
 /// minimal scene reads like one a person would write:
 ///
 /// - in the first round, and in every round that dropped or cropped something or follows
@@ -145,14 +144,14 @@ fn moved(s: &Scene, dx: i64, dy: i64, width: u32, height: u32) -> Scene {
 /// let scene = Scene::new(8, 8, vec![Triangle { v: [p(9, 5), p(22, 7), p(13, 19)] }]);
 /// // Fails while some vertex lies at x >= 1 px, on the quarter-pixel grid.
 /// let mut keeps = |s: &Scene| {
-///     let v = &s.triangles[0].triangle.v;
+///     let v = &s.triangles[0].triangle.to_triangle().v;
 ///     v.iter().all(|p| (&p.x * r(4, 1)).is_integer() && (&p.y * r(4, 1)).is_integer())
 ///         && v.iter().any(|p| p.x >= r(1, 1))
 /// };
 /// let (minimal, runs) = shrink(&scene, &mut keeps, 10_000, Some(&r(1, 4)));
 /// assert!(runs < 10_000);
 /// assert_eq!((minimal.width, minimal.height), (1, 1));
-/// let xs: Vec<_> = minimal.triangles[0].triangle.v.iter().map(|p| p.x.clone()).collect();
+/// let xs: Vec<_> = minimal.triangles[0].triangle.to_triangle().v.iter().map(|p| p.x.clone()).collect();
 /// assert_eq!(xs.iter().filter(|x| **x == r(1, 1)).count(), 1);
 /// ```
 pub fn shrink(
@@ -187,7 +186,7 @@ pub fn shrink(
 /// let scene = Scene::new(8, 8, vec![Triangle { v: [p(7, 1), p(7, 2), p(3, 6)] }]);
 /// // Fails while the first vertex lies at x >= 5: moving it to 0 is tried and refused
 /// // before 6 is kept, so a batch of 4 holds both (one batch, two runs).
-/// let keeps = |s: &Scene| s.triangles[0].triangle.v[0].x >= r(5);
+/// let keeps = |s: &Scene| s.triangles[0].triangle.to_triangle().v[0].x >= r(5);
 /// let one = shrink(&scene, &mut |s: &Scene| keeps(s), 100, None);
 /// let mut batches = 0;
 /// let mut first_kept = |batch: &[Scene]| {
@@ -282,12 +281,12 @@ pub fn shrink_batched(
         }
         // Simpler coordinates, one at a time.
         // A move changes one coordinate only: the others' values, read once, stay true.
-        let values: Vec<BigRational> = best.clone().coordinates_mut().into_iter().map(|c| c.clone()).collect();
+        let values: Vec<BigRational> = best.coordinates();
         for (k, value) in values.iter().enumerate() {
             let vs = simpler(value, step, away || structural);
             let moved_to = |m: usize| {
                 let mut c = best.clone();
-                *c.coordinates_mut()[k] = vs[m].clone();
+                c.map_coordinates(|j, x| if j == k { vs[m].clone() } else { x.clone() });
                 Some(c)
             };
             if let Some((_, c)) = tries.first(vs.len(), moved_to) {

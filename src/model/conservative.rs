@@ -192,6 +192,7 @@ pub fn render_conservative(
     let zero = BigRational::zero();
     for (id, t) in (0u32..).zip(&primitives.triangles) {
         let snapped_triangle = t.snapped(&target.convention).to_exact();
+        let t = &t.to_triangle();
         let (given, snapped) = (
             ConservativeTriangle::new(t),
             ConservativeTriangle::new(&snapped_triangle),

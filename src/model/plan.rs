@@ -258,7 +258,7 @@ fn float_breaker(p: &Primitives, target: &Target, bits: u32) -> Option<String> {
         return Some("lines[0]: lines in floats are not analysed (not proven)".into());
     }
     for (k, t) in p.triangles.iter().enumerate() {
-        if let Err(why) = float_exact(&t.v, target, bits) {
+        if let Err(why) = float_exact(&t.to_triangle().v, target, bits) {
             return Some(format!("triangles[{k}]: {why}"));
         }
     }

@@ -9,7 +9,7 @@ use crate::clip::sutherland_hodgman::clip_polygon;
 use crate::clip::Window;
 use crate::convention::Target;
 use crate::coverage::{Coverage, CoverageSink, IdRun};
-use crate::geom::{FillRule, Polygon, Rgb, Triangle};
+use crate::geom::{CompactTriangle, FillRule, Polygon, Rgb, Triangle};
 use crate::line::Line;
 
 use super::lines::{prepare_lines, PreparedLine};
@@ -23,8 +23,9 @@ use super::{Arithmetic, FloatType, Model, ModelError};
 /// [`crate::scene::Scene::primitives`] gives a scene file's.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct Primitives {
-    /// Window-space triangles.
-    pub triangles: Vec<Triangle>,
+    /// Window-space triangles, in compact form (each exact, 96 bytes when its
+    /// coordinates are small).
+    pub triangles: Vec<CompactTriangle>,
     /// Lines (Bresenham or diamond-exit).
     pub lines: Vec<Line>,
     /// Polygons with holes and a fill rule.
@@ -42,7 +43,7 @@ impl Primitives {
     /// Just these triangles.
     pub fn from_triangles(triangles: &[Triangle]) -> Primitives {
         Primitives {
-            triangles: triangles.to_vec(),
+            triangles: triangles.iter().map(CompactTriangle::from).collect(),
             ..Primitives::default()
         }
     }
@@ -379,7 +380,7 @@ impl PreparedScene {
     pub fn shapes(&self) -> Option<Vec<Shape>> {
         let mut out = Vec::with_capacity(self.primitive_count());
         match &self.clipped_triangles {
-            None => out.extend(self.triangles.exact_triangles()?.iter().cloned().map(Shape::Triangle)),
+            None => out.extend(self.triangles.exact_triangles()?.into_iter().map(Shape::Triangle)),
             Some(polygons) => {
                 for p in polygons {
                     out.push(Shape::Polygon(p.exact_polygon()?.clone()));
@@ -463,7 +464,8 @@ pub fn render(primitives: &Primitives, target: &Target, model: Model) -> Result<
 /// # Errors
 /// The first triangle the model cannot take (envelope, float range).
 pub fn render_triangles(triangles: &[Triangle], target: &Target, model: Model) -> Result<Coverage, ModelError> {
-    let prepared = prepare_triangles(model, triangles, target)?;
+    let compact: Vec<CompactTriangle> = triangles.iter().map(CompactTriangle::from).collect();
+    let prepared = prepare_triangles(model, &compact, target)?;
     let mut coverage = Coverage::new(target.width, target.height);
     prepared.rasterize_into(target, &mut coverage);
     Ok(coverage)

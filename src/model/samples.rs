@@ -189,7 +189,7 @@ fn snapped(primitives: &Primitives, target: &Target) -> Primitives {
         triangles: primitives
             .triangles
             .iter()
-            .map(|t| t.snapped(convention).to_exact())
+            .map(|t| t.snapped(convention).to_exact().into())
             .collect(),
         lines: Vec::new(),
         polygons,
@@ -214,7 +214,10 @@ fn moved(primitives: &Primitives, offset: &[BigRational; 2]) -> Primitives {
         triangles: primitives
             .triangles
             .iter()
-            .map(|t| Triangle::new(point(&t.v[0]), point(&t.v[1]), point(&t.v[2])))
+            .map(|t| {
+                let t = t.to_triangle();
+                Triangle::new(point(&t.v[0]), point(&t.v[1]), point(&t.v[2])).into()
+            })
             .collect(),
         lines: Vec::new(),
         polygons: primitives

@@ -7,7 +7,7 @@ use num_rational::BigRational;
 
 use crate::convention::{Convention, Target};
 use crate::coverage::{primitive_colour, Coverage, CoverageSink};
-use crate::geom::{FixedTriangle, Rgb, Triangle};
+use crate::geom::{CompactTriangle, FixedTriangle, Rgb, Triangle};
 use crate::interp::{barycentric_fixed, gouraud_exact, gouraud_f32, gouraud_f64, to_channel};
 use crate::raster::{sample_exact, sample_f32, sample_f64};
 use crate::tri::float::FloatRule;
@@ -22,8 +22,8 @@ use super::{point_f32, point_f64, Arithmetic, FloatType, IntegerTraversal, Model
 pub(crate) enum PreparedTriangles {
     /// Exact triangles (as written, or snapped and converted back) for the plain oracle.
     Exact(Vec<Triangle>),
-    /// The same exact triangles, each planned (`None`: it covers nothing).
-    Planned(Vec<Triangle>, Vec<Option<PlannedTriangle>>),
+    /// The same exact triangles in compact form, each planned (`None`: it covers nothing).
+    Planned(Vec<CompactTriangle>, Vec<Option<PlannedTriangle>>),
     /// Fixed-point triangles inside the envelope, for the block-traversal model.
     Fixed(Vec<FixedTriangle>),
     /// Fixed-point triangles for the scanline (edge-walking) model.
@@ -37,22 +37,22 @@ pub(crate) enum PreparedTriangles {
 /// Converts `triangles` for `model`; the first triangle it cannot take is the error.
 pub(crate) fn prepare_triangles(
     model: Model,
-    triangles: &[Triangle],
+    triangles: &[CompactTriangle],
     target: &Target,
 ) -> Result<PreparedTriangles, ModelError> {
     let conv = &target.convention;
     let at = |k: usize, i: usize| move || format!("triangles[{k}].v[{i}]");
     Ok(match model.arithmetic() {
         Arithmetic::Exact { snapped, plain } => {
-            let exact = if snapped {
-                triangles.iter().map(|t| t.snapped(conv).to_exact()).collect()
+            let exact: Vec<CompactTriangle> = if snapped {
+                triangles.iter().map(|t| t.snapped_exact(conv)).collect()
             } else {
                 triangles.to_vec()
             };
             if plain {
-                PreparedTriangles::Exact(exact)
+                PreparedTriangles::Exact(exact.iter().map(CompactTriangle::to_triangle).collect())
             } else {
-                let planned = exact.iter().map(|t| PlannedTriangle::new(t, target)).collect();
+                let planned = exact.iter().map(|t| PlannedTriangle::from_compact(t, target)).collect();
                 PreparedTriangles::Planned(exact, planned)
             }
         }
@@ -74,13 +74,14 @@ pub(crate) fn prepare_triangles(
 /// Every triangle converted vertex by vertex, `convert(vertex, triangle, index)`; the first
 /// error stops it.
 fn float_triangles<V>(
-    triangles: &[Triangle],
+    triangles: &[CompactTriangle],
     convert: impl Fn(&crate::geom::Point, usize, usize) -> Result<V, ModelError>,
 ) -> Result<Vec<[V; 3]>, ModelError> {
     triangles
         .iter()
         .enumerate()
         .map(|(k, t)| {
+            let t = t.to_triangle();
             Ok([
                 convert(&t.v[0], k, 0)?,
                 convert(&t.v[1], k, 1)?,
@@ -91,19 +92,17 @@ fn float_triangles<V>(
 }
 
 /// Snaps every triangle and checks it against the integer envelope.
-fn fixed_triangles(triangles: &[Triangle], conv: &Convention) -> Result<Vec<FixedTriangle>, ModelError> {
+fn fixed_triangles(triangles: &[CompactTriangle], conv: &Convention) -> Result<Vec<FixedTriangle>, ModelError> {
     triangles
         .iter()
         .enumerate()
         .map(|(k, t)| {
-            t.snapped(conv)
-                .to_fixed()
-                .map_err(|(vertex, axis, error)| ModelError::Envelope {
-                    triangle: k,
-                    vertex,
-                    axis,
-                    error,
-                })
+            t.to_fixed(conv).map_err(|(vertex, axis, error)| ModelError::Envelope {
+                triangle: k,
+                vertex,
+                axis,
+                error,
+            })
         })
         .collect()
 }
@@ -116,9 +115,10 @@ fn id_of(k: usize) -> u32 {
 
 impl PreparedTriangles {
     /// The exact triangles of the exact models (plain or planned), for exact clipping.
-    pub(crate) fn exact_triangles(&self) -> Option<&[Triangle]> {
+    pub(crate) fn exact_triangles(&self) -> Option<Vec<Triangle>> {
         match self {
-            PreparedTriangles::Exact(ts) | PreparedTriangles::Planned(ts, _) => Some(ts),
+            PreparedTriangles::Exact(ts) => Some(ts.clone()),
+            PreparedTriangles::Planned(ts, _) => Some(ts.iter().map(CompactTriangle::to_triangle).collect()),
             _ => None,
         }
     }
@@ -135,7 +135,8 @@ impl PreparedTriangles {
     /// How many triangles.
     pub(crate) fn len(&self) -> usize {
         match self {
-            PreparedTriangles::Exact(ts) | PreparedTriangles::Planned(ts, _) => ts.len(),
+            PreparedTriangles::Exact(ts) => ts.len(),
+            PreparedTriangles::Planned(ts, _) => ts.len(),
             PreparedTriangles::Fixed(ts) | PreparedTriangles::Scanline(ts) => ts.len(),
             PreparedTriangles::F32(ts, _) => ts.len(),
             PreparedTriangles::F64(ts, _) => ts.len(),
@@ -193,8 +194,10 @@ impl PreparedTriangles {
     /// area for the integer models; f32 / f64 barycentrics for the float models).
     pub(crate) fn shade(&self, k: usize, colours: &[Rgb; 3], x: u32, y: u32, target: &Target) -> Rgb {
         match self {
-            PreparedTriangles::Exact(ts) | PreparedTriangles::Planned(ts, _) => {
-                gouraud_exact(&ts[k], colours, &sample_exact(x, y, target))
+            PreparedTriangles::Exact(ts) => gouraud_exact(&ts[k], colours, &sample_exact(x, y, target))
+                .map_or([0; 3], |c| c.each_ref().map(to_channel)),
+            PreparedTriangles::Planned(ts, _) => {
+                gouraud_exact(&ts[k].to_triangle(), colours, &sample_exact(x, y, target))
                     .map_or([0; 3], |c| c.each_ref().map(to_channel))
             }
             PreparedTriangles::Fixed(ts) | PreparedTriangles::Scanline(ts) => {

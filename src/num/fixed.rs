@@ -106,7 +106,7 @@ pub fn snap(x: &BigRational, bits: u32, rounding: Rounding) -> BigInt {
 }
 
 /// `n / d` (`d > 0`) rounded to an integer by `rounding`, as [`round_to_integer`] rounds.
-fn round_quotient(n: i128, d: i128, rounding: Rounding) -> i128 {
+pub(crate) fn round_quotient(n: i128, d: i128, rounding: Rounding) -> i128 {
     let (floor, rem) = (n.div_euclid(d), n.rem_euclid(d));
     let ceiling = floor + i128::from(rem != 0);
     match rounding {

@@ -27,6 +27,11 @@ pub trait Lane: Clone + fmt::Debug {
     /// `v` in this type. The caller has checked `v` against the plan; a value out of range
     /// panics.
     fn from_big(v: &BigInt) -> Self;
+    /// `v` in this type, as [`Lane::from_big`] (without a big integer in the machine
+    /// widths).
+    fn from_i128(v: i128) -> Self {
+        Self::from_big(&BigInt::from(v))
+    }
     /// Zero.
     fn zero_value() -> Self;
     /// `self + other`.
@@ -130,6 +135,9 @@ macro_rules! int_lane {
         impl Lane for $t {
             const WIDTH: Width = $w;
             fn from_big(v: &BigInt) -> Self {
+                v.try_into().expect("value within the planned width")
+            }
+            fn from_i128(v: i128) -> Self {
                 v.try_into().expect("value within the planned width")
             }
             fn zero_value() -> Self {
@@ -360,6 +368,16 @@ macro_rules! float_lane {
                 // |v| <= 2^53: exact in i64 and then in the float.
                 v.to_i64().expect("within 2^53") as $t
             }
+            fn from_i128(v: i128) -> Self {
+                // The width's limit, 2^24 or 2^53: every integer up to it is exact.
+                let limit = 1u128 << <$t>::MANTISSA_DIGITS;
+                assert!(
+                    v.unsigned_abs() <= limit,
+                    "value {v} beyond the planned width {}",
+                    $w
+                );
+                v as $t
+            }
             fn zero_value() -> Self {
                 0.0
             }
@@ -431,6 +449,113 @@ pub(crate) trait LaneState {
     fn convert<T: Lane>(exact: &Self::In<BigInt>) -> Self::In<T>;
 }
 
+/// The exact integers a planned engine's setup computes in: `i128` with every operation
+/// checked (`None` on overflow, and the setup is redone in [`BigInt`]), or [`BigInt`]
+/// (never `None`). One setup, generic over this, so that the machine-integer setup of a
+/// small primitive and the big one of any other are the same code.
+pub(crate) trait SetupInt: Clone + fmt::Debug + Ord {
+    /// `v`.
+    fn from_i64(v: i64) -> Self;
+    /// `self + o`.
+    fn add_exact(&self, o: &Self) -> Option<Self>;
+    /// `self - o`.
+    fn sub_exact(&self, o: &Self) -> Option<Self>;
+    /// `self * o`.
+    fn mul_exact(&self, o: &Self) -> Option<Self>;
+    /// `|self|`.
+    fn abs_exact(&self) -> Option<Self>;
+    /// `self < 0`.
+    fn below_zero(&self) -> bool;
+    /// `self == 0`.
+    fn equals_zero(&self) -> bool;
+    /// The value as a big integer.
+    fn to_big(&self) -> BigInt;
+    /// The value in lane type `T` (it is within the plan's bound).
+    fn to_lane<T: Lane>(&self) -> T;
+    /// `-self`.
+    fn neg_exact(&self) -> Option<Self> {
+        Self::from_i64(0).sub_exact(self)
+    }
+    /// `k self`.
+    fn mul_count(&self, k: u32) -> Option<Self> {
+        self.mul_exact(&Self::from_i64(k.into()))
+    }
+}
+
+impl SetupInt for i128 {
+    #[inline]
+    fn from_i64(v: i64) -> Self {
+        v.into()
+    }
+    #[inline]
+    fn add_exact(&self, o: &Self) -> Option<Self> {
+        self.checked_add(*o)
+    }
+    #[inline]
+    fn sub_exact(&self, o: &Self) -> Option<Self> {
+        self.checked_sub(*o)
+    }
+    #[inline]
+    fn mul_exact(&self, o: &Self) -> Option<Self> {
+        self.checked_mul(*o)
+    }
+    #[inline]
+    fn abs_exact(&self) -> Option<Self> {
+        self.checked_abs()
+    }
+    #[inline]
+    fn below_zero(&self) -> bool {
+        *self < 0
+    }
+    #[inline]
+    fn equals_zero(&self) -> bool {
+        *self == 0
+    }
+    fn to_big(&self) -> BigInt {
+        BigInt::from(*self)
+    }
+    fn to_lane<T: Lane>(&self) -> T {
+        T::from_i128(*self)
+    }
+}
+
+impl SetupInt for BigInt {
+    fn from_i64(v: i64) -> Self {
+        v.into()
+    }
+    fn add_exact(&self, o: &Self) -> Option<Self> {
+        Some(self + o)
+    }
+    fn sub_exact(&self, o: &Self) -> Option<Self> {
+        Some(self - o)
+    }
+    fn mul_exact(&self, o: &Self) -> Option<Self> {
+        Some(self * o)
+    }
+    fn abs_exact(&self) -> Option<Self> {
+        Some(num_traits::Signed::abs(self))
+    }
+    fn below_zero(&self) -> bool {
+        num_traits::Signed::is_negative(self)
+    }
+    fn equals_zero(&self) -> bool {
+        num_traits::Zero::is_zero(self)
+    }
+    fn to_big(&self) -> BigInt {
+        self.clone()
+    }
+    fn to_lane<T: Lane>(&self) -> T {
+        T::from_big(self)
+    }
+}
+
+/// A state whose setup may run in `i128` ([`SetupInt`]): converted from its `i128`
+/// values as from its big ones.
+pub(crate) trait LaneStateI128: LaneState {
+    /// The exact state in `T` (every value within the plan's bound, so exact).
+    fn convert_i128<T: Lane>(exact: &Self::In<i128>) -> Self::In<T>;
+}
+
 /// An engine, generic over the lane type, run on a primitive's state in whichever width
 /// was planned: [`Planned::run`] matches the width once per primitive and calls the
 /// engine compiled for that type, so no dispatch reaches its loops.
@@ -485,6 +610,24 @@ impl<F: LaneState> Planned<F> {
             Width::I64 => Lanes::I64(F::convert(&exact)),
             Width::I128 => Lanes::I128(F::convert(&exact)),
             Width::Big => Lanes::Big(Box::new(exact)),
+        };
+        Planned { plan, lanes }
+    }
+
+    /// `exact`, set up in `i128`, in the cheapest width that holds `bound` (at most
+    /// `i128`, which holds every value of the setup).
+    pub(crate) fn new_i128(scale: BigInt, bound: Bound, exact: F::In<i128>) -> Planned<F>
+    where
+        F: LaneStateI128,
+    {
+        let plan = Plan::new(scale, bound);
+        let lanes = match plan.width {
+            Width::F32 => Lanes::F32(F::convert_i128(&exact)),
+            Width::I32 => Lanes::I32(F::convert_i128(&exact)),
+            Width::F64 => Lanes::F64(F::convert_i128(&exact)),
+            Width::I64 => Lanes::I64(F::convert_i128(&exact)),
+            Width::I128 => Lanes::I128(exact),
+            Width::Big => Lanes::Big(Box::new(F::convert_i128(&exact))),
         };
         Planned { plan, lanes }
     }

@@ -3,6 +3,7 @@
 //! integer width that is provably exact for a scene's bounds, and the lane arithmetic the
 //! planned engines run in that width ([`lane`]).
 
+pub mod compact;
 pub mod dda;
 pub mod exact;
 pub mod fixed;

@@ -87,8 +87,11 @@ pub(crate) fn snapped(primitives: &Primitives, s: Snapping) -> Primitives {
         triangles: primitives
             .triangles
             .iter()
-            .map(|t| Triangle {
-                v: t.v.clone().map(|v| snap_point(&v, s)),
+            .map(|t| {
+                Triangle {
+                    v: t.to_triangle().v.map(|v| snap_point(&v, s)),
+                }
+                .into()
             })
             .collect(),
         lines: primitives
@@ -150,7 +153,7 @@ pub(crate) fn image(
     }
     let mut coverage = Coverage::new(t.width, t.height);
     for (k, tri) in primitives.triangles.iter().enumerate() {
-        if let Some(p) = PlannedTriangle::with_rule(tri, &t, candidate.tie_rule) {
+        if let Some(p) = PlannedTriangle::with_rule(&tri.to_triangle(), &t, candidate.tie_rule) {
             p.rasterize(u32::try_from(k).expect("ids fit u32"), &mut coverage);
         }
     }

@@ -33,7 +33,7 @@ use super::reason::Snapping;
 use super::theirs::Theirs;
 use crate::convention::{AnyTieRule, PixelCentre, Target};
 use crate::coverage::Coverage;
-use crate::geom::Point;
+use crate::geom::{CompactTriangle, Point, Triangle};
 use crate::line::LineRule;
 use crate::model::{ModelError, Primitives};
 use crate::num::plan::scale_of;
@@ -278,8 +278,9 @@ fn counts_of(
 /// grid (then every snapping to `k` bits or more leaves the scene as it is); `None` when
 /// some vertex is on no such grid.
 fn grid_bits(primitives: &Primitives) -> Option<u32> {
+    let triangles: Vec<Triangle> = primitives.triangles.iter().map(CompactTriangle::to_triangle).collect();
     let mut points: Vec<&Point> = Vec::new();
-    for t in &primitives.triangles {
+    for t in &triangles {
         points.extend(t.v.iter());
     }
     for l in primitives.lines.iter().filter(|l| l.rule == LineRule::Diamond) {

@@ -13,9 +13,10 @@ use crate::clip::homogeneous::{ClipVertex, DepthRange, NdcY, Viewport};
 use crate::clip::Window;
 use crate::convention::{Convention, PixelCentre, Preset, Rounding, Target, TieRule};
 use crate::geom::Rgb;
-use crate::geom::{Point, Polygon, Triangle};
+use crate::geom::{CompactTriangle, Point, Polygon, Triangle};
 use crate::line::{Line, LineRule};
 use crate::model::Primitives;
+use crate::num::compact::Compact;
 use crate::num::exact::{exact_text, json_pair};
 use crate::pattern::SamplePattern;
 
@@ -51,8 +52,8 @@ impl Overrides {
 /// A triangle of a scene, with optional vertex colours.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct SceneTriangle {
-    /// The exact triangle.
-    pub triangle: Triangle,
+    /// The exact triangle, in compact form ([`CompactTriangle::to_triangle`] reads it).
+    pub triangle: CompactTriangle,
     /// `colors`: one RGB per vertex.
     pub colours: Option<[Rgb; 3]>,
 }
@@ -97,7 +98,7 @@ impl Scene {
             triangles: triangles
                 .into_iter()
                 .map(|triangle| SceneTriangle {
-                    triangle,
+                    triangle: triangle.into(),
                     colours: None,
                 })
                 .collect(),
@@ -140,7 +141,7 @@ impl Scene {
 
     /// The exact triangles, in id order.
     pub fn triangles(&self) -> Vec<Triangle> {
-        self.triangles.iter().map(|t| t.triangle.clone()).collect()
+        self.triangles.iter().map(|t| t.triangle.to_triangle()).collect()
     }
 
     /// What the scene draws, for [`crate::model::render`] and [`crate::model::prepare`]:
@@ -148,7 +149,7 @@ impl Scene {
     /// ([`Scene::viewport`]) and the clip window.
     pub fn primitives(&self) -> Primitives {
         Primitives {
-            triangles: self.triangles(),
+            triangles: self.triangles.iter().map(|t| t.triangle.clone()).collect(),
             lines: self.lines.clone(),
             polygons: self.polygons.clone(),
             clip_space_triangles: self.clip_space_triangles.clone(),
@@ -186,7 +187,7 @@ impl Scene {
         let clipper = Clipper::new(arithmetic, self.clip.as_ref())?;
         let mut triangles = Vec::new();
         for (k, t) in self.triangles.iter().enumerate() {
-            triangles.push(clipper.contour(&t.triangle.v, &format!("triangles[{k}]"))?);
+            triangles.push(clipper.contour(&t.triangle.to_triangle().v, &format!("triangles[{k}]"))?);
         }
         let mut lines = Vec::new();
         for (k, l) in self.lines.iter().enumerate() {
@@ -226,30 +227,42 @@ impl Scene {
         self.triangles.iter().map(|t| t.colours).collect()
     }
 
-    /// Every window-space coordinate, mutably, `x` then `y` of each vertex: the
-    /// triangles', the lines' ends, the polygons' outlines then holes (not the clip-space
-    /// triangles', which are in clip space).
-    pub fn coordinates_mut(&mut self) -> Vec<&mut BigRational> {
-        let mut out: Vec<&mut BigRational> = Vec::new();
+    /// Every window-space coordinate, `x` then `y` of each vertex: the triangles', the
+    /// lines' ends, the polygons' outlines then holes (not the clip-space triangles',
+    /// which are in clip space).
+    pub fn coordinates(&self) -> Vec<BigRational> {
+        let mut out = Vec::new();
+        self.clone().map_coordinates(|_, x| {
+            out.push(x.clone());
+            x.clone()
+        });
+        out
+    }
+
+    /// Replaces each coordinate of [`Scene::coordinates`] by `f(k, value)`, `k` its
+    /// position in that list.
+    pub fn map_coordinates(&mut self, mut f: impl FnMut(usize, &BigRational) -> BigRational) {
+        let mut k = 0;
+        let mut next = |x: &BigRational| {
+            k += 1;
+            f(k - 1, x)
+        };
         for t in &mut self.triangles {
             for v in &mut t.triangle.v {
-                out.push(&mut v.x);
-                out.push(&mut v.y);
+                for c in v {
+                    *c = Compact::from_big(next(&c.to_big()));
+                }
             }
         }
-        for l in &mut self.lines {
-            for v in [&mut l.from, &mut l.to] {
-                out.push(&mut v.x);
-                out.push(&mut v.y);
-            }
+        let points = self.lines.iter_mut().flat_map(|l| [&mut l.from, &mut l.to]).chain(
+            self.polygons
+                .iter_mut()
+                .flat_map(|p| p.outline.iter_mut().chain(p.holes.iter_mut().flatten())),
+        );
+        for v in points {
+            v.x = next(&v.x);
+            v.y = next(&v.y);
         }
-        for p in &mut self.polygons {
-            for v in p.outline.iter_mut().chain(p.holes.iter_mut().flatten()) {
-                out.push(&mut v.x);
-                out.push(&mut v.y);
-            }
-        }
-        out
     }
 
     /// The scene as a scene file, every coordinate an exact string (`"7/3"`), so that
@@ -277,7 +290,7 @@ impl Scene {
         s.push_str("  \"triangles\": [");
         for (k, t) in self.triangles.iter().enumerate() {
             s.push_str(if k == 0 { "\n    " } else { ",\n    " });
-            let v: Vec<String> = t.triangle.v.iter().map(pt).collect();
+            let v: Vec<String> = t.triangle.to_triangle().v.iter().map(pt).collect();
             let _ = write!(s, "{{\"v\": [{}]", v.join(", "));
             if let Some(c) = t.colours {
                 let c: Vec<String> = c.iter().map(|c| format!("[{}, {}, {}]", c[0], c[1], c[2])).collect();

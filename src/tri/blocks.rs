@@ -21,11 +21,8 @@
 //! difference of two samples' values). [`bound_of`] computes the largest of all of them
 //! exactly.
 
-use num_bigint::BigInt;
-use num_traits::{Signed, Zero};
-
 use crate::coverage::CoverageSink;
-use crate::num::lane::{Lane, HALF_ROW, ROW};
+use crate::num::lane::{Lane, SetupInt, HALF_ROW, ROW};
 use crate::num::plan::Bound;
 use crate::raster::PixelRange;
 
@@ -48,9 +45,10 @@ pub(crate) struct Edges<T> {
 }
 
 impl<T: Lane> Edges<T> {
-    /// The exact edges in `T` (every value within the plan's bound).
-    pub(crate) fn from_big(e: &Edges<BigInt>) -> Edges<T> {
-        let lane = |v: &[BigInt; 3]| v.each_ref().map(T::from_big);
+    /// The exact edges (set up in `N`) in lane type `T`: every value is within the plan's
+    /// bound, so exact.
+    pub(crate) fn from_exact<N: SetupInt>(e: &Edges<N>) -> Edges<T> {
+        let lane = |v: &[N; 3]| v.each_ref().map(N::to_lane);
         Edges {
             origin: lane(&e.origin),
             step_x: lane(&e.step_x),
@@ -59,26 +57,50 @@ impl<T: Lane> Edges<T> {
     }
 }
 
-/// The largest magnitude the traversal reaches (see the module docs): `E - bias` at the
-/// range's corners, and the step multiples it adds.
-pub(crate) fn bound_of(edges: &Edges<BigInt>, range: &PixelRange) -> Bound {
-    let (w, h) = (range.x1 - range.x0, range.y1 - range.y0);
-    let mut best = Bound {
-        value: BigInt::zero(),
-        what: "nothing".into(),
-    };
-    let mut consider = |v: BigInt, what: &dyn Fn() -> String| {
-        if v.abs() > best.value.abs() || best.what == "nothing" {
-            best = Bound {
-                value: v.abs(),
-                what: what(),
-            };
+/// Which value a bound is, put in words once ([`Bound::what`]).
+#[derive(Debug, Clone, Copy)]
+enum What {
+    /// Edge `k`'s value at pixel `(x, y)`.
+    Corner(usize, u32, u32),
+    /// Edge `k`'s step over `n` columns.
+    Columns(usize, u32),
+    /// Edge `k`'s step over `n` rows.
+    Rows(usize, u32),
+    /// Edge `k`'s step to the corner of a `w` x `h` block.
+    BlockCorner(usize, u32, u32),
+}
+
+impl std::fmt::Display for What {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            What::Corner(k, x, y) => write!(f, "edge {k} at pixel ({x}, {y})"),
+            What::Columns(k, n) => write!(f, "edge {k}'s step over {n} columns"),
+            What::Rows(k, n) => write!(f, "edge {k}'s step over {n} rows"),
+            What::BlockCorner(k, w, h) => write!(f, "edge {k}'s step to a {w}x{h} block's corner"),
         }
+    }
+}
+
+/// The largest magnitude the traversal reaches (see the module docs): `E - bias` at the
+/// range's corners, and the step multiples it adds. `None` when a value overflows `N`
+/// (`i128`; never in [`BigInt`]).
+pub(crate) fn bound_of<N: SetupInt>(edges: &Edges<N>, range: &PixelRange) -> Option<Bound> {
+    let (w, h) = (range.x1 - range.x0, range.y1 - range.y0);
+    let mut best: Option<(N, What)> = None;
+    let mut consider = |v: N, what: What| -> Option<()> {
+        let v = v.abs_exact()?;
+        if best.as_ref().map_or(true, |(b, _)| v > *b) {
+            best = Some((v, what));
+        }
+        Some(())
     };
     for k in 0..3 {
+        let (sx, sy) = (&edges.step_x[k], &edges.step_y[k]);
         for (u, v) in [(0, 0), (w, 0), (0, h), (w, h)] {
-            let e = &edges.origin[k] + &edges.step_x[k] * u + &edges.step_y[k] * v;
-            consider(e, &|| format!("edge {k} at pixel ({}, {})", range.x0 + u, range.y0 + v));
+            let e = edges.origin[k]
+                .add_exact(&sx.mul_count(u)?)?
+                .add_exact(&sy.mul_count(v)?)?;
+            consider(e, What::Corner(k, range.x0 + u, range.y0 + v))?;
         }
         // A range within one block is filled row by row: one step down per row, the row
         // ramp's up to BLOCK - 1 steps across (`Lane::ramp`); a larger one also steps by
@@ -90,30 +112,31 @@ pub(crate) fn bound_of(edges: &Edges<BigInt>, range: &PixelRange) -> Bound {
         } else {
             (w.min(BLOCK), h.min(BLOCK))
         };
-        consider(&edges.step_x[k] * kx, &|| format!("edge {k}'s step over {kx} columns"));
-        consider(&edges.step_y[k] * ky, &|| format!("edge {k}'s step over {ky} rows"));
+        consider(sx.mul_count(kx)?, What::Columns(k, kx))?;
+        consider(sy.mul_count(ky)?, What::Rows(k, ky))?;
         if one_block {
             continue;
         }
-        let (sx, sy) = (&edges.step_x[k], &edges.step_y[k]);
         for cx in [(BLOCK - 1).min(w), w % BLOCK] {
             for cy in [(BLOCK - 1).min(h), h % BLOCK] {
                 for high in [true, false] {
-                    let mut v = BigInt::zero();
-                    if sx.is_negative() != high {
-                        v += sx * cx;
+                    let mut v = N::from_i64(0);
+                    if sx.below_zero() != high {
+                        v = v.add_exact(&sx.mul_count(cx)?)?;
                     }
-                    if sy.is_negative() != high {
-                        v += sy * cy;
+                    if sy.below_zero() != high {
+                        v = v.add_exact(&sy.mul_count(cy)?)?;
                     }
-                    consider(v, &|| {
-                        format!("edge {k}'s step to a {}x{} block's corner", cx + 1, cy + 1)
-                    });
+                    consider(v, What::BlockCorner(k, cx + 1, cy + 1))?;
                 }
             }
         }
     }
-    best
+    let (value, what) = best?;
+    Some(Bound {
+        value: value.to_big(),
+        what: what.to_string(),
+    })
 }
 
 /// `n` times `step` (every multiple used is a difference of two samples' values in the

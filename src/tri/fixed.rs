@@ -220,7 +220,7 @@ mod tests {
             step_x: big(&lanes.step_x),
             step_y: big(&lanes.step_y),
         };
-        bound_of(&e, range).value
+        bound_of(&e, range).expect("big integers do not overflow").value
     }
 
     fn fixed_of(t: &Triangle, target: &Target) -> FixedTriangle {

@@ -21,12 +21,12 @@
 //! [`BLOCK`]: crate::tri::fixed::BLOCK
 
 use num_bigint::BigInt;
-use num_traits::{Signed, Zero};
 
-use crate::convention::{AnyTieRule, Target};
+use crate::convention::{AnyTieRule, PixelCentre, Target};
 use crate::coverage::CoverageSink;
-use crate::geom::Triangle;
-use crate::num::lane::{InWidth, Lane, LaneState, Planned};
+use crate::geom::{CompactTriangle, Triangle};
+use crate::num::compact::Compact;
+use crate::num::lane::{InWidth, Lane, LaneState, LaneStateI128, Planned, SetupInt};
 use crate::num::plan::{scale_of, scaled, Bound, Plan, Width};
 use crate::raster::{exact_sample_range, PixelRange};
 
@@ -39,7 +39,13 @@ struct TriangleLanes;
 impl LaneState for TriangleLanes {
     type In<T: Lane> = Edges<T>;
     fn convert<T: Lane>(exact: &Edges<BigInt>) -> Edges<T> {
-        Edges::from_big(exact)
+        Edges::from_exact(exact)
+    }
+}
+
+impl LaneStateI128 for TriangleLanes {
+    fn convert_i128<T: Lane>(exact: &Edges<i128>) -> Edges<T> {
+        Edges::from_exact(exact)
     }
 }
 
@@ -66,66 +72,119 @@ pub struct PlannedTriangle {
     planned: Planned<TriangleLanes>,
 }
 
-/// The exact setup: range, scale, edges and the bound.
-struct TriangleSetup {
+/// The exact setup: range, scale, edges and the bound, in `N` (`i128` or [`BigInt`]).
+struct TriangleSetup<N> {
     range: PixelRange,
-    scale: BigInt,
-    edges: Edges<BigInt>,
+    scale: N,
+    edges: Edges<N>,
     bound: Bound,
 }
 
-fn setup(tri: &Triangle, target: &Target, rule: AnyTieRule) -> Option<TriangleSetup> {
+/// The setup of `tri` in big integers: scale, range, then [`setup_scaled`].
+fn setup(tri: &Triangle, target: &Target, rule: AnyTieRule) -> Option<TriangleSetup<BigInt>> {
     let range = exact_sample_range(tri.v.iter(), target)?;
     let centre = target.convention.pixel_centre.offset();
     let scale = scale_of(tri.v.iter().flat_map(|p| [&p.x, &p.y]).chain([&centre]));
     let c = scaled(&centre, &scale);
-    let origin = [
-        BigInt::from(range.x0) * &scale + &c,
-        BigInt::from(range.y0) * &scale + &c,
-    ];
-    let local = |i: usize| {
-        let p = &tri.v[i];
-        [scaled(&p.x, &scale) - &origin[0], scaled(&p.y, &scale) - &origin[1]]
+    let v = tri.v.each_ref().map(|p| [scaled(&p.x, &scale), scaled(&p.y, &scale)]);
+    setup_scaled(v, c, scale, range, rule).expect("big integers do not overflow")
+}
+
+/// The setup of a compact triangle whose coordinates are all small, in `i128`: the same
+/// scale, range, edges and bound as [`setup`] computes in big integers. `None` when a
+/// coordinate is not small or a value overflows `i128` (then [`setup`] runs); `Some(None)`
+/// when the triangle covers nothing.
+fn setup_small(tri: &CompactTriangle, target: &Target, rule: AnyTieRule) -> Option<Option<TriangleSetup<i128>>> {
+    let small = |c: &Compact| c.small().map(|(n, d)| (i128::from(n), i128::from(d)));
+    let mut coords = [[(0i128, 1i128); 2]; 3];
+    for (k, [x, y]) in tri.v.iter().enumerate() {
+        coords[k] = [small(x)?, small(y)?];
+    }
+    let (cn, cd): (i128, i128) = match target.convention.pixel_centre {
+        PixelCentre::Half => (1, 2),
+        PixelCentre::Corner => (0, 1),
     };
-    let [a, mut b, mut c3] = [local(0), local(1), local(2)];
-    let edge = |a: &[BigInt; 2], b: &[BigInt; 2]| [&b[0] - &a[0], &b[1] - &a[1]];
+    // The lcm of the denominators (each below 2^63), kept below 2^62 so that every scaled
+    // coordinate stays below 2^125.
+    let mut scale: i128 = cd;
+    for &(_, d) in coords.iter().flatten() {
+        scale = (scale / num_integer::gcd(scale, d)).checked_mul(d)?;
+        if scale >= 1 << 62 {
+            return None;
+        }
+    }
+    let v = coords.map(|p| p.map(|(n, d)| n * (scale / d)));
+    let c = cn * (scale / cd);
+    // The pixels whose sample (i L + C) lies in the closed box: ceil((min - C) / L) to
+    // floor((max - C) / L) on each axis, as `raster::exact_sample_range` reads the box.
+    let index = |q: i128| i64::try_from(q).unwrap_or(if q < 0 { i64::MIN } else { i64::MAX });
+    let axis = |a: usize| {
+        let (lo, hi) = (v.iter().map(|p| p[a]).min()?, v.iter().map(|p| p[a]).max()?);
+        Some((index(-(c - lo).div_euclid(scale)), index((hi - c).div_euclid(scale))))
+    };
+    let ((x0, x1), (y0, y1)) = (axis(0)?, axis(1)?);
+    let Some(range) = PixelRange::clamped([x0, y0], [x1, y1], target.width, target.height) else {
+        return Some(None);
+    };
+    setup_scaled(v, c, scale, range, rule)
+}
+
+/// The setup from the vertices and the pixel centre times `scale` (integers): the vertices
+/// relative to the range's first sample, the orientation, and per edge `E - bias` there and
+/// its steps; then the bound. `None` on overflow of `N`; `Some(None)` for zero area.
+fn setup_scaled<N: SetupInt>(
+    v: [[N; 2]; 3],
+    centre: N,
+    scale: N,
+    range: PixelRange,
+    rule: AnyTieRule,
+) -> Option<Option<TriangleSetup<N>>> {
+    let first = |i: u32| N::from_i64(i.into()).mul_exact(&scale)?.add_exact(&centre);
+    let origin = [first(range.x0)?, first(range.y0)?];
+    let local = |p: &[N; 2]| Some([p[0].sub_exact(&origin[0])?, p[1].sub_exact(&origin[1])?]);
+    let [a, mut b, mut c] = [local(&v[0])?, local(&v[1])?, local(&v[2])?];
+    let edge = |a: &[N; 2], b: &[N; 2]| Some([b[0].sub_exact(&a[0])?, b[1].sub_exact(&a[1])?]);
     // E_{ab}(p) = (p.x - a.x) dy - (p.y - a.y) dx; at p = 0: a.y dx - a.x dy.
     let area2 = {
-        let [dx, dy] = edge(&a, &b);
-        (&c3[0] - &a[0]) * &dy - (&c3[1] - &a[1]) * &dx
+        let [dx, dy] = edge(&a, &b)?;
+        let [cx, cy] = edge(&a, &c)?;
+        cx.mul_exact(&dy)?.sub_exact(&cy.mul_exact(&dx)?)?
     };
-    if area2.is_zero() {
-        return None;
+    if area2.equals_zero() {
+        return Some(None);
     }
-    if area2.is_negative() {
-        std::mem::swap(&mut b, &mut c3);
+    if area2.below_zero() {
+        std::mem::swap(&mut b, &mut c);
     }
+    let zero = N::from_i64(0);
     let mut edges = Edges {
-        origin: std::array::from_fn(|_| BigInt::zero()),
-        step_x: std::array::from_fn(|_| BigInt::zero()),
-        step_y: std::array::from_fn(|_| BigInt::zero()),
+        origin: [zero.clone(), zero.clone(), zero.clone()],
+        step_x: [zero.clone(), zero.clone(), zero.clone()],
+        step_y: [zero.clone(), zero.clone(), zero.clone()],
     };
-    for (k, (from, to)) in [(&a, &b), (&b, &c3), (&c3, &a)].into_iter().enumerate() {
-        let [dx, dy] = edge(from, to);
-        let zero = BigInt::zero();
-        let bias = i32::from(!rule.is_inclusive(dx.cmp(&zero), dy.cmp(&zero)));
-        edges.origin[k] = &from[1] * &dx - &from[0] * &dy - bias;
+    for (k, (from, to)) in [(&a, &b), (&b, &c), (&c, &a)].into_iter().enumerate() {
+        let [dx, dy] = edge(from, to)?;
+        let bias = i64::from(!rule.is_inclusive(dx.cmp(&zero), dy.cmp(&zero)));
+        edges.origin[k] = from[1]
+            .mul_exact(&dx)?
+            .sub_exact(&from[0].mul_exact(&dy)?)?
+            .sub_exact(&N::from_i64(bias))?;
         // A step the traversal never takes (a range one pixel wide or high) is left at
         // zero, so that it need not fit the width.
         if range.x1 > range.x0 {
-            edges.step_x[k] = &dy * &scale;
+            edges.step_x[k] = dy.mul_exact(&scale)?;
         }
         if range.y1 > range.y0 {
-            edges.step_y[k] = -(&dx * &scale);
+            edges.step_y[k] = dx.mul_exact(&scale)?.neg_exact()?;
         }
     }
-    let bound = bound_of(&edges, &range);
-    Some(TriangleSetup {
+    let bound = bound_of(&edges, &range)?;
+    Some(Some(TriangleSetup {
         range,
         scale,
         edges,
         bound,
-    })
+    }))
 }
 
 impl PlannedTriangle {
@@ -146,6 +205,24 @@ impl PlannedTriangle {
             range: s.range,
             planned,
         })
+    }
+
+    /// [`PlannedTriangle::new`] of a compact triangle: the same plan and edges, set up in
+    /// `i128` when every coordinate is small and no value of the setup overflows it (no
+    /// big integer but the plan's scale and bound), in big integers otherwise.
+    pub fn from_compact(tri: &CompactTriangle, target: &Target) -> Option<PlannedTriangle> {
+        let rule = target.convention.tie_rule.into();
+        match setup_small(tri, target, rule) {
+            Some(s) => {
+                let s = s?;
+                let planned = Planned::new_i128(BigInt::from(s.scale), s.bound, s.edges);
+                Some(PlannedTriangle {
+                    range: s.range,
+                    planned,
+                })
+            }
+            None => Self::with_rule(&tri.to_triangle(), target, rule),
+        }
     }
 
     /// As [`PlannedTriangle::new`] but in `width`: `Ok(None)` when it covers nothing,
@@ -207,6 +284,7 @@ mod tests {
     use crate::convention::Convention;
     use crate::coverage::Coverage;
     use crate::geom::Point;
+    use num_traits::{Signed, Zero};
 
     /// A hand-derived plan: (0,0) (4,0) (0,4) on a 4x4 canvas, centres at 1/2, so L = 2,
     /// the range is pixels 0..=3 on both axes and the first sample is (1, 1) in L units.
@@ -330,9 +408,9 @@ mod tests {
                 let Some(setup) = setup(&t, &target, target.convention.tie_rule.into()) else {
                     continue;
                 };
-                let bound = bound_of(&setup.edges, &setup.range);
+                let bound = bound_of(&setup.edges, &setup.range).unwrap();
                 LARGEST.with(|m| *m.borrow_mut() = BigInt::zero());
-                let edges: Edges<Track> = Edges::from_big(&setup.edges);
+                let edges: Edges<Track> = Edges::from_exact(&setup.edges);
                 let mut cov = Coverage::new(40, 40);
                 traverse(&edges, &setup.range, 0, &mut cov);
                 let largest = LARGEST.with(|m| m.borrow().clone());

@@ -825,8 +825,8 @@ struct Placed {
 fn place(scene: &Scene, max_side: u32, clip: bool) -> Result<Placed, String> {
     let mut rounded = 0;
     let mut points = Vec::with_capacity(scene.triangles.len() * 3);
-    for (k, t) in scene.triangles.iter().enumerate() {
-        for (j, p) in t.triangle.v.iter().enumerate() {
+    for (k, t) in scene.triangles().iter().enumerate() {
+        for (j, p) in t.v.iter().enumerate() {
             let mut xy = [0f32; 2];
             for (c, exact) in [&p.x, &p.y].into_iter().enumerate() {
                 let f = nearest_f32(exact)

@@ -165,11 +165,9 @@ pub fn generate_scene(config: &HuntConfig, k: u64) -> Result<Scene, String> {
 /// Rounds every coordinate to the nearest f32, exactly (so a program reading f32 sees the
 /// scene the oracle sees).
 pub fn float32_exact(scene: &mut Scene) {
-    for v in scene.coordinates_mut() {
-        if let Some(f) = crate::num::exact::nearest_f32(v) {
-            if let Some(exact) = BigRational::from_float(f) {
-                *v = exact;
-            }
-        }
-    }
+    scene.map_coordinates(|_, v| {
+        crate::num::exact::nearest_f32(v)
+            .and_then(BigRational::from_float)
+            .unwrap_or_else(|| v.clone())
+    });
 }

@@ -376,10 +376,10 @@ where
 /// Rounds every coordinate of `scene` to the nearest multiple of `2^-bits` (ties to even).
 pub fn on_grid(scene: &mut Scene, bits: u32) {
     let unit = BigRational::from_integer(num_bigint::BigInt::from(1) << bits);
-    for v in scene.coordinates_mut() {
-        let whole = round_to_integer(&(&*v * &unit), Rounding::NearestEven);
-        *v = BigRational::from_integer(whole) / &unit;
-    }
+    scene.map_coordinates(|_, v| {
+        let whole = round_to_integer(&(v * &unit), Rounding::NearestEven);
+        BigRational::from_integer(whole) / &unit
+    });
 }
 
 /// An exact number of quanta in words: `3/2` as `1.5000`, or its fraction when f64 does

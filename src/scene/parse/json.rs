@@ -43,7 +43,7 @@ pub(super) fn from_str(text: &str) -> Result<Value, serde_json::Error> {
     from_raw(raw, 0)
 }
 
-fn from_raw(raw: &RawValue, depth: usize) -> Result<Value, serde_json::Error> {
+pub(super) fn from_raw(raw: &RawValue, depth: usize) -> Result<Value, serde_json::Error> {
     let text = raw.get().trim();
     Ok(match text.as_bytes().first() {
         Some(b'{' | b'[') if depth >= MAX_DEPTH => {

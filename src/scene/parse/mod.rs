@@ -35,12 +35,13 @@
 use json::{Map, Value};
 use num_rational::BigRational;
 
+mod fast;
 mod json;
 mod keys;
 mod reader;
 mod shapes;
 
-use super::{Overrides, Scene, SceneError};
+use super::{Overrides, Scene, SceneError, SceneTriangle};
 use crate::convention::{PixelCentre, Preset, Rounding, TieRule, MAX_CANVAS};
 use crate::num::MAX_SUBPIXEL_BITS;
 use reader::{kind, show, Reader};
@@ -74,89 +75,119 @@ pub fn parse_scene_bytes(bytes: &[u8], source: &str) -> Result<Scene, SceneError
 /// ```
 pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
     let p = Reader { source };
+    if let Some((root, triangles)) = fast::read(text) {
+        if let Ok(scene) = p.scene(&root, triangles) {
+            return Ok(scene);
+        }
+    }
     let value = read_json(text, &p)?;
     let Value::Object(root) = &value else {
         return Err(p.err("", format!("the top level must be an object, found {}", kind(&value))));
     };
-    p.known_fields(
-        root,
-        "",
-        &[
-            "width",
-            "height",
-            "preset",
-            "subpixel_bits",
-            "rounding",
-            "tie_rule",
-            "pixel_centre",
-            "triangles",
-            "lines",
-            "polygons",
-            "clip_space_triangles",
-            "viewport",
-            "clip",
-            "samples",
-        ],
-    )?;
-    let width = p.canvas_side(root, "width")?;
-    let height = p.canvas_side(root, "height")?;
-    let preset = match root.get("preset") {
-        None => Preset::D3d11,
-        Some(v) => {
-            let name = p.string(v, "preset")?;
-            Preset::from_name(name).ok_or_else(|| {
-                p.err(
-                    "preset",
-                    format!("unknown preset {name:?} (expected one of d3d11, vulkan, gl, cts)"),
-                )
-            })?
+    p.scene(root, None)
+}
+
+/// [`parse_scene`] without its fast path: the tree of the whole file read field by field,
+/// every coordinate through [`crate::num::parse_rational`]. The reference the fast path is
+/// tested against (they give the same scene or the same error for every text); every
+/// error [`parse_scene`] reports comes from here.
+///
+/// # Errors
+/// As [`parse_scene`].
+pub fn parse_scene_slow(text: &str, source: &str) -> Result<Scene, SceneError> {
+    let p = Reader { source };
+    let value = read_json(text, &p)?;
+    let Value::Object(root) = &value else {
+        return Err(p.err("", format!("the top level must be an object, found {}", kind(&value))));
+    };
+    p.scene(root, None)
+}
+
+impl Reader<'_> {
+    /// The scene of the top-level object `root`; `triangles` when the fast path read them.
+    fn scene(&self, root: &Map, triangles: Option<Vec<SceneTriangle>>) -> Result<Scene, SceneError> {
+        let p = self;
+        p.known_fields(
+            root,
+            "",
+            &[
+                "width",
+                "height",
+                "preset",
+                "subpixel_bits",
+                "rounding",
+                "tie_rule",
+                "pixel_centre",
+                "triangles",
+                "lines",
+                "polygons",
+                "clip_space_triangles",
+                "viewport",
+                "clip",
+                "samples",
+            ],
+        )?;
+        let width = p.canvas_side(root, "width")?;
+        let height = p.canvas_side(root, "height")?;
+        let preset = match root.get("preset") {
+            None => Preset::D3d11,
+            Some(v) => {
+                let name = p.string(v, "preset")?;
+                Preset::from_name(name).ok_or_else(|| {
+                    p.err(
+                        "preset",
+                        format!("unknown preset {name:?} (expected one of d3d11, vulkan, gl, cts)"),
+                    )
+                })?
+            }
+        };
+        let overrides = p.overrides(root)?;
+        let triangles = match (triangles, root.get("triangles")) {
+            (Some(read), _) => read,
+            (None, None) => Vec::new(),
+            (None, Some(v)) => p.triangles(v)?,
+        };
+        let lines = match root.get("lines") {
+            None => Vec::new(),
+            Some(v) => p.lines(v)?,
+        };
+        let polygons = match root.get("polygons") {
+            None => Vec::new(),
+            Some(v) => p.polygons(v)?,
+        };
+        let clip_space_triangles = match root.get("clip_space_triangles") {
+            None => Vec::new(),
+            Some(v) => p.clip_space_triangles(v)?,
+        };
+        let viewport = match root.get("viewport") {
+            None => None,
+            Some(v) => Some(p.viewport(v, width, height, preset)?),
+        };
+        let clip = match root.get("clip") {
+            None => None,
+            Some(v) => Some(p.clip(v)?),
+        };
+        let samples = match root.get("samples") {
+            None => None,
+            Some(v) => Some(p.samples(v)?),
+        };
+        if triangles.len() + lines.len() + polygons.len() + clip_space_triangles.len() > MAX_TRIANGLES {
+            return Err(p.err("", format!("more than {MAX_TRIANGLES} primitives")));
         }
-    };
-    let overrides = p.overrides(root)?;
-    let triangles = match root.get("triangles") {
-        None => Vec::new(),
-        Some(v) => p.triangles(v)?,
-    };
-    let lines = match root.get("lines") {
-        None => Vec::new(),
-        Some(v) => p.lines(v)?,
-    };
-    let polygons = match root.get("polygons") {
-        None => Vec::new(),
-        Some(v) => p.polygons(v)?,
-    };
-    let clip_space_triangles = match root.get("clip_space_triangles") {
-        None => Vec::new(),
-        Some(v) => p.clip_space_triangles(v)?,
-    };
-    let viewport = match root.get("viewport") {
-        None => None,
-        Some(v) => Some(p.viewport(v, width, height, preset)?),
-    };
-    let clip = match root.get("clip") {
-        None => None,
-        Some(v) => Some(p.clip(v)?),
-    };
-    let samples = match root.get("samples") {
-        None => None,
-        Some(v) => Some(p.samples(v)?),
-    };
-    if triangles.len() + lines.len() + polygons.len() + clip_space_triangles.len() > MAX_TRIANGLES {
-        return Err(p.err("", format!("more than {MAX_TRIANGLES} primitives")));
+        Ok(Scene {
+            width,
+            height,
+            preset,
+            overrides,
+            triangles,
+            lines,
+            polygons,
+            clip_space_triangles,
+            viewport,
+            clip,
+            samples,
+        })
     }
-    Ok(Scene {
-        width,
-        height,
-        preset,
-        overrides,
-        triangles,
-        lines,
-        polygons,
-        clip_space_triangles,
-        viewport,
-        clip,
-        samples,
-    })
 }
 
 /// The JSON of `text`, refusing what serde_json's `Value` would let through or explain
@@ -252,7 +283,7 @@ mod tests {
             "s",
         )
         .unwrap();
-        let v = &s.triangles[0].triangle.v;
+        let v = &s.triangles[0].triangle.to_triangle().v;
         assert_eq!(v[0].x, BigRational::new(1.into(), 10.into()));
         assert_eq!(v[0].y, BigRational::from_integer(100.into()));
         assert_eq!(v[1].x, BigRational::new(1.into(), 3.into()));
@@ -358,7 +389,10 @@ mod tests {
         )
         .unwrap();
         assert_eq!(s.triangles.len(), 2);
-        assert_eq!(s.triangles[1].triangle.v[0], crate::geom::Point::from_ints(1, 1));
+        assert_eq!(
+            s.triangles[1].triangle.to_triangle().v[0],
+            crate::geom::Point::from_ints(1, 1)
+        );
     }
 
     /// A bare NaN (or Infinity) is not JSON: the error says so, where, and what to write.

@@ -38,7 +38,7 @@ impl Reader<'_> {
             Some(cv) => Some(self.colours(cv, &format!("{at}.colors"))?),
         };
         Ok(SceneTriangle {
-            triangle: Triangle::new(a, b, c),
+            triangle: Triangle::new(a, b, c).into(),
             colours,
         })
     }
