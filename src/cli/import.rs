@@ -88,14 +88,19 @@ pub struct Options {
 
 /// Imports as `o` asks, writes the scene and prints the summary on stderr; exit 0.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
-    let preset = Preset::from_name(&o.preset)
-        .ok_or_else(|| format!("--preset: unknown preset {:?} (expected one of d3d11, vulkan, gl, cts)", o.preset))?;
-    let viewport = match &o.viewport {
-        None => None,
-        Some(text) => Some(ApiViewport::parse(text).ok_or_else(|| {
-            format!("--viewport: {text:?} is not X,Y,W,H (four exact numbers separated by commas)")
-        })?),
-    };
+    let preset = Preset::from_name(&o.preset).ok_or_else(|| {
+        format!(
+            "--preset: unknown preset {:?} (expected one of d3d11, vulkan, gl, cts)",
+            o.preset
+        )
+    })?;
+    let viewport =
+        match &o.viewport {
+            None => None,
+            Some(text) => Some(ApiViewport::parse(text).ok_or_else(|| {
+                format!("--viewport: {text:?} is not X,Y,W,H (four exact numbers separated by commas)")
+            })?),
+        };
     let target = ImportTarget {
         width: o.width,
         height: o.height,
@@ -148,8 +153,9 @@ fn import_raw_files(o: &Options, raw: &Path, target: &ImportTarget) -> Result<ra
         Some(path) => {
             let kind = match o.index_type.as_deref() {
                 None => return Err("--index: give the index size with --index-type u16 or u32".into()),
-                Some(name) => IndexType::from_name(name)
-                    .ok_or_else(|| format!("--index-type: {name:?} is not u16 or u32"))?,
+                Some(name) => {
+                    IndexType::from_name(name).ok_or_else(|| format!("--index-type: {name:?} is not u16 or u32"))?
+                }
             };
             Some((open(path)?, kind))
         }
@@ -161,10 +167,7 @@ fn import_raw_files(o: &Options, raw: &Path, target: &ImportTarget) -> Result<ra
 fn open(path: &Path) -> Result<RawFile<File>, String> {
     let name = path.display().to_string();
     let file = File::open(path).map_err(|e| format!("{name}: cannot read: {e}"))?;
-    let len = file
-        .metadata()
-        .map_err(|e| format!("{name}: cannot read: {e}"))?
-        .len();
+    let len = file.metadata().map_err(|e| format!("{name}: cannot read: {e}"))?.len();
     Ok(RawFile {
         name,
         len,

@@ -142,9 +142,7 @@ impl ApiViewport {
 
     /// `X,Y,W,H` as exact text.
     pub fn text(&self) -> String {
-        [&self.x, &self.y, &self.width, &self.height]
-            .map(exact_text)
-            .join(",")
+        [&self.x, &self.y, &self.width, &self.height].map(exact_text).join(",")
     }
 }
 
@@ -271,7 +269,10 @@ impl ImportTarget {
         if let Some(vp) = &self.viewport {
             return Err(ImportError::new(
                 "--viewport",
-                format!("{}: a viewport maps clip space; window-space positions are already pixels", vp.text()),
+                format!(
+                    "{}: a viewport maps clip space; window-space positions are already pixels",
+                    vp.text()
+                ),
             ));
         }
         let mut scene = Scene::new(self.width, self.height, triangles);
@@ -328,7 +329,17 @@ mod tests {
 
     #[test]
     fn every_kind_of_f32_is_exact() {
-        for f in [0.0f32, -0.0, 1.0, 0.1, -2.5e-40, f32::MIN_POSITIVE, f32::MAX, f32::MIN, 1.0e-45] {
+        for f in [
+            0.0f32,
+            -0.0,
+            1.0,
+            0.1,
+            -2.5e-40,
+            f32::MIN_POSITIVE,
+            f32::MAX,
+            f32::MIN,
+            1.0e-45,
+        ] {
             assert_eq!(exact_f32(f), BigRational::from_float(f), "{f:e}");
         }
         assert_eq!(exact_f32(f32::INFINITY), None);

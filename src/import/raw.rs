@@ -103,7 +103,11 @@ impl Vertices {
                 let at = self.layout.offset + k as u64 * self.layout.stride + 4 * c as u64;
                 ImportError::new(
                     source,
-                    format!("vertex {k}, {} (byte {at}): {} is not a finite number", ["x", "y", "z", "w"][c], v[c]),
+                    format!(
+                        "vertex {k}, {} (byte {at}): {} is not a finite number",
+                        ["x", "y", "z", "w"][c],
+                        v[c]
+                    ),
                 )
             })?;
         }
@@ -204,7 +208,10 @@ pub fn import_raw<R: Read, S: Read>(
 fn vertex_count(layout: &Layout, len: u64, source: &str) -> Result<usize, ImportError> {
     let err = |message: String| ImportError::new(source, message);
     if !(2..=4).contains(&layout.components) {
-        return Err(err(format!("{} components per vertex (expected 2, 3 or 4)", layout.components)));
+        return Err(err(format!(
+            "{} components per vertex (expected 2, 3 or 4)",
+            layout.components
+        )));
     }
     let size = 4 * u64::from(layout.components);
     if layout.stride < size {
@@ -264,7 +271,12 @@ fn index_count<S>(file: &RawFile<S>, kind: IndexType) -> Result<usize, ImportErr
         .ok()
         .filter(|&t| t <= MAX_TRIANGLES)
         .map(|t| 3 * t)
-        .ok_or_else(|| err(format!("{} triangles: more than the scene limit of {MAX_TRIANGLES}", n / 3)))
+        .ok_or_else(|| {
+            err(format!(
+                "{} triangles: more than the scene limit of {MAX_TRIANGLES}",
+                n / 3
+            ))
+        })
 }
 
 /// Reads `count` vertices of `layout` (already checked against the file's length).

@@ -88,13 +88,23 @@ pub fn import_csv<R: Read>(
         .from_reader(reader);
     let mut records = csv.records();
     let header = match records.next() {
-        None => return Err(err("is empty (RenderDoc's export starts with a header row: VTX, IDX, ...)".into())),
+        None => {
+            return Err(err(
+                "is empty (RenderDoc's export starts with a header row: VTX, IDX, ...)".into(),
+            ))
+        }
         Some(record) => record.map_err(|e| err(csv_error(&e, 1)))?,
     };
     let header: Vec<String> = header
         .iter()
         .enumerate()
-        .map(|(k, f)| unquoted(if k == 0 { f.trim_start_matches('\u{feff}').trim() } else { f }))
+        .map(|(k, f)| {
+            unquoted(if k == 0 {
+                f.trim_start_matches('\u{feff}').trim()
+            } else {
+                f
+            })
+        })
         .collect();
     if header.iter().all(|f| f.parse::<f64>().is_ok()) {
         return Err(err(format!(
@@ -257,17 +267,30 @@ mod tests {
         assert_eq!(tenth, BigRational::new(13421773.into(), 134217728.into()));
         assert_eq!(parse_value("0.1", true).unwrap(), BigRational::new(1.into(), 10.into()));
         assert_eq!(parse_value("NaN", false).unwrap_err(), "\"NaN\" is not a finite number");
-        assert_eq!(parse_value("-inf", false).unwrap_err(), "\"-inf\" is not a finite number");
+        assert_eq!(
+            parse_value("-inf", false).unwrap_err(),
+            "\"-inf\" is not a finite number"
+        );
         assert!(parse_value("1e39", false).unwrap_err().contains("beyond the f32 range"));
-        assert_eq!(parse_value("1e39", true).unwrap().to_string(), format!("1{}", "0".repeat(39)));
+        assert_eq!(
+            parse_value("1e39", true).unwrap().to_string(),
+            format!("1{}", "0".repeat(39))
+        );
         assert_eq!(parse_value("---", false).unwrap_err(), "\"---\" is not a number");
     }
 
     #[test]
     fn the_position_is_found_without_case() {
-        let header: Vec<String> = ["VTX", "IDX", "gl_position.x", "gl_Position.y", "GL_POSITION.z", "gl_Position.w"]
-            .map(String::from)
-            .to_vec();
+        let header: Vec<String> = [
+            "VTX",
+            "IDX",
+            "gl_position.x",
+            "gl_Position.y",
+            "GL_POSITION.z",
+            "gl_Position.w",
+        ]
+        .map(String::from)
+        .to_vec();
         let cols = position_columns(&header, None).unwrap();
         assert_eq!(cols.index, [2, 3, 4, 5]);
         assert!(position_columns(&header, Some("SV_Position"))
