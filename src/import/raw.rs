@@ -317,7 +317,10 @@ fn read_indices<S: Read>(
     let mut reader = BufReader::new(reader);
     let mut out = Vec::with_capacity(n);
     let mut bytes = [0u8; 4];
-    let size = kind.size() as usize;
+    let size = match kind {
+        IndexType::U16 => 2,
+        IndexType::U32 => 4,
+    };
     for position in 0..n {
         reader
             .read_exact(&mut bytes[..size])

@@ -39,6 +39,7 @@ pub struct CsvOptions {
 
 /// The four position columns: their indices in a row and their names as the header writes
 /// them.
+#[derive(Debug)]
 struct PositionColumns {
     index: [usize; 4],
     names: [String; 4],
