@@ -63,7 +63,7 @@ struct PositionColumns {
 /// assert_eq!(imported.scene.clip_space_triangles.len(), 1);
 /// assert!(imported.summary.starts_with("mesh.csv: 1 triangle from rows 2-4"));
 ///
-/// let bad = csv.replace("1.00, 1.00\n2", "1.00, nan\n2");
+/// let bad = csv.replace("0.00, 1.00, 1.00\n", "0.00, nan, 1.00\n");
 /// let err = import_csv(bad.as_bytes(), "mesh.csv", &CsvOptions::default(), &target).unwrap_err();
 /// assert_eq!(err.to_string(), "mesh.csv: row 3, SV_Position.w: \"nan\" is not a finite number");
 /// ```
