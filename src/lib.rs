@@ -54,6 +54,7 @@
 //! | one primitive in one arithmetic | `tri::{exact, planned, fixed, scanline, float}`, `line::*`, `fill::polygon::*` | |
 //! | where a pixel's sample sits; which pixels a box covers | [`raster`] | |
 //! | clip exactly or in floats | [`clip`], [`clip::arithmetic::Clipper`] | |
+//! | turn RenderDoc's mesh CSV or raw f32 position buffers into a scene, exactly | [`import::renderdoc::import_csv`], [`import::raw::import_raw`] | |
 //!
 //! Every entry point takes its arguments in one order: the input (the scene's primitives
 //! and the target, then their output or renderer where there is one), then the options
@@ -93,6 +94,7 @@ pub mod fill;
 pub mod geom;
 #[cfg(feature = "proptest")]
 pub mod harness;
+pub mod import;
 pub mod interp;
 pub mod line;
 pub mod model;

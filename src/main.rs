@@ -62,6 +62,11 @@ enum Command {
     /// hunt's report; print its counts and findings.
     #[command(after_help = cli::EXIT_CODES)]
     HuntMerge(cli::hunt::MergeOptions),
+    /// Turn geometry you hold into a scene file, exactly as its floats read: RenderDoc's
+    /// mesh-viewer CSV export of post-transform positions, or raw little-endian f32
+    /// position buffers (with an optional index buffer).
+    #[command(after_help = cli::EXIT_CODES)]
+    Import(cli::import::Options),
     /// Every model's speed and error side by side, on seeded workloads at coordinate
     /// magnitudes 0 to 2^30 px: the tables, and with --out trade.json, trade.md and the
     /// pictures. Exit 1 when an exact or integer model shows an error.
@@ -82,6 +87,7 @@ fn main() -> ExitCode {
         Command::Check(options) => cli::check::run(&options),
         Command::CheckMerge(options) => cli::check::merge(&options),
         Command::HuntMerge(options) => cli::hunt::merge(&options),
+        Command::Import(options) => cli::import::run(&options),
         Command::Trade(options) => cli::trade::run(&options),
     };
     match result {

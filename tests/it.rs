@@ -72,6 +72,8 @@ mod hunt;
 mod hunt_families;
 #[path = "ids_png.rs"]
 mod ids_png;
+#[path = "import.rs"]
+mod import;
 #[path = "layering.rs"]
 mod layering;
 #[path = "line_drawing_diff.rs"]

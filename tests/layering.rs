@@ -22,7 +22,7 @@ const LAYERS: &[(u32, &[&str])] = &[
     (3, &["tri", "line", "clip", "fill", "interp", "area"]),
     (4, &["model"]),
     (5, &["check"]),
-    (6, &["strategy", "scene"]),
+    (6, &["strategy", "scene", "import"]),
     (7, &["oracle", "trade", "harness"]),
 ];
 

@@ -7,6 +7,7 @@ pub mod compare;
 pub mod explain;
 pub mod flood;
 pub mod hunt;
+pub mod import;
 pub mod plan;
 pub mod render;
 pub mod run_args;
