@@ -7,7 +7,11 @@
 //! Scenes: N small triangles (each within 4 px of a random point) on a 1024 x 1024 canvas,
 //! every coordinate a 3-decimal number, as a capture exported to JSON reads.
 //!
-//! `cargo bench --bench pipeline` (N = 100k and 1M; `PIPELINE_SIZES=100000` for one).
+//! Then the whole frame on threads: a 16384 x 16384 mesh of about 1M triangles, `fixed`,
+//! drawn on one and two threads (`PreparedScene::coverage_parallel`), and `render --jobs`.
+//!
+//! `cargo bench --bench pipeline` (N = 100k and 1M; `PIPELINE_SIZES=100000` for one,
+//! `PIPELINE_FRAME=0` without the frame).
 //! Peak memory: `benches/memory.sh`.
 
 use std::path::{Path, PathBuf};
@@ -93,6 +97,81 @@ fn planned_setup(path: &Path) -> f64 {
     median(times)
 }
 
+/// A mesh of `2 cells^2` triangles over a `side` x `side` canvas (a grid of cells, each
+/// cut along a diagonal), vertices on 1/1000 px, written to `path`.
+fn write_mesh(path: &Path, side: u32, cells: u32) {
+    let mut s = String::with_capacity((cells * cells) as usize * 2 * 80);
+    s.push_str(&format!("{{\"width\":{side},\"height\":{side},\"triangles\":["));
+    let at = |i: u32| {
+        let t = u64::from(i) * u64::from(side) * 1000 / u64::from(cells);
+        format!("{}.{:03}", t / 1000, t % 1000)
+    };
+    let mut first = true;
+    for j in 0..cells {
+        for i in 0..cells {
+            let (x0, x1, y0, y1) = (at(i), at(i + 1), at(j), at(j + 1));
+            for tri in [
+                [(&x0, &y0), (&x1, &y0), (&x1, &y1)],
+                [(&x0, &y0), (&x1, &y1), (&x0, &y1)],
+            ] {
+                if !first {
+                    s.push(',');
+                }
+                first = false;
+                let v: Vec<String> = tri.iter().map(|(x, y)| format!("[{x},{y}]")).collect();
+                s.push_str(&format!("{{\"v\":[{}]}}", v.join(",")));
+            }
+        }
+    }
+    s.push_str("]}");
+    std::fs::write(path, s).expect("write the mesh");
+}
+
+/// The whole-frame figure: a 16384 x 16384 mesh of 2 x 708^2 (about 1M) triangles drawn by
+/// `fixed` on 1 and 2 threads, in this process (prepare once, then the drawing alone) and
+/// as `render --jobs N` (the whole process, which also reads the 66 MB file).
+fn frame(dir: &Path) {
+    let path = dir.join("mesh-16384.json");
+    write_mesh(&path, 16384, 708);
+    let text = std::fs::read_to_string(&path).expect("read");
+    let scene = rasterproof::scene::parse_scene(&text, "mesh").expect("scene");
+    drop(text);
+    let target = scene.target().expect("target");
+    let prepared = rasterproof::model::prepare(&scene.primitives(), &target, rasterproof::model::Model::Fixed)
+        .expect("fixed takes the mesh");
+    drop(scene);
+    let (mut one, mut two) = (Vec::new(), Vec::new());
+    let (mut whole_one, mut whole_two) = (Vec::new(), Vec::new());
+    for _ in 0..3 {
+        for (jobs, times) in [(1, &mut one), (2, &mut two)] {
+            let start = Instant::now();
+            let c = prepared.coverage_parallel(&target, jobs, &|| {});
+            times.push(start.elapsed().as_secs_f64());
+            std::hint::black_box(c.covered_pixels());
+        }
+        for (jobs, times) in [("1", &mut whole_one), ("2", &mut whole_two)] {
+            let start = Instant::now();
+            let status = Command::new(env!("CARGO_BIN_EXE_rasterproof"))
+                .arg("render")
+                .arg(&path)
+                .args(["--model", "fixed", "--jobs", jobs])
+                .stdout(std::process::Stdio::null())
+                .status()
+                .expect("run rasterproof");
+            assert!(status.success());
+            times.push(start.elapsed().as_secs_f64());
+        }
+    }
+    let (a, b) = (median(one), median(two));
+    println!(
+        "16384^2 mesh, {} triangles, fixed: drawing on 1 thread {a:.3} s, on 2 {b:.3} s: {:.2}x",
+        2 * 708 * 708,
+        a / b
+    );
+    let (a, b) = (median(whole_one), median(whole_two));
+    println!("  render --jobs 1 {a:.3} s, --jobs 2 {b:.3} s: {:.2}x", a / b);
+}
+
 fn main() {
     let dir: PathBuf = std::env::temp_dir().join("rp-pipeline");
     std::fs::create_dir_all(&dir).expect("temp dir");
@@ -132,5 +211,11 @@ fn main() {
                 t / b
             );
         }
+        if n <= 100_000 {
+            println!("  planned setup (exact): {:.0} ns per triangle", planned_setup(&path));
+        }
+    }
+    if std::env::var("PIPELINE_FRAME").map_or(true, |v| v != "0") {
+        frame(&dir);
     }
 }

@@ -84,6 +84,8 @@ mod lines;
 mod oracle;
 #[path = "outputs.rs"]
 mod outputs;
+#[path = "parallel.rs"]
+mod parallel;
 #[path = "planned.rs"]
 mod planned;
 #[path = "planned_polygons_lines.rs"]

@@ -1209,7 +1209,7 @@ fn a_renderer_wrong_everywhere_is_counted_whole_and_classified_in_part() {
     .unwrap();
     let target = scene.target().unwrap();
     let nothing = Theirs::from_coverage(&Coverage::new(64, 64), Format::Json);
-    let r = compare_classifying(&scene.primitives(), &target, &nothing, Model::ExactSnapped, Some(10)).unwrap();
+    let r = compare_classifying(&scene.primitives(), &target, &nothing, Model::ExactSnapped, Some(10), 1).unwrap();
     assert_eq!(r.pixels.len(), 64 * 64);
     assert_eq!(r.pixels_by_kind().get(&PixelKind::Missing), Some(&4096));
     assert_eq!(r.classified(), 10);

@@ -56,6 +56,10 @@ pub struct Options {
     /// the first N/2 in row order and N/2 spread evenly over the rest are classified.
     #[arg(long, value_name = "N|all", default_value = "2000", value_parser = parse_classify)]
     classify: Classify,
+    /// Threads drawing the scene's exact coverage (default 1): bands of 64-row tiles, the
+    /// same coverage as one thread's (the classification of differing pixels runs on one).
+    #[arg(long, default_value_t = 1, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=256))]
+    jobs: u32,
     /// Instead of comparing under one convention, search them all: tie rule (top-left,
     /// bottom-left, top-right, bottom-right, all-inclusive, all-exclusive), snapping (0..=16
     /// subpixel bits x 5 roundings, or none) and sample position (0.5 or 0); print every
@@ -225,11 +229,18 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             ExitCode::SUCCESS
         });
     }
-    let report =
-        compare_classifying(&scene.primitives(), &target, &theirs, model, o.classify.0).map_err(|e| match e {
-            rasterproof::oracle::CompareError::Size(_) => format!("{theirs_name}: {e} ({name})"),
-            other => format!("{name}: {other} (model {model})"),
-        })?;
+    let report = compare_classifying(
+        &scene.primitives(),
+        &target,
+        &theirs,
+        model,
+        o.classify.0,
+        o.jobs as usize,
+    )
+    .map_err(|e| match e {
+        rasterproof::oracle::CompareError::Size(_) => format!("{theirs_name}: {e} ({name})"),
+        other => format!("{name}: {other} (model {model})"),
+    })?;
     let mut outputs = Outputs::new();
     if let Some(path) = &o.diff_out {
         let scale = Scale::default_for(target.width, target.height);

@@ -100,6 +100,12 @@ pub struct Options {
     /// 255 must, 128 may, 0 neither.
     #[arg(long, value_name = "RULE")]
     conservative: Option<String>,
+    /// Threads drawing the scene (default 1): the canvas is cut into bands of 64-row
+    /// tiles, each drawn by one thread, and the outputs are byte-identical to one
+    /// thread's. The one-sample coverage only (`--as area`, `--samples` and
+    /// `--conservative` draw on one thread).
+    #[arg(long, default_value_t = 1, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=256))]
+    jobs: u32,
 }
 
 /// `--format`'s values for `render`, with their help.
@@ -152,7 +158,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let fail = |e: rasterproof::model::ModelError| format!("{name}: {e} (model {model})");
     let primitives = scene.primitives();
     let prepared = prepare(&primitives, &target, model).map_err(fail)?;
-    let coverage = draw_with_progress(&prepared, &target);
+    let coverage = draw_with_progress(&prepared, &target, o.jobs as usize);
 
     let mut outputs = Outputs::new();
     let mut wrote = Vec::new();
@@ -501,16 +507,36 @@ fn tenths_grid(image: &AreaImage) -> String {
     s
 }
 
-/// Draws the scene; once drawing has gone on for a second (an arbitrary-precision plan, a
-/// plain oracle on a big frame), a progress bar on stderr counts the primitives drawn
-/// (indicatif hides it when stderr is not a terminal).
-fn draw_with_progress(prepared: &PreparedScene, target: &Target) -> Coverage {
+/// Draws the scene on `jobs` threads; once drawing has gone on for a second (an
+/// arbitrary-precision plan, a plain oracle on a big frame), a progress bar on stderr
+/// counts the primitives drawn, or the bands on several threads (indicatif hides it when
+/// stderr is not a terminal).
+fn draw_with_progress(prepared: &PreparedScene, target: &Target, jobs: usize) -> Coverage {
     let start = Instant::now();
-    let bar = ProgressBar::with_draw_target(Some(prepared.primitive_count() as u64), ProgressDrawTarget::hidden());
+    let bands = PreparedScene::band_count(target, jobs);
+    let (count, unit) = if bands > 1 {
+        (bands, "bands")
+    } else {
+        (prepared.primitive_count(), "primitives")
+    };
+    let bar = ProgressBar::with_draw_target(Some(count as u64), ProgressDrawTarget::hidden());
     bar.set_style(
-        ProgressStyle::with_template("{bar:40} {pos}/{len} primitives, {elapsed} ({eta} left)")
-            .expect("static template"),
+        ProgressStyle::with_template(&format!(
+            "{{bar:40}} {{pos}}/{{len}} {unit}, {{elapsed}} ({{eta}} left)"
+        ))
+        .expect("a valid template"),
     );
+    if bands > 1 {
+        let shown = std::sync::atomic::AtomicBool::new(false);
+        let coverage = prepared.coverage_parallel(target, jobs, &|| {
+            bar.inc(1);
+            if start.elapsed() > Duration::from_secs(1) && !shown.swap(true, std::sync::atomic::Ordering::Relaxed) {
+                bar.set_draw_target(ProgressDrawTarget::stderr());
+            }
+        });
+        bar.finish_and_clear();
+        return coverage;
+    }
     let mut shown = false;
     let mut coverage = Coverage::new(target.width, target.height);
     prepared.render_observed(target, &mut coverage, &mut || {

@@ -18,6 +18,8 @@ use tiles::TileGrid;
 
 pub use ids::IdOutOfRange;
 
+pub use tiles::TILE;
+
 pub use picture::{primitive_colour, IdRun, Scale, ScaleError, ASCII_GRID_MAX_SIDE, DOUBLE_COVER_COLOUR};
 
 /// Where a rasterizer writes covered pixels.
@@ -68,6 +70,68 @@ pub trait CoverageSink {
             }
             rest >>= 8;
             y += 1;
+        }
+    }
+}
+
+/// A sink that passes on only the pixels of rows `y0..y1` (a band of the canvas): what
+/// each thread of a parallel render draws through, so that the thread owns its rows.
+pub struct RowBand<'a, S: CoverageSink + ?Sized> {
+    sink: &'a mut S,
+    y0: u32,
+    y1: u32,
+}
+
+impl<'a, S: CoverageSink + ?Sized> RowBand<'a, S> {
+    /// The rows `y0..y1` of `sink`.
+    pub fn new(sink: &'a mut S, y0: u32, y1: u32) -> RowBand<'a, S> {
+        RowBand { sink, y0, y1 }
+    }
+
+    #[inline]
+    fn holds(&self, y: u32) -> bool {
+        (self.y0..self.y1).contains(&y)
+    }
+}
+
+impl<S: CoverageSink + ?Sized> CoverageSink for RowBand<'_, S> {
+    #[inline]
+    fn cover(&mut self, x: u32, y: u32, id: u32) {
+        if self.holds(y) {
+            self.sink.cover(x, y, id);
+        }
+    }
+
+    #[inline]
+    fn cover_span(&mut self, y: u32, x0: u32, x1: u32, id: u32) {
+        if self.holds(y) {
+            self.sink.cover_span(y, x0, x1, id);
+        }
+    }
+
+    #[inline]
+    fn cover_mask(&mut self, y: u32, x0: u32, mask: u32, id: u32) {
+        if self.holds(y) {
+            self.sink.cover_mask(y, x0, mask, id);
+        }
+    }
+
+    #[inline]
+    fn cover_block(&mut self, y0: u32, x0: u32, block: u64, id: u32) {
+        // Byte i is row y0 + i: keep the bytes of the band's rows, and start the block at
+        // its first kept row.
+        let skip = self.y0.saturating_sub(y0);
+        let keep = self.y1.saturating_sub(y0);
+        if skip >= 8 || keep <= skip {
+            return;
+        }
+        let mut b = block >> (8 * skip);
+        let rows = keep - skip;
+        if rows < 8 {
+            b &= (1u64 << (8 * rows)) - 1;
+        }
+        if b != 0 {
+            self.sink.cover_block(y0 + skip, x0, b, id);
         }
     }
 }
@@ -228,6 +292,20 @@ impl Coverage {
     /// The number of covered pixels.
     pub fn covered_pixels(&self) -> usize {
         self.covered
+    }
+
+    /// Takes over the rows `y0..y1` of `band`, a coverage of the same canvas that covers
+    /// nothing outside them (drawn through [`RowBand`]), into this one, which covers
+    /// nothing inside them: the parallel render's merge. `y0` is a multiple of the tile
+    /// side [`tiles::TILE`] and `y1` one too or the canvas height, so whole tiles move.
+    ///
+    /// # Panics
+    /// A different canvas, or rows not on tile boundaries.
+    pub fn absorb_rows(&mut self, band: Coverage, y0: u32, y1: u32) {
+        assert_eq!((self.width, self.height), (band.width, band.height), "one canvas");
+        self.tiles.take_rows(band.tiles, y0, y1);
+        self.shared.extend(band.shared);
+        self.covered += band.covered;
     }
 
     /// Pixels covered more than once, as `(x, y, ids)`, sorted by y then x.

@@ -37,6 +37,27 @@ impl TileGrid {
         }
     }
 
+    /// Moves the tiles of rows `y0..y1` (on tile boundaries, `y1` possibly the height)
+    /// from `other`, a grid of the same size, into this one.
+    ///
+    /// # Panics
+    /// Rows not on tile boundaries, or grids of different sizes.
+    pub fn take_rows(&mut self, other: TileGrid, y0: u32, y1: u32) {
+        assert!(y0 % TILE == 0, "band start {y0} on a tile boundary");
+        assert_eq!(
+            (self.across, self.tiles.len()),
+            (other.across, other.tiles.len()),
+            "one grid"
+        );
+        let from = (y0 / TILE) as usize * self.across;
+        let to = ((y1.div_ceil(TILE) as usize) * self.across).min(self.tiles.len());
+        for (mine, theirs) in self.tiles[from..to].iter_mut().zip(other.tiles.into_iter().skip(from)) {
+            if theirs.is_some() {
+                *mine = theirs;
+            }
+        }
+    }
+
     /// The number of allocated tiles.
     pub fn allocated(&self) -> usize {
         self.tiles.iter().filter(|t| t.is_some()).count()

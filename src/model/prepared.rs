@@ -8,7 +8,10 @@ use crate::clip::mask::ClipMask;
 use crate::clip::sutherland_hodgman::clip_polygon;
 use crate::clip::Window;
 use crate::convention::Target;
-use crate::coverage::{Coverage, CoverageSink, IdRun};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use crate::coverage::TILE;
+use crate::coverage::{Coverage, CoverageSink, IdRun, RowBand};
 use crate::geom::{CompactTriangle, FillRule, Polygon, Rgb, Triangle};
 use crate::line::Line;
 
@@ -119,6 +122,27 @@ pub struct PreparedScene {
     first_polygon: usize,
     /// How many of `polygons` are the scene's own (the rest are clip-space triangles).
     scene_polygons: usize,
+}
+
+/// The bands of a parallel render of a canvas `height` rows high on `jobs` threads: rows
+/// `y0..y1`, whole 64-row tiles (the last may end at the height), up to four per thread
+/// so that a thread that finishes early takes another.
+fn bands(height: u32, jobs: usize) -> Vec<(u32, u32)> {
+    let tile_rows = height.div_ceil(TILE);
+    let count = u32::try_from(jobs.saturating_mul(4))
+        .unwrap_or(u32::MAX)
+        .clamp(1, tile_rows.max(1));
+    if jobs <= 1 {
+        return vec![(0, height)];
+    }
+    (0..count)
+        .map(|b| {
+            let first = tile_rows * b / count * TILE;
+            let end = (tile_rows * (b + 1) / count * TILE).min(height);
+            (first, end)
+        })
+        .filter(|(a, b)| a < b)
+        .collect()
 }
 
 /// Ids are positions in one sequence.
@@ -284,7 +308,19 @@ impl PreparedScene {
 
     /// [`PreparedScene::render`], calling `after` once each primitive is drawn (a progress
     /// bar's tick: `render` shows one when a run goes on for more than a second).
-    pub fn render_observed<S: CoverageSink + ?Sized, F: FnMut()>(&self, target: &Target, sink: &mut S, mut after: F) {
+    pub fn render_observed<S: CoverageSink + ?Sized, F: FnMut()>(&self, target: &Target, sink: &mut S, after: F) {
+        self.render_band(target, sink, None, after);
+    }
+
+    /// Draws into `sink` what a sink of rows `band` (`y0..y1`, [`RowBand`]) keeps: every
+    /// primitive, except the triangles whose rows miss the band (`None`: no band).
+    fn render_band<S: CoverageSink + ?Sized, F: FnMut()>(
+        &self,
+        target: &Target,
+        sink: &mut S,
+        band: Option<(u32, u32)>,
+        mut after: F,
+    ) {
         for (k, l) in self.lines.iter().enumerate() {
             let k = id(self.first_line + k);
             match &self.point_mask {
@@ -294,14 +330,20 @@ impl PreparedScene {
             after();
         }
         match &self.area_mask {
-            None => self.render_areas(target, sink, &mut after),
-            Some(m) => self.render_areas(target, &mut m.scissor(sink), &mut after),
+            None => self.render_areas(target, sink, band, &mut after),
+            Some(m) => self.render_areas(target, &mut m.scissor(sink), band, &mut after),
         }
     }
 
-    fn render_areas<S: CoverageSink + ?Sized, F: FnMut()>(&self, target: &Target, sink: &mut S, after: &mut F) {
+    fn render_areas<S: CoverageSink + ?Sized, F: FnMut()>(
+        &self,
+        target: &Target,
+        sink: &mut S,
+        band: Option<(u32, u32)>,
+        after: &mut F,
+    ) {
         match &self.clipped_triangles {
-            None => self.triangles.rasterize_each(target, sink, &mut *after),
+            None => self.triangles.rasterize_each(target, sink, band, &mut *after),
             Some(polygons) => {
                 for (k, p) in polygons.iter().enumerate() {
                     p.fill(id(k), target, sink);
@@ -401,6 +443,57 @@ impl PreparedScene {
         let mut coverage = Coverage::new(target.width, target.height);
         self.render(target, &mut coverage);
         coverage
+    }
+
+    /// [`PreparedScene::coverage`] drawn by `jobs` threads, bit for bit the same: the canvas
+    /// is cut into bands of whole 64-row tiles (up to four per thread, taken in turn), each
+    /// band drawn by one thread into a coverage of its own through a [`RowBand`] sink (every
+    /// primitive in id order, but the triangles whose rows miss the band), then the bands'
+    /// tiles are moved into one coverage. A pixel's owners are added by the same primitives
+    /// in the same order in its band as on one thread. `after` is called once each band is
+    /// drawn (`band_count` of them).
+    pub fn coverage_parallel(&self, target: &Target, jobs: usize, after: &(dyn Fn() + Sync)) -> Coverage {
+        let bands = bands(target.height, jobs);
+        if bands.len() <= 1 {
+            let coverage = self.coverage(target);
+            after();
+            return coverage;
+        }
+        let next = AtomicUsize::new(0);
+        let drawn: Vec<Vec<(usize, Coverage)>> = std::thread::scope(|s| {
+            let workers: Vec<_> = (0..jobs.min(bands.len()))
+                .map(|_| {
+                    s.spawn(|| {
+                        let mut mine = Vec::new();
+                        loop {
+                            let b = next.fetch_add(1, Ordering::Relaxed);
+                            let Some(&(y0, y1)) = bands.get(b) else {
+                                return mine;
+                            };
+                            let mut coverage = Coverage::new(target.width, target.height);
+                            self.render_band(target, &mut RowBand::new(&mut coverage, y0, y1), Some((y0, y1)), || {});
+                            mine.push((b, coverage));
+                            after();
+                        }
+                    })
+                })
+                .collect();
+            workers
+                .into_iter()
+                .map(|w| w.join().expect("a band's thread does not panic"))
+                .collect()
+        });
+        let mut coverage = Coverage::new(target.width, target.height);
+        for (b, band) in drawn.into_iter().flatten() {
+            let (y0, y1) = bands[b];
+            coverage.absorb_rows(band, y0, y1);
+        }
+        coverage
+    }
+
+    /// How many bands [`PreparedScene::coverage_parallel`] cuts `target` into for `jobs`.
+    pub fn band_count(target: &Target, jobs: usize) -> usize {
+        bands(target.height, jobs).len()
     }
 
     /// The Gouraud colour of triangle `k` at the sample of pixel `(x, y)`, computed in the

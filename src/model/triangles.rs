@@ -9,7 +9,7 @@ use crate::convention::{Convention, Target};
 use crate::coverage::{primitive_colour, Coverage, CoverageSink};
 use crate::geom::{CompactTriangle, FixedTriangle, Rgb, Triangle};
 use crate::interp::{barycentric_fixed, gouraud_exact, gouraud_f32, gouraud_f64, to_channel};
-use crate::raster::{sample_exact, sample_f32, sample_f64};
+use crate::raster::{index_ceil, index_floor, sample_exact, sample_f32, sample_f64};
 use crate::tri::float::FloatRule;
 use crate::tri::planned::PlannedTriangle;
 use crate::tri::{exact, fixed, float, scanline};
@@ -107,6 +107,58 @@ fn fixed_triangles(triangles: &[CompactTriangle], conv: &Convention) -> Result<V
         .collect()
 }
 
+/// The rows a prepared triangle may cover, `first..=last`, with a row to spare on each
+/// side (`None`: it covers nothing): every model covers only pixels whose sample lies in
+/// the bounding box of the vertices it draws, and a pixel's sample lies in its own row.
+trait Rows {
+    fn rows(&self) -> Option<(i64, i64)>;
+}
+
+impl Rows for Triangle {
+    fn rows(&self) -> Option<(i64, i64)> {
+        let ys = self.v.iter().map(|p| &p.y);
+        let (lo, hi) = (ys.clone().min()?, ys.max()?);
+        let index = |v: num_bigint::BigInt| crate::raster::saturating_index(v);
+        Some((
+            index(lo.floor().to_integer()).saturating_sub(1),
+            index(hi.ceil().to_integer()).saturating_add(1),
+        ))
+    }
+}
+
+impl Rows for Option<PlannedTriangle> {
+    fn rows(&self) -> Option<(i64, i64)> {
+        let (y0, y1) = self.as_ref()?.rows();
+        Some((i64::from(y0), i64::from(y1)))
+    }
+}
+
+impl Rows for FixedTriangle {
+    fn rows(&self) -> Option<(i64, i64)> {
+        let ys = self.coords().map(|[_, y]| y);
+        let (lo, hi) = (ys.iter().min()?, ys.iter().max()?);
+        Some(((lo >> self.bits) - 1, (hi >> self.bits) + 1))
+    }
+}
+
+/// The float rows: the least and largest `y` (an f32 widens to f64 exactly).
+fn float_rows(ys: impl Iterator<Item = f64>) -> Option<(i64, i64)> {
+    let (lo, hi) = ys.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), y| (l.min(y), h.max(y)));
+    Some((index_floor(lo).saturating_sub(1), index_ceil(hi).saturating_add(1)))
+}
+
+impl Rows for [Vec2; 3] {
+    fn rows(&self) -> Option<(i64, i64)> {
+        float_rows(self.iter().map(|p| f64::from(p.y)))
+    }
+}
+
+impl Rows for [DVec2; 3] {
+    fn rows(&self) -> Option<(i64, i64)> {
+        float_rows(self.iter().map(|p| p.y))
+    }
+}
+
 /// Triangle ids are their indices.
 #[inline]
 fn id_of(k: usize) -> u32 {
@@ -145,30 +197,40 @@ impl PreparedTriangles {
 
     /// Rasterizes every triangle whole into `sink`, triangle k with id k.
     pub(crate) fn rasterize_into<S: CoverageSink + ?Sized>(&self, target: &Target, sink: &mut S) {
-        self.rasterize_each(target, sink, || {});
+        self.rasterize_each(target, sink, None, || {});
     }
 
     /// Rasterizes every triangle whole into `sink`, triangle k with id k, calling `after`
-    /// once each is drawn. The model is matched once, outside the loop, and `after` is
+    /// once each is drawn (or skipped). With `band` (`y0..y1`) a triangle is drawn only
+    /// when the rows it may cover ([`Rows`]) meet the band: the sink of a band keeps only
+    /// the band's rows, so a triangle outside it would add nothing. The model is matched once, outside the loop, and `after` is
     /// inlined: with a match and an indirect call per triangle, `fixed` on the peer
     /// bench's 100k small triangles took 5.23-5.44 ms against 4.75-4.83 ms (three runs).
     pub(crate) fn rasterize_each<S: CoverageSink + ?Sized, F: FnMut()>(
         &self,
         target: &Target,
         sink: &mut S,
+        band: Option<(u32, u32)>,
         mut after: F,
     ) {
         // One loop per model, each calling `draw(triangle, id)` then `after`.
-        fn each<T, F: FnMut()>(ts: &[T], mut draw: impl FnMut(&T, u32), after: &mut F) {
+        fn each<T: Rows, F: FnMut()>(ts: &[T], band: Option<(u32, u32)>, mut draw: impl FnMut(&T, u32), after: &mut F) {
             for (k, t) in ts.iter().enumerate() {
-                draw(t, id_of(k));
+                let meets = |(y0, y1): (u32, u32)| {
+                    t.rows()
+                        .is_some_and(|(first, last)| last >= i64::from(y0) && first < i64::from(y1))
+                };
+                if band.map_or(true, meets) {
+                    draw(t, id_of(k));
+                }
                 after();
             }
         }
         match self {
-            PreparedTriangles::Exact(ts) => each(ts, |t, id| exact::rasterize(t, id, target, sink), &mut after),
+            PreparedTriangles::Exact(ts) => each(ts, band, |t, id| exact::rasterize(t, id, target, sink), &mut after),
             PreparedTriangles::Planned(_, ts) => each(
                 ts,
+                band,
                 |t, id| {
                     if let Some(t) = t {
                         t.rasterize(id, sink);
@@ -176,15 +238,25 @@ impl PreparedTriangles {
                 },
                 &mut after,
             ),
-            PreparedTriangles::Fixed(ts) => each(ts, |t, id| fixed::rasterize(t, id, target, sink), &mut after),
+            PreparedTriangles::Fixed(ts) => each(ts, band, |t, id| fixed::rasterize(t, id, target, sink), &mut after),
             PreparedTriangles::Scanline(ts) => {
-                each(ts, |t, id| scanline::rasterize(t, id, target, sink), &mut after);
+                each(ts, band, |t, id| scanline::rasterize(t, id, target, sink), &mut after);
             }
             PreparedTriangles::F32(ts, rule) => {
-                each(ts, |t, id| float::rasterize_f32(t, id, target, *rule, sink), &mut after);
+                each(
+                    ts,
+                    band,
+                    |t, id| float::rasterize_f32(t, id, target, *rule, sink),
+                    &mut after,
+                );
             }
             PreparedTriangles::F64(ts, rule) => {
-                each(ts, |t, id| float::rasterize_f64(t, id, target, *rule, sink), &mut after);
+                each(
+                    ts,
+                    band,
+                    |t, id| float::rasterize_f64(t, id, target, *rule, sink),
+                    &mut after,
+                );
             }
         }
     }

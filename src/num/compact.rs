@@ -131,7 +131,7 @@ impl Compact {
                 num: n >> shift,
                 den: NonZeroU64::new(1u64 << (bits - shift)).expect("a power of two"),
             }),
-            None => Compact::from_big(BigRational::new(n.into(), (BigInt::from(1) << bits).into())),
+            None => Compact::from_big(BigRational::new(n.into(), BigInt::from(1) << bits)),
         }
     }
 

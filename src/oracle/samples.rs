@@ -148,7 +148,7 @@ pub fn compare_samples(
     let mut moved_by = Vec::with_capacity(pattern.len());
     for (s, theirs) in per_sample.iter().enumerate() {
         let moved = frames.at(s).map_err(CompareError::Model)?;
-        samples.push(compare_classifying(&moved, target, theirs, model, at_most)?);
+        samples.push(compare_classifying(&moved, target, theirs, model, at_most, 1)?);
         let [dx, dy] = pattern.offset(s, &target.convention);
         moved_by.push([exact_text(&-dx), exact_text(&-dy)]);
     }

@@ -244,6 +244,11 @@ impl PlannedTriangle {
         self.planned.plan()
     }
 
+    /// The first and last row of its pixel range (the only rows it can cover).
+    pub fn rows(&self) -> (u32, u32) {
+        (self.range.y0, self.range.y1)
+    }
+
     /// Covers every pixel whose sample is inside the triangle: equal, pixel for pixel, to
     /// [`crate::tri::exact::rasterize`] on the same triangle and target (the property
     /// tests of `tests/planned.rs` are the proof).

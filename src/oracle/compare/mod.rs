@@ -217,10 +217,12 @@ pub fn compare(
     theirs: &Theirs,
     model: Model,
 ) -> Result<CompareReport, CompareError> {
-    compare_classifying(primitives, target, theirs, model, Some(CLASSIFY_AT_MOST))
+    compare_classifying(primitives, target, theirs, model, Some(CLASSIFY_AT_MOST), 1)
 }
 
-/// [`compare`], classifying at most `at_most` differing pixels (`None`: every one).
+/// [`compare`], classifying at most `at_most` differing pixels (`None`: every one), the
+/// scene drawn on `jobs` threads ([`crate::model::PreparedScene::coverage_parallel`]: the
+/// same coverage as one thread's).
 ///
 /// # Errors
 /// As [`compare`].
@@ -230,13 +232,14 @@ pub fn compare_classifying(
     theirs: &Theirs,
     model: Model,
     at_most: Option<usize>,
+    jobs: usize,
 ) -> Result<CompareReport, CompareError> {
     SizeMismatch::check(theirs, target).map_err(CompareError::Size)?;
     if !model.is_exact() {
         return Err(CompareError::NotExact(model));
     }
     let prepared = prepare(primitives, target, model).map_err(CompareError::Model)?;
-    let ours = prepared.coverage(target);
+    let ours = prepared.coverage_parallel(target, jobs, &|| {});
     // The differing pixels, all of them; then which are classified.
     let differing: Vec<(u32, u32, TheirPixel, DiffOwners)> = covered_by_either(&ours, theirs)
         .filter_map(|(y, x)| {

@@ -1,0 +1,170 @@
+//! Parallel drawing (`PreparedScene::coverage_parallel`, `render --jobs N`): the canvas cut
+//! into bands of 64-row tiles, each drawn by its own thread; the result is the one-thread
+//! coverage bit for bit, for every model, on scenes of every primitive kind whose shapes
+//! cross the bands' edges, and the CLI's outputs are byte-identical.
+
+use assert_cmd::Command;
+use num_rational::BigRational;
+use proptest::prelude::*;
+use rasterproof::convention::{Preset, Target};
+use rasterproof::coverage::{Coverage, CoverageSink, RowBand};
+use rasterproof::geom::{Point, Triangle};
+use rasterproof::line::{Line, LineRule};
+use rasterproof::model::{prepare, Model, Primitives};
+use rasterproof::strategy::clip::any_window;
+use rasterproof::strategy::polygon::any_polygon;
+use rasterproof::strategy::{any_triangle, diamond_line, pixel_line, tie_heavy_triangle};
+
+use crate::common::config;
+use crate::tempdir;
+
+/// Tall enough for four 64-row bands and a partial fifth.
+const HEIGHT: u32 = 280;
+const WIDTH: u32 = 48;
+
+/// A triangle with its vertices on or next to the bands' edges (rows 64, 128, ...), often
+/// with a flat edge there (two vertices on one row: an edge a tie rule may include): where
+/// a band that skipped a triangle it meets would lose pixels.
+fn band_edge_triangle() -> impl Strategy<Value = Triangle> {
+    let y = (1i64..=4, prop::sample::select(vec![(-1, 1), (-3, 4), (-1, 2), (-1, 256), (0, 1), (1, 256), (1, 2), (3, 4), (1, 1), (5, 4)]))
+        .prop_map(|(k, (n, d))| BigRational::from_integer((64 * k).into()) + BigRational::new(n.into(), d.into()));
+    let x = || (0i64..=4 * i64::from(WIDTH)).prop_map(|n| BigRational::new(n.into(), 4.into()));
+    let far = (0i64..i64::from(HEIGHT)).prop_map(|n| BigRational::from_integer(n.into()));
+    let p = |x: BigRational, y: BigRational| Point::new(x, y);
+    prop_oneof![
+        prop::array::uniform3((x(), y.clone())).prop_map(move |[a, b, c]| Triangle::new(p(a.0, a.1), p(b.0, b.1), p(c.0, c.1))),
+        (x(), x(), x(), y, far).prop_map(move |(xa, xb, xc, flat, other)| {
+            Triangle::new(p(xa, flat.clone()), p(xb, flat), p(xc, other))
+        }),
+    ]
+}
+
+fn scene() -> impl Strategy<Value = Primitives> {
+    let triangles = prop::collection::vec(
+        prop_oneof![any_triangle(HEIGHT), tie_heavy_triangle(HEIGHT), band_edge_triangle(), band_edge_triangle()],
+        1..=6,
+    );
+    let polygon = prop::option::of(any_polygon(HEIGHT, 9));
+    let bresenham = prop::option::of(pixel_line(i64::from(HEIGHT), 4));
+    let diamond = prop::option::of(diamond_line(HEIGHT));
+    let window = prop::option::of(any_window(HEIGHT));
+    (triangles, polygon, bresenham, diamond, window).prop_map(|(triangles, polygon, bresenham, diamond, clip)| {
+        let mut lines = Vec::new();
+        if let Some((from, to)) = bresenham {
+            lines.push(Line {
+                from: Point::from_ints(from[0], from[1]),
+                to: Point::from_ints(to[0], to[1]),
+                rule: LineRule::Bresenham(rasterproof::line::BresenhamTie::Stay),
+            });
+        }
+        lines.extend(diamond);
+        Primitives {
+            triangles: triangles.into_iter().map(Into::into).collect(),
+            lines,
+            polygons: polygon.into_iter().collect(),
+            clip,
+            ..Primitives::default()
+        }
+    })
+}
+
+proptest! {
+    // Each case draws every model twice on a 48 x 280 canvas (the plain oracles too).
+    #![proptest_config(ProptestConfig { cases: 40, ..config("proptest-regressions/parallel.txt") })]
+
+    /// Every model, 2, 3 and 7 threads: the coverage of one thread, owners and order.
+    #[test]
+    fn parallel_coverage_is_the_one_thread_coverage(
+        p in scene(),
+        preset in prop::sample::select(Preset::ALL.to_vec()),
+        jobs in prop::sample::select(vec![2usize, 3, 7]),
+    ) {
+        let target = Target::new(WIDTH, HEIGHT, preset.convention()).unwrap();
+        for model in Model::ALL {
+            let Ok(prepared) = prepare(&p, &target, model) else { continue };
+            let one = prepared.coverage(&target);
+            let many = prepared.coverage_parallel(&target, jobs, &|| {});
+            prop_assert_eq!(&many, &one, "{} on {} threads", model.name(), jobs);
+            prop_assert_eq!(many.covered_pixels(), one.covered_pixels());
+        }
+    }
+}
+
+/// A band keeps its rows only, in every write a traversal makes; the rows it drops and
+/// keeps are counted by hand.
+#[test]
+fn a_row_band_keeps_its_rows_only() {
+    let mut c = Coverage::new(16, 32);
+    {
+        let mut band = RowBand::new(&mut c, 8, 12);
+        band.cover(0, 7, 1); // above: dropped
+        band.cover(0, 8, 1); // kept
+        band.cover_span(11, 2, 4, 2); // kept: 3 pixels
+        band.cover_span(12, 2, 4, 2); // below: dropped
+        band.cover_mask(9, 0, 0b101, 3); // kept: 2 pixels
+                                         // Rows 4..12 of an 8-row block, every row all 8 pixels: rows 8..12 kept, 4 x 8.
+        band.cover_block(4, 8, u64::MAX, 4);
+        // Rows 10..18: rows 10 and 11 kept, pixel 0 of each (bit 0 of each byte).
+        band.cover_block(10, 0, 0x0101_0101_0101_0101, 5);
+    }
+    assert_eq!(c.covered_pixels(), 1 + 3 + 2 + 32 + 2);
+    assert_eq!(c.owners(0, 8), [1]);
+    assert!(c.owners(0, 7).is_empty() && c.owners(2, 12).is_empty());
+    assert_eq!((c.owners(0, 9), c.owners(2, 9)), (&[3][..], &[3][..]));
+    assert_eq!((c.owners(0, 10), c.owners(0, 11)), (&[5][..], &[5][..]));
+    assert!(c.owners(0, 12).is_empty());
+    assert_eq!((c.owners(8, 8), c.owners(15, 11)), (&[4][..], &[4][..]));
+    assert!(c.owners(8, 12).is_empty() && c.owners(8, 7).is_empty());
+}
+
+/// `render --jobs 1` and `--jobs 2` (and 3) write byte-identical ids PNGs, coverage PNGs
+/// and JSON for every model.
+#[test]
+fn render_jobs_outputs_are_byte_identical() {
+    let dir = tempdir::Dir::new("jobs");
+    let scene = dir.path().join("scene.json");
+    std::fs::write(
+        &scene,
+        r#"{"width": 40, "height": 300, "preset": "vulkan",
+            "triangles": [{"v": [[0, 0], [40, 10.5], [3.25, 299]]}, {"v": [[40, 10.5], [3.25, 299], [39, "1000/3"]]},
+                          {"v": [[5, 60], [30, 64], [20, 70]]}, {"v": [[0, 128], [40, 128], [20, 192]]}],
+            "lines": [{"from": [1, 1], "to": [38, 290]}, {"from": [0.5, 250], "to": [39.5, 63.5], "rule": "diamond"}],
+            "polygons": [{"v": [[2, 100], [38, 140], [38, 220], [2, 180]], "fill_rule": "even-odd"}]}"#,
+    )
+    .unwrap();
+    for model in Model::ALL {
+        let mut outputs = Vec::new();
+        for jobs in ["1", "2", "3"] {
+            let ids = dir.path().join(format!("ids-{jobs}.png"));
+            let png = dir.path().join(format!("cov-{jobs}.png"));
+            let out = Command::cargo_bin("rasterproof")
+                .unwrap()
+                .args([
+                    "render",
+                    scene.to_str().unwrap(),
+                    "--model",
+                    model.name(),
+                    "--jobs",
+                    jobs,
+                    "--format",
+                    "json",
+                ])
+                .arg("--ids-out")
+                .arg(&ids)
+                .arg("-o")
+                .arg(&png)
+                .output()
+                .unwrap();
+            assert!(
+                out.status.success(),
+                "{} --jobs {jobs}: {}",
+                model.name(),
+                String::from_utf8_lossy(&out.stderr)
+            );
+            outputs.push((out.stdout, std::fs::read(&ids).unwrap(), std::fs::read(&png).unwrap()));
+        }
+        assert!(!outputs[0].0.is_empty());
+        assert_eq!(outputs[1], outputs[0], "{}: --jobs 2", model.name());
+        assert_eq!(outputs[2], outputs[0], "{}: --jobs 3", model.name());
+    }
+}
