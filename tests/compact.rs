@@ -223,3 +223,56 @@ fn a_compact_triangle_is_96_bytes() {
     assert_eq!(std::mem::size_of::<Compact>(), 16);
     assert_eq!(std::mem::size_of::<CompactTriangle>(), 96);
 }
+
+/// A file bigger than the slow path takes, which the fast path declines, is refused with
+/// the line and column where the fast path stopped (the slow path's tree would cost some
+/// ten times the text); one it reads is read however big.
+#[test]
+fn a_huge_file_the_fast_reader_declines_is_refused_with_the_position() {
+    use rasterproof::scene::parse::MAX_SLOW_BYTES;
+    let pad = "x".repeat(MAX_SLOW_BYTES);
+    // An unknown field in the first triangle, at line 2: the fast path declines there.
+    let text = format!(
+        "{{\"width\": 8, \"height\": 8,\n\"triangles\": [{{\"v\": [[0,0],[1,0],[0,1]], \"w\": 1}}], \"pad\": \"{pad}\"}}"
+    );
+    let e = parse_scene(&text, "big.json").unwrap_err().to_string();
+    assert!(
+        e.starts_with(&format!(
+            "big.json: {} bytes: the fast reader stopped at line 2, column ",
+            text.len()
+        )),
+        "{e}"
+    );
+    assert!(e.contains(&format!("(at most {MAX_SLOW_BYTES} bytes)")), "{e}");
+    // Without the unknown field the same file is read (the pad is an unknown top-level
+    // field: the schema's own error, without the slow path).
+    let text = text.replace(", \"w\": 1", "");
+    let e = parse_scene(&text, "big.json").unwrap_err().to_string();
+    assert!(
+        e.starts_with("big.json: pad: unknown field (expected one of: width, height,"),
+        "{e}"
+    );
+}
+
+/// A scene file over 1 GiB is refused before it is read (a sparse file: no disk used).
+#[test]
+fn a_scene_file_over_a_gibibyte_is_refused_unread() {
+    let dir = crate::tempdir::Dir::new("huge-scene");
+    let path = dir.path().join("huge.json");
+    let f = std::fs::File::create(&path).unwrap();
+    f.set_len((1 << 30) + 1).unwrap();
+    let out = assert_cmd::Command::cargo_bin("rasterproof")
+        .unwrap()
+        .args(["render", path.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(
+        err.trim_end(),
+        format!(
+            "error: {}: 1073741825 bytes, at most 1073741824 (1 GiB) per scene file",
+            path.display()
+        )
+    );
+}

@@ -116,6 +116,16 @@ pub fn load_scene(
 ) -> Result<(String, rasterproof::scene::Scene, rasterproof::convention::Target), String> {
     use rasterproof::convention::Preset;
     let name = path.display().to_string();
+    let limit = rasterproof::scene::parse::MAX_SCENE_BYTES;
+    // Checked before reading, so that a huge file costs nothing.
+    if let Ok(m) = std::fs::metadata(path) {
+        if m.len() > limit as u64 {
+            return Err(format!(
+                "{name}: {} bytes, at most {limit} (1 GiB) per scene file",
+                m.len()
+            ));
+        }
+    }
     let bytes = std::fs::read(path).map_err(|e| format!("{name}: cannot read: {e}"))?;
     let mut scene = rasterproof::scene::parse_scene_bytes(&bytes, &name).map_err(|e| e.to_string())?;
     if let Some(p) = preset {

@@ -3,15 +3,20 @@
 //! path string and no big rational per coordinate; every other field is taken as its raw
 //! text and read by the schema as before.
 //!
-//! It declines (`None`) at the first thing it does not read itself: a syntax error, a key
-//! written twice, a top level that is not an object, a triangle with an unknown field or
-//! the wrong shape, a coordinate [`Compact::parse`] refuses, a string with an escape, a
-//! colour that is not plain digits, too many triangles. [`super::parse_scene`] then reads
-//! the file the slow way, which gives every error its usual words, so an error is the same
-//! whichever path met it. Where the fast path accepts a file it gives the scene the slow
-//! path gives (the property test `fast_and_slow_readers_agree` and the fuzz target
-//! `scene_parse`).
+//! It declines at the first thing it does not read itself: a syntax error, a key written
+//! twice, a top level that is not an object, a triangle with an unknown field or the
+//! wrong shape, a coordinate [`Compact::parse`] refuses, a string with an escape, a colour
+//! that is not plain digits. [`super::parse_scene`] then reads the file the slow way,
+//! which gives every error its usual words, so an error is the same whichever path met
+//! it. Where the fast path reads a file it gives the scene, or the schema's error, that
+//! the slow path gives (the property test `fast_and_slow_readers_agree` and the fuzz
+//! target `scene_parse`). Two exceptions bound the memory of a huge file: beyond
+//! [`MAX_TRIANGLES`] triangles it stops and the file is refused for that (without the
+//! slow path's count of them), and a file it declines that is bigger than
+//! [`super::MAX_SLOW_BYTES`] is refused with the line and column where it stopped, since
+//! the slow path's tree would cost some ten times the text.
 
+use std::cell::Cell;
 use std::collections::BTreeMap;
 use std::fmt;
 
@@ -24,20 +29,42 @@ use crate::geom::{CompactTriangle, Rgb};
 use crate::num::compact::Compact;
 use crate::scene::SceneTriangle;
 
-/// The top level of `text` read on the fast path: every field but `triangles` as a tree,
-/// and the triangles when the file has the field. `None`: read it the slow way.
-pub(super) fn read(text: &str) -> Option<(Map, Option<Vec<SceneTriangle>>)> {
+/// What the fast path made of a text.
+pub(super) enum Read {
+    /// Every field but `triangles` as a tree, and the triangles when the file has them.
+    Fields(Map, Option<Vec<SceneTriangle>>),
+    /// More than [`MAX_TRIANGLES`] triangles: read no further.
+    TooMany,
+    /// Something it does not read itself, at this line and column of the text (`None`:
+    /// in a field other than `triangles`): the slow path reads the file.
+    Declined(Option<(usize, usize)>),
+}
+
+/// The top level of `text` read on the fast path.
+pub(super) fn read(text: &str) -> Read {
+    let too_many = Cell::new(false);
     let mut de = serde_json::Deserializer::from_str(text);
-    let (raw, triangles) = Root.deserialize(&mut de).ok()?;
-    de.end().ok()?;
+    let at = |e: serde_json::Error| Some((e.line(), e.column()));
+    let root = Root { too_many: &too_many };
+    let (raw, triangles) = match root.deserialize(&mut de) {
+        Ok(read) => read,
+        Err(_) if too_many.get() => return Read::TooMany,
+        Err(e) => return Read::Declined(at(e)),
+    };
+    if let Err(e) = de.end() {
+        return Read::Declined(at(e));
+    }
     let mut root = Map::new();
     for (key, value) in raw {
         if keys::first_duplicate(value.get()).is_some() {
-            return None;
+            return Read::Declined(None);
         }
-        root.insert(key, from_raw(value, 1).ok()?);
+        match from_raw(value, 1) {
+            Ok(tree) => root.insert(key, tree),
+            Err(_) => return Read::Declined(None),
+        };
     }
-    Some((root, triangles))
+    Read::Fields(root, triangles)
 }
 
 /// Why the fast path declined (never shown: the slow path reads the file again).
@@ -46,18 +73,20 @@ fn decline<E: serde::de::Error>() -> E {
 }
 
 /// The top-level object.
-struct Root;
+struct Root<'a> {
+    too_many: &'a Cell<bool>,
+}
 
 type RootValue<'de> = (BTreeMap<String, &'de RawValue>, Option<Vec<SceneTriangle>>);
 
-impl<'de> DeserializeSeed<'de> for Root {
+impl<'de> DeserializeSeed<'de> for Root<'_> {
     type Value = RootValue<'de>;
     fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Self::Value, D::Error> {
         d.deserialize_map(self)
     }
 }
 
-impl<'de> Visitor<'de> for Root {
+impl<'de> Visitor<'de> for Root<'_> {
     type Value = RootValue<'de>;
     fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str("a scene object")
@@ -70,7 +99,9 @@ impl<'de> Visitor<'de> for Root {
                 if triangles.is_some() {
                     return Err(decline());
                 }
-                triangles = Some(map.next_value_seed(Triangles)?);
+                triangles = Some(map.next_value_seed(Triangles {
+                    too_many: self.too_many,
+                })?);
             } else {
                 let value: &'de RawValue = map.next_value()?;
                 if raw.insert(key.to_string(), value).is_some() {
@@ -82,17 +113,19 @@ impl<'de> Visitor<'de> for Root {
     }
 }
 
-/// The `triangles` array.
-struct Triangles;
+/// The `triangles` array; `too_many` is set when it holds more than [`MAX_TRIANGLES`].
+struct Triangles<'a> {
+    too_many: &'a Cell<bool>,
+}
 
-impl<'de> DeserializeSeed<'de> for Triangles {
+impl<'de> DeserializeSeed<'de> for Triangles<'_> {
     type Value = Vec<SceneTriangle>;
     fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Self::Value, D::Error> {
         d.deserialize_seq(self)
     }
 }
 
-impl<'de> Visitor<'de> for Triangles {
+impl<'de> Visitor<'de> for Triangles<'_> {
     type Value = Vec<SceneTriangle>;
     fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str("an array of triangles")
@@ -101,6 +134,7 @@ impl<'de> Visitor<'de> for Triangles {
         let mut out = Vec::with_capacity(seq.size_hint().unwrap_or(0).min(MAX_TRIANGLES));
         while let Some(t) = seq.next_element_seed(TriangleSeed)? {
             if out.len() == MAX_TRIANGLES {
+                self.too_many.set(true);
                 return Err(decline());
             }
             out.push(t);

@@ -54,8 +54,27 @@ pub const MAX_TRIANGLES: usize = 10_000_000;
 /// convexity) and the exact models cost up to vertices x vertices rational operations.
 pub const MAX_POLYGON_VERTICES: usize = 4096;
 
+/// The largest scene text read the slow way (the reference reader, [`parse_scene_slow`],
+/// whose tree costs some ten times the text): 64 MiB. A bigger file is read by the fast
+/// path alone (see [`parse_scene`]).
+pub const MAX_SLOW_BYTES: usize = 64 << 20;
+
+/// The largest scene file: 1 GiB (read whole; a frame of 10^7 triangles with 3-decimal
+/// coordinates is about 650 MB).
+pub const MAX_SCENE_BYTES: usize = 1 << 30;
+
 /// Parses raw bytes (they must be UTF-8).
 pub fn parse_scene_bytes(bytes: &[u8], source: &str) -> Result<Scene, SceneError> {
+    if bytes.len() > MAX_SCENE_BYTES {
+        return Err(SceneError {
+            source: source.to_string(),
+            field: String::new(),
+            message: format!(
+                "{} bytes, at most {MAX_SCENE_BYTES} (1 GiB) per scene file",
+                bytes.len()
+            ),
+        });
+    }
     let text = std::str::from_utf8(bytes).map_err(|e| SceneError {
         source: source.to_string(),
         field: String::new(),
@@ -75,10 +94,29 @@ pub fn parse_scene_bytes(bytes: &[u8], source: &str) -> Result<Scene, SceneError
 /// ```
 pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
     let p = Reader { source };
-    if let Some((root, triangles)) = fast::read(text) {
-        if let Ok(scene) = p.scene(&root, triangles) {
-            return Ok(scene);
+    match fast::read(text) {
+        // The schema's error too: the fast path found no syntax error, no repeated key and
+        // no triangle it could not read, so the slow path would reach the same one.
+        fast::Read::Fields(root, triangles) => return p.scene(&root, triangles),
+        fast::Read::TooMany => {
+            return Err(p.err(
+                "triangles",
+                format!("more than {MAX_TRIANGLES} entries, at most {MAX_TRIANGLES}"),
+            ))
         }
+        fast::Read::Declined(at) if text.len() > MAX_SLOW_BYTES => {
+            let at = at.map_or("in a field other than triangles".to_string(), |(line, column)| {
+                format!("at line {line}, column {column}")
+            });
+            return Err(p.err(
+                "",
+                format!(
+                    "{} bytes: the fast reader stopped {at}, and a file this big is not read the slow way                      (at most {MAX_SLOW_BYTES} bytes), which names the reason; the fast reader takes triangles                      as {{\"v\": [[x, y], [x, y], [x, y]]}} with optional \"colors\", each coordinate a JSON                      number or a string without escapes",
+                    text.len()
+                ),
+            ));
+        }
+        fast::Read::Declined(_) => {}
     }
     let value = read_json(text, &p)?;
     let Value::Object(root) = &value else {
