@@ -26,13 +26,31 @@ const WIDTH: u32 = 48;
 /// with a flat edge there (two vertices on one row: an edge a tie rule may include): where
 /// a band that skipped a triangle it meets would lose pixels.
 fn band_edge_triangle() -> impl Strategy<Value = Triangle> {
-    let y = (1i64..=4, prop::sample::select(vec![(-1, 1), (-3, 4), (-1, 2), (-1, 256), (0, 1), (1, 256), (1, 2), (3, 4), (1, 1), (5, 4)]))
+    let y = (
+        1i64..=4,
+        prop::sample::select(vec![
+            (-1, 1),
+            (-3, 4),
+            (-1, 2),
+            (-1, 256),
+            (0, 1),
+            (1, 256),
+            (1, 2),
+            (3, 4),
+            (1, 1),
+            (5, 4),
+        ]),
+    )
         .prop_map(|(k, (n, d))| BigRational::from_integer((64 * k).into()) + BigRational::new(n.into(), d.into()));
     let x = || (0i64..=4 * i64::from(WIDTH)).prop_map(|n| BigRational::new(n.into(), 4.into()));
     let far = (0i64..i64::from(HEIGHT)).prop_map(|n| BigRational::from_integer(n.into()));
     let p = |x: BigRational, y: BigRational| Point::new(x, y);
     prop_oneof![
-        prop::array::uniform3((x(), y.clone())).prop_map(move |[a, b, c]| Triangle::new(p(a.0, a.1), p(b.0, b.1), p(c.0, c.1))),
+        prop::array::uniform3((x(), y.clone())).prop_map(move |[a, b, c]| Triangle::new(
+            p(a.0, a.1),
+            p(b.0, b.1),
+            p(c.0, c.1)
+        )),
         (x(), x(), x(), y, far).prop_map(move |(xa, xb, xc, flat, other)| {
             Triangle::new(p(xa, flat.clone()), p(xb, flat), p(xc, other))
         }),
@@ -41,7 +59,12 @@ fn band_edge_triangle() -> impl Strategy<Value = Triangle> {
 
 fn scene() -> impl Strategy<Value = Primitives> {
     let triangles = prop::collection::vec(
-        prop_oneof![any_triangle(HEIGHT), tie_heavy_triangle(HEIGHT), band_edge_triangle(), band_edge_triangle()],
+        prop_oneof![
+            any_triangle(HEIGHT),
+            tie_heavy_triangle(HEIGHT),
+            band_edge_triangle(),
+            band_edge_triangle()
+        ],
         1..=6,
     );
     let polygon = prop::option::of(any_polygon(HEIGHT, 9));
