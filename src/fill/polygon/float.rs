@@ -129,7 +129,7 @@ macro_rules! float_polygon {
                 active.sort_by_key(|e| e.0);
                 // The outline's edges first (contour 0), then each hole's.
                 let contours: Vec<&[(usize, $vec, $vec)]> = active.chunk_by(|a, b| a.0 == b.0).collect();
-                if contours.first().is_none_or(|c| c[0].0 != 0) {
+                if !contours.first().is_some_and(|c| c[0].0 == 0) {
                     continue; // no outline edge on this row: winding number 0 everywhere
                 }
                 let winding = |p: $vec, c: &[(usize, $vec, $vec)]| -> i64 {
