@@ -32,6 +32,8 @@ mod area;
 mod area_crates_models;
 #[path = "area_planned.rs"]
 mod area_planned;
+#[path = "big_polygons.rs"]
+mod big_polygons;
 #[path = "check_cli.rs"]
 mod check_cli;
 #[path = "check_scale.rs"]

@@ -324,9 +324,39 @@ fn float_exact_edges(vertices: &[Point], edges: &[[Point; 2]], target: &Target, 
         check(p[0].clone(), &|| "a sample coordinate".into())?;
         check(p[1].clone(), &|| "a sample coordinate".into())?;
     }
+    // Every point lies in the box of `points`, so for an edge from `a`, |p.x - a.x| is at
+    // most the larger of its distances to the box's sides (U; V for y) and the edge value
+    // at most U |dy| + V |dx|: an edge whose bounds all stay within the limit fails no
+    // check below and is skipped, which keeps a polygon's cost linear in its vertices
+    // (the checks, and so the first failure named, are the same).
+    let extent = |k: usize| {
+        let lo = points
+            .iter()
+            .map(|p| &p[k])
+            .min()
+            .expect("four corners at least")
+            .clone();
+        let hi = points
+            .iter()
+            .map(|p| &p[k])
+            .max()
+            .expect("four corners at least")
+            .clone();
+        (lo, hi)
+    };
+    let (xs, ys) = (extent(0), extent(1));
+    let farthest = |(lo, hi): &(BigInt, BigInt), a: &BigInt| (lo - a).abs().max((hi - a).abs());
     for [a, b] in edges {
         let (a, b) = ([s(&a.x), s(&a.y)], [s(&b.x), s(&b.y)]);
         let (dx, dy) = (&b[0] - &a[0], &b[1] - &a[1]);
+        let (u, v) = (farthest(&xs, &a[0]), farthest(&ys, &a[1]));
+        let (first, second) = (&u * dy.abs(), &v * dx.abs());
+        let within = [&dx.abs(), &dy.abs(), &u, &v, &first, &second, &(&first + &second)]
+            .iter()
+            .all(|x| **x <= limit);
+        if within {
+            continue;
+        }
         check(dx.clone(), &|| "an edge's dx".into())?;
         check(dy.clone(), &|| "an edge's dy".into())?;
         for p in &points {

@@ -20,7 +20,7 @@ use crate::num::compact::Compact;
 use crate::num::exact::{exact_text, json_pair};
 use crate::pattern::SamplePattern;
 
-pub use parse::{parse_scene, parse_scene_bytes};
+pub use parse::{parse_scene, parse_scene_bytes, parse_scene_with_vertex_limit};
 
 /// Choices a scene makes on top of its preset.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

@@ -49,10 +49,13 @@ use reader::{kind, show, Reader};
 /// The most triangles a scene may hold (ids must fit u32; memory stays bounded).
 pub const MAX_TRIANGLES: usize = 10_000_000;
 
-/// The most vertices one polygon (outline and holes together) or clip window may have:
-/// the exact checks at parse time (a hole's first vertex inside the outline, a window's
-/// convexity) and the exact models cost up to vertices x vertices rational operations.
-pub const MAX_POLYGON_VERTICES: usize = 4096;
+/// The most polygon and clip-window vertices one scene may hold, every contour of every
+/// polygon and the clip window's together. No model's cost is quadratic in a polygon's
+/// vertices any more (the plain oracle excepted: pixels x edges, by design), so what
+/// limits a polygon is memory: a vertex read from the file is two exact rationals, about
+/// 250 bytes, and each model's form of it adds about as much again (docs/cli.md gives the
+/// measured figures), so the limit keeps a scene's vertices under a few GB.
+pub const MAX_SCENE_VERTICES: usize = 10_000_000;
 
 /// The largest scene text read the slow way (the reference reader, [`parse_scene_slow`],
 /// whose tree costs some ten times the text): 64 MiB. A bigger file is read by the fast
@@ -93,7 +96,26 @@ pub fn parse_scene_bytes(bytes: &[u8], source: &str) -> Result<Scene, SceneError
 /// assert_eq!(err.to_string(), "a.json: triangles[0].v[1][1]: \"NaN\" is not a finite number (expected a decimal like -12.5 or 1e3, or a fraction like 1/3)");
 /// ```
 pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
-    let p = Reader { source };
+    parse_scene_with_vertex_limit(text, source, MAX_SCENE_VERTICES)
+}
+
+/// [`parse_scene`] with a vertex limit of the caller's, `max_vertices` polygon and
+/// clip-window vertices in all instead of [`MAX_SCENE_VERTICES`] (a service that reads
+/// scenes from others and wants a smaller memory bound; a larger value is lowered to
+/// [`MAX_SCENE_VERTICES`]).
+///
+/// ```
+/// use rasterproof::scene::parse::parse_scene_with_vertex_limit;
+/// let text = r#"{"width": 8, "height": 8, "polygons": [{"v": [[0,0],[4,0],[0,4]]}, {"v": [[0,0],[4,0],[4,4],[0,4]]}]}"#;
+/// assert!(parse_scene_with_vertex_limit(text, "a.json", 7).is_ok());
+/// let err = parse_scene_with_vertex_limit(text, "a.json", 6).unwrap_err();
+/// assert_eq!(err.to_string(), "a.json: polygons[1].v: 4 vertices make 7 polygon and clip-window vertices in the scene, at most 6");
+/// ```
+///
+/// # Errors
+/// As [`parse_scene`].
+pub fn parse_scene_with_vertex_limit(text: &str, source: &str, max_vertices: usize) -> Result<Scene, SceneError> {
+    let p = Reader::new(source, max_vertices.min(MAX_SCENE_VERTICES));
     match fast::read(text) {
         // The schema's error too: the fast path found no syntax error, no repeated key and
         // no triangle it could not read, so the slow path would reach the same one.
@@ -111,7 +133,10 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
             return Err(p.err(
                 "",
                 format!(
-                    "{} bytes: the fast reader stopped {at}, and a file this big is not read the slow way                      (at most {MAX_SLOW_BYTES} bytes), which names the reason; the fast reader takes triangles                      as {{\"v\": [[x, y], [x, y], [x, y]]}} with optional \"colors\", each coordinate a JSON                      number or a string without escapes",
+                    "{} bytes: the fast reader stopped {at}, and a file this big is not read the slow way \
+                     (at most {MAX_SLOW_BYTES} bytes), which names the reason; the fast reader takes triangles \
+                     as {{\"v\": [[x, y], [x, y], [x, y]]}} with optional \"colors\", each coordinate a JSON \
+                     number or a string without escapes",
                     text.len()
                 ),
             ));
@@ -133,7 +158,7 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
 /// # Errors
 /// As [`parse_scene`].
 pub fn parse_scene_slow(text: &str, source: &str) -> Result<Scene, SceneError> {
-    let p = Reader { source };
+    let p = Reader::new(source, MAX_SCENE_VERTICES);
     let value = read_json(text, &p)?;
     let Value::Object(root) = &value else {
         return Err(p.err("", format!("the top level must be an object, found {}", kind(&value))));
@@ -145,6 +170,7 @@ impl Reader<'_> {
     /// The scene of the top-level object `root`; `triangles` when the fast path read them.
     fn scene(&self, root: &Map, triangles: Option<Vec<SceneTriangle>>) -> Result<Scene, SceneError> {
         let p = self;
+        p.vertices.set(0);
         p.known_fields(
             root,
             "",
@@ -245,7 +271,15 @@ fn read_json(text: &str, p: &Reader<'_>) -> Result<Value, SceneError> {
     Ok(value)
 }
 
-impl Reader<'_> {
+impl<'a> Reader<'a> {
+    fn new(source: &'a str, vertex_limit: usize) -> Reader<'a> {
+        Reader {
+            source,
+            vertex_limit,
+            vertices: std::cell::Cell::new(0),
+        }
+    }
+
     fn canvas_side(&self, root: &Map, field: &str) -> Result<u32, SceneError> {
         let v = root
             .get(field)

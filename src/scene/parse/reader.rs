@@ -11,6 +11,10 @@ use crate::scene::SceneError;
 /// Reads values out of one file's JSON; `source` names the file in every error.
 pub(super) struct Reader<'a> {
     pub(super) source: &'a str,
+    /// The most polygon and clip-window vertices the scene may hold, all together.
+    pub(super) vertex_limit: usize,
+    /// How many the scene has so far.
+    pub(super) vertices: std::cell::Cell<usize>,
 }
 
 /// What kind of JSON value `v` is, for an error ("a string", "an array", ...).

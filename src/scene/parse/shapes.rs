@@ -6,7 +6,7 @@ use num_rational::BigRational;
 use num_traits::Signed;
 
 use super::reader::{kind, show, Reader};
-use super::{MAX_POLYGON_VERTICES, MAX_TRIANGLES};
+use super::MAX_TRIANGLES;
 use crate::clip::homogeneous::{ClipVertex, DepthRange, NdcY, Viewport};
 use crate::clip::Window;
 use crate::convention::Preset;
@@ -183,6 +183,23 @@ impl Reader<'_> {
         self.each(v, "polygons", MAX_TRIANGLES, |p, at| self.polygon(p, at))
     }
 
+    /// Counts `n` more polygon or clip-window vertices at `at` against the scene's limit
+    /// ([`super::MAX_SCENE_VERTICES`] or the caller's), before they are read.
+    fn count_vertices(&self, n: usize, at: &str) -> Result<(), SceneError> {
+        let total = self.vertices.get().saturating_add(n);
+        if total > self.vertex_limit {
+            return Err(self.err(
+                at,
+                format!(
+                    "{n} vertices make {total} polygon and clip-window vertices in the scene, at most {}",
+                    self.vertex_limit
+                ),
+            ));
+        }
+        self.vertices.set(total);
+        Ok(())
+    }
+
     fn contour(&self, v: &Value, at: &str) -> Result<Vec<Point>, SceneError> {
         let list = self.array(v, at)?;
         if list.len() < 3 {
@@ -191,12 +208,7 @@ impl Reader<'_> {
                 format!("a polygon contour needs at least 3 vertices, found {}", list.len()),
             ));
         }
-        if list.len() > MAX_POLYGON_VERTICES {
-            return Err(self.err(
-                at,
-                format!("{} vertices, at most {MAX_POLYGON_VERTICES} per polygon", list.len()),
-            ));
-        }
+        self.count_vertices(list.len(), at)?;
         list.iter()
             .enumerate()
             .map(|(i, p)| self.point(Some(p), &format!("{at}[{i}]")))
@@ -222,13 +234,6 @@ impl Reader<'_> {
             for (k, hole) in self.array(h, &hf)?.iter().enumerate() {
                 holes.push(self.contour(hole, &format!("{hf}[{k}]"))?);
             }
-        }
-        let total = outline.len() + holes.iter().map(Vec::len).sum::<usize>();
-        if total > MAX_POLYGON_VERTICES {
-            return Err(self.err(
-                at,
-                format!("{total} vertices in the outline and holes, at most {MAX_POLYGON_VERTICES} per polygon"),
-            ));
         }
         let fill_rule = match obj.get("fill_rule") {
             None => FillRule::NonZero,
@@ -348,12 +353,7 @@ impl Reader<'_> {
             }
             (None, Some(c)) => {
                 let list = self.array(c, "clip.convex")?;
-                if list.len() > MAX_POLYGON_VERTICES {
-                    return Err(self.err(
-                        "clip.convex",
-                        format!("{} vertices, at most {MAX_POLYGON_VERTICES}", list.len()),
-                    ));
-                }
+                self.count_vertices(list.len(), "clip.convex")?;
                 let points = list
                     .iter()
                     .enumerate()
