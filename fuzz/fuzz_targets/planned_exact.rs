@@ -94,7 +94,7 @@ fn forced_widths(primitives: &Primitives, target: &Target, width: Width, written
     let first_polygon = primitives.triangles.len() + primitives.lines.len();
     for (k, t) in primitives.triangles.iter().enumerate() {
         let id = u32::try_from(k).expect("few primitives");
-        for (t, all) in [(t.clone(), written), (t.snapped(conv).to_exact(), snapped)] {
+        for (t, all) in [(t.to_triangle(), written), (t.snapped(conv).to_exact(), snapped)] {
             let forced = PlannedTriangle::forced(&t, target, width);
             check_forced("triangle", forced, width, &only(all, id), |p, c| p.rasterize(id, c));
         }

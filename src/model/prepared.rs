@@ -1,5 +1,7 @@
 //! A scene's primitives prepared for one model, ids assigned once, and drawn.
 
+use std::sync::atomic::{AtomicUsize, Ordering};
+
 use image::RgbImage;
 
 use crate::clip::arithmetic::{Arithmetic as ClipArithmetic, Clipper};
@@ -8,10 +10,7 @@ use crate::clip::mask::ClipMask;
 use crate::clip::sutherland_hodgman::clip_polygon;
 use crate::clip::Window;
 use crate::convention::Target;
-use std::sync::atomic::{AtomicUsize, Ordering};
-
-use crate::coverage::TILE;
-use crate::coverage::{Coverage, CoverageSink, IdRun, RowBand};
+use crate::coverage::{Coverage, CoverageSink, IdRun, RowBand, TILE};
 use crate::geom::{CompactTriangle, FillRule, Polygon, Rgb, Triangle};
 use crate::line::Line;
 
@@ -128,13 +127,13 @@ pub struct PreparedScene {
 /// `y0..y1`, whole 64-row tiles (the last may end at the height), up to four per thread
 /// so that a thread that finishes early takes another.
 fn bands(height: u32, jobs: usize) -> Vec<(u32, u32)> {
+    if jobs <= 1 {
+        return vec![(0, height)];
+    }
     let tile_rows = height.div_ceil(TILE);
     let count = u32::try_from(jobs.saturating_mul(4))
         .unwrap_or(u32::MAX)
         .clamp(1, tile_rows.max(1));
-    if jobs <= 1 {
-        return vec![(0, height)];
-    }
     (0..count)
         .map(|b| {
             let first = tile_rows * b / count * TILE;

@@ -1,7 +1,9 @@
 //! The planned exact engine for triangles: the oracle's decisions, computed incrementally
 //! in the narrowest arithmetic that provably holds them ([`crate::num::plan`]).
 //!
-//! TriangleSetup, once per triangle, in exact integers: the scale `L` that makes every vertex
+//! TriangleSetup, once per triangle, in exact integers (checked `i128` when every coordinate
+//! is a small [`crate::num::compact::Compact`] and nothing overflows, big integers otherwise:
+//! one generic setup, `setup_scaled`): the scale `L` that makes every vertex
 //! coordinate and the pixel centre integers, the vertices taken relative to the first
 //! sample of the triangle's pixel range, and per edge (oriented so the interior is
 //! `E > 0`) the value `E - bias` at that sample and its steps, `L dY` one pixel right and

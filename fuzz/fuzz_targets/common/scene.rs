@@ -232,7 +232,7 @@ fn structured(u: &mut Unstructured<'_>) -> Result<Scene> {
         .iter()
         .take(MAX_TRIANGLES)
         .map(|t| SceneTriangle {
-            triangle: Triangle::new(t[0].point(w, h), t[1].point(w, h), t[2].point(w, h)),
+            triangle: Triangle::new(t[0].point(w, h), t[1].point(w, h), t[2].point(w, h)).into(),
             colours: None,
         })
         .collect();
