@@ -19,7 +19,9 @@
 //! canvas, so clipping counts).
 //!
 //! Triangle contenders (all on the `cts` preset's grid: 8 subpixel bits, half away from
-//! zero, top-left rule, sample at the pixel centre):
+//! zero, top-left rule, sample at the pixel centre; each crate model also as `... span-only`,
+//! drawn through a sink that implements only `cover` and `cover_span` with a plain +1
+//! loop, as a user's sink would, the trait's defaults doing the masks and blocks):
 //! - `crate fixed`, `crate scanline`, `crate exact-snapped`: the crate's models through
 //!   `prepare` (outside the timer) and `PreparedScene::render` into [`Grid`], a
 //!   `CoverageSink` whose `cover` and `cover_span` write through a row slice (a span of
@@ -324,6 +326,24 @@ impl<T: Cell> CoverageSink for Grid<T> {
     }
 }
 
+/// The u8 target as a user's sink would be: `cover` and `cover_span` only (a plain +1 loop
+/// over the span), the trait's defaults for `cover_mask` and `cover_block`.
+struct SpanOnly<'a, T>(&'a mut Grid<T>);
+
+impl<T: Cell> CoverageSink for SpanOnly<'_, T> {
+    #[inline]
+    fn cover(&mut self, x: u32, y: u32, _id: u32) {
+        self.0.row(ix(y))[ix(x)].bump();
+    }
+
+    #[inline]
+    fn cover_span(&mut self, y: u32, x0: u32, x1: u32, _id: u32) {
+        for cell in &mut self.0.row(ix(y))[ix(x0)..=ix(x1)] {
+            cell.bump();
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // The textbook baselines: i64 fixed point, 8 subpixel bits, top-left rule, centre samples.
 
@@ -572,6 +592,8 @@ impl Kind {
 enum Job<'a> {
     /// A crate model's prepared scene.
     Prepared(PreparedScene),
+    /// The same drawn through [`SpanOnly`], a sink as a user writes one.
+    SpanOnly(PreparedScene),
     Plain(&'a [Snapped]),
     BranchFree(&'a [Snapped]),
     Blocks(&'a [Snapped]),
@@ -601,6 +623,7 @@ impl<'a> Contender<'a> {
     fn draw<T: Cell>(&self, target: &Target, grid: &mut Grid<T>) {
         match &self.job {
             Job::Prepared(p) => p.render(target, grid),
+            Job::SpanOnly(p) => p.render(target, &mut SpanOnly(grid)),
             Job::Plain(ts) => baseline_plain(ts, grid),
             Job::BranchFree(ts) => baseline_branch_free(ts, grid),
             Job::Blocks(ts) => baseline_blocks(ts, grid),
@@ -860,6 +883,17 @@ fn triangle_workload(title: &str, side: u32, tris: &[Triangle]) {
             "crate exact-snapped",
             Kind::Crate,
             Job::Prepared(model(Model::ExactSnapped)),
+        ),
+        Contender::new("crate fixed span-only", Kind::Crate, Job::SpanOnly(model(Model::Fixed))),
+        Contender::new(
+            "crate scanline span-only",
+            Kind::Crate,
+            Job::SpanOnly(model(Model::Scanline)),
+        ),
+        Contender::new(
+            "crate exact-snapped span-only",
+            Kind::Crate,
+            Job::SpanOnly(model(Model::ExactSnapped)),
         ),
         Contender::new("baseline plain", Kind::Baseline, Job::Plain(&snapped)),
         Contender::new("baseline branch-free", Kind::Baseline, Job::BranchFree(&snapped)),
