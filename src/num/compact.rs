@@ -126,6 +126,8 @@ impl Compact {
             return Compact::ZERO;
         }
         let shift = n.trailing_zeros().min(bits);
+        // i64::MIN (whose negation does not fit) may not be small: read it as a big
+        // rational, which from_big reduces to its one form.
         match n.checked_neg() {
             Some(_) => Compact(Repr::Small {
                 num: n >> shift,
@@ -393,6 +395,17 @@ mod tests {
             "1000000000000000000000000000000"
         );
         assert_eq!(Compact::parse("-7/2").unwrap().to_string(), "-7/2");
+    }
+
+    #[test]
+    fn dyadic_is_the_exact_dyadic() {
+        for n in [0, 1, -1, 3, -6, 256, 1 << 40, -(1 << 62), i64::MAX, i64::MIN, i64::MIN + 1] {
+            for bits in [0, 1, 8, 16, 61, 62] {
+                let c = Compact::dyadic(n, bits);
+                assert_eq!(c.to_big(), crate::num::exact::dyadic(&n.into(), bits), "{n} {bits}");
+                assert_eq!(c, Compact::from_big(c.to_big()), "{n} {bits}: one form");
+            }
+        }
     }
 
     #[test]
