@@ -399,7 +399,19 @@ mod tests {
 
     #[test]
     fn dyadic_is_the_exact_dyadic() {
-        for n in [0, 1, -1, 3, -6, 256, 1 << 40, -(1 << 62), i64::MAX, i64::MIN, i64::MIN + 1] {
+        for n in [
+            0,
+            1,
+            -1,
+            3,
+            -6,
+            256,
+            1 << 40,
+            -(1 << 62),
+            i64::MAX,
+            i64::MIN,
+            i64::MIN + 1,
+        ] {
             for bits in [0, 1, 8, 16, 61, 62] {
                 let c = Compact::dyadic(n, bits);
                 assert_eq!(c.to_big(), crate::num::exact::dyadic(&n.into(), bits), "{n} {bits}");
