@@ -368,6 +368,8 @@ mod tests {
             "00000000000000000001",
             "1/999999999999999999",
             "123456789012345678/3",
+            "123456789012345678901/7",
+            "7/123456789012345678901",
             "1_0",
             " 1",
             "1 ",
@@ -386,9 +388,18 @@ mod tests {
         assert_eq!(Compact::parse("0.5").unwrap().small(), Some((1, 2)));
         assert_eq!(Compact::parse("-6/4").unwrap().small(), Some((-3, 2)));
         assert_eq!(Compact::parse("0").unwrap().small(), Some((0, 1)));
-        // i64::MIN is not small (its negation must be), i64::MAX is.
+        // i64::MIN is not small (its negation must be), i64::MAX is; nor is a denominator
+        // beyond i64::MAX. One form per value, however the value was made.
         assert_eq!(Compact::from_int(i64::MIN).small(), None);
         assert_eq!(Compact::from_int(i64::MAX).small(), Some((i64::MAX, 1)));
+        let min = BigRational::from_integer(i64::MIN.into());
+        assert_eq!(Compact::from_big(min.clone()).small(), None);
+        assert_eq!(Compact::from_big(min), Compact::from_int(i64::MIN));
+        let tiny = BigRational::new(1.into(), BigInt::from(1u64 << 63));
+        assert_eq!(Compact::from_big(tiny.clone()).small(), None);
+        assert_eq!(Compact::from_big(tiny.clone()).to_big(), tiny);
+        let widest = BigRational::new(1.into(), BigInt::from(i64::MAX));
+        assert_eq!(Compact::from_big(widest).small(), Some((1, i64::MAX as u64)));
         assert_eq!(Compact::parse("1e30").unwrap().small(), None);
         assert_eq!(
             Compact::parse("1e30").unwrap().to_string(),
