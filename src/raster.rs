@@ -315,13 +315,13 @@ pub fn float_sample_range_at(min: [f64; 2], max: [f64; 2], origin: [i64; 2], tar
 
 /// `ceil(v)` as a pixel index, saturating (any saturated value is off the canvas).
 #[allow(clippy::cast_possible_truncation)] // `as` saturates; out-of-range means off-canvas
-pub fn index_ceil(v: f64) -> i64 {
+fn index_ceil(v: f64) -> i64 {
     v.ceil().clamp(-1e18, 1e18) as i64
 }
 
 /// `floor(v)` as a pixel index, saturating.
 #[allow(clippy::cast_possible_truncation)]
-pub fn index_floor(v: f64) -> i64 {
+fn index_floor(v: f64) -> i64 {
     v.floor().clamp(-1e18, 1e18) as i64
 }
 

@@ -93,6 +93,13 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         Some(n) => Some(super::parse_samples(n)?),
         None => scene.samples.clone(),
     };
+    let off_canvas = || {
+        format!(
+            "pixel: ({x}, {y}) is off the {}x{} canvas of {name}",
+            target.width, target.height
+        )
+    };
+    let heading = format!("{name}: {}", target.convention);
     if let Some(pattern) = pattern.filter(|p| !p.is_single(&target.convention)) {
         if o.svg.is_some() {
             return Err(
@@ -105,27 +112,11 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             ));
         }
         let why = rasterproof::oracle::explain::explain_samples(&scene.primitives(), &target, &pattern, x, y)
-            .ok_or_else(|| {
-                format!(
-                    "pixel: ({x}, {y}) is off the {}x{} canvas of {name}",
-                    target.width, target.height
-                )
-            })?;
-        match o.format {
-            OutputFormat::Text => super::write_stdout(|out| {
-                writeln!(out, "{name}: {}", target.convention)?;
-                out.write_all(why.to_text().as_bytes())
-            })?,
-            OutputFormat::Json => super::print_stdout(&why.to_json().to_string())?,
-        }
+            .ok_or_else(off_canvas)?;
+        print(o.format, &heading, &why.to_text(), &why.to_json())?;
         return Ok(ExitCode::SUCCESS);
     }
-    let why = explain_pixel(&scene.primitives(), &target, x, y).ok_or_else(|| {
-        format!(
-            "pixel: ({x}, {y}) is off the {}x{} canvas of {name}",
-            target.width, target.height
-        )
-    })?;
+    let why = explain_pixel(&scene.primitives(), &target, x, y).ok_or_else(off_canvas)?;
     if let Some(path) = &o.svg {
         let svg = rasterproof::oracle::svg::neighbourhood_svg(
             &scene.primitives(),
@@ -140,12 +131,17 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         outputs.stage_text(path, &svg)?;
         outputs.commit()?;
     }
-    match o.format {
-        OutputFormat::Text => super::write_stdout(|out| {
-            writeln!(out, "{name}: {}", target.convention)?;
-            out.write_all(why.to_text().as_bytes())
-        })?,
-        OutputFormat::Json => super::print_stdout(&why.to_json().to_string())?,
-    }
+    print(o.format, &heading, &why.to_text(), &why.to_json())?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// An explanation on stdout: its text under the heading line, or its JSON.
+fn print(format: OutputFormat, heading: &str, text: &str, json: &serde_json::Value) -> Result<(), String> {
+    match format {
+        OutputFormat::Text => super::write_stdout(|out| {
+            writeln!(out, "{heading}")?;
+            out.write_all(text.as_bytes())
+        }),
+        OutputFormat::Json => super::print_stdout(&json.to_string()),
+    }
 }

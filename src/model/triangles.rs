@@ -9,7 +9,7 @@ use crate::convention::{Convention, Target};
 use crate::coverage::{primitive_colour, Coverage, CoverageSink};
 use crate::geom::{CompactTriangle, FixedTriangle, Rgb, Triangle};
 use crate::interp::{barycentric_fixed, gouraud_exact, gouraud_f32, gouraud_f64, to_channel};
-use crate::raster::{index_ceil, index_floor, sample_exact, sample_f32, sample_f64};
+use crate::raster::{exact_sample_range, fixed_sample_range, float_sample_range, sample_exact, sample_f32, sample_f64};
 use crate::tri::float::FloatRule;
 use crate::tri::planned::PlannedTriangle;
 use crate::tri::{exact, fixed, float, scanline};
@@ -107,56 +107,50 @@ fn fixed_triangles(triangles: &[CompactTriangle], conv: &Convention) -> Result<V
         .collect()
 }
 
-/// The rows a prepared triangle may cover, `first..=last`, with a row to spare on each
-/// side (`None`: it covers nothing): every model covers only pixels whose sample lies in
-/// the bounding box of the vertices it draws, and a pixel's sample lies in its own row.
+/// The rows a prepared triangle's engine visits, `first..=last` (`None`: it covers
+/// nothing): the sample range of its vertices, found by the function its engine finds its
+/// own range with, so a triangle skipped by a band has no pixel in it.
 trait Rows {
-    fn rows(&self) -> Option<(i64, i64)>;
+    fn rows(&self, target: &Target) -> Option<(u32, u32)>;
 }
 
 impl Rows for Triangle {
-    fn rows(&self) -> Option<(i64, i64)> {
-        let ys = self.v.iter().map(|p| &p.y);
-        let (lo, hi) = (ys.clone().min()?, ys.max()?);
-        let index = |v: num_bigint::BigInt| crate::raster::saturating_index(v);
-        Some((
-            index(lo.floor().to_integer()).saturating_sub(1),
-            index(hi.ceil().to_integer()).saturating_add(1),
-        ))
+    fn rows(&self, target: &Target) -> Option<(u32, u32)> {
+        exact_sample_range(self.v.iter(), target).map(|r| (r.y0, r.y1))
     }
 }
 
 impl Rows for Option<PlannedTriangle> {
-    fn rows(&self) -> Option<(i64, i64)> {
-        let (y0, y1) = self.as_ref()?.rows();
-        Some((i64::from(y0), i64::from(y1)))
+    fn rows(&self, _: &Target) -> Option<(u32, u32)> {
+        Some(self.as_ref()?.rows())
     }
 }
 
 impl Rows for FixedTriangle {
-    fn rows(&self) -> Option<(i64, i64)> {
-        let ys = self.coords().map(|[_, y]| y);
-        let (lo, hi) = (ys.iter().min()?, ys.iter().max()?);
-        Some(((lo >> self.bits) - 1, (hi >> self.bits) + 1))
+    fn rows(&self, target: &Target) -> Option<(u32, u32)> {
+        fixed_sample_range(self.coords().into_iter(), target).map(|r| (r.y0, r.y1))
     }
 }
 
-/// The float rows: the least and largest `y` (an f32 widens to f64 exactly).
-fn float_rows(ys: impl Iterator<Item = f64>) -> Option<(i64, i64)> {
-    let (lo, hi) = ys.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), y| (l.min(y), h.max(y)));
-    Some((index_floor(lo).saturating_sub(1), index_ceil(hi).saturating_add(1)))
-}
-
 impl Rows for [Vec2; 3] {
-    fn rows(&self) -> Option<(i64, i64)> {
-        float_rows(self.iter().map(|p| f64::from(p.y)))
+    fn rows(&self, target: &Target) -> Option<(u32, u32)> {
+        let (min, max) = (self[0].min(self[1]).min(self[2]), self[0].max(self[1]).max(self[2]));
+        let wide = |v: Vec2| [f64::from(v.x), f64::from(v.y)];
+        float_sample_range(wide(min), wide(max), target).map(|r| (r.y0, r.y1))
     }
 }
 
 impl Rows for [DVec2; 3] {
-    fn rows(&self) -> Option<(i64, i64)> {
-        float_rows(self.iter().map(|p| p.y))
+    fn rows(&self, target: &Target) -> Option<(u32, u32)> {
+        let (min, max) = (self[0].min(self[1]).min(self[2]), self[0].max(self[1]).max(self[2]));
+        float_sample_range(min.to_array(), max.to_array(), target).map(|r| (r.y0, r.y1))
     }
+}
+
+/// The exact Gouraud colour of `t` at pixel `(x, y)`'s sample, as 8-bit channels (black
+/// for a degenerate triangle).
+fn shade_exact(t: &Triangle, colours: &[Rgb; 3], x: u32, y: u32, target: &Target) -> Rgb {
+    gouraud_exact(t, colours, &sample_exact(x, y, target)).map_or([0; 3], |c| c.each_ref().map(to_channel))
 }
 
 /// Triangle ids are their indices.
@@ -214,12 +208,15 @@ impl PreparedTriangles {
         mut after: F,
     ) {
         // One loop per model, each calling `draw(triangle, id)` then `after`.
-        fn each<T: Rows, F: FnMut()>(ts: &[T], band: Option<(u32, u32)>, mut draw: impl FnMut(&T, u32), after: &mut F) {
+        fn each<T: Rows, F: FnMut()>(
+            ts: &[T],
+            target: &Target,
+            band: Option<(u32, u32)>,
+            mut draw: impl FnMut(&T, u32),
+            after: &mut F,
+        ) {
             for (k, t) in ts.iter().enumerate() {
-                let meets = |(y0, y1): (u32, u32)| {
-                    t.rows()
-                        .is_some_and(|(first, last)| last >= i64::from(y0) && first < i64::from(y1))
-                };
+                let meets = |(y0, y1): (u32, u32)| t.rows(target).is_some_and(|(first, last)| last >= y0 && first < y1);
                 if band.map_or(true, meets) {
                     draw(t, id_of(k));
                 }
@@ -227,9 +224,16 @@ impl PreparedTriangles {
             }
         }
         match self {
-            PreparedTriangles::Exact(ts) => each(ts, band, |t, id| exact::rasterize(t, id, target, sink), &mut after),
+            PreparedTriangles::Exact(ts) => each(
+                ts,
+                target,
+                band,
+                |t, id| exact::rasterize(t, id, target, sink),
+                &mut after,
+            ),
             PreparedTriangles::Planned(_, ts) => each(
                 ts,
+                target,
                 band,
                 |t, id| {
                     if let Some(t) = t {
@@ -238,13 +242,26 @@ impl PreparedTriangles {
                 },
                 &mut after,
             ),
-            PreparedTriangles::Fixed(ts) => each(ts, band, |t, id| fixed::rasterize(t, id, target, sink), &mut after),
+            PreparedTriangles::Fixed(ts) => each(
+                ts,
+                target,
+                band,
+                |t, id| fixed::rasterize(t, id, target, sink),
+                &mut after,
+            ),
             PreparedTriangles::Scanline(ts) => {
-                each(ts, band, |t, id| scanline::rasterize(t, id, target, sink), &mut after);
+                each(
+                    ts,
+                    target,
+                    band,
+                    |t, id| scanline::rasterize(t, id, target, sink),
+                    &mut after,
+                );
             }
             PreparedTriangles::F32(ts, rule) => {
                 each(
                     ts,
+                    target,
                     band,
                     |t, id| float::rasterize_f32(t, id, target, *rule, sink),
                     &mut after,
@@ -253,6 +270,7 @@ impl PreparedTriangles {
             PreparedTriangles::F64(ts, rule) => {
                 each(
                     ts,
+                    target,
                     band,
                     |t, id| float::rasterize_f64(t, id, target, *rule, sink),
                     &mut after,
@@ -266,12 +284,8 @@ impl PreparedTriangles {
     /// area for the integer models; f32 / f64 barycentrics for the float models).
     pub(crate) fn shade(&self, k: usize, colours: &[Rgb; 3], x: u32, y: u32, target: &Target) -> Rgb {
         match self {
-            PreparedTriangles::Exact(ts) => gouraud_exact(&ts[k], colours, &sample_exact(x, y, target))
-                .map_or([0; 3], |c| c.each_ref().map(to_channel)),
-            PreparedTriangles::Planned(ts, _) => {
-                gouraud_exact(&ts[k].to_triangle(), colours, &sample_exact(x, y, target))
-                    .map_or([0; 3], |c| c.each_ref().map(to_channel))
-            }
+            PreparedTriangles::Exact(ts) => shade_exact(&ts[k], colours, x, y, target),
+            PreparedTriangles::Planned(ts, _) => shade_exact(&ts[k].to_triangle(), colours, x, y, target),
             PreparedTriangles::Fixed(ts) | PreparedTriangles::Scanline(ts) => {
                 let b = barycentric_fixed(&ts[k], x, y, target);
                 if b.area2 == 0 {
@@ -292,11 +306,23 @@ impl PreparedTriangles {
     /// primitive, shows its coverage colour.
     pub(crate) fn colour_image(&self, coverage: &Coverage, colours: &[Option<[Rgb; 3]>], target: &Target) -> RgbImage {
         let mut img = RgbImage::new(target.width, target.height);
+        // The planned engine keeps its triangles compact: the exact triangle of the last
+        // one shaded is kept, not rebuilt at every pixel (a row's pixels mostly share one).
+        let mut exact: Option<(usize, Triangle)> = None;
         for (x, y, ids) in coverage.iter() {
             let Some(&top) = ids.last() else { continue };
             let k = top as usize;
-            let rgb = match colours.get(k).copied().flatten() {
-                Some(c) if k < self.len() => self.shade(k, &c, x, y, target),
+            let rgb = match (colours.get(k).copied().flatten(), self) {
+                (Some(c), PreparedTriangles::Planned(ts, _)) if k < ts.len() => {
+                    let t = match exact.take() {
+                        Some((j, t)) if j == k => t,
+                        _ => ts[k].to_triangle(),
+                    };
+                    let rgb = shade_exact(&t, &c, x, y, target);
+                    exact = Some((k, t));
+                    rgb
+                }
+                (Some(c), _) if k < self.len() => self.shade(k, &c, x, y, target),
                 _ => primitive_colour(top),
             };
             img.put_pixel(x, y, image::Rgb(rgb));

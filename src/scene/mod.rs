@@ -231,12 +231,18 @@ impl Scene {
     /// lines' ends, the polygons' outlines then holes (not the clip-space triangles',
     /// which are in clip space).
     pub fn coordinates(&self) -> Vec<BigRational> {
-        let mut out = Vec::new();
-        self.clone().map_coordinates(|_, x| {
-            out.push(x.clone());
-            x.clone()
-        });
-        out
+        let triangles = self
+            .triangles
+            .iter()
+            .flat_map(|t| t.triangle.v.iter().flatten().map(Compact::to_big));
+        let points = self.lines.iter().flat_map(|l| [&l.from, &l.to]).chain(
+            self.polygons
+                .iter()
+                .flat_map(|p| p.outline.iter().chain(p.holes.iter().flatten())),
+        );
+        triangles
+            .chain(points.flat_map(|v| [v.x.clone(), v.y.clone()]))
+            .collect()
     }
 
     /// Replaces each coordinate of [`Scene::coordinates`] by `f(k, value)`, `k` its
