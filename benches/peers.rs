@@ -21,14 +21,18 @@
 //! Triangle contenders (all on the `cts` preset's grid: 8 subpixel bits, half away from
 //! zero, top-left rule, sample at the pixel centre; each crate model also as `... span-only`,
 //! drawn through a sink that implements only `cover` and `cover_span` with a plain +1
-//! loop, as a user's sink would, the trait's defaults doing the masks and blocks):
+//! loop, as a user's sink would: it keeps the trait's default `prefers_masks` (false), so
+//! the traversals hand it a small triangle's pixels one by one and a larger one's rows as
+//! spans, walked along the edges):
 //! - `crate fixed`, `crate scanline`, `crate exact-snapped`: the crate's models through
 //!   `prepare` (outside the timer) and `PreparedScene::render` into [`Grid`], a
 //!   `CoverageSink` whose `cover` and `cover_span` write through a row slice (a span of
 //!   at most eight pixels as one eight-byte add), `cover_mask` eight cells a time as one
 //!   `u64` and `cover_block` a block's row masks from one offset stepped by the row
-//!   length (only `exact-snapped`'s setup is in `prepare`: `fixed` and `scanline` set
-//!   each triangle up in `draw`);
+//!   length, and whose `prefers_masks` says so (only `exact-snapped`'s setup is in
+//!   `prepare`: `fixed` and `scanline` set each triangle up in `draw`; on this grid every
+//!   `exact-snapped` triangle lies on the subpixel grid, so the planned engine draws it
+//!   with the integer engine);
 //! - `baseline plain`: a textbook i64 incremental edge-function loop over the bounding box
 //!   (E stepped by addition per pixel and per row, `e0 >= 0 && e1 >= 0 && e2 >= 0`);
 //! - `baseline branch-free`: the same loop adding the mask `(e0 | e1 | e2) >= 0`;
@@ -275,6 +279,12 @@ impl<T: Cell> Grid<T> {
 }
 
 impl<T: Cell> CoverageSink for Grid<T> {
+    /// Its `cover_mask` and `cover_block` add masks without a branch per pixel.
+    #[inline]
+    fn prefers_masks(&self) -> bool {
+        true
+    }
+
     #[inline]
     fn cover(&mut self, x: u32, y: u32, _id: u32) {
         self.row(ix(y))[ix(x)].bump();

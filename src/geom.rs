@@ -170,6 +170,26 @@ impl CompactTriangle {
         }
     }
 
+    /// The triangle in the integer models' form when snapping leaves it as it is: every
+    /// coordinate a multiple of the convention's subpixel (a small fraction whose
+    /// denominator is a power of two up to `2^bits`) inside the envelope; `None`
+    /// otherwise. The planned engine draws such a triangle with the integer engine.
+    pub fn on_grid(&self, convention: &Convention) -> Option<FixedTriangle> {
+        let bits = convention.subpixel_bits;
+        let exact = |x: &Compact| {
+            let (n, d) = x.small()?;
+            if !d.is_power_of_two() || d.trailing_zeros() > bits {
+                return None;
+            }
+            SubPixel::new(n.checked_mul(1i64 << (bits - d.trailing_zeros()))?)
+        };
+        let mut v = [[SubPixel::new(0).expect("0 is inside the envelope"); 2]; 3];
+        for (k, [x, y]) in self.v.iter().enumerate() {
+            v[k] = [exact(x)?, exact(y)?];
+        }
+        Some(FixedTriangle { v, bits })
+    }
+
     /// The snapped triangle in the integer models' form (`snapped(convention).to_fixed()`),
     /// in machine integers when every coordinate is small.
     ///

@@ -10,10 +10,11 @@ use common::config;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use proptest::prelude::*;
+use proptest::test_runner::Config;
 use rasterproof::convention::{Convention, PixelCentre, Preset, Target, MAX_CANVAS};
-use rasterproof::coverage::Coverage;
+use rasterproof::coverage::{Coverage, CoverageSink};
 use rasterproof::geom::{Point, Triangle};
-use rasterproof::model::{render_triangles, Model};
+use rasterproof::model::{prepare, render_triangles, Model, Primitives};
 use rasterproof::num::plan::Width;
 use rasterproof::strategy::{any_triangle, tie_heavy_triangle, triangle, Scale};
 use rasterproof::tri::exact;
@@ -138,6 +139,130 @@ proptest! {
                 render_triangles(&ts, &target, plain).unwrap()
             );
         }
+    }
+}
+
+/// A [`Coverage`] behind a sink that prefers masks: the block traversals hand it their
+/// masks ([`CoverageSink::cover_block`]), where a plain `Coverage` (a sink of spans) gets
+/// pixels and spans.
+struct Masks<'a>(&'a mut Coverage);
+
+impl CoverageSink for Masks<'_> {
+    fn cover(&mut self, x: u32, y: u32, id: u32) {
+        self.0.cover(x, y, id);
+    }
+
+    fn cover_span(&mut self, y: u32, x0: u32, x1: u32, id: u32) {
+        self.0.cover_span(y, x0, x1, id);
+    }
+
+    fn prefers_masks(&self) -> bool {
+        true
+    }
+}
+
+/// What a sink of spans was handed, call by call.
+#[derive(Default)]
+struct Calls {
+    pixels: usize,
+    spans: Vec<(u32, u32, u32)>,
+    masks: usize,
+}
+
+impl CoverageSink for Calls {
+    fn cover(&mut self, _: u32, _: u32, _: u32) {
+        self.pixels += 1;
+    }
+
+    fn cover_span(&mut self, y: u32, x0: u32, x1: u32, _: u32) {
+        self.spans.push((y, x0, x1));
+    }
+
+    fn cover_mask(&mut self, _: u32, _: u32, _: u32, _: u32) {
+        self.masks += 1;
+    }
+
+    fn cover_block(&mut self, _: u32, _: u32, _: u64, _: u32) {
+        self.masks += 1;
+    }
+}
+
+/// `model`'s coverage of `ts` through a sink of spans and through one that prefers masks.
+fn both_sinks(ts: &[Triangle], target: &Target, model: Model) -> (Coverage, Coverage) {
+    let prepared = prepare(&Primitives::from_triangles(ts), target, model).unwrap();
+    let (mut spans, mut masks) = (
+        Coverage::new(target.width, target.height),
+        Coverage::new(target.width, target.height),
+    );
+    prepared.render(target, &mut spans);
+    prepared.render(target, &mut Masks(&mut masks));
+    (spans, masks)
+}
+
+/// A coordinate on the 2^-k grid for k up to 10: on the 8-bit subpixel grid or off it.
+fn dyadic(canvas: i64) -> impl Strategy<Value = BigRational> {
+    (0u32..=10, -2i64..canvas + 2, any::<u16>()).prop_map(|(k, whole, frac)| {
+        let den = 1i64 << k;
+        BigRational::new(BigInt::from(whole * den + i64::from(frac) % den), BigInt::from(den))
+    })
+}
+
+proptest! {
+    #![proptest_config(Config { cases: 96, ..config("proptest-regressions/planned.txt") })]
+
+    /// The traversal depends on the sink (masks for a sink that prefers them; pixels,
+    /// spans per row and the scanline walk for a sink of spans) and on the triangle (the
+    /// planned engine draws a triangle on the subpixel grid with the integer engine):
+    /// every model that chooses covers the oracle's pixels through both kinds of sink, on
+    /// triangles of every size, on and off the grid, across the one-block threshold.
+    #[test]
+    fn every_traversal_equals_the_oracle(
+        ts in prop::collection::vec(prop_oneof![
+            any_triangle(WIDE),
+            prop::array::uniform6(dyadic(i64::from(WIDE))).prop_map(|c| {
+                let [a, b, c, d, e, f] = c;
+                Triangle::new(Point::new(a, b), Point::new(c, d), Point::new(e, f))
+            }),
+        ], 1..4),
+        conv in convention(),
+    ) {
+        let target = Target::new(WIDE, WIDE, conv).unwrap();
+        for (model, plain) in [
+            (Model::Exact, Model::ExactPlain),
+            (Model::ExactSnapped, Model::ExactSnappedPlain),
+            (Model::Fixed, Model::ExactSnappedPlain),
+            (Model::Scanline, Model::ExactSnappedPlain),
+        ] {
+            let want = render_triangles(&ts, &target, plain).unwrap();
+            let (spans, masks) = both_sinks(&ts, &target, model);
+            prop_assert_eq!(&spans, &want, "{:?} through a sink of spans", model);
+            prop_assert_eq!(&masks, &want, "{:?} through a sink of masks", model);
+        }
+    }
+}
+
+/// A sink of spans gets what suits it: a large triangle one span per covered row and no
+/// mask, a triangle within one block its pixels one by one; a sink that prefers masks gets
+/// masks. Counted by hand: the right triangle (0,0) (40,0) (0,40) at pixel centres covers
+/// row `y` from 0 to `38 - y` (the hypotenuse's samples `x + y = 39` are outside under
+/// top-left: the interior lies above it and to its left) for `y` 0..=38; the one at
+/// (0,0) (4,0) (0,4), within one block, covers `x + y <= 2`: 3 + 2 + 1 = 6 pixels.
+#[test]
+fn a_sink_gets_the_calls_that_suit_it() {
+    let target = Target::new(64, 64, Preset::Cts.convention()).unwrap();
+    let right = |n: i64| Triangle::new(Point::from_ints(0, 0), Point::from_ints(n, 0), Point::from_ints(0, n));
+    for model in [Model::Fixed, Model::ExactSnapped, Model::Exact] {
+        let calls = |t: Triangle| {
+            let prepared = prepare(&Primitives::from_triangles(&[t]), &target, model).unwrap();
+            let mut calls = Calls::default();
+            prepared.render(&target, &mut calls);
+            calls
+        };
+        let large = calls(right(40));
+        let rows: Vec<(u32, u32, u32)> = (0..=38).map(|y| (y, 0, 38 - y)).collect();
+        assert_eq!((large.pixels, large.masks, large.spans), (0, 0, rows), "{model:?}");
+        let small = calls(right(4));
+        assert_eq!((small.pixels, small.masks, small.spans.len()), (6, 0, 0), "{model:?}");
     }
 }
 

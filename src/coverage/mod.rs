@@ -52,6 +52,20 @@ pub trait CoverageSink {
         }
     }
 
+    /// Whether the triangle traversals should hand this sink masks
+    /// ([`CoverageSink::cover_mask`], [`CoverageSink::cover_block`]): `true` for a sink
+    /// that overrides those two with something faster than a span per run of set bits (a
+    /// SIMD or SWAR add of the mask), which then gets the block traversal's masks.
+    /// `false` by default, for a sink of pixels and spans: a triangle within one 8x8
+    /// block then reaches it pixel by pixel ([`CoverageSink::cover`]), and a larger one
+    /// of the integer engines (`fixed`, and the planned engine's triangles on the subpixel
+    /// grid) as one [`CoverageSink::cover_span`] per row, walked along its edges. The
+    /// pixels are the same either way; only the calls differ.
+    #[inline]
+    fn prefers_masks(&self) -> bool {
+        false
+    }
+
     /// The masks of up to eight consecutive rows of at most eight pixels at once, byte `i`
     /// of `block` being row `y0 + i`'s [`CoverageSink::cover_mask`] (bit `8 i + j` covers
     /// pixel `(x0 + j, y0 + i)`; a set bit is always a pixel of the canvas, and the rows
@@ -95,6 +109,11 @@ impl<'a, S: CoverageSink + ?Sized> RowBand<'a, S> {
 }
 
 impl<S: CoverageSink + ?Sized> CoverageSink for RowBand<'_, S> {
+    #[inline]
+    fn prefers_masks(&self) -> bool {
+        self.sink.prefers_masks()
+    }
+
     #[inline]
     fn cover(&mut self, x: u32, y: u32, id: u32) {
         if self.holds(y) {
@@ -380,6 +399,12 @@ impl CountBuffer {
 }
 
 impl CoverageSink for CountBuffer {
+    /// Its [`CoverageSink::cover_mask`] adds a mask without a branch per pixel.
+    #[inline]
+    fn prefers_masks(&self) -> bool {
+        true
+    }
+
     #[inline]
     fn cover(&mut self, x: u32, y: u32, _id: u32) {
         self.counts[y as usize * self.width as usize + x as usize] += 1;

@@ -368,7 +368,7 @@ impl PreparedScene {
                         kind: "triangle",
                         index: k,
                         id: id(k),
-                        plan: self.triangles.plan(k).cloned(),
+                        plan: self.triangles.plan(k),
                         unplanned: None,
                     });
                 }

@@ -22,8 +22,9 @@ use super::{point_f32, point_f64, Arithmetic, FloatType, IntegerTraversal, Model
 pub(crate) enum PreparedTriangles {
     /// Exact triangles (as written, or snapped and converted back) for the plain oracle.
     Exact(Vec<Triangle>),
-    /// The same exact triangles in compact form, each planned (`None`: it covers nothing).
-    Planned(Vec<CompactTriangle>, Vec<Option<PlannedTriangle>>),
+    /// The same exact triangles in compact form, each in its planned form, and the target
+    /// they were planned for.
+    Planned(Vec<CompactTriangle>, Vec<PlannedForm>, Target),
     /// Fixed-point triangles inside the envelope, for the block-traversal model.
     Fixed(Vec<FixedTriangle>),
     /// Fixed-point triangles for the scanline (edge-walking) model.
@@ -32,6 +33,53 @@ pub(crate) enum PreparedTriangles {
     F32(Vec<[Vec2; 3]>, FloatRule),
     /// f64 triangles and the float rule.
     F64(Vec<[DVec2; 3]>, FloatRule),
+}
+
+/// How the planned engine (`exact`, `exact-snapped`) draws one triangle: in the cheapest
+/// exact form it has.
+#[derive(Debug, Clone)]
+pub(crate) enum PlannedForm {
+    /// It covers nothing.
+    Empty,
+    /// Its vertices lie on the subpixel grid, inside the integer envelope: the integer
+    /// engine draws it ([`draw_fixed`]). Snapping leaves such a triangle as it is, and the
+    /// integer engines cover exactly the oracle's pixels of the snapped triangle, so
+    /// exactly the oracle's pixels of this one; 56 bytes instead of a plan and its lanes.
+    Grid(FixedTriangle),
+    /// Set up in its planned width.
+    Planned(Box<PlannedTriangle>),
+}
+
+impl PlannedForm {
+    /// `tri`'s form for `target`.
+    fn of(tri: &CompactTriangle, target: &Target) -> PlannedForm {
+        if let Some(fixed) = tri.on_grid(&target.convention) {
+            return PlannedForm::Grid(fixed);
+        }
+        match PlannedTriangle::from_compact(tri, target) {
+            Some(p) => PlannedForm::Planned(Box::new(p)),
+            None => PlannedForm::Empty,
+        }
+    }
+}
+
+/// An integer triangle drawn by the traversal that suits `sink`: the block traversal
+/// ([`fixed`]) for a sink that [prefers masks](CoverageSink::prefers_masks) and for a
+/// triangle within one block; otherwise one span per row, by edge walking ([`scanline`]),
+/// which a sink of spans takes fastest (the peer bench's medium triangles through a
+/// span-only sink: PLACEHOLDER). Both cover exactly the same pixels.
+#[inline]
+pub(crate) fn draw_fixed<S: CoverageSink + ?Sized>(t: &FixedTriangle, id: u32, target: &Target, sink: &mut S) {
+    if !sink.prefers_masks() {
+        let c = t.coords();
+        let side = |k: usize| c[0][k].max(c[1][k]).max(c[2][k]) - c[0][k].min(c[1][k]).min(c[2][k]);
+        // fewer than BLOCK samples a side when the box is narrower than BLOCK pixels
+        if side(0).max(side(1)) >= i64::from(fixed::BLOCK) << t.bits {
+            scanline::rasterize(t, id, target, sink);
+            return;
+        }
+    }
+    fixed::rasterize(t, id, target, sink);
 }
 
 /// Converts `triangles` for `model`; the first triangle it cannot take is the error.
@@ -52,8 +100,8 @@ pub(crate) fn prepare_triangles(
             if plain {
                 PreparedTriangles::Exact(exact.iter().map(CompactTriangle::to_triangle).collect())
             } else {
-                let planned = exact.iter().map(|t| PlannedTriangle::from_compact(t, target)).collect();
-                PreparedTriangles::Planned(exact, planned)
+                let planned = exact.iter().map(|t| PlannedForm::of(t, target)).collect();
+                PreparedTriangles::Planned(exact, planned, *target)
             }
         }
         Arithmetic::Integer(IntegerTraversal::Blocks) => PreparedTriangles::Fixed(fixed_triangles(triangles, conv)?),
@@ -120,9 +168,13 @@ impl Rows for Triangle {
     }
 }
 
-impl Rows for Option<PlannedTriangle> {
-    fn rows(&self, _: &Target) -> Option<(u32, u32)> {
-        Some(self.as_ref()?.rows())
+impl Rows for PlannedForm {
+    fn rows(&self, target: &Target) -> Option<(u32, u32)> {
+        match self {
+            PlannedForm::Empty => None,
+            PlannedForm::Grid(t) => t.rows(target),
+            PlannedForm::Planned(p) => Some(p.rows()),
+        }
     }
 }
 
@@ -164,16 +216,21 @@ impl PreparedTriangles {
     pub(crate) fn exact_triangles(&self) -> Option<Vec<Triangle>> {
         match self {
             PreparedTriangles::Exact(ts) => Some(ts.clone()),
-            PreparedTriangles::Planned(ts, _) => Some(ts.iter().map(CompactTriangle::to_triangle).collect()),
+            PreparedTriangles::Planned(ts, _, _) => Some(ts.iter().map(CompactTriangle::to_triangle).collect()),
             _ => None,
         }
     }
 
     /// Triangle `k`'s plan, for the planned engine (`None` otherwise, or when it covers
-    /// nothing).
-    pub(crate) fn plan(&self, k: usize) -> Option<&crate::num::plan::Plan> {
+    /// nothing): the planner's verdict on it, also for a triangle the integer engine draws
+    /// (set up again here).
+    pub(crate) fn plan(&self, k: usize) -> Option<crate::num::plan::Plan> {
         match self {
-            PreparedTriangles::Planned(_, ps) => ps[k].as_ref().map(PlannedTriangle::plan),
+            PreparedTriangles::Planned(ts, forms, target) => match &forms[k] {
+                PlannedForm::Empty => None,
+                PlannedForm::Grid(_) => PlannedTriangle::from_compact(&ts[k], target).map(|p| p.plan().clone()),
+                PlannedForm::Planned(p) => Some(p.plan().clone()),
+            },
             _ => None,
         }
     }
@@ -182,7 +239,7 @@ impl PreparedTriangles {
     pub(crate) fn len(&self) -> usize {
         match self {
             PreparedTriangles::Exact(ts) => ts.len(),
-            PreparedTriangles::Planned(ts, _) => ts.len(),
+            PreparedTriangles::Planned(ts, _, _) => ts.len(),
             PreparedTriangles::Fixed(ts) | PreparedTriangles::Scanline(ts) => ts.len(),
             PreparedTriangles::F32(ts, _) => ts.len(),
             PreparedTriangles::F64(ts, _) => ts.len(),
@@ -231,24 +288,18 @@ impl PreparedTriangles {
                 |t, id| exact::rasterize(t, id, target, sink),
                 &mut after,
             ),
-            PreparedTriangles::Planned(_, ts) => each(
+            PreparedTriangles::Planned(_, ts, _) => each(
                 ts,
                 target,
                 band,
-                |t, id| {
-                    if let Some(t) = t {
-                        t.rasterize(id, sink);
-                    }
+                |t, id| match t {
+                    PlannedForm::Empty => {}
+                    PlannedForm::Grid(t) => draw_fixed(t, id, target, sink),
+                    PlannedForm::Planned(t) => t.rasterize(id, sink),
                 },
                 &mut after,
             ),
-            PreparedTriangles::Fixed(ts) => each(
-                ts,
-                target,
-                band,
-                |t, id| fixed::rasterize(t, id, target, sink),
-                &mut after,
-            ),
+            PreparedTriangles::Fixed(ts) => each(ts, target, band, |t, id| draw_fixed(t, id, target, sink), &mut after),
             PreparedTriangles::Scanline(ts) => {
                 each(
                     ts,
@@ -285,7 +336,7 @@ impl PreparedTriangles {
     pub(crate) fn shade(&self, k: usize, colours: &[Rgb; 3], x: u32, y: u32, target: &Target) -> Rgb {
         match self {
             PreparedTriangles::Exact(ts) => shade_exact(&ts[k], colours, x, y, target),
-            PreparedTriangles::Planned(ts, _) => shade_exact(&ts[k].to_triangle(), colours, x, y, target),
+            PreparedTriangles::Planned(ts, _, _) => shade_exact(&ts[k].to_triangle(), colours, x, y, target),
             PreparedTriangles::Fixed(ts) | PreparedTriangles::Scanline(ts) => {
                 let b = barycentric_fixed(&ts[k], x, y, target);
                 if b.area2 == 0 {
@@ -313,7 +364,7 @@ impl PreparedTriangles {
             let Some(&top) = ids.last() else { continue };
             let k = top as usize;
             let rgb = match (colours.get(k).copied().flatten(), self) {
-                (Some(c), PreparedTriangles::Planned(ts, _)) if k < ts.len() => {
+                (Some(c), PreparedTriangles::Planned(ts, _, _)) if k < ts.len() => {
                     let t = match exact.take() {
                         Some((j, t)) if j == k => t,
                         _ => ts[k].to_triangle(),

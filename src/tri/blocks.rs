@@ -337,7 +337,21 @@ fn fill_rows<T: Lane, S: CoverageSink + ?Sized, const HALF: bool>(
     T::row_masks::<HALF>(origin, &e.step_y, ramp, w, h, |i, mask| {
         block |= u64::from(mask) << (i * 8);
     });
-    if block != 0 {
+    if block == 0 {
+        return;
+    }
+    if sink.prefers_masks() {
         sink.cover_block(y0, x0, block, id);
+    } else {
+        // pixel by pixel: a small triangle's rows are a few pixels each, and one loop over
+        // the block's bits costs a sink of spans less than a span per row (the peer bench's
+        // small triangles through a span-only sink, measured in one run: 5.05 ms pixel
+        // by pixel against 6.57 ms as spans)
+        let mut rest = block;
+        while rest != 0 {
+            let i = rest.trailing_zeros();
+            sink.cover(x0 + i % 8, y0 + i / 8, id);
+            rest &= rest - 1;
+        }
     }
 }
