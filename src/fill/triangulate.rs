@@ -1,30 +1,46 @@
 //! Polygon to triangles, on the snapped polygon: a fan for a convex polygon (Luebke),
 //! spade's constrained Delaunay triangulation for a simple concave polygon or one with
-//! holes. Self-intersecting input is refused with an error that names the two edges
+//! holes. Self-intersecting input is refused with an error that names two edges that meet
 //! (fill it with the scanline filler, [`crate::fill::polygon`], instead).
 //!
 //! Everything spade sees is validated first, exactly (i128 orientation tests): the
 //! polygon must be simple — no two edges meet except consecutive edges at their shared
 //! vertex, and those do not fold back onto each other — and every hole must lie inside
-//! the outline and outside the other holes. Coordinates are integers below 2^29 in
-//! magnitude, exact in f64 and well inside spade's coordinate limits. Which triangles are
-//! kept is decided exactly too (the centroid's winding number), not by spade.
+//! the outline and outside the other holes. spade never decides whether edges cross: it
+//! only triangulates what the validation proved simple. Coordinates are integers below
+//! 2^29 in magnitude, exact in f64 and well inside spade's coordinate limits. Which
+//! triangles are kept is decided exactly too, not by spade's geometry.
 //!
-//! The validation compares every pair of edges (O(n²)); polygons with more than
-//! [`MAX_TRIANGULATE_VERTICES`] vertices are refused rather than left to run long.
+//! Nothing is quadratic in the vertices; there is no vertex cap beyond memory (a scene
+//! holds at most `scene::parse::MAX_SCENE_VERTICES`):
+//! - simplicity: one plane sweep over the vertices (Shamos and Hoey, "Geometric
+//!   intersection problems", 1976, with Bentley and Ottmann's event order and vertical
+//!   segments, 1979; in `fill/sweep.rs`): the edges the sweep line cuts are kept in an
+//!   ordered set, ordered exactly, and only edges that become neighbours there are
+//!   compared, O(n log n) for n vertices. Its verdict is the pairwise check's (every pair
+//!   of edges, O(n²), kept in the tests as the reference and compared on random polygons
+//!   full of touching, overlapping and folded edges); the two edges it names meet at the
+//!   point it gives, found at the first vertex in (x, y) order where a problem shows,
+//!   which is not always the pair the pairwise check named first;
+//! - hole placement: the same sweep finds which contour directly encloses each contour
+//!   (the edge just below a contour's first vertex), which names the same misplaced hole,
+//!   and the same hole around it, as testing a vertex of each hole against every other
+//!   contour did;
+//! - the triangles kept: the triangulation's faces are walked from the outside across
+//!   their edges, and a face is inside when it lies across an odd number of the polygon's
+//!   edges from the outside (inside the outline and outside every hole), O(n); this keeps
+//!   exactly the triangles whose centroid has a non-zero winding number about the outline
+//!   and zero about every hole (the reference in the tests).
 
 use std::cmp::Ordering;
 use std::fmt;
 
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 
-use crate::edge::fixed::edge_function_wide;
+use crate::fill::sweep::{orient, sweep, Meeting};
 use crate::geom::{FixedPolygon, FixedTriangle};
 use crate::num::exact::{dyadic, exact_text};
 use crate::num::SubPixel;
-
-/// The most vertices (outline and holes together) [`triangulate`] accepts.
-pub const MAX_TRIANGULATE_VERTICES: usize = 8192;
 
 /// An edge of a polygon: contour 0 is the outline, contour `k` the hole `k - 1`; edge `i`
 /// runs from vertex `i` to vertex `i + 1` (the last back to vertex 0), after repeated
@@ -49,11 +65,6 @@ impl fmt::Display for EdgeRef {
 /// Why a polygon cannot be triangulated.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum TriangulateError {
-    /// More vertices than [`MAX_TRIANGULATE_VERTICES`].
-    TooManyVertices {
-        /// How many.
-        vertices: usize,
-    },
     /// Two edges cross, touch or overlap: the polygon is not simple.
     NotSimple {
         /// One edge.
@@ -85,10 +96,6 @@ pub enum TriangulateError {
 impl fmt::Display for TriangulateError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            TriangulateError::TooManyVertices { vertices } => write!(
-                f,
-                "{vertices} vertices, triangulation takes at most {MAX_TRIANGULATE_VERTICES} (fill it with the scanline model instead)"
-            ),
             TriangulateError::NotSimple {
                 first,
                 second,
@@ -168,10 +175,19 @@ pub fn validate(poly: &FixedPolygon) -> Result<(), TriangulateError> {
 }
 
 fn validate_contours(poly: &FixedPolygon) -> Result<Vec<Contour>, TriangulateError> {
-    let vertices: usize = poly.contours().iter().map(Vec::len).sum();
-    if vertices > MAX_TRIANGULATE_VERTICES {
-        return Err(TriangulateError::TooManyVertices { vertices });
+    let contours = prepare(poly);
+    if contours.is_empty() {
+        return Ok(contours);
     }
+    let slices: Vec<&[[i64; 2]]> = contours.iter().map(|c| c.points.as_slice()).collect();
+    let nesting = sweep(&slices).map_err(|m| not_simple(&contours, m, poly.bits))?;
+    check_holes(&contours, &nesting)?;
+    Ok(contours)
+}
+
+/// The contours that have area, repeated consecutive vertices merged (and a last vertex
+/// equal to the first dropped); none when the outline has no area.
+fn prepare(poly: &FixedPolygon) -> Vec<Contour> {
     let mut contours = Vec::new();
     for (index, c) in poly.contours().iter().enumerate() {
         let mut points: Vec<[i64; 2]> = Vec::with_capacity(c.len());
@@ -192,128 +208,55 @@ fn validate_contours(poly: &FixedPolygon) -> Result<Vec<Contour>, TriangulateErr
     }
     if contours.first().is_some_and(|c| c.index != 0) {
         // The outline has no area: the polygon (outline minus holes) covers nothing.
-        return Ok(Vec::new());
+        contours.clear();
     }
-    check_simple(&contours, poly.bits)?;
-    check_holes(&contours)?;
-    Ok(contours)
+    contours
 }
 
-/// `orient(a, b, c)`: twice the signed area of (a, b, c), in i128 (exact: coordinates
-/// are below 2^29, products below 2^61).
-fn orient(a: [i64; 2], b: [i64; 2], c: [i64; 2]) -> i128 {
-    // E_{a b}(c) = (c - a) x (b - a) = -((b - a) x (c - a))
-    -edge_function_wide(a.map(i128::from), b.map(i128::from), c.map(i128::from))
-}
-
-/// Whether `p`, known to be collinear with segment `a b`, lies on it (closed).
-fn on_segment(a: [i64; 2], b: [i64; 2], p: [i64; 2]) -> bool {
-    (0..2).all(|k| a[k].min(b[k]) <= p[k] && p[k] <= a[k].max(b[k]))
-}
-
-/// A point the closed segments `a b` and `c d` share, if any (an endpoint when they touch
-/// or overlap; for a proper crossing the rounded-down crossing point, for the message).
-fn meet(a: [i64; 2], b: [i64; 2], c: [i64; 2], d: [i64; 2]) -> Option<[i64; 2]> {
-    let (o1, o2, o3, o4) = (orient(a, b, c), orient(a, b, d), orient(c, d, a), orient(c, d, b));
-    for (o, p, s, t) in [(o1, c, a, b), (o2, d, a, b), (o3, a, c, d), (o4, b, c, d)] {
-        if o == 0 && on_segment(s, t, p) {
-            return Some(p);
-        }
-    }
-    let proper = o1.signum() * o2.signum() < 0 && o3.signum() * o4.signum() < 0;
-    proper.then(|| {
-        // a + t (b - a) with t = o3 / (o3 - o4), rounded down: for the message only.
-        [0, 1].map(|k| {
-            let v = i128::from(a[k]) + ((i128::from(b[k]) - i128::from(a[k])) * o3).div_euclid(o3 - o4);
-            i64::try_from(v).expect("between two envelope coordinates")
-        })
-    })
-}
-
-/// No two edges meet, except consecutive edges of a contour at their shared vertex (and
-/// those must not fold back along each other).
-fn check_simple(contours: &[Contour], bits: u32) -> Result<(), TriangulateError> {
-    let mut edges = Vec::new();
-    for c in contours {
-        let n = c.points.len();
-        for i in 0..n {
-            edges.push((
-                EdgeRef {
-                    contour: c.index,
-                    edge: i,
-                },
-                c.points[i],
-                c.points[(i + 1) % n],
-                n,
-            ));
-        }
-    }
-    for (x, &(ea, a, b, n)) in edges.iter().enumerate() {
-        for &(eb, c, d, _) in &edges[x + 1..] {
-            let adjacent = ea.contour == eb.contour && (eb.edge == ea.edge + 1 || (ea.edge == 0 && eb.edge == n - 1));
-            let problem = if adjacent {
-                // They share one vertex v; the other ends must not lie on the same ray from it.
-                let (v, p, q) = if b == c { (b, a, d) } else { (a, b, c) };
-                let folds = orient(v, p, q) == 0 && {
-                    let dot = (0..2)
-                        .map(|k| (i128::from(p[k]) - i128::from(v[k])) * (i128::from(q[k]) - i128::from(v[k])))
-                        .sum::<i128>();
-                    dot > 0
-                };
-                folds.then_some(v)
-            } else {
-                meet(a, b, c, d)
-            };
-            if let Some(at) = problem {
-                return Err(TriangulateError::NotSimple {
-                    first: ea,
-                    second: eb,
-                    at,
-                    bits,
-                });
-            }
-        }
-    }
-    Ok(())
-}
-
-/// The winding number of `p` (scaled by `scale`: the contour's coordinates are multiplied
-/// by it) around a contour, for a point on none of its edges; half-open crossing rule.
-fn winding(p: [i128; 2], contour: &[[i64; 2]], scale: i128) -> i64 {
-    let mut w = 0;
-    let n = contour.len();
-    for i in 0..n {
-        let (a, b) = (contour[i], contour[(i + 1) % n]);
-        let (a, b) = (a.map(|v| i128::from(v) * scale), b.map(|v| i128::from(v) * scale));
-        let e = edge_function_wide(a, b, p);
-        if a[1] <= p[1] && p[1] < b[1] && e < 0 {
-            w += 1;
-        } else if b[1] <= p[1] && p[1] < a[1] && e > 0 {
-            w -= 1;
-        }
-    }
-    w
-}
-
-/// Every hole inside the outline and outside the other holes. With no edges meeting, one
-/// vertex per hole decides.
-fn check_holes(contours: &[Contour]) -> Result<(), TriangulateError> {
-    let Some(outline) = contours.first() else {
-        return Ok(());
+/// The error for two edges that meet, the sweep's contour positions turned into indices.
+fn not_simple(contours: &[Contour], m: Meeting, bits: u32) -> TriangulateError {
+    let edge = |(c, edge): (usize, usize)| EdgeRef {
+        contour: contours[c].index,
+        edge,
     };
-    let wide = |p: [i64; 2]| p.map(i128::from);
-    for hole in &contours[1..] {
-        let p = wide(hole.points[0]);
-        if winding(p, &outline.points, 1) == 0 {
+    TriangulateError::NotSimple {
+        first: edge(m.first),
+        second: edge(m.second),
+        at: m.at,
+        bits,
+    }
+}
+
+/// Every hole inside the outline and outside the other holes, given each contour with the
+/// contour directly enclosing it, enclosers first (the sweep's answer; no two edges
+/// meet). A contour lies inside another exactly when that one encloses it, directly or
+/// not, so this names the same hole and the same other hole as testing one vertex of
+/// each hole against every other contour in order: the first misplaced hole, and the
+/// first hole enclosing it. O(contours).
+fn check_holes(contours: &[Contour], nesting: &[(usize, Option<usize>)]) -> Result<(), TriangulateError> {
+    // Per contour (by position): whether the outline (position 0) encloses it, and the
+    // first hole that does.
+    let mut in_outline = vec![false; contours.len()];
+    let mut first_hole: Vec<Option<usize>> = vec![None; contours.len()];
+    for &(c, parent) in nesting {
+        if let Some(p) = parent {
+            in_outline[c] = p == 0 || in_outline[p];
+            let hole = (p != 0).then_some(p);
+            first_hole[c] = match (hole, first_hole[p]) {
+                (Some(a), Some(b)) => Some(a.min(b)),
+                (a, b) => a.or(b),
+            };
+        }
+    }
+    for (k, hole) in contours.iter().enumerate().skip(1) {
+        if !in_outline[k] {
             return Err(TriangulateError::HoleOutside { hole: hole.index - 1 });
         }
-        for other in &contours[1..] {
-            if other.index != hole.index && winding(p, &other.points, 1) != 0 {
-                return Err(TriangulateError::HoleInHole {
-                    hole: hole.index - 1,
-                    other: other.index - 1,
-                });
-            }
+        if let Some(other) = first_hole[k] {
+            return Err(TriangulateError::HoleInHole {
+                hole: hole.index - 1,
+                other: contours[other].index - 1,
+            });
         }
     }
     Ok(())
@@ -336,19 +279,28 @@ fn fan(points: &[[i64; 2]]) -> Vec<[[i64; 2]; 3]> {
         .collect()
 }
 
-/// spade's CDT of the validated contours, keeping the triangles whose centroid is inside
-/// the outline and outside every hole.
-fn constrained_delaunay(contours: &[Contour]) -> Result<Vec<[[i64; 2]; 3]>, TriangulateError> {
+/// spade's CDT of validated contours, and the grid point of each of its vertices (by
+/// vertex index).
+type Cdt = ConstrainedDelaunayTriangulation<Point2<f64>>;
+
+fn build_cdt(contours: &[Contour]) -> Result<(Cdt, Vec<[i64; 2]>), TriangulateError> {
     #[allow(clippy::cast_precision_loss)] // |v| <= 2^29: exact in f64
     let to_f64 = |v: i64| v as f64;
-    let mut cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::new();
+    let mut cdt = Cdt::new();
+    let mut position = Vec::new();
     for c in contours {
-        let handles = c
-            .points
-            .iter()
-            .map(|p| cdt.insert(Point2::new(to_f64(p[0]), to_f64(p[1]))))
-            .collect::<Result<Vec<_>, _>>()
-            .map_err(|e| TriangulateError::Spade(format!("{e:?}")))?;
+        let mut handles = Vec::with_capacity(c.points.len());
+        for p in &c.points {
+            let h = cdt
+                .insert(Point2::new(to_f64(p[0]), to_f64(p[1])))
+                .map_err(|e| TriangulateError::Spade(format!("{e:?}")))?;
+            if h.index() != position.len() {
+                // Validated vertices are distinct: each insertion is a new vertex.
+                return Err(TriangulateError::Spade(format!("vertex {p:?} merged with another")));
+            }
+            position.push(*p);
+            handles.push(h);
+        }
         for i in 0..handles.len() {
             let (a, b) = (handles[i], handles[(i + 1) % handles.len()]);
             if cdt.try_add_constraint(a, b).is_empty() {
@@ -362,22 +314,456 @@ fn constrained_delaunay(contours: &[Contour]) -> Result<Vec<[[i64; 2]; 3]>, Tria
             }
         }
     }
-    #[allow(clippy::cast_possible_truncation)] // positions came from i64 below 2^29
-    let to_i64 = |v: f64| v as i64;
-    let mut out = Vec::new();
-    for face in cdt.inner_faces() {
-        let v = face.vertices().map(|h| {
-            let p = h.position();
-            [to_i64(p.x), to_i64(p.y)]
-        });
-        // 3 x centroid, against the contours scaled by 3: exact, and never on an edge
-        // (the polygon's edges are edges of the triangulation).
-        let c3 = [0, 1].map(|k| v.iter().map(|p| i128::from(p[k])).sum::<i128>());
-        let inside =
-            winding(c3, &contours[0].points, 3) != 0 && contours[1..].iter().all(|h| winding(c3, &h.points, 3) == 0);
-        if inside {
-            out.push(v);
+    Ok((cdt, position))
+}
+
+/// spade's CDT of the validated contours, keeping the triangles inside the outline and
+/// outside every hole.
+fn constrained_delaunay(contours: &[Contour]) -> Result<Vec<[[i64; 2]; 3]>, TriangulateError> {
+    let (cdt, position) = build_cdt(contours)?;
+    let inside = inside_faces(&cdt);
+    Ok(cdt
+        .inner_faces()
+        .filter(|f| inside[f.fix().index()])
+        .map(|f| f.vertices().map(|h| position[h.fix().index()]))
+        .collect())
+}
+
+/// Which faces of the CDT (by face index) lie inside the polygon: the faces are walked
+/// from the outer face across their edges, and a face is inside when an odd number of
+/// constraint edges (the polygon's edges) separate it from the outer face. The contours
+/// are simple, disjoint closed curves with every hole inside the outline and outside the
+/// other holes, so an odd count is exactly inside the outline and outside every hole (the
+/// count does not depend on the path). Linear in the faces.
+fn inside_faces(cdt: &Cdt) -> Vec<bool> {
+    let mut inside: Vec<Option<bool>> = vec![None; cdt.num_all_faces()];
+    let mut stack = Vec::new();
+    for e in cdt.convex_hull() {
+        let e = if e.face().is_outer() { e.rev() } else { e };
+        if let Some(face) = e.face().as_inner() {
+            let slot = &mut inside[face.fix().index()];
+            if slot.is_none() {
+                *slot = Some(e.is_constraint_edge());
+                stack.push(face);
+            }
         }
     }
-    Ok(out)
+    while let Some(face) = stack.pop() {
+        let here = inside[face.fix().index()] == Some(true);
+        for e in face.adjacent_edges() {
+            if let Some(next) = e.rev().face().as_inner() {
+                let slot = &mut inside[next.fix().index()];
+                if slot.is_none() {
+                    *slot = Some(here != e.is_constraint_edge());
+                    stack.push(next);
+                }
+            }
+        }
+    }
+    inside.into_iter().map(|k| k == Some(true)).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::edge::fixed::edge_function_wide;
+    use crate::fill::sweep::{meet, pair_problem};
+    use crate::geom::FillRule;
+    use proptest::prelude::*;
+    use proptest::test_runner::{Config, FileFailurePersistence};
+
+    /// The pairwise check the sweep replaced, as it was: every pair of edges, in order,
+    /// the first pair that meets (the reference for the sweep's verdict).
+    fn check_simple_pairwise(contours: &[Contour], bits: u32) -> Result<(), TriangulateError> {
+        let mut edges = Vec::new();
+        for c in contours {
+            let n = c.points.len();
+            for i in 0..n {
+                edges.push((
+                    EdgeRef {
+                        contour: c.index,
+                        edge: i,
+                    },
+                    c.points[i],
+                    c.points[(i + 1) % n],
+                    n,
+                ));
+            }
+        }
+        for (x, &(ea, a, b, n)) in edges.iter().enumerate() {
+            for &(eb, c, d, _) in &edges[x + 1..] {
+                let adjacent =
+                    ea.contour == eb.contour && (eb.edge == ea.edge + 1 || (ea.edge == 0 && eb.edge == n - 1));
+                let problem = if adjacent {
+                    // They share one vertex v; the other ends must not lie on the same ray from it.
+                    let (v, p, q) = if b == c { (b, a, d) } else { (a, b, c) };
+                    let folds = orient(v, p, q) == 0 && {
+                        let dot = (0..2)
+                            .map(|k| (i128::from(p[k]) - i128::from(v[k])) * (i128::from(q[k]) - i128::from(v[k])))
+                            .sum::<i128>();
+                        dot > 0
+                    };
+                    folds.then_some(v)
+                } else {
+                    meet(a, b, c, d)
+                };
+                if let Some(at) = problem {
+                    return Err(TriangulateError::NotSimple {
+                        first: ea,
+                        second: eb,
+                        at,
+                        bits,
+                    });
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The winding number of `p` (scaled by `scale`: the contour's coordinates are
+    /// multiplied by it) around a contour, for a point on none of its edges; half-open
+    /// crossing rule.
+    fn winding(p: [i128; 2], contour: &[[i64; 2]], scale: i128) -> i64 {
+        let mut w = 0;
+        let n = contour.len();
+        for i in 0..n {
+            let (a, b) = (contour[i], contour[(i + 1) % n]);
+            let (a, b) = (a.map(|v| i128::from(v) * scale), b.map(|v| i128::from(v) * scale));
+            let e = edge_function_wide(a, b, p);
+            if a[1] <= p[1] && p[1] < b[1] && e < 0 {
+                w += 1;
+            } else if b[1] <= p[1] && p[1] < a[1] && e > 0 {
+                w -= 1;
+            }
+        }
+        w
+    }
+
+    /// The hole placement the nesting replaced, as it was: one vertex per hole against
+    /// the outline and every other hole (the reference).
+    fn check_holes_winding(contours: &[Contour]) -> Result<(), TriangulateError> {
+        let Some(outline) = contours.first() else {
+            return Ok(());
+        };
+        let wide = |p: [i64; 2]| p.map(i128::from);
+        for hole in &contours[1..] {
+            let p = wide(hole.points[0]);
+            if winding(p, &outline.points, 1) == 0 {
+                return Err(TriangulateError::HoleOutside { hole: hole.index - 1 });
+            }
+            for other in &contours[1..] {
+                if other.index != hole.index && winding(p, &other.points, 1) != 0 {
+                    return Err(TriangulateError::HoleInHole {
+                        hole: hole.index - 1,
+                        other: other.index - 1,
+                    });
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The faces the centroid's winding number keeps, as it was (the reference for
+    /// [`inside_faces`]): 3 x the centroid against the contours scaled by 3, exact and
+    /// never on an edge (the polygon's edges are edges of the triangulation).
+    fn inside_by_winding(cdt: &Cdt, position: &[[i64; 2]], contours: &[Contour]) -> Vec<bool> {
+        let mut inside = vec![false; cdt.num_all_faces()];
+        for face in cdt.inner_faces() {
+            let v = face.vertices().map(|h| position[h.fix().index()]);
+            let c3 = [0, 1].map(|k| v.iter().map(|p| i128::from(p[k])).sum::<i128>());
+            inside[face.fix().index()] = winding(c3, &contours[0].points, 3) != 0
+                && contours[1..].iter().all(|h| winding(c3, &h.points, 3) == 0);
+        }
+        inside
+    }
+
+    fn config(min_cases: u32) -> Config {
+        let default = Config::default();
+        Config {
+            cases: default.cases.max(min_cases),
+            failure_persistence: Some(Box::new(FileFailurePersistence::Direct(
+                "proptest-regressions/triangulate.txt",
+            ))),
+            ..default
+        }
+    }
+
+    /// Points sorted by angle around `centre` (exactly: half-plane, then cross product,
+    /// then distance): a star-shaped contour, often simple, on a small grid often
+    /// degenerate (collinear with the centre, repeated points).
+    fn star(centre: [i64; 2], mut points: Vec<[i64; 2]>) -> Vec<[i64; 2]> {
+        let d = |p: [i64; 2]| [p[0] - centre[0], p[1] - centre[1]];
+        let half = |v: [i64; 2]| v[1] < 0 || (v[1] == 0 && v[0] < 0);
+        points.sort_by(|&p, &q| {
+            let (u, v) = (d(p), d(q));
+            half(u)
+                .cmp(&half(v))
+                .then_with(|| 0.cmp(&(i128::from(u[0]) * i128::from(v[1]) - i128::from(u[1]) * i128::from(v[0]))))
+                .then_with(|| (u[0] * u[0] + u[1] * u[1]).cmp(&(v[0] * v[0] + v[1] * v[1])))
+        });
+        points
+    }
+
+    /// A contour in the box `origin + [0, size]^2` of the grid: random points in random
+    /// order (usually tangled), or sorted around a point of the box (usually simple or
+    /// nearly), sometimes reversed.
+    fn contour(origin: [i64; 2], size: i64, max: usize) -> BoxedStrategy<Vec<[i64; 2]>> {
+        let at = move |p: [i64; 2]| [origin[0] + p[0], origin[1] + p[1]];
+        let points = prop::collection::vec(prop::array::uniform2(0..=size), 3..=max)
+            .prop_map(move |p| p.into_iter().map(at).collect::<Vec<_>>());
+        prop_oneof![
+            1 => points.clone(),
+            3 => (points, prop::array::uniform2(0..=size), any::<bool>()).prop_map(move |(p, c, rev)| {
+                let mut s = star(at(c), p);
+                if rev {
+                    s.reverse();
+                }
+                s
+            }),
+        ]
+        .boxed()
+    }
+
+    /// The square `[lo, hi]^2` with 0 to 8 more vertices on its sides.
+    fn framed_square(lo: i64, hi: i64) -> impl Strategy<Value = Vec<[i64; 2]>> {
+        let on_side = (0..4usize, lo..=hi).prop_map(move |(k, t)| match k {
+            0 => [t, lo],
+            1 => [hi, t],
+            2 => [t, hi],
+            _ => [lo, t],
+        });
+        prop::collection::vec(on_side, 0..=8).prop_map(move |mut p| {
+            p.extend([[lo, lo], [hi, lo], [hi, hi], [lo, hi]]);
+            star([(lo + hi) / 2, (lo + hi) / 2], p)
+        })
+    }
+
+    /// A hole: a contour of 3 to `max` vertices in a box of side 1 to `side / 2` anywhere
+    /// on the grid `0..=side`.
+    fn hole(side: i64, max: usize) -> BoxedStrategy<Vec<[i64; 2]>> {
+        (prop::array::uniform2(0..=side), 1..=(side / 2).max(1))
+            .prop_flat_map(move |(origin, size)| contour(origin, size, max))
+            .boxed()
+    }
+
+    /// Polygons on small grids (coordinates 0..=6, or 0..=3 where almost everything
+    /// touches, or 0..=12), up to 4 contours of 3 to 20 vertices: an outline over the grid
+    /// (tangled or star-shaped) with 0 to 3 holes, or the grid's square (with extra
+    /// vertices on its sides) with 1 to 3 holes, the holes in smaller boxes anywhere on
+    /// the grid (inside, across the outline, in or around each other), or squares and
+    /// stars in nested boxes; and, a quarter of the time, up to 80 vertices on 0..=24 with
+    /// up to 5 holes. Touching edges, collinear overlaps, vertices on edges, vertical
+    /// edges, folds, repeated vertices, holes touching the outline or each other, all the
+    /// time.
+    fn small_grid_polygon() -> impl Strategy<Value = FixedPolygon> {
+        let tangled = prop_oneof![Just(3i64), Just(6i64), Just(6i64), Just(12i64)]
+            .prop_flat_map(|side| (contour([0, 0], side, 20), prop::collection::vec(hole(side, 8), 0..=3)));
+        let framed = prop_oneof![Just(6i64), Just(12i64)]
+            .prop_flat_map(|side| (framed_square(0, side), prop::collection::vec(hole(side, 6), 1..=3)));
+        // Squares (or stars) in boxes of random margins, in random order: nested, equal
+        // (touching), shifted (crossing); the outline need not be the largest.
+        let nested = prop::collection::vec((0i64..=5, -1i64..=1, any::<bool>()), 2..=4)
+            .prop_flat_map(|boxes| {
+                boxes
+                    .into_iter()
+                    .map(|(m, shift, plain)| {
+                        let (lo, hi) = (m + shift, 12 - m + shift);
+                        if plain {
+                            framed_square(lo, hi).boxed()
+                        } else {
+                            contour([lo, lo], hi - lo, 12)
+                        }
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .prop_map(|mut contours| {
+                let holes = contours.split_off(1);
+                (contours.remove(0), holes)
+            });
+        // Larger: up to 80 vertices on 0..=24 and 5 holes, many edges active at once.
+        let large = (contour([0, 0], 24, 80), prop::collection::vec(hole(24, 12), 0..=5));
+        prop_oneof![tangled, framed, nested, large].prop_map(|(outline, holes)| {
+            let mut contours = vec![outline];
+            contours.extend(holes);
+            FixedPolygon::new(contours, FillRule::NonZero, 4).unwrap()
+        })
+    }
+
+    proptest! {
+        #![proptest_config(config(4096))]
+
+        /// The sweep gives the pairwise check's verdict on every polygon: simple or not,
+        /// and when not, names two edges (first before second) that do meet at the point
+        /// it gives; on simple polygons the nesting places the holes exactly as the
+        /// winding test of one vertex per hole did (same error, same hole, same other).
+        #[test]
+        fn sweep_agrees_with_the_pairwise_check(poly in small_grid_polygon()) {
+            let contours = prepare(&poly);
+            if contours.is_empty() {
+                return Ok(()); // the outline has no area: nothing to check
+            }
+            let reference = check_simple_pairwise(&contours, poly.bits);
+            let slices: Vec<&[[i64; 2]]> = contours.iter().map(|c| c.points.as_slice()).collect();
+            match (sweep(&slices), &reference) {
+                (Ok(nesting), Ok(())) => {
+                    prop_assert_eq!(nesting.len(), contours.len());
+                    prop_assert_eq!(check_holes(&contours, &nesting), check_holes_winding(&contours));
+                }
+                (Err(m), Err(_)) => {
+                    prop_assert!(m.first < m.second, "{:?}", m);
+                    prop_assert_eq!(pair_problem(&slices, m.first, m.second), Some(m.at));
+                }
+                (sweep, reference) => prop_assert!(false, "sweep {:?}, pairwise {:?}", sweep, reference),
+            }
+            // The same polygon scaled by 2^25 and moved to reach -2^28 (within the envelope
+            // |v| <= 2^29): the same verdict and the same pair, exactly.
+            let far: Vec<Vec<[i64; 2]>> = contours
+                .iter()
+                .map(|c| c.points.iter().map(|p| p.map(|v| v * (1 << 25) - (1 << 28))).collect())
+                .collect();
+            let far_slices: Vec<&[[i64; 2]]> = far.iter().map(Vec::as_slice).collect();
+            let (near, far) = (sweep(&slices), sweep(&far_slices));
+            prop_assert_eq!(near.as_ref().err().map(|m| (m.first, m.second)), far.as_ref().err().map(|m| (m.first, m.second)));
+            prop_assert_eq!(near.ok(), far.ok());
+        }
+    }
+
+    /// The vertices of a star-shaped contour about the origin, before sorting: 3..=`max`
+    /// points at Chebyshev distance `inner..=outer` from it (0 and the direction's own
+    /// length allowed when `inner` is 0).
+    fn star_points(max: usize, inner: i64, outer: i64) -> impl Strategy<Value = Vec<[i64; 2]>> {
+        let point = (prop::array::uniform2(-outer..=outer), inner..=outer).prop_map(move |(d, r)| {
+            let len = d[0].abs().max(d[1].abs());
+            if len == 0 || inner == 0 {
+                d
+            } else {
+                d.map(|v| v * r / len)
+            }
+        });
+        prop::collection::vec(point, 3..=max)
+    }
+
+    proptest! {
+        #![proptest_config(config(1024))]
+
+        /// On valid polygons with holes (a star-shaped outline, often concave, and as many
+        /// small star-shaped holes near its centre as fit), the faces kept by counting constraint
+        /// crossings from the outside are exactly those whose centroid the winding test
+        /// keeps.
+        #[test]
+        fn crossing_parity_keeps_the_faces_the_winding_test_keeps(
+            centre in prop::array::uniform2(20i64..=28),
+            outline in star_points(24, 12, 20),
+            holes in prop::collection::vec((prop::array::uniform2(-10i64..=10), star_points(8, 0, 4)), 0..=8),
+        ) {
+            let shift = |c: [i64; 2], p: Vec<[i64; 2]>| p.into_iter().map(|q| [c[0] + q[0], c[1] + q[1]]).collect();
+            let mut contours = vec![star(centre, shift(centre, outline))];
+            for (c, h) in holes {
+                let c = [centre[0] + c[0], centre[1] + c[1]];
+                contours.push(star(c, shift(c, h)));
+                let poly = FixedPolygon::new(contours.clone(), FillRule::NonZero, 4).unwrap();
+                let prepared = prepare(&poly);
+                let valid = prepared.len() == contours.len()
+                    && check_simple_pairwise(&prepared, 4).is_ok()
+                    && check_holes_winding(&prepared).is_ok();
+                if !valid {
+                    contours.pop();
+                }
+            }
+            let poly = FixedPolygon::new(contours, FillRule::NonZero, 4).unwrap();
+            let prepared = prepare(&poly);
+            if prepared.is_empty() || check_simple_pairwise(&prepared, 4).is_err() {
+                return Ok(()); // the outline folded on the grid
+            }
+            prop_assert!(validate(&poly).is_ok());
+            let (cdt, position) = build_cdt(&prepared).unwrap();
+            prop_assert_eq!(inside_faces(&cdt), inside_by_winding(&cdt, &position, &prepared));
+        }
+    }
+
+    fn poly(contours: Vec<Vec<[i64; 2]>>) -> FixedPolygon {
+        FixedPolygon::new(contours, FillRule::NonZero, 8).unwrap()
+    }
+
+    /// What the sweep names on the classic cases: a pair that meets, found at the first
+    /// event where a problem shows; on the bow tie and the spike the pair the pairwise
+    /// check named, on the figure eight and the vertex on an edge another (edges 0 and 4,
+    /// or 0 and 3, converge on the point they share and become neighbours in the sweep at
+    /// (0, 8), before the sweep reaches the edge the pairwise check named).
+    #[test]
+    fn the_sweep_names_a_meeting_pair() {
+        let e = |edge: usize| EdgeRef { contour: 0, edge };
+        let h = |edge: usize| EdgeRef { contour: 1, edge };
+        let cases = [
+            (vec![vec![[0, 0], [8, 8], [8, 0], [0, 8]]], (e(0), e(2), [4, 4])),
+            (
+                vec![vec![[0, 0], [4, 4], [8, 0], [8, 8], [4, 4], [0, 8]]],
+                (e(0), e(4), [4, 4]),
+            ),
+            (vec![vec![[0, 0], [8, 0], [4, 0], [4, 8]]], (e(0), e(1), [8, 0])),
+            (vec![vec![[0, 0], [8, 0], [8, 8], [4, 0], [0, 8]]], (e(0), e(3), [4, 0])),
+            (
+                vec![
+                    vec![[0, 0], [100, 0], [100, 100], [0, 100]],
+                    vec![[90, 50], [120, 50], [90, 80]],
+                ],
+                (e(1), h(0), [100, 50]),
+            ),
+        ];
+        for (c, (first, second, at)) in cases {
+            let p = poly(c);
+            assert_eq!(
+                validate(&p),
+                Err(TriangulateError::NotSimple {
+                    first,
+                    second,
+                    at,
+                    bits: 8
+                }),
+                "{p:?}"
+            );
+            assert!(check_simple_pairwise(&prepare(&p), 8).is_err());
+        }
+    }
+
+    /// Holes nested and misplaced: the same error as the winding test of one vertex per
+    /// hole, in order.
+    #[test]
+    fn holes_are_placed_as_the_winding_test_placed_them() {
+        let square = |a: i64, b: i64| vec![[a, a], [b, a], [b, b], [a, b]];
+        let cases = [
+            (
+                vec![square(0, 100), square(200, 210)],
+                TriangulateError::HoleOutside { hole: 0 },
+            ),
+            (
+                vec![square(0, 100), square(10, 60), square(20, 30)],
+                TriangulateError::HoleInHole { hole: 1, other: 0 },
+            ),
+            (
+                vec![square(0, 100), square(20, 30), square(10, 60)],
+                TriangulateError::HoleInHole { hole: 0, other: 1 },
+            ),
+            // The outline inside a hole: that hole is outside the outline, and a hole
+            // inside the outline is inside that hole too.
+            (
+                vec![square(10, 60), square(0, 100), square(20, 30)],
+                TriangulateError::HoleOutside { hole: 0 },
+            ),
+            (
+                vec![square(10, 60), square(20, 30), square(0, 100)],
+                TriangulateError::HoleInHole { hole: 0, other: 1 },
+            ),
+            // Three deep: the innermost is named with the first hole enclosing it.
+            (
+                vec![square(0, 100), square(40, 50), square(20, 70), square(10, 80)],
+                TriangulateError::HoleInHole { hole: 0, other: 1 },
+            ),
+        ];
+        for (c, expected) in cases {
+            let p = poly(c);
+            assert_eq!(validate(&p), Err(expected.clone()), "{p:?}");
+            assert_eq!(check_holes_winding(&prepare(&p)), Err(expected));
+        }
+    }
 }
