@@ -482,4 +482,30 @@ mod tests {
         let (vertex, axis, _) = t.snapped(&Convention::default()).to_fixed().unwrap_err();
         assert_eq!((vertex, axis), (1, 'x'));
     }
+
+    /// A triangle is on the grid when snapping leaves every coordinate as it is: at 8
+    /// bits, 3/4 px is 192 subpixels, -5/2 px is -640, 1/256 px is 1; 1/512 px and 1/3 px
+    /// are not on it, nor is 2^21 px + 1/256 (one subpixel beyond the envelope's 2^29), and
+    /// a triangle on it is the snapped triangle.
+    #[test]
+    fn a_triangle_on_the_grid_is_its_snapped_self() {
+        let conv = Preset::Cts.convention();
+        let tri = |x: (i64, i64), y: (i64, i64)| {
+            CompactTriangle::from(Triangle::new(
+                Point::from_fractions(x.0, x.1, y.0, y.1),
+                Point::from_ints(0, 0),
+                Point::from_ints(1, 0),
+            ))
+        };
+        let at = |t: CompactTriangle| t.on_grid(&conv).map(|f| f.coords()[0]);
+        assert_eq!(at(tri((3, 4), (-5, 2))), Some([192, -640]));
+        assert_eq!(at(tri((1, 256), (0, 1))), Some([1, 0]));
+        assert_eq!(at(tri((1, 512), (0, 1))), None);
+        assert_eq!(at(tri((0, 1), (1, 3))), None);
+        let far = (1i64 << 21) * 256;
+        assert_eq!(at(tri((far, 256), (0, 1))), Some([1 << 29, 0]));
+        assert_eq!(at(tri((far + 1, 256), (0, 1))), None);
+        let t = tri((-7, 8), (33, 16));
+        assert_eq!(t.on_grid(&conv), t.to_fixed(&conv).ok());
+    }
 }

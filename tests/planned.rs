@@ -246,7 +246,10 @@ proptest! {
 /// masks. Counted by hand: the right triangle (0,0) (40,0) (0,40) at pixel centres covers
 /// row `y` from 0 to `38 - y` (the hypotenuse's samples `x + y = 39` are outside under
 /// top-left: the interior lies above it and to its left) for `y` 0..=38; the one at
-/// (0,0) (4,0) (0,4), within one block, covers `x + y <= 2`: 3 + 2 + 1 = 6 pixels.
+/// (0,0) (4,0) (0,4), within one block, covers `x + y <= 2`: 3 + 2 + 1 = 6 pixels; the
+/// tall one (0,0) (4,0) (0,40), four pixels wide but more than a block tall, covers
+/// `10 (x + 1/2) + (y + 1/2) <= 40`, so row `y` from 0 to `(34 - y) / 10` for `y` 0..=34
+/// (no sample lies on its long edge).
 #[test]
 fn a_sink_gets_the_calls_that_suit_it() {
     let target = Target::new(64, 64, Preset::Cts.convention()).unwrap();
@@ -263,6 +266,13 @@ fn a_sink_gets_the_calls_that_suit_it() {
         assert_eq!((large.pixels, large.masks, large.spans), (0, 0, rows), "{model:?}");
         let small = calls(right(4));
         assert_eq!((small.pixels, small.masks, small.spans.len()), (6, 0, 0), "{model:?}");
+        let tall = calls(Triangle::new(
+            Point::from_ints(0, 0),
+            Point::from_ints(4, 0),
+            Point::from_ints(0, 40),
+        ));
+        let rows: Vec<(u32, u32, u32)> = (0..=34).map(|y| (y, 0, (34 - y) / 10)).collect();
+        assert_eq!((tall.pixels, tall.masks, tall.spans), (0, 0, rows), "{model:?}");
     }
 }
 

@@ -42,7 +42,7 @@ pub(crate) enum PlannedForm {
     /// It covers nothing.
     Empty,
     /// Its vertices lie on the subpixel grid, inside the integer envelope: the integer
-    /// engine draws it ([`draw_fixed`]). Snapping leaves such a triangle as it is, and the
+    /// engine draws it ([`fixed::rasterize`]). Snapping leaves such a triangle as it is, and the
     /// integer engines cover exactly the oracle's pixels of the snapped triangle, so
     /// exactly the oracle's pixels of this one; 56 bytes instead of a plan and its lanes.
     Grid(FixedTriangle),
@@ -61,25 +61,6 @@ impl PlannedForm {
             None => PlannedForm::Empty,
         }
     }
-}
-
-/// An integer triangle drawn by the traversal that suits `sink`: the block traversal
-/// ([`fixed`]) for a sink that [prefers masks](CoverageSink::prefers_masks) and for a
-/// triangle within one block; otherwise one span per row, by edge walking ([`scanline`]),
-/// which a sink of spans takes fastest (the peer bench's medium triangles through a
-/// span-only sink: PLACEHOLDER). Both cover exactly the same pixels.
-#[inline]
-pub(crate) fn draw_fixed<S: CoverageSink + ?Sized>(t: &FixedTriangle, id: u32, target: &Target, sink: &mut S) {
-    if !sink.prefers_masks() {
-        let c = t.coords();
-        let side = |k: usize| c[0][k].max(c[1][k]).max(c[2][k]) - c[0][k].min(c[1][k]).min(c[2][k]);
-        // fewer than BLOCK samples a side when the box is narrower than BLOCK pixels
-        if side(0).max(side(1)) >= i64::from(fixed::BLOCK) << t.bits {
-            scanline::rasterize(t, id, target, sink);
-            return;
-        }
-    }
-    fixed::rasterize(t, id, target, sink);
 }
 
 /// Converts `triangles` for `model`; the first triangle it cannot take is the error.
@@ -294,12 +275,18 @@ impl PreparedTriangles {
                 band,
                 |t, id| match t {
                     PlannedForm::Empty => {}
-                    PlannedForm::Grid(t) => draw_fixed(t, id, target, sink),
+                    PlannedForm::Grid(t) => fixed::rasterize(t, id, target, sink),
                     PlannedForm::Planned(t) => t.rasterize(id, sink),
                 },
                 &mut after,
             ),
-            PreparedTriangles::Fixed(ts) => each(ts, target, band, |t, id| draw_fixed(t, id, target, sink), &mut after),
+            PreparedTriangles::Fixed(ts) => each(
+                ts,
+                target,
+                band,
+                |t, id| fixed::rasterize(t, id, target, sink),
+                &mut after,
+            ),
             PreparedTriangles::Scanline(ts) => {
                 each(
                     ts,

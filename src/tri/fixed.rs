@@ -8,6 +8,12 @@
 //! masks written at once ([`CoverageSink::cover_block`]). Block origins are stepped by
 //! addition.
 //!
+//! Traversal, per triangle and sink: blocks and their masks for a sink that
+//! [prefers masks](CoverageSink::prefers_masks); for a sink of pixels and spans (the
+//! default), a triangle within one block is written pixel by pixel from its masks, and a
+//! larger one as one span per row by edge walking ([`crate::tri::scanline`], the same
+//! pixels), which such a sink takes fastest.
+//!
 //! Width, per triangle: i32 when a bound computed from the setup shows every value of
 //! the traversal fits (eight lanes per SIMD test; most triangles of a canvas-sized scene),
 //! else i64, where the envelope of [`crate::num::fixed`] guarantees no value can overflow
@@ -15,13 +21,13 @@
 
 use crate::convention::{Target, TieRule};
 use crate::coverage::CoverageSink;
-use crate::edge::fixed::{triangle_edges, FixedEdge};
 use crate::geom::FixedTriangle;
 use crate::num::lane::Lane;
-use crate::raster::{fixed_sample_range, FixedGrid, PixelRange};
+use crate::raster::{FixedGrid, PixelRange};
 
 pub use super::blocks::BLOCK;
 use super::blocks::{traverse, Edges};
+use super::scanline;
 
 /// Covers every pixel whose sample is inside `tri` (already snapped, inside the envelope).
 /// Equal, pixel for pixel, to [`crate::tri::exact::rasterize`] on the same snapped triangle.
@@ -45,6 +51,13 @@ use super::blocks::{traverse, Edges};
 #[inline]
 pub fn rasterize<S: CoverageSink + ?Sized>(tri: &FixedTriangle, id: u32, target: &Target, sink: &mut S) {
     if let Some((lanes, range, span)) = edges_at_first_sample(tri, target) {
+        if !sink.prefers_masks() && (range.x1 - range.x0 >= BLOCK || range.y1 - range.y0 >= BLOCK) {
+            // A sink of spans, a triangle larger than a block: one span per row, walked
+            // along the edges (the peer bench through a span-only sink, one run: medium
+            // triangles 3.73 ms against 6.28 ms by blocks, masks turned into spans).
+            scanline::rasterize(tri, id, target, sink);
+            return;
+        }
         // The planned engine's block traversal: in i32 when this triangle's values fit
         // (eight pixels per SIMD row test instead of four), else in i64, where every value
         // it reaches is an edge value at a sample of the range or a multiple of a step by
@@ -101,8 +114,8 @@ fn narrowed(lanes: &Edges<i64>, span: i64) -> Option<Edges<i32>> {
 /// oriented edges' values `E - bias` at the first sample of the pixel range, their steps
 /// one pixel right (`dY * 2^S`) and down (`-dX * 2^S`), the range, and the larger side
 /// of the bounding box in subpixels; `None` when the triangle covers nothing (zero area,
-/// or off the canvas). The same values as [`triangle_edges`] and [`fixed_sample_range`]
-/// give (`setup` below, which `scanline` uses), computed with shifts by `S` instead of
+/// or off the canvas). The same values as `triangle_edges` and `fixed_sample_range` give
+/// (the setup [`crate::tri::scanline`] runs on), computed with shifts by `S` instead of
 /// divisions (the grid's `first_at_or_after` and `last_at_or_before`). Written out rather than
 /// built on `setup`: with `setup`'s helpers made `#[inline]` and this calling them, the
 /// peer bench's workload (b) ran 15-20 % slower (3 runs each, back to back: 18.4-18.7 ms
@@ -168,37 +181,6 @@ fn edges_at_first_sample(tri: &FixedTriangle, target: &Target) -> Option<(Edges<
         lanes.step_y[k] = sub(0, dx << shift);
     }
     Some((lanes, range, span))
-}
-
-/// The per-triangle setup shared by the integer rasterizers.
-pub(crate) struct FixedSetup {
-    /// The oriented edges with their tie-rule biases.
-    pub edges: [FixedEdge; 3],
-    /// The sample grid in subpixels.
-    pub grid: FixedGrid,
-    /// The pixels whose sample lies in the bounding box, on the canvas.
-    pub range: PixelRange,
-}
-
-/// Orients `tri` and finds its pixel range; `None` when it covers nothing (zero area, or
-/// off the canvas).
-///
-/// # Panics
-/// When `tri` was snapped to another grid than `target`'s subpixel bits.
-#[inline]
-pub(crate) fn setup(tri: &FixedTriangle, target: &Target) -> Option<FixedSetup> {
-    let conv = &target.convention;
-    assert_eq!(
-        tri.bits, conv.subpixel_bits,
-        "triangle snapped to another grid than the target's"
-    );
-    let edges = triangle_edges(tri, conv.tie_rule)?;
-    let range = fixed_sample_range(tri.coords().into_iter(), target)?;
-    Some(FixedSetup {
-        edges,
-        grid: FixedGrid::of(conv),
-        range,
-    })
 }
 
 #[cfg(test)]

@@ -18,11 +18,12 @@
 
 use crate::convention::Target;
 use crate::coverage::CoverageSink;
+use crate::edge::fixed::triangle_edges;
 use crate::edge::fixed::FixedEdge;
 use crate::geom::FixedTriangle;
 use crate::num::dda::CeilDda64;
 use crate::raster::FixedGrid;
-use crate::tri::fixed::{setup, FixedSetup};
+use crate::raster::{fixed_sample_range, PixelRange};
 
 /// The magnitude every value of a walk stays below: [`CeilDda64`]'s envelope.
 const WALK_LIMIT: u64 = 1 << 62;
@@ -167,6 +168,37 @@ fn spans<const L: usize, const R: usize, S: CoverageSink + ?Sized>(
             b.step();
         }
     }
+}
+
+/// The per-triangle setup shared by the integer rasterizers.
+pub(crate) struct FixedSetup {
+    /// The oriented edges with their tie-rule biases.
+    pub edges: [FixedEdge; 3],
+    /// The sample grid in subpixels.
+    pub grid: FixedGrid,
+    /// The pixels whose sample lies in the bounding box, on the canvas.
+    pub range: PixelRange,
+}
+
+/// Orients `tri` and finds its pixel range; `None` when it covers nothing (zero area, or
+/// off the canvas).
+///
+/// # Panics
+/// When `tri` was snapped to another grid than `target`'s subpixel bits.
+#[inline]
+pub(crate) fn setup(tri: &FixedTriangle, target: &Target) -> Option<FixedSetup> {
+    let conv = &target.convention;
+    assert_eq!(
+        tri.bits, conv.subpixel_bits,
+        "triangle snapped to another grid than the target's"
+    );
+    let edges = triangle_edges(tri, conv.tie_rule)?;
+    let range = fixed_sample_range(tri.coords().into_iter(), target)?;
+    Some(FixedSetup {
+        edges,
+        grid: FixedGrid::of(conv),
+        range,
+    })
 }
 
 #[cfg(test)]
