@@ -171,18 +171,12 @@ impl CompactTriangle {
     }
 
     /// The triangle in the integer models' form when snapping leaves it as it is: every
-    /// coordinate a multiple of the convention's subpixel (a small fraction whose
-    /// denominator is a power of two up to `2^bits`) inside the envelope; `None`
-    /// otherwise. The planned engine draws such a triangle with the integer engine.
+    /// coordinate on the convention's subpixel grid ([`Compact::on_grid`]) inside the
+    /// envelope; `None` otherwise. The planned engine draws such a triangle with the
+    /// integer engine.
     pub fn on_grid(&self, convention: &Convention) -> Option<FixedTriangle> {
         let bits = convention.subpixel_bits;
-        let exact = |x: &Compact| {
-            let (n, d) = x.small()?;
-            if !d.is_power_of_two() || d.trailing_zeros() > bits {
-                return None;
-            }
-            SubPixel::new(n.checked_mul(1i64 << (bits - d.trailing_zeros()))?)
-        };
+        let exact = |x: &Compact| x.on_grid(bits).and_then(SubPixel::new);
         let mut v = [[SubPixel::new(0).expect("0 is inside the envelope"); 2]; 3];
         for (k, [x, y]) in self.v.iter().enumerate() {
             v[k] = [exact(x)?, exact(y)?];

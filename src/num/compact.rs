@@ -137,6 +137,17 @@ impl Compact {
         }
     }
 
+    /// The `n` with `self = n / 2^bits` ([`Compact::dyadic`]'s inverse), when the value
+    /// is small and lies on the `2^-bits` grid, `bits <= 62`, and `n` fits i64: the value
+    /// in subpixels when snapping would leave it as it is.
+    pub fn on_grid(&self, bits: u32) -> Option<i64> {
+        let (num, den) = self.small()?;
+        let shift = bits
+            .checked_sub(den.trailing_zeros())
+            .filter(|_| den.is_power_of_two() && bits <= 62)?;
+        num.checked_mul(1i64 << shift)
+    }
+
     /// `(numerator, denominator)` in lowest terms, when the value is small.
     pub fn small(&self) -> Option<(i64, u64)> {
         match &self.0 {
@@ -427,8 +438,18 @@ mod tests {
                 let c = Compact::dyadic(n, bits);
                 assert_eq!(c.to_big(), crate::num::exact::dyadic(&n.into(), bits), "{n} {bits}");
                 assert_eq!(c, Compact::from_big(c.to_big()), "{n} {bits}: one form");
+                // on the grid it was made on; i64::MIN at 0 bits is held big
+                let small = n != i64::MIN || bits > 0;
+                assert_eq!(c.on_grid(bits), small.then_some(n), "{n} {bits}: back");
             }
         }
+        // off the grid: a finer power of two, or not a power of two; too fine a grid
+        assert_eq!(Compact::dyadic(1, 9).on_grid(8), None);
+        assert_eq!(Compact::parse("1/3").unwrap().on_grid(8), None);
+        assert_eq!(Compact::parse("0.75").unwrap().on_grid(8), Some(192));
+        assert_eq!(Compact::from_int(1).on_grid(63), None);
+        // on the grid, but n beyond i64
+        assert_eq!(Compact::from_int(1 << 60).on_grid(8), None);
     }
 
     #[test]

@@ -8,10 +8,11 @@
 //! corners outside one edge is skipped, one with all corners inside all three is filled
 //! as spans, a run of them along a block row as one span per row, and the rest is tested
 //! a row at a time ([`Lane::row_masks`]), the block's masks written at once
-//! ([`CoverageSink::cover_block`]). Every value is reached by addition only, and never
-//! beyond the range: block origins are stepped by `BLOCK` steps, corners by `w` and `h`
-//! steps, pixels by single steps, each added only when the next point exists. Per block
-//! and edge only two corners are evaluated: the one where `E` is largest (the block is
+//! ([`CoverageSink::cover_block`]) to a sink that
+//! [prefers masks](CoverageSink::prefers_masks), pixel by pixel to any other. Every
+//! value is reached by addition only, and never beyond the range: block origins are
+//! stepped by `BLOCK` steps, corners by `w` and `h` steps, pixels by single steps, each
+//! added only when the next point exists. Per block and edge only two corners are evaluated: the one where `E` is largest (the block is
 //! outside when it is negative) and the opposite one (inside when it is not).
 //!
 //! **The bound.** Every value the traversal holds is either `E - bias` at a sample of the

@@ -170,7 +170,8 @@ fn spans<const L: usize, const R: usize, S: CoverageSink + ?Sized>(
     }
 }
 
-/// The per-triangle setup shared by the integer rasterizers.
+/// The per-triangle setup of the edge walk (`fixed` computes the same values its own
+/// way, with shifts, in `tri/fixed.rs`).
 pub(crate) struct FixedSetup {
     /// The oriented edges with their tie-rule biases.
     pub edges: [FixedEdge; 3],
