@@ -133,7 +133,8 @@ impl Triangle {
 /// assert_eq!(c.to_triangle(), t);
 /// assert_eq!(std::mem::size_of::<CompactTriangle>(), 96);
 /// ```
-#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+/// The default is the triangle with every vertex at the origin.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Hash)]
 pub struct CompactTriangle {
     /// `[x, y]` of each vertex, in pixels.
     pub v: [[Compact; 2]; 3],
@@ -251,8 +252,9 @@ impl SnappedTriangle {
     }
 }
 
-/// A triangle in subpixels, inside the integer models' envelope by construction.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// A triangle in subpixels, inside the integer models' envelope by construction. The
+/// default is every vertex at the origin, on the grid of whole pixels.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct FixedTriangle {
     /// `[x, y]` of each vertex.
     pub v: [[SubPixel; 2]; 3],

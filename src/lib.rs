@@ -86,6 +86,7 @@
 
 pub mod area;
 pub mod check;
+pub mod chunks;
 pub mod clip;
 pub mod convention;
 pub mod coverage;

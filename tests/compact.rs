@@ -14,7 +14,7 @@ use rasterproof::num::compact::Compact;
 use rasterproof::num::fixed::{snap, MAX_SUBPIXEL_MAGNITUDE};
 use rasterproof::num::{parse_rational, Rounding};
 use rasterproof::scene::parse::parse_scene_slow;
-use rasterproof::scene::parse_scene;
+use rasterproof::scene::{parse_scene, parse_scene_parallel};
 use rasterproof::tri::planned::PlannedTriangle;
 
 use crate::common::config;
@@ -139,7 +139,16 @@ proptest! {
         );
         let fast = parse_scene(&text, "s.json").map_err(|e| e.to_string());
         let slow = parse_scene_slow(&text, "s.json").map_err(|e| e.to_string());
-        prop_assert_eq!(fast, slow, "{}", text);
+        prop_assert_eq!(&fast, &slow, "{}", text);
+        // On several threads (the triangles cut into runs, each read on its own): the same
+        // scene or error, and the same primitives copied on several threads.
+        for jobs in [2, 3] {
+            let parallel = parse_scene_parallel(&text, "s.json", jobs).map_err(|e| e.to_string());
+            prop_assert_eq!(&parallel, &slow, "{} jobs: {}", jobs, text);
+        }
+        if let Ok(scene) = &fast {
+            prop_assert_eq!(scene.primitives_parallel(2), scene.primitives());
+        }
     }
 }
 

@@ -16,7 +16,7 @@ mod map;
 /// A new top-level module must be added here, in the layer it belongs to (the test fails
 /// for a file, or a `crate::X` reference, whose module is not in this table).
 const LAYERS: &[(u32, &[&str])] = &[
-    (0, &["num"]),
+    (0, &["num", "chunks"]),
     (1, &["geom", "convention", "raster", "pattern"]),
     (2, &["coverage", "edge"]),
     (3, &["tri", "line", "clip", "fill", "interp", "area"]),

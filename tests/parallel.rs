@@ -10,7 +10,7 @@ use rasterproof::convention::{Preset, Target};
 use rasterproof::coverage::{Coverage, CoverageSink, RowBand};
 use rasterproof::geom::{Point, Triangle};
 use rasterproof::line::{Line, LineRule};
-use rasterproof::model::{prepare, Model, Primitives};
+use rasterproof::model::{prepare, prepare_parallel, Model, Primitives};
 use rasterproof::strategy::clip::any_window;
 use rasterproof::strategy::polygon::any_polygon;
 use rasterproof::strategy::{any_triangle, diamond_line, pixel_line, tie_heavy_triangle};
@@ -106,9 +106,42 @@ proptest! {
         for model in Model::ALL {
             let Ok(prepared) = prepare(&p, &target, model) else { continue };
             let one = prepared.coverage(&target);
+            // Prepared on several threads too, as `render --jobs` prepares.
+            let prepared = prepare_parallel(&p, &target, model, jobs).unwrap();
             let many = prepared.coverage_parallel(&target, jobs, &|| {});
             prop_assert_eq!(&many, &one, "{} on {} threads", model.name(), jobs);
             prop_assert_eq!(many.covered_pixels(), one.covered_pixels());
+        }
+    }
+
+    /// Preparing on several threads refuses a scene with the error one thread gives: the
+    /// first triangle (in id order) that the model cannot take, wherever the runs of the
+    /// threads cut the triangles. Triangles beyond the integer envelope (2^21 px at 8
+    /// subpixel bits) are refused by `fixed` and `scanline`, beyond f32 by the f32 models.
+    #[test]
+    fn parallel_prepare_refuses_the_first_triangle_one_thread_refuses(
+        kinds in prop::collection::vec(0u8..6, 1..24),
+        jobs in prop::sample::select(vec![2usize, 3, 7]),
+    ) {
+        let target = Target::new(WIDTH, HEIGHT, Preset::D3d11.convention()).unwrap();
+        let triangle = |k: usize, kind: u8| {
+            let x = i64::try_from(k % 40).unwrap();
+            let far = match kind {
+                0 => "4194304",  // 2^22 px: beyond the integer envelope
+                1 => "1e39",     // beyond f32
+                _ => "3",
+            };
+            let v = |a: &str, b: i64| Point::new(rasterproof::num::parse_rational(a).unwrap(), BigRational::from_integer(b.into()));
+            Triangle::new(v(&x.to_string(), 0), v(far, 5), v("0", 9))
+        };
+        let p = Primitives {
+            triangles: kinds.iter().enumerate().map(|(k, &kind)| (&triangle(k, kind)).into()).collect(),
+            ..Primitives::default()
+        };
+        for model in Model::ALL {
+            let one = prepare(&p, &target, model).map(|s| s.coverage(&target)).map_err(|e| e.to_string());
+            let many = prepare_parallel(&p, &target, model, jobs).map(|s| s.coverage(&target)).map_err(|e| e.to_string());
+            prop_assert_eq!(many, one, "{} on {} threads", model.name(), jobs);
         }
     }
 }

@@ -162,7 +162,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     if o.background.is_some() && format != Format::Mask {
         return Err("--background: only a mask (--as mask) has a background".to_string());
     }
-    let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
+    let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention, o.jobs as usize)?;
     let theirs_name = o.theirs.display().to_string();
     let bytes = std::fs::read(&o.theirs).map_err(|e| format!("{theirs_name}: cannot read: {e}"))?;
     let theirs = Theirs::read(&bytes, &theirs_name, format, background).map_err(|e| e.to_string())?;
@@ -230,7 +230,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         });
     }
     let report = compare_classifying(
-        &scene.primitives(),
+        &scene.primitives_parallel(o.jobs as usize),
         &target,
         &theirs,
         model,
@@ -435,7 +435,7 @@ fn run_grey(o: &Options) -> Result<ExitCode, String> {
     let model = super::parse_model(o.model.as_deref().unwrap_or("exact"))?;
     let semantics = super::parse_semantics(&o.semantics)?;
     let quantization = super::parse_quantization(&o.quantization)?;
-    let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
+    let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention, o.jobs as usize)?;
     let theirs_name = o.theirs.display().to_string();
     let bytes = std::fs::read(&o.theirs).map_err(|e| format!("{theirs_name}: cannot read: {e}"))?;
     let theirs = rasterproof::oracle::grey::GreyImage::read_png(&bytes, &theirs_name)?;

@@ -61,7 +61,7 @@ fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
 /// Explains the pixel `o` names and prints it; exit 0.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
     let (x, y) = parse_pixel(&o.pixel)?;
-    let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention)?;
+    let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention, 1)?;
     match o.coverage.as_str() {
         "sample" => {}
         "area" => {

@@ -113,6 +113,7 @@ pub fn parse_model(name: &str) -> Result<rasterproof::model::Model, String> {
 pub fn load_scene(
     path: &Path,
     preset: Option<&str>,
+    jobs: usize,
 ) -> Result<(String, rasterproof::scene::Scene, rasterproof::convention::Target), String> {
     use rasterproof::convention::Preset;
     let name = path.display().to_string();
@@ -127,7 +128,7 @@ pub fn load_scene(
         }
     }
     let bytes = std::fs::read(path).map_err(|e| format!("{name}: cannot read: {e}"))?;
-    let mut scene = rasterproof::scene::parse_scene_bytes(&bytes, &name).map_err(|e| e.to_string())?;
+    let mut scene = rasterproof::scene::parse_scene_bytes_parallel(&bytes, &name, jobs).map_err(|e| e.to_string())?;
     if let Some(p) = preset {
         scene.preset = Preset::from_name(p)
             .ok_or_else(|| format!("--preset: unknown preset {p:?} (expected one of d3d11, vulkan, gl, cts)"))?;
@@ -202,8 +203,9 @@ impl ConventionArgs {
 pub fn load_scene_with(
     path: &Path,
     args: &ConventionArgs,
+    jobs: usize,
 ) -> Result<(String, rasterproof::scene::Scene, rasterproof::convention::Target), String> {
-    let (name, mut scene, _) = load_scene(path, args.preset.as_deref())?;
+    let (name, mut scene, _) = load_scene(path, args.preset.as_deref(), jobs)?;
     args.apply(&mut scene.overrides)?;
     let target = scene
         .target()

@@ -45,7 +45,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             "--model: {model} has no plan (only exact and exact-snapped run the planned engine)"
         ));
     }
-    let (name, scene, target) = super::load_scene(&o.scene, o.preset.as_deref())?;
+    let (name, scene, target) = super::load_scene(&o.scene, o.preset.as_deref(), 1)?;
     let plan = plan_scene(&scene.primitives(), &target, model).map_err(|e| format!("{name}: {e} (model {model})"))?;
     match o.format {
         OutputFormat::Text => super::print_stdout(&plan.to_text(&name, &target.convention.to_string()))?,

@@ -45,7 +45,7 @@ use crate::tri::float::FloatRule;
 pub use area::{area_shapes, render_area, render_area_rows, AreaError};
 pub use conservative::{render_conservative, ConservativeCoverage, ConservativeError, ConservativeRule};
 pub use error::ModelError;
-pub use prepared::{prepare, render, render_triangles, PreparedScene, Primitives, Shape};
+pub use prepared::{prepare, prepare_parallel, render, render_triangles, PreparedScene, Primitives, Shape};
 pub use samples::{render_samples, SampleFrames};
 
 /// A model: one arithmetic for every primitive of a scene (the CLI's `--model`).

@@ -17,7 +17,7 @@ use crate::line::Line;
 use super::lines::{prepare_lines, PreparedLine};
 use super::plan::PrimitivePlan;
 use super::polygons::{prepare_clip_space, prepare_polygon, PreparedPolygon};
-use super::triangles::{prepare_triangles, PreparedTriangles};
+use super::triangles::{prepare_triangles, Band, PreparedTriangles};
 use super::{Arithmetic, FloatType, Model, ModelError};
 
 /// What a scene draws, every coordinate exact. Ids follow one sequence: triangles `0..`,
@@ -156,6 +156,21 @@ fn id(k: usize) -> u32 {
 /// or the float type, a polygon the `fixed` model cannot triangulate, clip-space
 /// triangles without a viewport. Lines are checked first, then the areas.
 pub fn prepare(primitives: &Primitives, target: &Target, model: Model) -> Result<PreparedScene, ModelError> {
+    prepare_parallel(primitives, target, model, 1)
+}
+
+/// [`prepare`] with the triangles converted on up to `jobs` threads (consecutive
+/// triangles on each, [`crate::chunks`]): the same prepared scene, and the same first
+/// error, as one thread's.
+///
+/// # Errors
+/// As [`prepare`].
+pub fn prepare_parallel(
+    primitives: &Primitives,
+    target: &Target,
+    model: Model,
+    jobs: usize,
+) -> Result<PreparedScene, ModelError> {
     let lines = prepare_lines(model, &primitives.lines, target)?;
     let viewport = || primitives.viewport.as_ref().ok_or(ModelError::NoViewport);
     let [first_line, first_polygon, _] = primitives.first_ids();
@@ -178,7 +193,7 @@ pub fn prepare(primitives: &Primitives, target: &Target, model: Model) -> Result
     };
     match model.arithmetic() {
         Arithmetic::Exact { .. } | Arithmetic::Integer(_) => {
-            scene.triangles = prepare_triangles(model, &primitives.triangles, target)?;
+            scene.triangles = prepare_triangles(model, &primitives.triangles, target, jobs)?;
             for (k, p) in primitives.polygons.iter().enumerate() {
                 scene.polygons.push(prepare_polygon(model, k, p, target)?);
             }
@@ -206,8 +221,8 @@ pub fn prepare(primitives: &Primitives, target: &Target, model: Model) -> Result
             }
         }
         Arithmetic::Float(float, rule) => match float {
-            FloatType::F32 => prepare_float_f32(&mut scene, primitives, rule, target, viewport)?,
-            FloatType::F64 => prepare_float_f64(&mut scene, primitives, rule, target, viewport)?,
+            FloatType::F32 => prepare_float_f32(&mut scene, primitives, rule, target, viewport, jobs)?,
+            FloatType::F64 => prepare_float_f64(&mut scene, primitives, rule, target, viewport, jobs)?,
         },
     }
     Ok(scene)
@@ -226,13 +241,14 @@ macro_rules! prepare_float_in {
             rule: crate::tri::float::FloatRule,
             target: &Target,
             viewport: impl Fn() -> Result<&'a Viewport, ModelError>,
+            jobs: usize,
         ) -> Result<(), ModelError> {
             let model = scene.model;
             let range = |what: String| ModelError::FloatScene { what, model };
             let clipper = Clipper::new($arithmetic, primitives.clip.as_ref())
                 .map_err(|_| range("clip (a window edge's line coefficient)".into()))?;
             let window = primitives.clip.is_some();
-            scene.triangles = prepare_triangles(model, &primitives.triangles, target)?;
+            scene.triangles = prepare_triangles(model, &primitives.triangles, target, jobs)?;
             if let (true, PreparedTriangles::$triangles(ts, _)) = (window, &scene.triangles) {
                 let fans = ts
                     .iter()
@@ -317,7 +333,7 @@ impl PreparedScene {
         &self,
         target: &Target,
         sink: &mut S,
-        band: Option<(u32, u32)>,
+        band: Option<Band<'_>>,
         mut after: F,
     ) {
         for (k, l) in self.lines.iter().enumerate() {
@@ -338,7 +354,7 @@ impl PreparedScene {
         &self,
         target: &Target,
         sink: &mut S,
-        band: Option<(u32, u32)>,
+        band: Option<Band<'_>>,
         after: &mut F,
     ) {
         match &self.clipped_triangles {
@@ -459,6 +475,7 @@ impl PreparedScene {
             return coverage;
         }
         let next = AtomicUsize::new(0);
+        let rows = self.triangles.rows_each(target, jobs);
         let drawn: Vec<Vec<(usize, Coverage)>> = std::thread::scope(|s| {
             let workers: Vec<_> = (0..jobs.min(bands.len()))
                 .map(|_| {
@@ -470,7 +487,11 @@ impl PreparedScene {
                                 return mine;
                             };
                             let mut coverage = Coverage::new(target.width, target.height);
-                            self.render_band(target, &mut RowBand::new(&mut coverage, y0, y1), Some((y0, y1)), || {});
+                            let band = Band {
+                                rows: (y0, y1),
+                                triangles: &rows,
+                            };
+                            self.render_band(target, &mut RowBand::new(&mut coverage, y0, y1), Some(band), || {});
                             mine.push((b, coverage));
                             after();
                         }
@@ -557,7 +578,7 @@ pub fn render(primitives: &Primitives, target: &Target, model: Model) -> Result<
 /// The first triangle the model cannot take (envelope, float range).
 pub fn render_triangles(triangles: &[Triangle], target: &Target, model: Model) -> Result<Coverage, ModelError> {
     let compact: Vec<CompactTriangle> = triangles.iter().map(CompactTriangle::from).collect();
-    let prepared = prepare_triangles(model, &compact, target)?;
+    let prepared = prepare_triangles(model, &compact, target, 1)?;
     let mut coverage = Coverage::new(target.width, target.height);
     prepared.rasterize_into(target, &mut coverage);
     Ok(coverage)

@@ -5,6 +5,7 @@ use glam::{DVec2, Vec2};
 use image::RgbImage;
 use num_rational::BigRational;
 
+use crate::chunks;
 use crate::convention::{Convention, Target};
 use crate::coverage::{primitive_colour, Coverage, CoverageSink};
 use crate::geom::{CompactTriangle, FixedTriangle, Rgb, Triangle};
@@ -63,77 +64,101 @@ impl PlannedForm {
     }
 }
 
-/// Converts `triangles` for `model`; the first triangle it cannot take is the error.
+/// Converts `triangles` for `model` on up to `jobs` threads; the first triangle it cannot
+/// take is the error.
 pub(crate) fn prepare_triangles(
     model: Model,
     triangles: &[CompactTriangle],
     target: &Target,
+    jobs: usize,
 ) -> Result<PreparedTriangles, ModelError> {
     let conv = &target.convention;
     let at = |k: usize, i: usize| move || format!("triangles[{k}].v[{i}]");
     Ok(match model.arithmetic() {
         Arithmetic::Exact { snapped, plain } => {
             let exact: Vec<CompactTriangle> = if snapped {
-                triangles.iter().map(|t| t.snapped_exact(conv)).collect()
+                chunks::map(triangles, jobs, |_, t| t.snapped_exact(conv))
             } else {
                 triangles.to_vec()
             };
             if plain {
-                PreparedTriangles::Exact(exact.iter().map(CompactTriangle::to_triangle).collect())
+                PreparedTriangles::Exact(chunks::map(&exact, jobs, |_, t| t.to_triangle()))
             } else {
-                let planned = exact.iter().map(|t| PlannedForm::of(t, target)).collect();
+                let planned = chunks::map(&exact, jobs, |_, t| PlannedForm::of(t, target));
                 PreparedTriangles::Planned(exact, planned, *target)
             }
         }
-        Arithmetic::Integer(IntegerTraversal::Blocks) => PreparedTriangles::Fixed(fixed_triangles(triangles, conv)?),
+        Arithmetic::Integer(IntegerTraversal::Blocks) => {
+            PreparedTriangles::Fixed(fixed_triangles(triangles, conv, jobs)?)
+        }
         Arithmetic::Integer(IntegerTraversal::Scanline) => {
-            PreparedTriangles::Scanline(fixed_triangles(triangles, conv)?)
+            PreparedTriangles::Scanline(fixed_triangles(triangles, conv, jobs)?)
         }
         Arithmetic::Float(FloatType::F32, rule) => PreparedTriangles::F32(
-            float_triangles(triangles, |v, k, i| point_f32(v, at(k, i), model))?,
+            float_triangles(triangles, jobs, |v, k, i| point_f32(v, at(k, i), model))?,
             rule,
         ),
         Arithmetic::Float(FloatType::F64, rule) => PreparedTriangles::F64(
-            float_triangles(triangles, |v, k, i| point_f64(v, at(k, i), model))?,
+            float_triangles(triangles, jobs, |v, k, i| point_f64(v, at(k, i), model))?,
             rule,
         ),
     })
 }
 
-/// Every triangle converted vertex by vertex, `convert(vertex, triangle, index)`; the first
-/// error stops it.
-fn float_triangles<V>(
+/// Every triangle converted vertex by vertex, `convert(vertex, triangle, index)`, on up to
+/// `jobs` threads; the first error stops it.
+fn float_triangles<V: Send + Default>(
     triangles: &[CompactTriangle],
-    convert: impl Fn(&crate::geom::Point, usize, usize) -> Result<V, ModelError>,
+    jobs: usize,
+    convert: impl Fn(&crate::geom::Point, usize, usize) -> Result<V, ModelError> + Sync,
 ) -> Result<Vec<[V; 3]>, ModelError> {
-    triangles
-        .iter()
-        .enumerate()
-        .map(|(k, t)| {
-            let t = t.to_triangle();
-            Ok([
-                convert(&t.v[0], k, 0)?,
-                convert(&t.v[1], k, 1)?,
-                convert(&t.v[2], k, 2)?,
-            ])
-        })
-        .collect()
+    chunks::try_map(triangles, jobs, |k, t| {
+        let t = t.to_triangle();
+        Ok([
+            convert(&t.v[0], k, 0)?,
+            convert(&t.v[1], k, 1)?,
+            convert(&t.v[2], k, 2)?,
+        ])
+    })
 }
 
-/// Snaps every triangle and checks it against the integer envelope.
-fn fixed_triangles(triangles: &[CompactTriangle], conv: &Convention) -> Result<Vec<FixedTriangle>, ModelError> {
-    triangles
-        .iter()
-        .enumerate()
-        .map(|(k, t)| {
-            t.to_fixed(conv).map_err(|(vertex, axis, error)| ModelError::Envelope {
-                triangle: k,
-                vertex,
-                axis,
-                error,
-            })
+/// Snaps every triangle and checks it against the integer envelope, on up to `jobs`
+/// threads.
+fn fixed_triangles(
+    triangles: &[CompactTriangle],
+    conv: &Convention,
+    jobs: usize,
+) -> Result<Vec<FixedTriangle>, ModelError> {
+    chunks::try_map(triangles, jobs, |k, t| {
+        t.to_fixed(conv).map_err(|(vertex, axis, error)| ModelError::Envelope {
+            triangle: k,
+            vertex,
+            axis,
+            error,
         })
-        .collect()
+    })
+}
+
+/// The rows `y0..y1` of a band ([`crate::coverage::RowBand`]) and the rows each triangle
+/// may cover ([`PreparedTriangles::rows_each`]): which triangles a band's thread draws.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Band<'a> {
+    /// The band's rows, `y0..y1`.
+    pub(crate) rows: (u32, u32),
+    /// Each triangle's `(first, last)` rows; `NO_ROWS` for one that covers nothing.
+    pub(crate) triangles: &'a [(u32, u32)],
+}
+
+/// The rows of a triangle that covers nothing: no band meets them.
+const NO_ROWS: (u32, u32) = (u32::MAX, 0);
+
+impl Band<'_> {
+    /// Whether triangle `k`'s rows meet the band.
+    fn meets(&self, k: usize) -> bool {
+        let (first, last) = self.triangles[k];
+        let (y0, y1) = self.rows;
+        last >= y0 && first < y1
+    }
 }
 
 /// The rows a prepared triangle's engine visits, `first..=last` (`None`: it covers
@@ -242,36 +267,22 @@ impl PreparedTriangles {
         &self,
         target: &Target,
         sink: &mut S,
-        band: Option<(u32, u32)>,
+        band: Option<Band<'_>>,
         mut after: F,
     ) {
         // One loop per model, each calling `draw(triangle, id)` then `after`.
-        fn each<T: Rows, F: FnMut()>(
-            ts: &[T],
-            target: &Target,
-            band: Option<(u32, u32)>,
-            mut draw: impl FnMut(&T, u32),
-            after: &mut F,
-        ) {
+        fn each<T, F: FnMut()>(ts: &[T], band: Option<Band<'_>>, mut draw: impl FnMut(&T, u32), after: &mut F) {
             for (k, t) in ts.iter().enumerate() {
-                let meets = |(y0, y1): (u32, u32)| t.rows(target).is_some_and(|(first, last)| last >= y0 && first < y1);
-                if band.map_or(true, meets) {
+                if band.as_ref().map_or(true, |b| b.meets(k)) {
                     draw(t, id_of(k));
                 }
                 after();
             }
         }
         match self {
-            PreparedTriangles::Exact(ts) => each(
-                ts,
-                target,
-                band,
-                |t, id| exact::rasterize(t, id, target, sink),
-                &mut after,
-            ),
+            PreparedTriangles::Exact(ts) => each(ts, band, |t, id| exact::rasterize(t, id, target, sink), &mut after),
             PreparedTriangles::Planned(_, ts, _) => each(
                 ts,
-                target,
                 band,
                 |t, id| match t {
                     PlannedForm::Empty => {}
@@ -280,26 +291,13 @@ impl PreparedTriangles {
                 },
                 &mut after,
             ),
-            PreparedTriangles::Fixed(ts) => each(
-                ts,
-                target,
-                band,
-                |t, id| fixed::rasterize(t, id, target, sink),
-                &mut after,
-            ),
+            PreparedTriangles::Fixed(ts) => each(ts, band, |t, id| fixed::rasterize(t, id, target, sink), &mut after),
             PreparedTriangles::Scanline(ts) => {
-                each(
-                    ts,
-                    target,
-                    band,
-                    |t, id| scanline::rasterize(t, id, target, sink),
-                    &mut after,
-                );
+                each(ts, band, |t, id| scanline::rasterize(t, id, target, sink), &mut after);
             }
             PreparedTriangles::F32(ts, rule) => {
                 each(
                     ts,
-                    target,
                     band,
                     |t, id| float::rasterize_f32(t, id, target, *rule, sink),
                     &mut after,
@@ -308,12 +306,26 @@ impl PreparedTriangles {
             PreparedTriangles::F64(ts, rule) => {
                 each(
                     ts,
-                    target,
                     band,
                     |t, id| float::rasterize_f64(t, id, target, *rule, sink),
                     &mut after,
                 );
             }
+        }
+    }
+
+    /// The rows each triangle may cover ([`Rows`]), found on up to `jobs` threads once for
+    /// every band of a parallel render.
+    pub(crate) fn rows_each(&self, target: &Target, jobs: usize) -> Vec<(u32, u32)> {
+        fn all<T: Rows + Sync>(ts: &[T], target: &Target, jobs: usize) -> Vec<(u32, u32)> {
+            chunks::map(ts, jobs, |_, t| t.rows(target).unwrap_or(NO_ROWS))
+        }
+        match self {
+            PreparedTriangles::Exact(ts) => all(ts, target, jobs),
+            PreparedTriangles::Planned(_, ts, _) => all(ts, target, jobs),
+            PreparedTriangles::Fixed(ts) | PreparedTriangles::Scanline(ts) => all(ts, target, jobs),
+            PreparedTriangles::F32(ts, _) => all(ts, target, jobs),
+            PreparedTriangles::F64(ts, _) => all(ts, target, jobs),
         }
     }
 

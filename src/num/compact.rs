@@ -60,6 +60,13 @@ const POW10: [u64; 19] = {
     p
 };
 
+/// Zero.
+impl Default for Compact {
+    fn default() -> Compact {
+        Compact::ZERO
+    }
+}
+
 impl Compact {
     /// Zero.
     pub const ZERO: Compact = Compact(Repr::Small {

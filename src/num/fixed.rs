@@ -34,7 +34,7 @@ pub const MAX_SUBPIXEL_BITS: u32 = 16;
 ///
 /// # Guarantees
 /// - `|value| <= 2^29` (see the module docs for why that makes every edge value fit i64).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct SubPixel(i64);
 
 impl SubPixel {

@@ -20,7 +20,9 @@ use crate::num::compact::Compact;
 use crate::num::exact::{exact_text, json_pair};
 use crate::pattern::SamplePattern;
 
-pub use parse::{parse_scene, parse_scene_bytes, parse_scene_with_vertex_limit};
+pub use parse::{
+    parse_scene, parse_scene_bytes, parse_scene_bytes_parallel, parse_scene_parallel, parse_scene_with_vertex_limit,
+};
 
 /// Choices a scene makes on top of its preset.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -49,8 +51,9 @@ impl Overrides {
     }
 }
 
-/// A triangle of a scene, with optional vertex colours.
-#[derive(Debug, Clone, PartialEq, Eq)]
+/// A triangle of a scene, with optional vertex colours (the default: every vertex at the
+/// origin, no colours).
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct SceneTriangle {
     /// The exact triangle, in compact form ([`CompactTriangle::to_triangle`] reads it).
     pub triangle: CompactTriangle,
@@ -148,8 +151,13 @@ impl Scene {
     /// its triangles, lines, polygons, clip-space triangles, the viewport
     /// ([`Scene::viewport`]) and the clip window.
     pub fn primitives(&self) -> Primitives {
+        self.primitives_parallel(1)
+    }
+
+    /// [`Scene::primitives`], the triangles copied on up to `jobs` threads.
+    pub fn primitives_parallel(&self, jobs: usize) -> Primitives {
         Primitives {
-            triangles: self.triangles.iter().map(|t| t.triangle.clone()).collect(),
+            triangles: crate::chunks::map(&self.triangles, jobs, |_, t| t.triangle.clone()),
             lines: self.lines.clone(),
             polygons: self.polygons.clone(),
             clip_space_triangles: self.clip_space_triangles.clone(),

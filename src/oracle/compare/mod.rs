@@ -24,7 +24,7 @@ use super::reason::{decide, Classifier, Snapping, Support};
 use super::theirs::{Format, TheirPixel, Theirs};
 use crate::convention::Target;
 use crate::coverage::Coverage;
-use crate::model::{prepare, Model, ModelError, Primitives};
+use crate::model::{prepare_parallel, Model, ModelError, Primitives};
 use pixel::{guessed, named, Candidates};
 use report::Joint;
 
@@ -238,7 +238,7 @@ pub fn compare_classifying(
     if !model.is_exact() {
         return Err(CompareError::NotExact(model));
     }
-    let prepared = prepare(primitives, target, model).map_err(CompareError::Model)?;
+    let prepared = prepare_parallel(primitives, target, model, jobs).map_err(CompareError::Model)?;
     let ours = prepared.coverage_parallel(target, jobs, &|| {});
     // The differing pixels, all of them; then which are classified.
     let differing: Vec<(u32, u32, TheirPixel, DiffOwners)> = covered_by_either(&ours, theirs)

@@ -25,6 +25,7 @@ use serde_json::value::RawValue;
 
 use super::json::{from_raw, Map};
 use super::{keys, MAX_TRIANGLES};
+use crate::chunks;
 use crate::geom::{CompactTriangle, Rgb};
 use crate::num::compact::Compact;
 use crate::scene::SceneTriangle;
@@ -40,12 +41,30 @@ pub(super) enum Read {
     Declined(Option<(usize, usize)>),
 }
 
-/// The top level of `text` read on the fast path.
-pub(super) fn read(text: &str) -> Read {
+/// The top level of `text` read on the fast path, its triangles on up to `jobs` threads.
+///
+/// On several threads the triangles are first cut out of the text as raw values (one
+/// pass of serde_json that reads no number), then each chunk of them is read by its thread
+/// exactly as the one-thread pass reads a triangle. Anything but a scene read that way (a
+/// decline, too many triangles) is read again on one thread, which says where it stopped
+/// and why as it always does; so the answer does not depend on `jobs`.
+pub(super) fn read(text: &str, jobs: usize) -> Read {
+    match read_on(text, jobs) {
+        Read::Fields(root, triangles) => Read::Fields(root, triangles),
+        _ if jobs > 1 => read_on(text, 1),
+        other => other,
+    }
+}
+
+/// [`read`], without the second try on one thread.
+fn read_on(text: &str, jobs: usize) -> Read {
     let too_many = Cell::new(false);
     let mut de = serde_json::Deserializer::from_str(text);
     let at = |e: serde_json::Error| Some((e.line(), e.column()));
-    let root = Root { too_many: &too_many };
+    let root = Root {
+        too_many: &too_many,
+        jobs,
+    };
     let (raw, triangles) = match root.deserialize(&mut de) {
         Ok(read) => read,
         Err(_) if too_many.get() => return Read::TooMany,
@@ -75,6 +94,8 @@ fn decline<E: serde::de::Error>() -> E {
 /// The top-level object.
 struct Root<'a> {
     too_many: &'a Cell<bool>,
+    /// The threads that read the triangles.
+    jobs: usize,
 }
 
 type RootValue<'de> = (BTreeMap<String, &'de RawValue>, Option<Vec<SceneTriangle>>);
@@ -101,6 +122,7 @@ impl<'de> Visitor<'de> for Root<'_> {
                 }
                 triangles = Some(map.next_value_seed(Triangles {
                     too_many: self.too_many,
+                    jobs: self.jobs,
                 })?);
             } else {
                 let value: &'de RawValue = map.next_value()?;
@@ -116,6 +138,9 @@ impl<'de> Visitor<'de> for Root<'_> {
 /// The `triangles` array; `too_many` is set when it holds more than [`MAX_TRIANGLES`].
 struct Triangles<'a> {
     too_many: &'a Cell<bool>,
+    /// The threads that read them: one reads each triangle as the pass meets it, several
+    /// read the raw values the pass cut out ([`read`]).
+    jobs: usize,
 }
 
 impl<'de> DeserializeSeed<'de> for Triangles<'_> {
@@ -131,6 +156,17 @@ impl<'de> Visitor<'de> for Triangles<'_> {
         f.write_str("an array of triangles")
     }
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
+        if self.jobs > 1 {
+            let mut raw: Vec<&'de RawValue> = Vec::new();
+            while let Some(t) = seq.next_element()? {
+                if raw.len() == MAX_TRIANGLES {
+                    self.too_many.set(true);
+                    return Err(decline());
+                }
+                raw.push(t);
+            }
+            return chunks::try_map(&raw, self.jobs, |_, t| triangle(t.get())).map_err(|()| decline());
+        }
         let mut out = Vec::with_capacity(seq.size_hint().unwrap_or(0).min(MAX_TRIANGLES));
         while let Some(t) = seq.next_element_seed(TriangleSeed)? {
             if out.len() == MAX_TRIANGLES {
@@ -141,6 +177,15 @@ impl<'de> Visitor<'de> for Triangles<'_> {
         }
         Ok(out)
     }
+}
+
+/// One triangle object's text (a raw value cut out of the `triangles` array) read as
+/// [`TriangleSeed`] reads it in the stream; `Err` where it declines.
+fn triangle(text: &str) -> Result<SceneTriangle, ()> {
+    let mut de = serde_json::Deserializer::from_str(text);
+    let t = TriangleSeed.deserialize(&mut de).map_err(drop)?;
+    de.end().map_err(drop)?;
+    Ok(t)
 }
 
 /// One triangle object: `v` and optional `colors`, nothing else.

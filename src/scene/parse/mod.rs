@@ -68,6 +68,12 @@ pub const MAX_SCENE_BYTES: usize = 1 << 30;
 
 /// Parses raw bytes (they must be UTF-8).
 pub fn parse_scene_bytes(bytes: &[u8], source: &str) -> Result<Scene, SceneError> {
+    parse_scene_bytes_parallel(bytes, source, 1)
+}
+
+/// [`parse_scene_bytes`] with the triangles read on up to `jobs` threads
+/// ([`parse_scene_parallel`]).
+pub fn parse_scene_bytes_parallel(bytes: &[u8], source: &str, jobs: usize) -> Result<Scene, SceneError> {
     if bytes.len() > MAX_SCENE_BYTES {
         return Err(SceneError {
             source: source.to_string(),
@@ -83,7 +89,7 @@ pub fn parse_scene_bytes(bytes: &[u8], source: &str) -> Result<Scene, SceneError
         field: String::new(),
         message: format!("not UTF-8 text ({e})"),
     })?;
-    parse_scene(text, source)
+    parse_scene_parallel(text, source, jobs)
 }
 
 /// Parses a scene file's text; `source` names the file in errors.
@@ -96,7 +102,24 @@ pub fn parse_scene_bytes(bytes: &[u8], source: &str) -> Result<Scene, SceneError
 /// assert_eq!(err.to_string(), "a.json: triangles[0].v[1][1]: \"NaN\" is not a finite number (expected a decimal like -12.5 or 1e3, or a fraction like 1/3)");
 /// ```
 pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
-    parse_scene_with_vertex_limit(text, source, MAX_SCENE_VERTICES)
+    parse_scene_in(text, source, MAX_SCENE_VERTICES, 1)
+}
+
+/// [`parse_scene`] with the triangles read on up to `jobs` threads (consecutive triangles
+/// on each): the same scene, or the same error, as on one thread. What `render --jobs`
+/// reads a big frame with.
+///
+/// ```
+/// use rasterproof::scene::parse::parse_scene_parallel;
+/// use rasterproof::scene::parse_scene;
+/// let text = r#"{"width": 8, "height": 8, "triangles": [{"v": [[0,0],[4,0],[0,4]]}, {"v": [[1,1],[5,1],["1/3",6]]}]}"#;
+/// assert_eq!(parse_scene_parallel(text, "a.json", 2).unwrap(), parse_scene(text, "a.json").unwrap());
+/// ```
+///
+/// # Errors
+/// As [`parse_scene`].
+pub fn parse_scene_parallel(text: &str, source: &str, jobs: usize) -> Result<Scene, SceneError> {
+    parse_scene_in(text, source, MAX_SCENE_VERTICES, jobs)
 }
 
 /// [`parse_scene`] with a vertex limit of the caller's, `max_vertices` polygon and
@@ -115,8 +138,13 @@ pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
 /// # Errors
 /// As [`parse_scene`].
 pub fn parse_scene_with_vertex_limit(text: &str, source: &str, max_vertices: usize) -> Result<Scene, SceneError> {
+    parse_scene_in(text, source, max_vertices, 1)
+}
+
+/// [`parse_scene_with_vertex_limit`] on up to `jobs` threads.
+fn parse_scene_in(text: &str, source: &str, max_vertices: usize, jobs: usize) -> Result<Scene, SceneError> {
     let p = Reader::new(source, max_vertices.min(MAX_SCENE_VERTICES));
-    match fast::read(text) {
+    match fast::read(text, jobs) {
         // The schema's error too: the fast path found no syntax error, no repeated key and
         // no triangle it could not read, so the slow path would reach the same one.
         fast::Read::Fields(root, triangles) => return p.scene(&root, triangles),

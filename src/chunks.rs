@@ -1,0 +1,124 @@
+//! Work on a slice cut into runs of consecutive items, one thread per run, the results in
+//! input order: what reading a scene's triangles and preparing them for a model do on
+//! several threads (`--jobs`). The answer is the one a single thread gives, error
+//! included: the error of the lowest index is the one returned.
+
+use std::sync::{Mutex, PoisonError};
+
+use rayon::prelude::*;
+
+/// `f(k, &items[k])` for every `k`, on up to `jobs` threads (rayon's pool, the items cut
+/// into at most `jobs` runs of consecutive ones), written in place into one vector in
+/// input order. `jobs` of 0 or 1, or fewer than two items, runs on the calling thread and
+/// stops at the first error; on several threads every item is tried, and the error of the
+/// lowest index wins (refused items hold `U::default()` meanwhile, never returned).
+///
+/// # Errors
+/// The error of the first item (in input order) that `f` refuses.
+///
+/// ```
+/// use rasterproof::chunks::try_map;
+/// let halves = try_map(&[2, 4, 6, 8], 2, |_, &n| if n % 2 == 0 { Ok(n / 2) } else { Err(n) });
+/// assert_eq!(halves, Ok(vec![1, 2, 3, 4]));
+/// let first = try_map(&[2, 3, 4, 5], 2, |k, &n| if n % 2 == 0 { Ok(n) } else { Err(k) });
+/// assert_eq!(first, Err(1));
+/// ```
+pub fn try_map<T, U, E, F>(items: &[T], jobs: usize, f: F) -> Result<Vec<U>, E>
+where
+    T: Sync,
+    U: Send + Default,
+    E: Send,
+    F: Fn(usize, &T) -> Result<U, E> + Sync,
+{
+    if jobs <= 1 || items.len() < 2 {
+        return items.iter().enumerate().map(|(k, item)| f(k, item)).collect();
+    }
+    let first_error: Mutex<Option<(usize, E)>> = Mutex::new(None);
+    let out = in_order(items, jobs, |k, item| match f(k, item) {
+        Ok(u) => u,
+        Err(e) => {
+            let mut first = first_error.lock().unwrap_or_else(PoisonError::into_inner);
+            if !first.as_ref().is_some_and(|&(j, _)| j < k) {
+                *first = Some((k, e));
+            }
+            U::default()
+        }
+    });
+    match first_error.into_inner().unwrap_or_else(PoisonError::into_inner) {
+        Some((_, e)) => Err(e),
+        None => Ok(out),
+    }
+}
+
+/// [`try_map`] for an `f` that cannot fail.
+///
+/// ```
+/// use rasterproof::chunks::map;
+/// assert_eq!(map(&[1, 2, 3], 4, |k, &n| n * 10 + k), vec![10, 21, 32]);
+/// ```
+pub fn map<T, U, F>(items: &[T], jobs: usize, f: F) -> Vec<U>
+where
+    T: Sync,
+    U: Send,
+    F: Fn(usize, &T) -> U + Sync,
+{
+    if jobs <= 1 || items.len() < 2 {
+        return items.iter().enumerate().map(|(k, item)| f(k, item)).collect();
+    }
+    in_order(items, jobs, f)
+}
+
+/// `f` over `items` on rayon's pool in at most `jobs` runs, each writing its part of the
+/// one output vector (no part is copied afterwards: for a big scene the copy, and the
+/// fresh memory it touches, would cost what the threads save).
+fn in_order<T: Sync, U: Send>(items: &[T], jobs: usize, f: impl Fn(usize, &T) -> U + Sync) -> Vec<U> {
+    let run = items.len().div_ceil(jobs.max(1));
+    let mut out = Vec::with_capacity(items.len());
+    items
+        .par_iter()
+        .enumerate()
+        .with_min_len(run)
+        .map(|(k, item)| f(k, item))
+        .collect_into_vec(&mut out);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every length around every thread count: the same as one thread, and the first error
+    /// in input order whichever chunk it falls in.
+    #[test]
+    fn chunks_give_one_threads_answer() {
+        for len in 0..40usize {
+            let items: Vec<usize> = (0..len).map(|k| k * 7 % 11).collect();
+            let plain: Vec<usize> = items.iter().enumerate().map(|(k, n)| k * 100 + n).collect();
+            for jobs in 0..9 {
+                assert_eq!(map(&items, jobs, |k, &n| k * 100 + n), plain, "len {len}, jobs {jobs}");
+                // Items equal to `bad` fail (at a place that moves with the length, in the
+                // first chunk, a later one or none); the first such index is the error.
+                let bad = len % 13;
+                let first = items.iter().position(|&n| n == bad);
+                let got = try_map(&items, jobs, |k, &n| if n == bad { Err(k) } else { Ok(n) });
+                match first {
+                    Some(k) => assert_eq!(got, Err(k), "len {len}, jobs {jobs}"),
+                    None => assert_eq!(got, Ok(items.clone()), "len {len}, jobs {jobs}"),
+                }
+            }
+        }
+    }
+
+    /// One job runs on the calling thread; two cut the items into two runs of consecutive
+    /// items, no more.
+    #[test]
+    fn jobs_bound_the_runs() {
+        let here = std::thread::current().id();
+        assert!(map(&[0u8; 64], 1, |_, _| std::thread::current().id())
+            .iter()
+            .all(|&i| i == here));
+        let ids = map(&[0u8; 64], 2, |_, _| std::thread::current().id());
+        assert!(ids[..32].iter().all(|&i| i == ids[0]));
+        assert!(ids[32..].iter().all(|&i| i == ids[32]));
+    }
+}
