@@ -541,17 +541,68 @@ fn draw_with_progress(prepared: &PreparedScene, target: &Target, jobs: usize) ->
         bar.finish_and_clear();
         return coverage;
     }
-    let mut shown = false;
+    let mut ticks = Ticks::new(start);
     let mut coverage = Coverage::new(target.width, target.height);
     prepared.render_observed(target, &mut coverage, &mut || {
-        bar.inc(1);
-        if !shown && start.elapsed() > Duration::from_secs(1) {
-            bar.set_draw_target(ProgressDrawTarget::stderr());
-            shown = true;
+        if let Some(done) = ticks.tick() {
+            bar.inc(done);
+            if ticks.since_start() > Duration::from_secs(1) && !ticks.shown {
+                bar.set_draw_target(ProgressDrawTarget::stderr());
+                ticks.shown = true;
+            }
         }
     });
     bar.finish_and_clear();
     coverage
+}
+
+/// The progress of one thread drawing primitive after primitive, told to the bar in
+/// batches: the bar and the clock cost some 20 ns a call, 2% of drawing a million small
+/// triangles when asked after each. A batch doubles while it takes under 10 ms and halves
+/// when it takes over 100 ms, so the bar moves about ten times a second whether a
+/// primitive takes nanoseconds or seconds.
+struct Ticks {
+    start: Instant,
+    /// When the last batch was told.
+    last: Instant,
+    /// Primitives drawn since, and the batch size.
+    pending: u64,
+    batch: u64,
+    /// Whether the bar is on stderr.
+    shown: bool,
+}
+
+impl Ticks {
+    fn new(start: Instant) -> Ticks {
+        Ticks {
+            start,
+            last: start,
+            pending: 0,
+            batch: 1,
+            shown: false,
+        }
+    }
+
+    /// One more primitive drawn; the primitives to add to the bar when a batch is full.
+    fn tick(&mut self) -> Option<u64> {
+        self.pending += 1;
+        if self.pending < self.batch {
+            return None;
+        }
+        let now = Instant::now();
+        let took = now - self.last;
+        self.last = now;
+        if took < Duration::from_millis(10) {
+            self.batch = (self.batch * 2).min(1 << 16);
+        } else if took > Duration::from_millis(100) {
+            self.batch = (self.batch / 2).max(1);
+        }
+        Some(std::mem::take(&mut self.pending))
+    }
+
+    fn since_start(&self) -> Duration {
+        self.last - self.start
+    }
 }
 
 /// `--scale K`: a whole number (its range is checked against the canvas later).
