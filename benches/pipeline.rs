@@ -11,7 +11,7 @@
 //! drawn on one and two threads (`PreparedScene::coverage_parallel`), and `render --jobs`.
 //!
 //! `cargo bench --bench pipeline` (N = 100k and 1M; `PIPELINE_SIZES=100000` for one,
-//! `PIPELINE_FRAME=0` without the frame).
+//! `PIPELINE_SIZES=` for none, `PIPELINE_FRAME=0` without the frame).
 //! Peak memory: `benches/memory.sh`.
 
 use std::path::{Path, PathBuf};
@@ -142,7 +142,7 @@ fn frame(dir: &Path) {
     drop(scene);
     let (mut one, mut two) = (Vec::new(), Vec::new());
     let (mut whole_one, mut whole_two) = (Vec::new(), Vec::new());
-    for _ in 0..3 {
+    for _ in 0..REPS {
         for (jobs, times) in [(1, &mut one), (2, &mut two)] {
             let start = Instant::now();
             let c = prepared.coverage_parallel(&target, jobs, &|| {});
@@ -176,7 +176,12 @@ fn main() {
     let dir: PathBuf = std::env::temp_dir().join("rp-pipeline");
     std::fs::create_dir_all(&dir).expect("temp dir");
     let sizes: Vec<usize> = std::env::var("PIPELINE_SIZES")
-        .map(|s| s.split(',').map(|n| n.trim().parse().expect("a size")).collect())
+        .map(|s| {
+            s.split(',')
+                .filter(|n| !n.trim().is_empty())
+                .map(|n| n.trim().parse().expect("a size"))
+                .collect()
+        })
         .unwrap_or_else(|_| vec![100_000, 1_000_000]);
     println!(
         "pipeline bench: median of {REPS} round-robin runs; ratio = render / serde_json::Value read of the same file"

@@ -130,12 +130,13 @@ proptest! {
     #[test]
     fn fast_and_slow_readers_agree(
         triangles in prop::collection::vec(triangle_text(), 0..5),
-        before in prop::sample::select(vec!["", "\"preset\": \"vulkan\",", "\"lines\": [{\"from\": [0, 0], \"to\": [3, 2]}],", "\"clip\": {\"rect\": [0, 0, 4, 4]},", "\"width\": 3,"]),
+        sep in prop::sample::select(vec![", ", ",", ",\n  ", " ,\t", " "]),
+        before in prop::sample::select(vec!["", "\"extra\": {\"triangles\": [{\"v\": 1}, {\"v\": 2}]},", "\"preset\": \"vulkan\",", "\"lines\": [{\"from\": [0, 0], \"to\": [3, 2]}],", "\"clip\": {\"rect\": [0, 0, 4, 4]},", "\"width\": 3,"]),
         after in prop::sample::select(vec!["", ", \"subpixel_bits\": 4", ", \"polygons\": [{\"v\": [[0,0],[4,0],[0,4]]}]", ", \"triangles\": []", ", \"clip\": {\"rect\": [0, 0, 4, 4], \"rect\": [0, 0, 2, 2]}", ", \"samples\": 4", ", \"bogus\": 1", "]"]),
     ) {
         let text = format!(
             "{{{before} \"width\": 8, \"height\": 8, \"triangles\": [{}]{after}}}",
-            triangles.join(", ")
+            triangles.join(sep)
         );
         let fast = parse_scene(&text, "s.json").map_err(|e| e.to_string());
         let slow = parse_scene_slow(&text, "s.json").map_err(|e| e.to_string());

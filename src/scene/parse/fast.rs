@@ -43,27 +43,157 @@ pub(super) enum Read {
 
 /// The top level of `text` read on the fast path, its triangles on up to `jobs` threads.
 ///
-/// On several threads the triangles are first cut out of the text as raw values (one
-/// pass of serde_json that reads no number), then each chunk of them is read by its thread
-/// exactly as the one-thread pass reads a triangle. Anything but a scene read that way (a
-/// decline, too many triangles) is read again on one thread, which says where it stopped
-/// and why as it always does; so the answer does not depend on `jobs`.
+/// On several threads the triangles are first cut out of the text as raw values, then
+/// each run of them is read by its thread exactly as the one-thread pass reads a
+/// triangle. The cut is made in parallel where it can be ([`read_split`]), else by one
+/// pass of serde_json over the array. Anything but a scene read that way (a decline, too
+/// many triangles) is read again on one thread, which says where it stopped and why as it
+/// always does; so the answer does not depend on `jobs`.
 pub(super) fn read(text: &str, jobs: usize) -> Read {
-    match read_on(text, jobs) {
+    if jobs <= 1 {
+        return read_on(text, 1, None);
+    }
+    if let Some(read) = read_split(text, jobs) {
+        return read;
+    }
+    match read_on(text, jobs, None) {
         Read::Fields(root, triangles) => Read::Fields(root, triangles),
-        _ if jobs > 1 => read_on(text, 1),
-        other => other,
+        _ => read_on(text, 1, None),
     }
 }
 
-/// [`read`], without the second try on one thread.
-fn read_on(text: &str, jobs: usize) -> Read {
+/// The triangles cut out of the text by `jobs` threads at once, each from a guess of
+/// where an element of the array begins, then read in runs; the rest of the document read
+/// with an empty array in their place. `None` (read another way) unless every step held:
+/// - the array is the value of a key `"triangles"` found by its text;
+/// - each thread walks the elements from its guess, each element one JSON value read by
+///   serde_json, separated by commas and JSON whitespace, and the walk of each run lands
+///   exactly on the next run's first element, or ends at the array's `]`;
+/// - the document with `[]` in place of the array is read on the fast path, and its
+///   top-level `triangles` is that `[]`;
+/// - every element is a triangle the fast path reads, and there are at most
+///   [`MAX_TRIANGLES`].
+///
+/// Then the text is the document read, its array the elements walked, so the scene is the
+/// one the one-thread pass reads.
+fn read_split(text: &str, jobs: usize) -> Option<Read> {
+    let open = array_of_key(text, "\"triangles\"")?;
+    let first = skip_space(text, open + 1);
+    let mut starts = vec![first];
+    for k in 1..jobs {
+        let cut = first + (text.len() - first) * k / jobs;
+        match element_after(text, cut) {
+            Some(s) if s > starts[starts.len() - 1] => starts.push(s),
+            _ => {}
+        }
+    }
+    let runs: Vec<(usize, Option<usize>)> = (0..starts.len())
+        .map(|k| (starts[k], starts.get(k + 1).copied()))
+        .collect();
+    let walked = chunks::map(&runs, jobs, |_, &(start, next)| walk(text, start, next));
+    let mut raw: Vec<&str> = Vec::new();
+    let mut close = None;
+    for run in walked {
+        let (elements, end) = run?;
+        raw.extend(elements);
+        if end.is_some() {
+            close = end;
+            break;
+        }
+    }
+    let close = close?;
+    if raw.len() > MAX_TRIANGLES {
+        return None;
+    }
+    let spliced = format!("{}[]{}", &text[..open], &text[close + 1..]);
+    let placeholder = spliced[open..].as_ptr() as usize;
+    let Read::Fields(root, Some(empty)) = read_on(&spliced, 1, Some(placeholder)) else {
+        return None;
+    };
+    debug_assert!(empty.is_empty());
+    let triangles = chunks::try_map(&raw, jobs, |_, t| triangle(t)).ok()?;
+    Some(Read::Fields(root, Some(triangles)))
+}
+
+/// Where the array after `key` (`"key"`, then `:`, then `[`, JSON whitespace between)
+/// opens, at its first such occurrence in the text.
+fn array_of_key(text: &str, key: &str) -> Option<usize> {
+    let at = text.find(key)?;
+    let colon = skip_space(text, at + key.len());
+    (text.as_bytes().get(colon) == Some(&b':')).then_some(())?;
+    let open = skip_space(text, colon + 1);
+    (text.as_bytes().get(open) == Some(&b'[')).then_some(open)
+}
+
+/// The first `{` at or after `from` whose previous byte other than JSON whitespace is a
+/// comma: a guess at where an element of an array of objects begins.
+fn element_after(text: &str, from: usize) -> Option<usize> {
+    let bytes = text.as_bytes();
+    let mut at = from;
+    loop {
+        let brace = at + bytes.get(at..)?.iter().position(|&b| b == b'{')?;
+        let before = bytes[..brace].iter().rposition(|&b| !is_space(b))?;
+        if bytes[before] == b',' {
+            return Some(brace);
+        }
+        at = brace + 1;
+    }
+}
+
+/// The elements from `start` on, each one JSON value (serde_json reads it), then JSON
+/// whitespace and a comma or the array's `]`: up to `next` (the next run's first element;
+/// the walk must land on it) or the `]` (its index is the second value). `None` where
+/// anything else is met.
+fn walk(text: &str, start: usize, next: Option<usize>) -> Option<(Vec<&str>, Option<usize>)> {
+    let mut out = Vec::new();
+    let mut at = start;
+    if text.as_bytes().get(at) == Some(&b']') {
+        // An empty array (only the first run can start anywhere but at a `{`).
+        return Some((out, Some(at)));
+    }
+    loop {
+        if Some(at) == next {
+            return Some((out, None));
+        }
+        if next.is_some_and(|n| at > n) {
+            return None;
+        }
+        let mut values = serde_json::Deserializer::from_str(text.get(at..)?).into_iter::<&RawValue>();
+        let value = values.next()?.ok()?;
+        out.push(value.get());
+        let after = skip_space(text, at + values.byte_offset());
+        match text.as_bytes().get(after)? {
+            b',' => at = skip_space(text, after + 1),
+            b']' => return Some((out, Some(after))),
+            _ => return None,
+        }
+    }
+}
+
+/// JSON whitespace.
+fn is_space(b: u8) -> bool {
+    matches!(b, b' ' | b'\t' | b'\n' | b'\r')
+}
+
+/// The first index at or after `at` that is not JSON whitespace (or the text's length).
+fn skip_space(text: &str, at: usize) -> usize {
+    let bytes = text.as_bytes();
+    at + bytes
+        .get(at..)
+        .map_or(0, |rest| rest.iter().take_while(|&&b| is_space(b)).count())
+}
+
+/// [`read`] on `jobs` threads without the second try on one thread; with `placeholder`
+/// (the address of an empty array in `text`), the top-level `triangles` must be that
+/// array, whose elements were read apart ([`read_split`]).
+fn read_on(text: &str, jobs: usize, placeholder: Option<usize>) -> Read {
     let too_many = Cell::new(false);
     let mut de = serde_json::Deserializer::from_str(text);
     let at = |e: serde_json::Error| Some((e.line(), e.column()));
     let root = Root {
         too_many: &too_many,
         jobs,
+        placeholder,
     };
     let (raw, triangles) = match root.deserialize(&mut de) {
         Ok(read) => read,
@@ -96,6 +226,9 @@ struct Root<'a> {
     too_many: &'a Cell<bool>,
     /// The threads that read the triangles.
     jobs: usize,
+    /// Where the top-level `triangles` must be an empty array put in place of the one
+    /// read apart: its address.
+    placeholder: Option<usize>,
 }
 
 type RootValue<'de> = (BTreeMap<String, &'de RawValue>, Option<Vec<SceneTriangle>>);
@@ -119,6 +252,14 @@ impl<'de> Visitor<'de> for Root<'_> {
             if key == "triangles" {
                 if triangles.is_some() {
                     return Err(decline());
+                }
+                if let Some(address) = self.placeholder {
+                    let value: &'de RawValue = map.next_value()?;
+                    if value.get() != "[]" || value.get().as_ptr() as usize != address {
+                        return Err(decline());
+                    }
+                    triangles = Some(Vec::new());
+                    continue;
                 }
                 triangles = Some(map.next_value_seed(Triangles {
                     too_many: self.too_many,
@@ -314,5 +455,68 @@ impl<'de> Visitor<'de> for Colour {
             return Err(decline());
         }
         Ok(out)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::parse::{parse_scene, parse_scene_parallel};
+
+    /// A scene of `n` triangles, `sep` between them, `before` and `after` the array.
+    fn scene(n: usize, sep: &str, before: &str, after: &str) -> String {
+        let t: Vec<String> = (0..n)
+            .map(|k| format!("{{\"v\": [[{k}, 0.5], [\"{k}/3\", 7], [1, 2]]}}"))
+            .collect();
+        format!(
+            "{{{before}\"width\": 64, \"height\": 64, \"triangles\": [{}]{after}}}",
+            t.join(sep)
+        )
+    }
+
+    /// A plain scene, compact or pretty-printed, is cut in parallel (not by the fallbacks)
+    /// and read as on one thread.
+    #[test]
+    fn a_plain_array_is_cut_in_parallel() {
+        for sep in [",", ", ", ",\n    ", " ,\r\n\t"] {
+            for n in [0, 1, 2, 3, 10, 101] {
+                let text = scene(n, sep, "", ", \"preset\": \"vulkan\"");
+                for jobs in [2, 3, 8] {
+                    assert!(
+                        matches!(read_split(&text, jobs), Some(Read::Fields(..))),
+                        "{n} triangles, {sep:?}, {jobs} jobs"
+                    );
+                    assert_eq!(parse_scene_parallel(&text, "s", jobs), parse_scene(&text, "s"));
+                }
+            }
+        }
+    }
+
+    /// Where a guess goes wrong the cut is refused, and the scene is still the one read on
+    /// one thread: the key's text inside a string before the real key, the key in another
+    /// field, elements that are not objects, a missing comma, a trailing comma, a second
+    /// `triangles`.
+    #[test]
+    fn a_wrong_guess_is_refused_and_read_another_way() {
+        let cases = [
+            scene(20, ",", "\"name\": \"\\\"triangles\\\": [\", ", ""),
+            scene(20, ",", "\"extra\": {\"triangles\": [{\"v\": 1}]}, ", ""),
+            scene(20, ",", "", ", \"triangles\": []"),
+            scene(6, ", 7,", "", ""),
+            scene(6, " ", "", ""),
+            scene(6, ",", "", "").replace("]]}]", "]]},]"),
+        ];
+        for text in &cases {
+            for jobs in [2, 3] {
+                assert_eq!(
+                    parse_scene_parallel(text, "s", jobs).map_err(|e| e.to_string()),
+                    parse_scene(text, "s").map_err(|e| e.to_string()),
+                    "{text}"
+                );
+            }
+        }
+        // The key inside another field first: the guess is that field's array, refused.
+        assert!(read_split(&cases[1], 2).is_none());
+        assert!(read_split(&cases[2], 2).is_none());
     }
 }
