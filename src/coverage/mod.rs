@@ -251,6 +251,13 @@ impl CoverageSink for Coverage {
         );
         let (shared, covered) = (&mut self.shared, &mut self.covered);
         self.tiles.row_mut(y, x0, x1, |first, slots| {
+            // Most writes land on pixels nobody covers yet: one comparison of the run
+            // and one fill, which the compiler turns into vector code.
+            if slots.iter().all(|&s| s == tiles::EMPTY) {
+                slots.fill(id);
+                *covered += slots.len();
+                return;
+            }
             for (x, slot) in (first..).zip(slots) {
                 add_owner(slot, (x, y), id, shared, covered);
             }
