@@ -449,6 +449,29 @@ impl CoverageSink for CountBuffer {
 mod tests {
     use super::*;
 
+    /// A span over pixels partly covered already, across a tile boundary (x 64): the new
+    /// owner joins each pixel's list, the pixels nobody covered get it alone, and the count
+    /// of covered pixels grows by those only.
+    #[test]
+    fn a_span_over_covered_pixels_keeps_their_owners() {
+        let mut c = Coverage::new(100, 2);
+        c.cover(66, 1, 0);
+        c.cover_span(1, 70, 71, 3);
+        c.cover_span(1, 60, 70, 7);
+        assert_eq!(c.covered_pixels(), 12);
+        for x in 60..=70 {
+            let expected: &[u32] = match x {
+                66 => &[0, 7],
+                70 => &[3, 7],
+                _ => &[7],
+            };
+            assert_eq!(c.owners(x, 1), expected, "x {x}");
+        }
+        assert_eq!(c.owners(71, 1), &[3]);
+        assert!(c.owners(59, 1).is_empty() && c.owners(66, 0).is_empty());
+        assert_eq!(c.double_covered().count(), 2);
+    }
+
     #[test]
     fn owners_stay_sorted_and_repeats_are_kept() {
         let mut c = Coverage::new(2, 2);
