@@ -45,8 +45,8 @@ pub(super) enum Read {
 ///
 /// On several threads the triangles are first cut out of the text as raw values, then
 /// each run of them is read by its thread exactly as the one-thread pass reads a
-/// triangle. The cut is made in parallel where it can be ([`read_split`]), else by one
-/// pass of serde_json over the array. Anything but a scene read that way (a decline, too
+/// triangle. Where it can ([`read_split`]) each thread finds and reads its run at once;
+/// else one pass of serde_json over the array cuts it. Anything but a scene read that way (a decline, too
 /// many triangles) is read again on one thread, which says where it stopped and why as it
 /// always does; so the answer does not depend on `jobs`.
 pub(super) fn read(text: &str, jobs: usize) -> Read {
@@ -62,9 +62,9 @@ pub(super) fn read(text: &str, jobs: usize) -> Read {
     }
 }
 
-/// The triangles cut out of the text by `jobs` threads at once, each from a guess of
-/// where an element of the array begins, then read in runs; the rest of the document read
-/// with an empty array in their place. `None` (read another way) unless every step held:
+/// The triangles read by `jobs` threads at once, each from a guess of where an element of
+/// the array begins; the rest of the document read with an empty array in their place.
+/// `None` (read another way) unless every step held:
 /// - the array is the value of a key `"triangles"` found by its text;
 /// - each thread walks the elements from its guess, each element one JSON value read by
 ///   serde_json, separated by commas and JSON whitespace, and the walk of each run lands
@@ -91,18 +91,18 @@ fn read_split(text: &str, jobs: usize) -> Option<Read> {
         .map(|k| (starts[k], starts.get(k + 1).copied()))
         .collect();
     let walked = chunks::map(&runs, jobs, |_, &(start, next)| walk(text, start, next));
-    let mut raw: Vec<&str> = Vec::new();
+    let mut parts = Vec::new();
     let mut close = None;
     for run in walked {
-        let (elements, end) = run?;
-        raw.extend(elements);
+        let (triangles, end) = run?;
+        parts.push(triangles);
         if end.is_some() {
             close = end;
             break;
         }
     }
     let close = close?;
-    if raw.len() > MAX_TRIANGLES {
+    if parts.iter().map(Vec::len).sum::<usize>() > MAX_TRIANGLES {
         return None;
     }
     let spliced = format!("{}[]{}", &text[..open], &text[close + 1..]);
@@ -111,7 +111,15 @@ fn read_split(text: &str, jobs: usize) -> Option<Read> {
         return None;
     };
     debug_assert!(empty.is_empty());
-    let triangles = chunks::try_map(&raw, jobs, |_, t| triangle(t)).ok()?;
+    // The first run's vector grows to hold the others (a big vector is moved by the
+    // system's page tables, not copied), so only the later runs are copied.
+    let mut parts = parts.into_iter();
+    let mut triangles = parts.next().unwrap_or_default();
+    let rest: Vec<Vec<SceneTriangle>> = parts.collect();
+    triangles.reserve_exact(rest.iter().map(Vec::len).sum());
+    for part in rest {
+        triangles.extend(part);
+    }
     Some(Read::Fields(root, Some(triangles)))
 }
 
@@ -140,11 +148,11 @@ fn element_after(text: &str, from: usize) -> Option<usize> {
     }
 }
 
-/// The elements from `start` on, each one JSON value (serde_json reads it), then JSON
-/// whitespace and a comma or the array's `]`: up to `next` (the next run's first element;
-/// the walk must land on it) or the `]` (its index is the second value). `None` where
-/// anything else is met.
-fn walk(text: &str, start: usize, next: Option<usize>) -> Option<(Vec<&str>, Option<usize>)> {
+/// The elements from `start` on, each a triangle read by [`TriangleSeed`] (serde_json reads
+/// it as one JSON value), then JSON whitespace and a comma or the array's `]`: up to `next`
+/// (the next run's first element; the walk must land on it) or the `]` (its index is the
+/// second value). `None` where anything else is met.
+fn walk(text: &str, start: usize, next: Option<usize>) -> Option<(Vec<SceneTriangle>, Option<usize>)> {
     let mut out = Vec::new();
     let mut at = start;
     if text.as_bytes().get(at) == Some(&b']') {
@@ -158,9 +166,8 @@ fn walk(text: &str, start: usize, next: Option<usize>) -> Option<(Vec<&str>, Opt
         if next.is_some_and(|n| at > n) {
             return None;
         }
-        let mut values = serde_json::Deserializer::from_str(text.get(at..)?).into_iter::<&RawValue>();
-        let value = values.next()?.ok()?;
-        out.push(value.get());
+        let mut values = serde_json::Deserializer::from_str(text.get(at..)?).into_iter::<FastTriangle>();
+        out.push(values.next()?.ok()?.0);
         let after = skip_space(text, at + values.byte_offset());
         match text.as_bytes().get(after)? {
             b',' => at = skip_space(text, after + 1),
@@ -327,6 +334,16 @@ fn triangle(text: &str) -> Result<SceneTriangle, ()> {
     let t = TriangleSeed.deserialize(&mut de).map_err(drop)?;
     de.end().map_err(drop)?;
     Ok(t)
+}
+
+/// A triangle read by [`TriangleSeed`], for serde_json's stream of values (which says where
+/// each ends).
+struct FastTriangle(SceneTriangle);
+
+impl<'de> serde::Deserialize<'de> for FastTriangle {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        TriangleSeed.deserialize(d).map(FastTriangle)
+    }
 }
 
 /// One triangle object: `v` and optional `colors`, nothing else.
