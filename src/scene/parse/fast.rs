@@ -25,6 +25,8 @@ use serde_json::value::RawValue;
 
 use super::json::{from_raw, Map};
 use super::{keys, MAX_TRIANGLES};
+use rayon::iter::{IndexedParallelIterator, IntoParallelIterator, ParallelExtend};
+
 use crate::chunks;
 use crate::geom::{CompactTriangle, Rgb};
 use crate::num::compact::Compact;
@@ -112,13 +114,14 @@ fn read_split(text: &str, jobs: usize) -> Option<Read> {
     };
     debug_assert!(empty.is_empty());
     // The first run's vector grows to hold the others (a big vector is moved by the
-    // system's page tables, not copied), so only the later runs are copied.
+    // system's page tables, not copied), so only the later runs are copied, on the threads.
     let mut parts = parts.into_iter();
     let mut triangles = parts.next().unwrap_or_default();
     let rest: Vec<Vec<SceneTriangle>> = parts.collect();
     triangles.reserve_exact(rest.iter().map(Vec::len).sum());
     for part in rest {
-        triangles.extend(part);
+        let run = part.len().div_ceil(jobs).max(1);
+        triangles.par_extend(part.into_par_iter().with_min_len(run));
     }
     Some(Read::Fields(root, Some(triangles)))
 }
