@@ -367,50 +367,31 @@ fn inside_faces(cdt: &Cdt) -> Vec<bool> {
 mod tests {
     use super::*;
     use crate::edge::fixed::edge_function_wide;
-    use crate::fill::sweep::{meet, pair_problem};
+    use crate::fill::sweep::pair_problem;
     use crate::geom::FillRule;
     use proptest::prelude::*;
     use proptest::test_runner::{Config, FileFailurePersistence};
 
-    /// The pairwise check the sweep replaced, as it was: every pair of edges, in order,
-    /// the first pair that meets (the reference for the sweep's verdict).
+    /// The pairwise check the sweep replaced: every pair of edges, in order, the first pair
+    /// that meets (the reference for the sweep's verdict). The test of one pair is the
+    /// sweep's own, [`pair_problem`]; what is compared is which pairs are tried.
     fn check_simple_pairwise(contours: &[Contour], bits: u32) -> Result<(), TriangulateError> {
-        let mut edges = Vec::new();
-        for c in contours {
-            let n = c.points.len();
-            for i in 0..n {
-                edges.push((
-                    EdgeRef {
-                        contour: c.index,
+        let slices: Vec<&[[i64; 2]]> = contours.iter().map(|c| c.points.as_slice()).collect();
+        let edges: Vec<(usize, usize)> = slices
+            .iter()
+            .enumerate()
+            .flat_map(|(k, c)| (0..c.len()).map(move |i| (k, i)))
+            .collect();
+        for (x, &ea) in edges.iter().enumerate() {
+            for &eb in &edges[x + 1..] {
+                if let Some(at) = pair_problem(&slices, ea, eb) {
+                    let edge = |(k, i): (usize, usize)| EdgeRef {
+                        contour: contours[k].index,
                         edge: i,
-                    },
-                    c.points[i],
-                    c.points[(i + 1) % n],
-                    n,
-                ));
-            }
-        }
-        for (x, &(ea, a, b, n)) in edges.iter().enumerate() {
-            for &(eb, c, d, _) in &edges[x + 1..] {
-                let adjacent =
-                    ea.contour == eb.contour && (eb.edge == ea.edge + 1 || (ea.edge == 0 && eb.edge == n - 1));
-                let problem = if adjacent {
-                    // They share one vertex v; the other ends must not lie on the same ray from it.
-                    let (v, p, q) = if b == c { (b, a, d) } else { (a, b, c) };
-                    let folds = orient(v, p, q) == 0 && {
-                        let dot = (0..2)
-                            .map(|k| (i128::from(p[k]) - i128::from(v[k])) * (i128::from(q[k]) - i128::from(v[k])))
-                            .sum::<i128>();
-                        dot > 0
                     };
-                    folds.then_some(v)
-                } else {
-                    meet(a, b, c, d)
-                };
-                if let Some(at) = problem {
                     return Err(TriangulateError::NotSimple {
-                        first: ea,
-                        second: eb,
+                        first: edge(ea),
+                        second: edge(eb),
                         at,
                         bits,
                     });
