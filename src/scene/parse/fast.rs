@@ -45,22 +45,15 @@ pub(super) enum Read {
 
 /// The top level of `text` read on the fast path, its triangles on up to `jobs` threads.
 ///
-/// On several threads the triangles are first cut out of the text as raw values, then
-/// each run of them is read by its thread exactly as the one-thread pass reads a
-/// triangle. Where it can ([`read_split`]) each thread finds and reads its run at once;
-/// else one pass of serde_json over the array cuts it. Anything but a scene read that way (a decline, too
-/// many triangles) is read again on one thread, which says where it stopped and why as it
-/// always does; so the answer does not depend on `jobs`.
+/// On several threads each thread finds and reads its run of triangles
+/// ([`read_split`]), exactly as the one-thread pass reads a triangle. Anything but a
+/// scene read that way (a decline, too many triangles, a layout the threads' guesses do
+/// not fit) is read again by the one-thread pass, which says where it stopped and why as
+/// it always does; so the answer does not depend on `jobs`.
 pub(super) fn read(text: &str, jobs: usize) -> Read {
-    if jobs <= 1 {
-        return read_on(text, 1, None);
-    }
-    if let Some(read) = read_split(text, jobs) {
-        return read;
-    }
-    match read_on(text, jobs, None) {
-        Read::Fields(root, triangles) => Read::Fields(root, triangles),
-        _ => read_on(text, 1, None),
+    match (jobs > 1).then(|| read_split(text, jobs)).flatten() {
+        Some(read) => read,
+        None => read_on(text, None),
     }
 }
 
@@ -109,7 +102,7 @@ fn read_split(text: &str, jobs: usize) -> Option<Read> {
     }
     let spliced = format!("{}[]{}", &text[..open], &text[close + 1..]);
     let placeholder = spliced[open..].as_ptr() as usize;
-    let Read::Fields(root, Some(empty)) = read_on(&spliced, 1, Some(placeholder)) else {
+    let Read::Fields(root, Some(empty)) = read_on(&spliced, Some(placeholder)) else {
         return None;
     };
     debug_assert!(empty.is_empty());
@@ -193,16 +186,15 @@ fn skip_space(text: &str, at: usize) -> usize {
         .map_or(0, |rest| rest.iter().take_while(|&&b| is_space(b)).count())
 }
 
-/// [`read`] on `jobs` threads without the second try on one thread; with `placeholder`
-/// (the address of an empty array in `text`), the top-level `triangles` must be that
-/// array, whose elements were read apart ([`read_split`]).
-fn read_on(text: &str, jobs: usize, placeholder: Option<usize>) -> Read {
+/// The one-thread pass of [`read`]; with `placeholder` (the address of an empty array in
+/// `text`), the top-level `triangles` must be that array, whose elements were read apart
+/// ([`read_split`]).
+fn read_on(text: &str, placeholder: Option<usize>) -> Read {
     let too_many = Cell::new(false);
     let mut de = serde_json::Deserializer::from_str(text);
     let at = |e: serde_json::Error| Some((e.line(), e.column()));
     let root = Root {
         too_many: &too_many,
-        jobs,
         placeholder,
     };
     let (raw, triangles) = match root.deserialize(&mut de) {
@@ -234,8 +226,6 @@ fn decline<E: serde::de::Error>() -> E {
 /// The top-level object.
 struct Root<'a> {
     too_many: &'a Cell<bool>,
-    /// The threads that read the triangles.
-    jobs: usize,
     /// Where the top-level `triangles` must be an empty array put in place of the one
     /// read apart: its address.
     placeholder: Option<usize>,
@@ -273,7 +263,6 @@ impl<'de> Visitor<'de> for Root<'_> {
                 }
                 triangles = Some(map.next_value_seed(Triangles {
                     too_many: self.too_many,
-                    jobs: self.jobs,
                 })?);
             } else {
                 let value: &'de RawValue = map.next_value()?;
@@ -289,9 +278,6 @@ impl<'de> Visitor<'de> for Root<'_> {
 /// The `triangles` array; `too_many` is set when it holds more than [`MAX_TRIANGLES`].
 struct Triangles<'a> {
     too_many: &'a Cell<bool>,
-    /// The threads that read them: one reads each triangle as the pass meets it, several
-    /// read the raw values the pass cut out ([`read`]).
-    jobs: usize,
 }
 
 impl<'de> DeserializeSeed<'de> for Triangles<'_> {
@@ -307,17 +293,6 @@ impl<'de> Visitor<'de> for Triangles<'_> {
         f.write_str("an array of triangles")
     }
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
-        if self.jobs > 1 {
-            let mut raw: Vec<&'de RawValue> = Vec::new();
-            while let Some(t) = seq.next_element()? {
-                if raw.len() == MAX_TRIANGLES {
-                    self.too_many.set(true);
-                    return Err(decline());
-                }
-                raw.push(t);
-            }
-            return chunks::try_map(&raw, self.jobs, |_, t| triangle(t.get())).map_err(|()| decline());
-        }
         let mut out = Vec::with_capacity(seq.size_hint().unwrap_or(0).min(MAX_TRIANGLES));
         while let Some(t) = seq.next_element_seed(TriangleSeed)? {
             if out.len() == MAX_TRIANGLES {
@@ -328,15 +303,6 @@ impl<'de> Visitor<'de> for Triangles<'_> {
         }
         Ok(out)
     }
-}
-
-/// One triangle object's text (a raw value cut out of the `triangles` array) read as
-/// [`TriangleSeed`] reads it in the stream; `Err` where it declines.
-fn triangle(text: &str) -> Result<SceneTriangle, ()> {
-    let mut de = serde_json::Deserializer::from_str(text);
-    let t = TriangleSeed.deserialize(&mut de).map_err(drop)?;
-    de.end().map_err(drop)?;
-    Ok(t)
 }
 
 /// A triangle read by [`TriangleSeed`], for serde_json's stream of values (which says where
