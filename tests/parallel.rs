@@ -1,7 +1,9 @@
 //! Parallel drawing (`PreparedScene::coverage_parallel`, `render --jobs N`): the canvas cut
 //! into bands of 64-row tiles, each drawn by its own thread; the result is the one-thread
 //! coverage bit for bit, for every model, on scenes of every primitive kind whose shapes
-//! cross the bands' edges, and the CLI's outputs are byte-identical.
+//! cross the bands' edges, and the CLI's outputs are byte-identical. The same bands one at
+//! a time (`PreparedScene::visit_bands`, what `render` counts a big frame with when it
+//! writes only its summary) hold the same pixels.
 
 use assert_cmd::Command;
 use num_rational::BigRational;
@@ -10,7 +12,7 @@ use rasterproof::convention::{Preset, Target};
 use rasterproof::coverage::{Coverage, CoverageSink, RowBand};
 use rasterproof::geom::{Point, Triangle};
 use rasterproof::line::{Line, LineRule};
-use rasterproof::model::{prepare, prepare_parallel, Model, Primitives};
+use rasterproof::model::{prepare, prepare_parallel, Model, PreparedScene, Primitives};
 use rasterproof::strategy::clip::any_window;
 use rasterproof::strategy::polygon::any_polygon;
 use rasterproof::strategy::{any_triangle, diamond_line, pixel_line, tie_heavy_triangle};
@@ -111,6 +113,18 @@ proptest! {
             let many = prepared.coverage_parallel(&target, jobs, &|| {});
             prop_assert_eq!(&many, &one, "{} on {} threads", model.name(), jobs);
             prop_assert_eq!(many.covered_pixels(), one.covered_pixels());
+            // Band by band, a thread reusing its last band's tiles: each band has the
+            // one-thread coverage's pixels of its rows and nothing else, and the bands
+            // follow each other down the canvas.
+            let bands = prepared.visit_bands(&target, jobs, |y0, y1, band| (y0, y1, band.clone()), &|| {});
+            prop_assert_eq!(bands.len(), PreparedScene::visited_band_count(&target, jobs));
+            let mut next = 0;
+            for (y0, y1, band) in bands {
+                prop_assert_eq!(y0, next, "{} on {} threads", model.name(), jobs);
+                prop_assert_eq!(&band, &one.restricted(0, y0, WIDTH, y1), "{} on {} threads, rows {}..{}", model.name(), jobs, y0, y1);
+                next = y1;
+            }
+            prop_assert_eq!(next, HEIGHT);
         }
     }
 
@@ -222,5 +236,59 @@ fn render_jobs_outputs_are_byte_identical() {
         assert!(!outputs[0].0.is_empty());
         assert_eq!(outputs[1], outputs[0], "{}: --jobs 2", model.name());
         assert_eq!(outputs[2], outputs[0], "{}: --jobs 3", model.name());
+    }
+}
+
+/// Two overlapping rectangles (two triangles each) across row 2048 of a 16384 x 4096 canvas,
+/// 2^26 pixels: `render` writing only its summary visits the frame in bands of at most
+/// 2^25 pixels, two on one thread, and says what the whole coverage says. By hand: the
+/// rectangle [100, 110) x [2000, 2100) covers 10 x 100 pixels, [105, 120) x [2040, 2060)
+/// 15 x 20, both of them [105, 110) x [2040, 2060), 5 x 20.
+#[test]
+fn render_counts_a_big_frame_band_by_band() {
+    let dir = tempdir::Dir::new("bands");
+    let scene = dir.path().join("scene.json");
+    let rect = |x0: u32, y0: u32, x1: u32, y1: u32| {
+        format!(
+            r#"{{"v": [[{x0}, {y0}], [{x1}, {y0}], [{x1}, {y1}]]}}, {{"v": [[{x0}, {y0}], [{x1}, {y1}], [{x0}, {y1}]]}}"#
+        )
+    };
+    std::fs::write(
+        &scene,
+        format!(
+            r#"{{"width": 16384, "height": 4096, "triangles": [{}, {}]}}"#,
+            rect(100, 2000, 110, 2100),
+            rect(105, 2040, 120, 2060)
+        ),
+    )
+    .unwrap();
+    let text = std::fs::read_to_string(&scene).unwrap();
+    let parsed = rasterproof::scene::parse_scene(&text, "scene.json").unwrap();
+    let target = parsed.target().unwrap();
+    assert_eq!(PreparedScene::visited_band_count(&target, 1), 2);
+    let expected = "1200 pixels covered, 100 covered more than once";
+    for model in Model::ALL {
+        for jobs in ["1", "2", "3"] {
+            let out = Command::cargo_bin("rasterproof")
+                .unwrap()
+                .args([
+                    "render",
+                    scene.to_str().unwrap(),
+                    "--model",
+                    model.name(),
+                    "--jobs",
+                    jobs,
+                ])
+                .output()
+                .unwrap();
+            let stdout = String::from_utf8_lossy(&out.stdout);
+            assert!(
+                out.status.success(),
+                "{} --jobs {jobs}: {}",
+                model.name(),
+                String::from_utf8_lossy(&out.stderr)
+            );
+            assert!(stdout.contains(expected), "{} --jobs {jobs}: {stdout}", model.name());
+        }
     }
 }

@@ -12,7 +12,7 @@ use rasterproof::coverage::picture::{legend_path, upscale};
 use rasterproof::coverage::Coverage;
 use rasterproof::coverage::{Scale, ASCII_GRID_MAX_SIDE};
 use rasterproof::model::plan;
-use rasterproof::model::{prepare_parallel, render_area_rows, PreparedScene};
+use rasterproof::model::{prepare_parallel, render_area_rows, Model, PreparedScene};
 use rasterproof::num::exact::{exact_text, terminating_decimal};
 use std::time::{Duration, Instant};
 
@@ -158,6 +158,17 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let fail = |e: rasterproof::model::ModelError| format!("{name}: {e} (model {model})");
     let primitives = scene.primitives_parallel(o.jobs as usize);
     let prepared = prepare_parallel(&primitives, &target, model, o.jobs as usize).map_err(fail)?;
+    let small = target.width <= ASCII_GRID_MAX_SIDE && target.height <= ASCII_GRID_MAX_SIDE;
+    let whole = o.out.is_some() || o.colors_out.is_some() || o.ids_out.is_some() || small;
+    if !whole && matches!(o.format, OutputFormat::Text) {
+        // Only the summary: the frame is counted band by band, in the memory of a few
+        // bands instead of the whole canvas.
+        let (covered, double) = count_with_progress(&prepared, &target, o.jobs as usize);
+        let summary = summary(&name, model, &target, covered, double, &prepared);
+        crate::cli::print_stdout(&summary)?;
+        std::mem::forget((scene, primitives, prepared));
+        return Ok(ExitCode::SUCCESS);
+    }
     let coverage = draw_with_progress(&prepared, &target, o.jobs as usize);
 
     let mut outputs = Outputs::new();
@@ -182,15 +193,8 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     }
     outputs.commit()?;
 
-    let mut summary = format!(
-        "{name}: model {model}, {}: {} pixels covered, {} covered more than once",
-        target.convention,
-        coverage.covered_pixels(),
-        coverage.double_covered().count()
-    );
-    if model.plans() {
-        summary.push_str(&format!("; plan: {}", plan::summary(&prepared.plans())));
-    }
+    let double = coverage.double_covered().count();
+    let mut summary = summary(&name, model, &target, coverage.covered_pixels(), double, &prepared);
     if !wrote.is_empty() {
         let k = scale.get();
         summary.push_str(&format!("; wrote {} (scale {k})", wrote.join(", ")));
@@ -204,7 +208,6 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             eprintln!("{summary}");
         }
         OutputFormat::Text => {
-            let small = target.width <= ASCII_GRID_MAX_SIDE && target.height <= ASCII_GRID_MAX_SIDE;
             let grid = if small { coverage.to_ascii() } else { String::new() };
             crate::cli::print_stdout(&format!("{grid}{summary}"))?;
         }
@@ -214,6 +217,26 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     // tiles first (some 40 ms of a 16384² frame of 1M triangles, on one thread).
     std::mem::forget((scene, primitives, prepared, coverage));
     Ok(ExitCode::SUCCESS)
+}
+
+/// The summary line of a one-sample render: the pixels covered, once and more than once,
+/// and the plan of a planned model.
+fn summary(
+    name: &str,
+    model: Model,
+    target: &Target,
+    covered: usize,
+    double: usize,
+    prepared: &PreparedScene,
+) -> String {
+    let mut summary = format!(
+        "{name}: model {model}, {}: {covered} pixels covered, {double} covered more than once",
+        target.convention,
+    );
+    if model.plans() {
+        summary.push_str(&format!("; plan: {}", plan::summary(&prepared.plans())));
+    }
+    summary
 }
 
 /// `render` under a pattern of several samples: every sample's coverage, the stacked ids
@@ -518,29 +541,13 @@ fn tenths_grid(image: &AreaImage) -> String {
 fn draw_with_progress(prepared: &PreparedScene, target: &Target, jobs: usize) -> Coverage {
     let start = Instant::now();
     let bands = PreparedScene::band_count(target, jobs);
-    let (count, unit) = if bands > 1 {
-        (bands, "bands")
-    } else {
-        (prepared.primitive_count(), "primitives")
-    };
-    let bar = ProgressBar::with_draw_target(Some(count as u64), ProgressDrawTarget::hidden());
-    bar.set_style(
-        ProgressStyle::with_template(&format!(
-            "{{bar:40}} {{pos}}/{{len}} {unit}, {{elapsed}} ({{eta}} left)"
-        ))
-        .expect("a valid template"),
-    );
     if bands > 1 {
-        let shown = std::sync::atomic::AtomicBool::new(false);
-        let coverage = prepared.coverage_parallel(target, jobs, &|| {
-            bar.inc(1);
-            if start.elapsed() > Duration::from_secs(1) && !shown.swap(true, std::sync::atomic::Ordering::Relaxed) {
-                bar.set_draw_target(ProgressDrawTarget::stderr());
-            }
-        });
-        bar.finish_and_clear();
+        let bar = BandBar::new(bands, start);
+        let coverage = prepared.coverage_parallel(target, jobs, &|| bar.one_more());
+        bar.bar.finish_and_clear();
         return coverage;
     }
+    let bar = progress_bar(prepared.primitive_count(), "primitives");
     let mut ticks = Ticks::new(start);
     let mut coverage = Coverage::new(target.width, target.height);
     prepared.render_observed(target, &mut coverage, &mut || {
@@ -554,6 +561,59 @@ fn draw_with_progress(prepared: &PreparedScene, target: &Target, jobs: usize) ->
     });
     bar.finish_and_clear();
     coverage
+}
+
+/// The pixels covered and covered more than once, counted band by band
+/// ([`PreparedScene::visit_bands`]) with the bar of [`draw_with_progress`] over the bands.
+fn count_with_progress(prepared: &PreparedScene, target: &Target, jobs: usize) -> (usize, usize) {
+    let bar = BandBar::new(PreparedScene::visited_band_count(target, jobs), Instant::now());
+    let counts = prepared.visit_bands(
+        target,
+        jobs,
+        |_, _, band| (band.covered_pixels(), band.double_covered().count()),
+        &|| bar.one_more(),
+    );
+    bar.bar.finish_and_clear();
+    counts.into_iter().fold((0, 0), |(c, d), (bc, bd)| (c + bc, d + bd))
+}
+
+/// A hidden bar of `count` `unit`s, drawn on stderr once shown.
+fn progress_bar(count: usize, unit: &str) -> ProgressBar {
+    let bar = ProgressBar::with_draw_target(Some(count as u64), ProgressDrawTarget::hidden());
+    bar.set_style(
+        ProgressStyle::with_template(&format!(
+            "{{bar:40}} {{pos}}/{{len}} {unit}, {{elapsed}} ({{eta}} left)"
+        ))
+        .expect("a valid template"),
+    );
+    bar
+}
+
+/// The bar of a frame drawn in bands, told by the threads as each band is done; shown once
+/// drawing has gone on for a second.
+struct BandBar {
+    bar: ProgressBar,
+    start: Instant,
+    shown: std::sync::atomic::AtomicBool,
+}
+
+impl BandBar {
+    fn new(bands: usize, start: Instant) -> BandBar {
+        BandBar {
+            bar: progress_bar(bands, "bands"),
+            start,
+            shown: std::sync::atomic::AtomicBool::new(false),
+        }
+    }
+
+    /// One more band done.
+    fn one_more(&self) {
+        self.bar.inc(1);
+        if self.start.elapsed() > Duration::from_secs(1) && !self.shown.swap(true, std::sync::atomic::Ordering::Relaxed)
+        {
+            self.bar.set_draw_target(ProgressDrawTarget::stderr());
+        }
+    }
 }
 
 /// The progress of one thread drawing primitive after primitive, told to the bar in

@@ -14,6 +14,7 @@ pub mod picture;
 pub mod samples;
 mod tiles;
 
+pub(crate) use tiles::Spare;
 use tiles::TileGrid;
 
 pub use ids::IdOutOfRange;
@@ -268,13 +269,23 @@ impl CoverageSink for Coverage {
 impl Coverage {
     /// An empty coverage of a `width` x `height` canvas.
     pub fn new(width: u32, height: u32) -> Coverage {
+        Coverage::with_spare(width, height, Spare::default())
+    }
+
+    /// An empty coverage that writes into `spare`'s tiles before it asks for memory.
+    pub(crate) fn with_spare(width: u32, height: u32, spare: Spare) -> Coverage {
         Coverage {
             width,
             height,
-            tiles: TileGrid::new(width, height),
+            tiles: TileGrid::with_spare(width, height, spare),
             shared: BTreeMap::new(),
             covered: 0,
         }
+    }
+
+    /// This coverage's tiles, for the next one ([`Coverage::with_spare`]).
+    pub(crate) fn into_spare(self) -> Spare {
+        self.tiles.into_spare()
     }
 
     /// Canvas width.

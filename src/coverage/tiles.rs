@@ -18,23 +18,60 @@ pub const SHARED: u32 = u32::MAX - 1;
 type Tile = Box<[u32; TILE_AREA]>;
 
 /// A `width` x `height` grid of slots, [`EMPTY`] until written.
-#[derive(Clone, PartialEq, Eq)]
 pub struct TileGrid {
     /// Tiles across (`ceil(width / 64)`).
     across: usize,
     /// Row-major over the tile grid; `None` = every slot of the tile is [`EMPTY`].
     tiles: Vec<Option<Tile>>,
+    /// Tiles of a grid that is done, written into before new memory is asked for; not
+    /// part of the grid's value.
+    spare: Vec<Tile>,
 }
 
+/// The tiles a finished grid leaves ([`TileGrid::into_spare`]), for the next grid
+/// ([`TileGrid::with_spare`]): a band of a frame drawn after another on one thread writes
+/// into memory it already holds, instead of memory the system must map and zero again.
+#[derive(Default)]
+pub struct Spare(Vec<Tile>);
+
+impl Clone for TileGrid {
+    /// The same slots; the spare tiles stay behind.
+    fn clone(&self) -> TileGrid {
+        TileGrid {
+            across: self.across,
+            tiles: self.tiles.clone(),
+            spare: Vec::new(),
+        }
+    }
+}
+
+impl PartialEq for TileGrid {
+    /// The same slots (spare tiles aside).
+    fn eq(&self, other: &TileGrid) -> bool {
+        self.across == other.across && self.tiles == other.tiles
+    }
+}
+
+impl Eq for TileGrid {}
+
 impl TileGrid {
-    /// An all-[`EMPTY`] grid; allocates the tile pointers only.
-    pub fn new(width: u32, height: u32) -> TileGrid {
+    /// An all-[`EMPTY`] grid; allocates the tile pointers only, and takes its tiles from
+    /// `spare` while it has any.
+    pub fn with_spare(width: u32, height: u32, spare: Spare) -> TileGrid {
         let across = width.div_ceil(TILE) as usize;
         let down = height.div_ceil(TILE) as usize;
         TileGrid {
             across,
             tiles: vec![None; across * down],
+            spare: spare.0,
         }
+    }
+
+    /// Every tile of the grid, its spare ones too, for another grid to reuse.
+    pub fn into_spare(self) -> Spare {
+        let mut spare = self.spare;
+        spare.extend(self.tiles.into_iter().flatten());
+        Spare(spare)
     }
 
     /// Moves the tiles of rows `y0..y1` (on tile boundaries, `y1` possibly the height)
@@ -82,7 +119,14 @@ impl TileGrid {
         while x <= x1 {
             let last = x1.min(x | (TILE - 1));
             let (tile, at) = self.locate(x, y);
-            let slots = self.tiles[tile].get_or_insert_with(empty_tile);
+            let spare = &mut self.spare;
+            let slots = self.tiles[tile].get_or_insert_with(|| match spare.pop() {
+                Some(mut t) => {
+                    t.fill(EMPTY);
+                    t
+                }
+                None => empty_tile(),
+            });
             each(x, &mut slots[at..=at + (last - x) as usize]);
             match last.checked_add(1) {
                 Some(next) => x = next,

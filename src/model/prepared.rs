@@ -10,7 +10,7 @@ use crate::clip::mask::ClipMask;
 use crate::clip::sutherland_hodgman::clip_polygon;
 use crate::clip::Window;
 use crate::convention::Target;
-use crate::coverage::{Coverage, CoverageSink, IdRun, RowBand, TILE};
+use crate::coverage::{Coverage, CoverageSink, IdRun, RowBand, Spare, TILE};
 use crate::geom::{CompactTriangle, FillRule, Polygon, Rgb, Triangle};
 use crate::line::Line;
 
@@ -130,10 +130,27 @@ fn bands(height: u32, jobs: usize) -> Vec<(u32, u32)> {
     if jobs <= 1 {
         return vec![(0, height)];
     }
+    bands_of(height, jobs.saturating_mul(4))
+}
+
+/// The most pixels in one band of [`PreparedScene::visit_bands`]: 2^25, 128 MiB of
+/// coverage slots.
+const BAND_PIXELS: u64 = 1 << 25;
+
+/// The bands of [`PreparedScene::visit_bands`] on `target`: as [`bands`], and more where
+/// a band would hold over [`BAND_PIXELS`] pixels (on one thread too).
+fn visited_bands(target: &Target, jobs: usize) -> Vec<(u32, u32)> {
+    let pixels = u64::from(target.width) * u64::from(target.height);
+    let by_memory = usize::try_from(pixels.div_ceil(BAND_PIXELS)).unwrap_or(usize::MAX);
+    let by_jobs = if jobs <= 1 { 1 } else { jobs.saturating_mul(4) };
+    bands_of(target.height, by_memory.max(by_jobs))
+}
+
+/// Rows `0..height` cut into up to `count` bands of whole 64-row tiles (as even as the
+/// tiles allow; fewer when there are fewer tile rows).
+fn bands_of(height: u32, count: usize) -> Vec<(u32, u32)> {
     let tile_rows = height.div_ceil(TILE);
-    let count = u32::try_from(jobs.saturating_mul(4))
-        .unwrap_or(u32::MAX)
-        .clamp(1, tile_rows.max(1));
+    let count = u32::try_from(count).unwrap_or(u32::MAX).clamp(1, tile_rows.max(1));
     (0..count)
         .map(|b| {
             let first = tile_rows * b / count * TILE;
@@ -474,25 +491,112 @@ impl PreparedScene {
             after();
             return coverage;
         }
+        let drawn = self.draw_bands(target, jobs, &bands, after, |_, coverage, _| coverage);
+        let mut coverage = Coverage::new(target.width, target.height);
+        for (band, &(y0, y1)) in drawn.into_iter().zip(&bands) {
+            coverage.absorb_rows(band, y0, y1);
+        }
+        coverage
+    }
+
+    /// How many bands [`PreparedScene::coverage_parallel`] cuts `target` into for `jobs`.
+    pub fn band_count(target: &Target, jobs: usize) -> usize {
+        bands(target.height, jobs).len()
+    }
+
+    /// Draws the frame a band of rows at a time on `jobs` threads and hands each band to
+    /// `visit` as rows `y0..y1` and a [`Coverage`] of the whole canvas that covers nothing
+    /// outside them, what [`PreparedScene::coverage`] covers in those rows (the owners in
+    /// the same order); returns what `visit` returns, in band order. For what needs no
+    /// whole coverage at once (counts, checks, rows written out in turn): a thread draws
+    /// its next band into the memory of the last, so a frame holds about `jobs` bands of
+    /// coverage at a time instead of its whole canvas.
+    ///
+    /// The bands are whole 64-row tiles, at most 2^25 pixels each (128 MiB of coverage)
+    /// and, on several threads, at least four per thread; `after` is called once each band
+    /// is visited ([`PreparedScene::visited_band_count`] of them).
+    ///
+    /// ```
+    /// use rasterproof::model::{prepare, Model};
+    /// use rasterproof::scene::parse_scene;
+    /// let scene = parse_scene(
+    ///     r#"{"width": 256, "height": 256, "triangles": [
+    ///         {"v": [[0, 0], [256, 0], [0, 256]]}, {"v": [[0, 0], [128, 0], [0, 128]]}]}"#,
+    ///     "two.json",
+    /// )
+    /// .unwrap();
+    /// let target = scene.target().unwrap();
+    /// let prepared = prepare(&scene.primitives(), &target, Model::Fixed).unwrap();
+    /// let counts = prepared.visit_bands(&target, 2, |_, _, band| (band.covered_pixels(), band.double_covered().count()), &|| {});
+    /// assert_eq!(counts.len(), 4);
+    /// // The big triangle covers the pixels whose centres (x + 1/2, y + 1/2) lie inside
+    /// // its diagonal x + y = 256 (a centre on it is on the bottom-right edge, which the
+    /// // top-left rule leaves out): x + y <= 254, 255 * 256 / 2 of them...
+    /// let covered: usize = counts.iter().map(|c| c.0).sum();
+    /// assert_eq!(covered, 255 * 256 / 2);
+    /// // ...of which the small one covers those with x + y <= 126 again.
+    /// let double: usize = counts.iter().map(|c| c.1).sum();
+    /// assert_eq!(double, 127 * 128 / 2);
+    /// ```
+    pub fn visit_bands<R: Send>(
+        &self,
+        target: &Target,
+        jobs: usize,
+        visit: impl Fn(u32, u32, &Coverage) -> R + Sync,
+        after: &(dyn Fn() + Sync),
+    ) -> Vec<R> {
+        let bands = visited_bands(target, jobs);
+        if bands.len() <= 1 {
+            let r = visit(0, target.height, &self.coverage(target));
+            after();
+            return vec![r];
+        }
+        self.draw_bands(target, jobs, &bands, after, |b, coverage, spare| {
+            let (y0, y1) = bands[b];
+            let r = visit(y0, y1, &coverage);
+            *spare = coverage.into_spare();
+            r
+        })
+    }
+
+    /// How many bands [`PreparedScene::visit_bands`] cuts `target` into for `jobs`.
+    pub fn visited_band_count(target: &Target, jobs: usize) -> usize {
+        visited_bands(target, jobs).len()
+    }
+
+    /// Draws `bands` (two or more) on up to `jobs` threads, each band through a
+    /// [`RowBand`] into a coverage of its own that takes the tiles its thread's last band
+    /// left in the spare; `finish` turns band `b`'s coverage into what is kept, and may
+    /// leave tiles in the spare. What is kept, in band order.
+    fn draw_bands<R: Send>(
+        &self,
+        target: &Target,
+        jobs: usize,
+        bands: &[(u32, u32)],
+        after: &(dyn Fn() + Sync),
+        finish: impl Fn(usize, Coverage, &mut Spare) -> R + Sync,
+    ) -> Vec<R> {
         let next = AtomicUsize::new(0);
         let rows = self.triangles.rows_each(target, jobs);
-        let drawn: Vec<Vec<(usize, Coverage)>> = std::thread::scope(|s| {
-            let workers: Vec<_> = (0..jobs.min(bands.len()))
+        let drawn: Vec<Vec<(usize, R)>> = std::thread::scope(|s| {
+            let workers: Vec<_> = (0..jobs.clamp(1, bands.len()))
                 .map(|_| {
                     s.spawn(|| {
                         let mut mine = Vec::new();
+                        let mut spare = Spare::default();
                         loop {
                             let b = next.fetch_add(1, Ordering::Relaxed);
                             let Some(&(y0, y1)) = bands.get(b) else {
                                 return mine;
                             };
-                            let mut coverage = Coverage::new(target.width, target.height);
+                            let mut coverage =
+                                Coverage::with_spare(target.width, target.height, std::mem::take(&mut spare));
                             let band = Band {
                                 rows: (y0, y1),
                                 triangles: &rows,
                             };
                             self.render_band(target, &mut RowBand::new(&mut coverage, y0, y1), Some(band), || {});
-                            mine.push((b, coverage));
+                            mine.push((b, finish(b, coverage, &mut spare)));
                             after();
                         }
                     })
@@ -503,17 +607,9 @@ impl PreparedScene {
                 .map(|w| w.join().expect("a band's thread does not panic"))
                 .collect()
         });
-        let mut coverage = Coverage::new(target.width, target.height);
-        for (b, band) in drawn.into_iter().flatten() {
-            let (y0, y1) = bands[b];
-            coverage.absorb_rows(band, y0, y1);
-        }
-        coverage
-    }
-
-    /// How many bands [`PreparedScene::coverage_parallel`] cuts `target` into for `jobs`.
-    pub fn band_count(target: &Target, jobs: usize) -> usize {
-        bands(target.height, jobs).len()
+        let mut drawn: Vec<(usize, R)> = drawn.into_iter().flatten().collect();
+        drawn.sort_by_key(|&(b, _)| b);
+        drawn.into_iter().map(|(_, r)| r).collect()
     }
 
     /// The Gouraud colour of triangle `k` at the sample of pixel `(x, y)`, computed in the
