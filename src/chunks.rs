@@ -1,7 +1,8 @@
 //! Work on a slice cut into runs of consecutive items, one thread per run, the results in
 //! input order: what reading a scene's triangles and preparing them for a model do on
 //! several threads (`--jobs`). The answer is the one a single thread gives, error
-//! included: the error of the lowest index is the one returned.
+//! included: the error of the lowest index is the one returned. [`map_each`] hands a few
+//! items to the threads in turn instead (the reader's runs of triangles).
 
 use std::sync::{Mutex, PoisonError};
 
@@ -71,6 +72,48 @@ where
 /// `f` over `items` on rayon's pool in at most `jobs` runs, each writing its part of the
 /// one output vector (no part is copied afterwards: for a big scene the copy, and the
 /// fresh memory it touches, would cost what the threads save).
+/// `f(item)` for every item of `items`, taken by value, on up to `jobs` threads of its
+/// own, each thread taking the next item as soon as it is done with its last: for a few
+/// items of uneven cost, or threads of uneven speed (a busy core, a noisy neighbour),
+/// where runs cut in advance would leave one thread waiting for the other. The results
+/// in input order; `jobs` of 0 or 1, or fewer than two items, runs on the calling thread.
+/// A panic in `f` is raised again on the calling thread.
+///
+/// ```
+/// use rasterproof::chunks::map_each;
+/// let lengths = map_each(vec!["a", "bb", "ccc"], 2, str::len);
+/// assert_eq!(lengths, [1, 2, 3]);
+/// ```
+pub fn map_each<T: Send, U: Send>(items: Vec<T>, jobs: usize, f: impl Fn(T) -> U + Sync) -> Vec<U> {
+    if jobs <= 1 || items.len() < 2 {
+        return items.into_iter().map(f).collect();
+    }
+    let threads = jobs.min(items.len());
+    let next = Mutex::new(items.into_iter().enumerate());
+    let mut done: Vec<(usize, U)> = std::thread::scope(|s| {
+        let workers: Vec<_> = (0..threads)
+            .map(|_| {
+                s.spawn(|| {
+                    let mut mine = Vec::new();
+                    loop {
+                        let item = next.lock().unwrap_or_else(PoisonError::into_inner).next();
+                        let Some((k, item)) = item else {
+                            return mine;
+                        };
+                        mine.push((k, f(item)));
+                    }
+                })
+            })
+            .collect();
+        workers
+            .into_iter()
+            .flat_map(|w| w.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic)))
+            .collect()
+    });
+    done.sort_unstable_by_key(|&(k, _)| k);
+    done.into_iter().map(|(_, u)| u).collect()
+}
+
 fn in_order<T: Sync, U: Send>(items: &[T], jobs: usize, f: impl Fn(usize, &T) -> U + Sync) -> Vec<U> {
     let run = items.len().div_ceil(jobs.max(1));
     let mut out = Vec::with_capacity(items.len());
@@ -111,6 +154,48 @@ mod tests {
 
     /// One job runs on the calling thread; two cut the items into two runs of consecutive
     /// items, no more.
+    #[test]
+    fn items_taken_in_turn_come_back_in_order() {
+        for len in 0..40usize {
+            let items: Vec<usize> = (0..len).map(|k| k * 7 % 11).collect();
+            let plain: Vec<usize> = items.iter().map(|n| n * 3 + 1).collect();
+            for jobs in 0..9 {
+                // Uneven costs, so the threads finish out of order.
+                let got = map_each(items.clone(), jobs, |n| {
+                    std::thread::sleep(std::time::Duration::from_micros((n as u64 % 3) * 50));
+                    n * 3 + 1
+                });
+                assert_eq!(got, plain, "len {len}, jobs {jobs}");
+            }
+        }
+    }
+
+    #[test]
+    fn items_taken_in_turn_use_at_most_jobs_threads() {
+        let here = std::thread::current().id();
+        let ids = map_each(vec![(); 64], 1, |()| std::thread::current().id());
+        assert!(ids.iter().all(|&i| i == here));
+        for jobs in [2, 3] {
+            let ids = map_each(vec![(); 64], jobs, |()| {
+                std::thread::sleep(std::time::Duration::from_micros(200));
+                std::thread::current().id()
+            });
+            let mut distinct = ids.clone();
+            distinct.sort_by_key(|i| format!("{i:?}"));
+            distinct.dedup();
+            assert!(
+                distinct.len() <= jobs && !distinct.contains(&here),
+                "{jobs} jobs: {distinct:?}"
+            );
+        }
+    }
+
+    #[test]
+    #[should_panic(expected = "item 5")]
+    fn a_panic_in_an_item_reaches_the_caller() {
+        map_each((0..10).collect(), 2, |k| assert!(k != 5, "item {k}"));
+    }
+
     #[test]
     fn jobs_bound_the_runs() {
         let here = std::thread::current().id();
