@@ -239,11 +239,11 @@ fn render_jobs_outputs_are_byte_identical() {
     }
 }
 
-/// Two overlapping rectangles (two triangles each) across row 2048 of a 16384 x 4096 canvas,
-/// 2^26 pixels: `render` writing only its summary visits the frame in bands of at most
-/// 2^25 pixels, two on one thread, and says what the whole coverage says. By hand: the
-/// rectangle [100, 110) x [2000, 2100) covers 10 x 100 pixels, [105, 120) x [2040, 2060)
-/// 15 x 20, both of them [105, 110) x [2040, 2060), 5 x 20.
+/// Two overlapping rectangles (two triangles each) across row 512 of a 16384 x 1024 canvas,
+/// 2^24 pixels: `render` writing only its summary visits the frame in bands of at most
+/// 2^23 pixels, two on one thread, and says what the whole coverage says. By hand: the
+/// rectangle [100, 110) x [460, 560) covers 10 x 100 pixels, [105, 120) x [500, 520)
+/// 15 x 20, both of them [105, 110) x [500, 520), 5 x 20.
 #[test]
 fn render_counts_a_big_frame_band_by_band() {
     let dir = tempdir::Dir::new("bands");
@@ -256,9 +256,9 @@ fn render_counts_a_big_frame_band_by_band() {
     std::fs::write(
         &scene,
         format!(
-            r#"{{"width": 16384, "height": 4096, "triangles": [{}, {}]}}"#,
-            rect(100, 2000, 110, 2100),
-            rect(105, 2040, 120, 2060)
+            r#"{{"width": 16384, "height": 1024, "triangles": [{}, {}]}}"#,
+            rect(100, 460, 110, 560),
+            rect(105, 500, 120, 520)
         ),
     )
     .unwrap();

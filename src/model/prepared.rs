@@ -133,9 +133,10 @@ fn bands(height: u32, jobs: usize) -> Vec<(u32, u32)> {
     bands_of(height, jobs.saturating_mul(4))
 }
 
-/// The most pixels in one band of [`PreparedScene::visit_bands`]: 2^25, 128 MiB of
-/// coverage slots.
-const BAND_PIXELS: u64 = 1 << 25;
+/// The most pixels in one band of [`PreparedScene::visit_bands`]: 2^23, 32 MiB of
+/// coverage slots. Each thread's first band is memory the system maps and zeroes; the
+/// next ones reuse it.
+const BAND_PIXELS: u64 = 1 << 23;
 
 /// The bands of [`PreparedScene::visit_bands`] on `target`: as [`bands`], and more where
 /// a band would hold over [`BAND_PIXELS`] pixels (on one thread too).
@@ -512,7 +513,7 @@ impl PreparedScene {
     /// its next band into the memory of the last, so a frame holds about `jobs` bands of
     /// coverage at a time instead of its whole canvas.
     ///
-    /// The bands are whole 64-row tiles, at most 2^25 pixels each (128 MiB of coverage)
+    /// The bands are whole 64-row tiles, at most 2^23 pixels each (32 MiB of coverage)
     /// and, on several threads, at least four per thread; `after` is called once each band
     /// is visited ([`PreparedScene::visited_band_count`] of them).
     ///
@@ -577,7 +578,7 @@ impl PreparedScene {
         finish: impl Fn(usize, Coverage, &mut Spare) -> R + Sync,
     ) -> Vec<R> {
         let next = AtomicUsize::new(0);
-        let rows = self.triangles.rows_each(target, jobs);
+        let meeting = self.triangles.meeting_each(target, jobs, bands);
         let drawn: Vec<Vec<(usize, R)>> = std::thread::scope(|s| {
             let workers: Vec<_> = (0..jobs.clamp(1, bands.len()))
                 .map(|_| {
@@ -591,10 +592,7 @@ impl PreparedScene {
                             };
                             let mut coverage =
                                 Coverage::with_spare(target.width, target.height, std::mem::take(&mut spare));
-                            let band = Band {
-                                rows: (y0, y1),
-                                triangles: &rows,
-                            };
+                            let band = Band { triangles: &meeting[b] };
                             self.render_band(target, &mut RowBand::new(&mut coverage, y0, y1), Some(band), || {});
                             mine.push((b, finish(b, coverage, &mut spare)));
                             after();

@@ -139,26 +139,12 @@ fn fixed_triangles(
     })
 }
 
-/// The rows `y0..y1` of a band ([`crate::coverage::RowBand`]) and the rows each triangle
-/// may cover ([`PreparedTriangles::rows_each`]): which triangles a band's thread draws.
+/// Which triangles a band's thread draws ([`PreparedTriangles::meeting_each`]): their
+/// indices, ascending, those whose rows meet the band's.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Band<'a> {
-    /// The band's rows, `y0..y1`.
-    pub(crate) rows: (u32, u32),
-    /// Each triangle's `(first, last)` rows; `NO_ROWS` for one that covers nothing.
-    pub(crate) triangles: &'a [(u32, u32)],
-}
-
-/// The rows of a triangle that covers nothing: no band meets them.
-const NO_ROWS: (u32, u32) = (u32::MAX, 0);
-
-impl Band<'_> {
-    /// Whether triangle `k`'s rows meet the band.
-    fn meets(&self, k: usize) -> bool {
-        let (first, last) = self.triangles[k];
-        let (y0, y1) = self.rows;
-        last >= y0 && first < y1
-    }
+    /// The triangles' indices, ascending.
+    pub(crate) triangles: &'a [u32],
 }
 
 /// The rows a prepared triangle's engine visits, `first..=last` (`None`: it covers
@@ -258,11 +244,12 @@ impl PreparedTriangles {
     }
 
     /// Rasterizes every triangle whole into `sink`, triangle k with id k, calling `after`
-    /// once each is drawn (or skipped). With `band` (`y0..y1`) a triangle is drawn only
-    /// when the rows it may cover ([`Rows`]) meet the band: the sink of a band keeps only
-    /// the band's rows, so a triangle outside it would add nothing. The model is matched once, outside the loop, and `after` is
-    /// inlined: with a match and an indirect call per triangle, `fixed` on the peer
-    /// bench's 100k small triangles took 5.23-5.44 ms against 4.75-4.83 ms (three runs).
+    /// once each is drawn. With `band` only the band's triangles are drawn (and `after` is
+    /// not called): the sink of a band keeps only the band's rows, so a triangle whose rows
+    /// ([`Rows`]) miss them would add nothing. The model is matched once, outside the
+    /// loop, and `after` is inlined: with a match and an indirect call per triangle,
+    /// `fixed` on the peer bench's 100k small triangles took 5.23-5.44 ms against
+    /// 4.75-4.83 ms (three runs).
     pub(crate) fn rasterize_each<S: CoverageSink + ?Sized, F: FnMut()>(
         &self,
         target: &Target,
@@ -272,11 +259,18 @@ impl PreparedTriangles {
     ) {
         // One loop per model, each calling `draw(triangle, id)` then `after`.
         fn each<T, F: FnMut()>(ts: &[T], band: Option<Band<'_>>, mut draw: impl FnMut(&T, u32), after: &mut F) {
-            for (k, t) in ts.iter().enumerate() {
-                if band.as_ref().map_or(true, |b| b.meets(k)) {
-                    draw(t, id_of(k));
+            match band {
+                None => {
+                    for (k, t) in ts.iter().enumerate() {
+                        draw(t, id_of(k));
+                        after();
+                    }
                 }
-                after();
+                Some(band) => {
+                    for &k in band.triangles {
+                        draw(&ts[k as usize], k);
+                    }
+                }
             }
         }
         match self {
@@ -314,18 +308,44 @@ impl PreparedTriangles {
         }
     }
 
-    /// The rows each triangle may cover ([`Rows`]), found on up to `jobs` threads once for
-    /// every band of a parallel render.
-    pub(crate) fn rows_each(&self, target: &Target, jobs: usize) -> Vec<(u32, u32)> {
-        fn all<T: Rows + Sync>(ts: &[T], target: &Target, jobs: usize) -> Vec<(u32, u32)> {
-            chunks::map(ts, jobs, |_, t| t.rows(target).unwrap_or(NO_ROWS))
+    /// For each of `bands` (rows `y0..y1`, consecutive from row 0, in order), the indices
+    /// of the triangles whose rows ([`Rows`]) meet it, ascending: each triangle's rows
+    /// found once, on up to `jobs` threads, for every band of a parallel render.
+    pub(crate) fn meeting_each(&self, target: &Target, jobs: usize, bands: &[(u32, u32)]) -> Vec<Vec<u32>> {
+        fn all<T: Rows + Sync>(ts: &[T], target: &Target, jobs: usize, bands: &[(u32, u32)]) -> Vec<Vec<u32>> {
+            // Runs of triangles, each giving its lists per band; a band's list is its
+            // lists of the runs in turn.
+            let runs: Vec<(usize, usize)> = {
+                let count = jobs.max(1).saturating_mul(4).min(ts.len().max(1));
+                (0..count)
+                    .map(|r| (ts.len() * r / count, ts.len() * (r + 1) / count))
+                    .collect()
+            };
+            let band_of = |row: u32| bands.partition_point(|&(_, y1)| y1 <= row).min(bands.len() - 1);
+            let lists = chunks::map(&runs, jobs, |_, &(from, to)| {
+                let mut lists = vec![Vec::new(); bands.len()];
+                for (k, t) in (from..).zip(&ts[from..to]) {
+                    if let Some((first, last)) = t.rows(target).filter(|(first, last)| first <= last) {
+                        for list in &mut lists[band_of(first)..=band_of(last)] {
+                            list.push(id_of(k));
+                        }
+                    }
+                }
+                lists
+            });
+            (0..bands.len())
+                .map(|b| lists.iter().flat_map(|run| run[b].iter().copied()).collect())
+                .collect()
+        }
+        if bands.is_empty() {
+            return Vec::new();
         }
         match self {
-            PreparedTriangles::Exact(ts) => all(ts, target, jobs),
-            PreparedTriangles::Planned(_, ts, _) => all(ts, target, jobs),
-            PreparedTriangles::Fixed(ts) | PreparedTriangles::Scanline(ts) => all(ts, target, jobs),
-            PreparedTriangles::F32(ts, _) => all(ts, target, jobs),
-            PreparedTriangles::F64(ts, _) => all(ts, target, jobs),
+            PreparedTriangles::Exact(ts) => all(ts, target, jobs, bands),
+            PreparedTriangles::Planned(_, ts, _) => all(ts, target, jobs, bands),
+            PreparedTriangles::Fixed(ts) | PreparedTriangles::Scanline(ts) => all(ts, target, jobs, bands),
+            PreparedTriangles::F32(ts, _) => all(ts, target, jobs, bands),
+            PreparedTriangles::F64(ts, _) => all(ts, target, jobs, bands),
         }
     }
 
