@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Wall time and peak memory of `render` on large canvases (issue 11) and whole frames of
-# small triangles (issue 31, at the end): two triangles
+# small triangles and a whole frame on threads (issue 31, at the end): two triangles
 # covering a SIDE x SIDE canvas (default 4096), rendered to `--format json` (streamed to a
 # file), to `-o` (the coverage PNG) only and to `--ids-out` only; then one triangle
 # covering half of the largest canvas, 16384 x 16384, to `--ids-out`. MODEL (default
@@ -64,3 +64,33 @@ for n in ${SMALL:-100000 1000000}; do
     }' >"$small"
     model=fixed measure "small-$n-ids" "$small" --ids-out "$dir/small-ids.png"
 done
+
+# The whole frame (issue 31): a 16384 x 16384 mesh of 2 x 708^2 triangles (a grid of cells
+# cut along a diagonal, 1/1000 px vertices, the mesh of `cargo bench --bench pipeline`),
+# `render --model fixed` writing only its summary, on 1 and 2 threads (the frame counted
+# band by band: a few bands of coverage held at a time, not the 1 GiB canvas). FRAME=0
+# skips it.
+if [ "${FRAME:-1}" != 0 ]; then
+    mesh=$dir/mesh-16384.json
+    awk 'BEGIN {
+        side = 16384; cells = 708;
+        printf "{\"width\":%d,\"height\":%d,\"triangles\":[", side, side;
+        for (i = 0; i <= cells; i++) {
+            t = int(i * side * 1000 / cells);
+            at[i] = sprintf("%d.%03d", int(t / 1000), t % 1000);
+        }
+        first = 1;
+        for (j = 0; j < cells; j++) {
+            for (i = 0; i < cells; i++) {
+                x0 = at[i]; x1 = at[i + 1]; y0 = at[j]; y1 = at[j + 1];
+                printf "%s{\"v\":[[%s,%s],[%s,%s],[%s,%s]]}", (first ? "" : ","), x0, y0, x1, y0, x1, y1;
+                printf ",{\"v\":[[%s,%s],[%s,%s],[%s,%s]]}", x0, y0, x1, y1, x0, y1;
+                first = 0;
+            }
+        }
+        printf "]}\n";
+    }' >"$mesh"
+    for jobs in 1 2; do
+        model=fixed measure "frame-jobs-$jobs" "$mesh" --jobs "$jobs"
+    done
+fi

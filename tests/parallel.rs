@@ -247,48 +247,62 @@ fn render_jobs_outputs_are_byte_identical() {
 #[test]
 fn render_counts_a_big_frame_band_by_band() {
     let dir = tempdir::Dir::new("bands");
-    let scene = dir.path().join("scene.json");
     let rect = |x0: u32, y0: u32, x1: u32, y1: u32| {
         format!(
             r#"{{"v": [[{x0}, {y0}], [{x1}, {y0}], [{x1}, {y1}]]}}, {{"v": [[{x0}, {y0}], [{x1}, {y1}], [{x0}, {y1}]]}}"#
         )
     };
-    std::fs::write(
-        &scene,
-        format!(
-            r#"{{"width": 16384, "height": 1024, "triangles": [{}, {}]}}"#,
-            rect(100, 460, 110, 560),
-            rect(105, 500, 120, 520)
-        ),
-    )
-    .unwrap();
-    let text = std::fs::read_to_string(&scene).unwrap();
-    let parsed = rasterproof::scene::parse_scene(&text, "scene.json").unwrap();
+    let rects = format!("{}, {}", rect(100, 460, 110, 560), rect(105, 500, 120, 520));
+    let scene_with = |extra: &str| format!(r#"{{"width": 16384, "height": 1024, "triangles": [{rects}]{extra}}}"#);
+    let scene = dir.path().join("scene.json");
+    std::fs::write(&scene, scene_with("")).unwrap();
+    // With a window around the canvas, the exact and float models clip the triangles to
+    // polygons, which every band would draw whole: `render` draws the whole coverage
+    // there, to the same counts.
+    let window = r#", "clip": {"rect": [0, 0, 16384, 1024]}"#;
+    let clipped = dir.path().join("clipped.json");
+    std::fs::write(&clipped, scene_with(window)).unwrap();
+    let parsed = rasterproof::scene::parse_scene(&scene_with(""), "scene.json").unwrap();
     let target = parsed.target().unwrap();
     assert_eq!(PreparedScene::visited_band_count(&target, 1), 2);
     let expected = "1200 pixels covered, 100 covered more than once";
     for model in Model::ALL {
-        for jobs in ["1", "2", "3"] {
-            let out = Command::cargo_bin("rasterproof")
-                .unwrap()
-                .args([
-                    "render",
-                    scene.to_str().unwrap(),
-                    "--model",
-                    model.name(),
-                    "--jobs",
-                    jobs,
-                ])
-                .output()
-                .unwrap();
-            let stdout = String::from_utf8_lossy(&out.stdout);
-            assert!(
-                out.status.success(),
-                "{} --jobs {jobs}: {}",
-                model.name(),
-                String::from_utf8_lossy(&out.stderr)
-            );
-            assert!(stdout.contains(expected), "{} --jobs {jobs}: {stdout}", model.name());
+        for file in [&scene, &clipped] {
+            for jobs in ["1", "2", "3"] {
+                let out = Command::cargo_bin("rasterproof")
+                    .unwrap()
+                    .args([
+                        "render",
+                        file.to_str().unwrap(),
+                        "--model",
+                        model.name(),
+                        "--jobs",
+                        jobs,
+                    ])
+                    .output()
+                    .unwrap();
+                let stdout = String::from_utf8_lossy(&out.stdout);
+                let stderr = String::from_utf8_lossy(&out.stderr);
+                assert!(out.status.success(), "{} --jobs {jobs}: {stderr}", model.name());
+                assert!(stdout.contains(expected), "{} --jobs {jobs}: {stdout}", model.name());
+            }
+        }
+    }
+    // Which scenes bands draw cheaply: triangles only, unclipped. A line, a polygon, or a
+    // window under a model that clips triangles to polygons is drawn by every band.
+    let bands_skip_all = |extra: &str, model: Model| {
+        let scene = rasterproof::scene::parse_scene(&scene_with(extra), "s.json").unwrap();
+        prepare(&scene.primitives(), &target, model).unwrap().bands_skip_all()
+    };
+    for model in Model::ALL {
+        let integer = matches!(model, Model::Fixed | Model::Scanline);
+        assert!(bands_skip_all("", model), "{}", model.name());
+        assert_eq!(bands_skip_all(window, model), integer, "{} with a window", model.name());
+        for extra in [
+            r#", "lines": [{"from": [0, 0], "to": [5, 5]}]"#,
+            r#", "polygons": [{"v": [[0, 0], [5, 0], [0, 5]]}]"#,
+        ] {
+            assert!(!bands_skip_all(extra, model), "{} with {extra}", model.name());
         }
     }
 }

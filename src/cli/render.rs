@@ -160,9 +160,9 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let prepared = prepare_parallel(&primitives, &target, model, o.jobs as usize).map_err(fail)?;
     let small = target.width <= ASCII_GRID_MAX_SIDE && target.height <= ASCII_GRID_MAX_SIDE;
     let whole = o.out.is_some() || o.colors_out.is_some() || o.ids_out.is_some() || small;
-    if !whole && matches!(o.format, OutputFormat::Text) {
-        // Only the summary: the frame is counted band by band, in the memory of a few
-        // bands instead of the whole canvas.
+    if !whole && matches!(o.format, OutputFormat::Text) && prepared.bands_skip_all() {
+        // Only the summary, of triangles only: the frame is counted band by band, in the
+        // memory of a few bands instead of the whole canvas.
         let (covered, double) = count_with_progress(&prepared, &target, o.jobs as usize);
         let summary = summary(&name, model, &target, covered, double, &prepared);
         crate::cli::print_stdout(&summary)?;

@@ -339,6 +339,15 @@ impl PreparedScene {
         self.lines.len() + triangles + self.polygons.len()
     }
 
+    /// Whether a band of [`PreparedScene::coverage_parallel`] or
+    /// [`PreparedScene::visit_bands`] draws only the primitives that meet its rows: every
+    /// primitive is a triangle drawn unclipped (the integer models, or no clip window).
+    /// Lines, polygons and triangles clipped to polygons are drawn whole by every band,
+    /// which keeps its own rows of them, so many bands cost them many times.
+    pub fn bands_skip_all(&self) -> bool {
+        self.lines.is_empty() && self.polygons.is_empty() && self.clipped_triangles.is_none()
+    }
+
     /// [`PreparedScene::render`], calling `after` once each primitive is drawn (a progress
     /// bar's tick: `render` shows one when a run goes on for more than a second).
     pub fn render_observed<S: CoverageSink + ?Sized, F: FnMut()>(&self, target: &Target, sink: &mut S, after: F) {
