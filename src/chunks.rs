@@ -191,6 +191,14 @@ mod tests {
     }
 
     #[test]
+    fn one_item_runs_here_and_two_on_the_threads() {
+        let here = std::thread::current().id();
+        assert_eq!(map_each(vec![()], 2, |()| std::thread::current().id()), [here]);
+        let ids = map_each(vec![(), ()], 2, |()| std::thread::current().id());
+        assert!(ids.iter().all(|&i| i != here), "{ids:?}");
+    }
+
+    #[test]
     #[should_panic(expected = "item 5")]
     fn a_panic_in_an_item_reaches_the_caller() {
         map_each((0..10).collect(), 2, |k| assert!(k != 5, "item {k}"));
