@@ -69,9 +69,6 @@ where
     in_order(items, jobs, f)
 }
 
-/// `f` over `items` on rayon's pool in at most `jobs` runs, each writing its part of the
-/// one output vector (no part is copied afterwards: for a big scene the copy, and the
-/// fresh memory it touches, would cost what the threads save).
 /// `f(item)` for every item of `items`, taken by value, on up to `jobs` threads of its
 /// own, each thread taking the next item as soon as it is done with its last: for a few
 /// items of uneven cost, or threads of uneven speed (a busy core, a noisy neighbour),
@@ -114,6 +111,9 @@ pub fn map_each<T: Send, U: Send>(items: Vec<T>, jobs: usize, f: impl Fn(T) -> U
     done.into_iter().map(|(_, u)| u).collect()
 }
 
+/// `f` over `items` on rayon's pool in at most `jobs` runs, each writing its part of the
+/// one output vector (no part is copied afterwards: for a big scene the copy, and the
+/// fresh memory it touches, would cost what the threads save).
 fn in_order<T: Sync, U: Send>(items: &[T], jobs: usize, f: impl Fn(usize, &T) -> U + Sync) -> Vec<U> {
     let run = items.len().div_ceil(jobs.max(1));
     let mut out = Vec::with_capacity(items.len());
@@ -152,8 +152,6 @@ mod tests {
         }
     }
 
-    /// One job runs on the calling thread; two cut the items into two runs of consecutive
-    /// items, no more.
     #[test]
     fn items_taken_in_turn_come_back_in_order() {
         for len in 0..40usize {
@@ -204,6 +202,8 @@ mod tests {
         map_each((0..10).collect(), 2, |k| assert!(k != 5, "item {k}"));
     }
 
+    /// One job runs on the calling thread; two cut the items into two runs of consecutive
+    /// items, no more.
     #[test]
     fn jobs_bound_the_runs() {
         let here = std::thread::current().id();

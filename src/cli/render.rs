@@ -539,76 +539,66 @@ fn tenths_grid(image: &AreaImage) -> String {
 /// counts the primitives drawn, or the bands on several threads (indicatif hides it when
 /// stderr is not a terminal).
 fn draw_with_progress(prepared: &PreparedScene, target: &Target, jobs: usize) -> Coverage {
-    let start = Instant::now();
     let bands = PreparedScene::band_count(target, jobs);
     if bands > 1 {
-        let bar = BandBar::new(bands, start);
-        let coverage = prepared.coverage_parallel(target, jobs, &|| bar.one_more());
+        let bar = LateBar::new(bands, "bands");
+        let coverage = prepared.coverage_parallel(target, jobs, &|| bar.inc(1));
         bar.bar.finish_and_clear();
         return coverage;
     }
-    let bar = progress_bar(prepared.primitive_count(), "primitives");
-    let mut ticks = Ticks::new(start);
+    let bar = LateBar::new(prepared.primitive_count(), "primitives");
+    let mut ticks = Ticks::new();
     let mut coverage = Coverage::new(target.width, target.height);
     prepared.render_observed(target, &mut coverage, &mut || {
         if let Some(done) = ticks.tick() {
             bar.inc(done);
-            if ticks.since_start() > Duration::from_secs(1) && !ticks.shown {
-                bar.set_draw_target(ProgressDrawTarget::stderr());
-                ticks.shown = true;
-            }
         }
     });
-    bar.finish_and_clear();
+    bar.bar.finish_and_clear();
     coverage
 }
 
 /// The pixels covered and covered more than once, counted band by band
 /// ([`PreparedScene::visit_bands`]) with the bar of [`draw_with_progress`] over the bands.
 fn count_with_progress(prepared: &PreparedScene, target: &Target, jobs: usize) -> (usize, usize) {
-    let bar = BandBar::new(PreparedScene::visited_band_count(target, jobs), Instant::now());
+    let bar = LateBar::new(PreparedScene::visited_band_count(target, jobs), "bands");
     let counts = prepared.visit_bands(
         target,
         jobs,
         |_, _, band| (band.covered_pixels(), band.double_covered().count()),
-        &|| bar.one_more(),
+        &|| bar.inc(1),
     );
     bar.bar.finish_and_clear();
     counts.into_iter().fold((0, 0), |(c, d), (bc, bd)| (c + bc, d + bd))
 }
 
-/// A hidden bar of `count` `unit`s, drawn on stderr once shown.
-fn progress_bar(count: usize, unit: &str) -> ProgressBar {
-    let bar = ProgressBar::with_draw_target(Some(count as u64), ProgressDrawTarget::hidden());
-    bar.set_style(
-        ProgressStyle::with_template(&format!(
-            "{{bar:40}} {{pos}}/{{len}} {unit}, {{elapsed}} ({{eta}} left)"
-        ))
-        .expect("a valid template"),
-    );
-    bar
-}
-
-/// The bar of a frame drawn in bands, told by the threads as each band is done; shown once
-/// drawing has gone on for a second.
-struct BandBar {
+/// A progress bar of `count` `unit`s, hidden until the work has gone on for a second,
+/// then drawn on stderr; told from any thread.
+struct LateBar {
     bar: ProgressBar,
     start: Instant,
     shown: std::sync::atomic::AtomicBool,
 }
 
-impl BandBar {
-    fn new(bands: usize, start: Instant) -> BandBar {
-        BandBar {
-            bar: progress_bar(bands, "bands"),
-            start,
+impl LateBar {
+    fn new(count: usize, unit: &str) -> LateBar {
+        let bar = ProgressBar::with_draw_target(Some(count as u64), ProgressDrawTarget::hidden());
+        bar.set_style(
+            ProgressStyle::with_template(&format!(
+                "{{bar:40}} {{pos}}/{{len}} {unit}, {{elapsed}} ({{eta}} left)"
+            ))
+            .expect("a valid template"),
+        );
+        LateBar {
+            bar,
+            start: Instant::now(),
             shown: std::sync::atomic::AtomicBool::new(false),
         }
     }
 
-    /// One more band done.
-    fn one_more(&self) {
-        self.bar.inc(1);
+    /// `done` more units done.
+    fn inc(&self, done: u64) {
+        self.bar.inc(done);
         if self.start.elapsed() > Duration::from_secs(1) && !self.shown.swap(true, std::sync::atomic::Ordering::Relaxed)
         {
             self.bar.set_draw_target(ProgressDrawTarget::stderr());
@@ -622,24 +612,19 @@ impl BandBar {
 /// when it takes over 100 ms, so the bar moves about ten times a second whether a
 /// primitive takes nanoseconds or seconds.
 struct Ticks {
-    start: Instant,
     /// When the last batch was told.
     last: Instant,
     /// Primitives drawn since, and the batch size.
     pending: u64,
     batch: u64,
-    /// Whether the bar is on stderr.
-    shown: bool,
 }
 
 impl Ticks {
-    fn new(start: Instant) -> Ticks {
+    fn new() -> Ticks {
         Ticks {
-            start,
-            last: start,
+            last: Instant::now(),
             pending: 0,
             batch: 1,
-            shown: false,
         }
     }
 
@@ -658,10 +643,6 @@ impl Ticks {
             self.batch = (self.batch / 2).max(1);
         }
         Some(std::mem::take(&mut self.pending))
-    }
-
-    fn since_start(&self) -> Duration {
-        self.last - self.start
     }
 }
 

@@ -25,7 +25,7 @@ pub struct TileGrid {
     tiles: Vec<Option<Tile>>,
     /// Tiles of a grid that is done, written into before new memory is asked for; not
     /// part of the grid's value.
-    spare: Vec<Tile>,
+    spare: Spare,
 }
 
 /// The tiles a finished grid leaves ([`TileGrid::into_spare`]), for the next grid
@@ -40,7 +40,7 @@ impl Clone for TileGrid {
         TileGrid {
             across: self.across,
             tiles: self.tiles.clone(),
-            spare: Vec::new(),
+            spare: Spare::default(),
         }
     }
 }
@@ -63,15 +63,15 @@ impl TileGrid {
         TileGrid {
             across,
             tiles: vec![None; across * down],
-            spare: spare.0,
+            spare,
         }
     }
 
     /// Every tile of the grid, its spare ones too, for another grid to reuse.
     pub fn into_spare(self) -> Spare {
         let mut spare = self.spare;
-        spare.extend(self.tiles.into_iter().flatten());
-        Spare(spare)
+        spare.0.extend(self.tiles.into_iter().flatten());
+        spare
     }
 
     /// Moves the tiles of rows `y0..y1` (on tile boundaries, `y1` possibly the height)
@@ -120,7 +120,7 @@ impl TileGrid {
             let last = x1.min(x | (TILE - 1));
             let (tile, at) = self.locate(x, y);
             let spare = &mut self.spare;
-            let slots = self.tiles[tile].get_or_insert_with(|| match spare.pop() {
+            let slots = self.tiles[tile].get_or_insert_with(|| match spare.0.pop() {
                 Some(mut t) => {
                     t.fill(EMPTY);
                     t
