@@ -40,12 +40,16 @@
 //!
 //! | to | call | feature |
 //! |---|---|---|
-//! | read a scene file (exact numbers, errors naming file, field, value) | [`parse_scene`] | |
+//! | read a scene file (exact numbers, errors naming file, field, value) | [`parse_scene`] (text), [`scene::read_scene_file`] (a file, on threads) | |
 //! | render it with a model | [`render`]`(&scene.primitives(), &target, model)` ([`render_triangles`] for a list of triangles; [`prepare`] once and [`PreparedScene::render`] many times) | |
+//! | its exact area coverage (anti-aliasing) | [`model::render_area`] | |
+//! | its coverage at every sample of a pattern (multisampling) | [`model::render_samples`] | |
+//! | its conservative coverage (must and may sets) | [`model::render_conservative`] | |
 //! | plan it: per primitive, the cheapest arithmetic proven exact | [`plan_scene`] | |
-//! | compare another renderer's output ([`Theirs`]) with the exact answer, every differing pixel classified | [`compare()`] | |
+//! | compare another renderer's output ([`Theirs`]) with the exact answer, every differing pixel classified | [`compare()`] (one sample), [`oracle::compare::samples::compare_samples`], [`oracle::compare::grey::compare_grey`], [`oracle::compare::conservative::compare_conservative`]; any of them: [`oracle::judge`] | |
 //! | explain one pixel exactly (sample, edges, values, flags) | [`explain_pixel`] | |
-//! | fit the convention another renderer follows | [`fit()`] | |
+//! | fit the convention another renderer follows | [`fit()`]; per sample index and position: [`oracle::compare::fit::samples::fit_samples`]; a grey method: [`oracle::compare::fit::grey::fit_grey`] | |
+//! | run another renderer as a process, once per scene or kept alive | [`oracle::renderer`] | |
 //! | hunt: scenes another renderer (a closure `Fn(&Scene) -> Result<Theirs, _>`) gets wrong, shrunk | [`hunt()`] | `proptest` |
 //! | test your own triangle rasterizer (a closure) against the oracle | [`find_counterexample`] | `proptest` |
 //! | check an invariant on any coverage | `check::check_*` ([`check`]) | |
@@ -59,7 +63,9 @@
 //! Every entry point takes its arguments in one order: the input (the scene's primitives
 //! and the target, then their output or renderer where there is one), then the options
 //! (the model, a configuration), then where the output goes (a sink, a progress callback);
-//! results are returned. One verb per operation: a primitive is *rasterized*
+//! results are returned. Every comparison takes `(primitives, target, theirs, options)` and
+//! returns a report with one surface, [`oracle::Comparison`]: `identical()`, its counts by
+//! class, text, JSON and, where one exists, HTML. One verb per operation: a primitive is *rasterized*
 //! (`tri::*::rasterize`, `line::*::rasterize`, `fill::polygon::rasterize*`), a scene is
 //! *rendered* with a model.
 //!
@@ -74,7 +80,9 @@
 //! - `proptest`: the strategies in `strategy` (random triangles, spade meshes, tie-heavy
 //!   inputs) for your own property tests; `harness`: the counterexample search for your
 //!   own rasterizer and the invariant suite behind `rasterproof check`; the hunt
-//!   (`oracle::hunt`). No thread-pool crate: cases run on scoped threads.
+//!   (`oracle::hunt`). The suite's and the hunt's cases run on scoped threads
+//!   (`harness::runner`); rayon, in every build, maps a scene's primitives on threads
+//!   ([`chunks`]).
 //! - `trade`: the trade (`trade`) and its pictures (plotters); implies `proptest`.
 //! - `cli` (default): the `rasterproof` command (clap, indicatif, ctrlc); implies
 //!   `trade`. A crate that only tests its own rasterizer depends on rasterproof with

@@ -504,8 +504,8 @@ fn once_per_scene_and_kept_alive_hunts_agree() {
 /// there too (its panic ends the program without an answer).
 #[test]
 fn the_fixtures_draw_the_same_through_the_protocol() {
-    use rasterproof::oracle::program::FailureKind;
-    use rasterproof::oracle::stay_alive::StayAlive;
+    use rasterproof::oracle::renderer::program::FailureKind;
+    use rasterproof::oracle::renderer::stay_alive::StayAlive;
     use rasterproof::oracle::{Background, Format, Theirs};
     let serve = |cmd: String| {
         StayAlive::new(

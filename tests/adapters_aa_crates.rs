@@ -35,10 +35,13 @@ use num_rational::BigRational;
 use rasterproof::area::{exact, AreaShape, Quantization, Semantics};
 use rasterproof::geom::{FillRule, Polygon};
 use rasterproof::model::{area_shapes, Model};
-use rasterproof::oracle::grey::{compare_grey, fit_grey, GreyClass, GreyImage, GreyMethod};
+use rasterproof::oracle::compare::fit::grey::{fit_grey, GreyMethod};
+use rasterproof::oracle::compare::grey::{compare_grey, GreyClass};
+use rasterproof::oracle::GreyImage;
 use rasterproof::scene::parse_scene;
 use serde_json::{json, Value};
 
+use crate::common::{canvas, grey_options};
 use crate::tempdir;
 
 /// The ab_glyph adapter's executable (built if stale, as `cargo test` builds examples).
@@ -304,15 +307,13 @@ fn ab_glyph_is_within_f32_error_of_the_exact_coverage() {
         let theirs = GreyImage::read_png(&std::fs::read(out.as_ref().unwrap()).unwrap(), "ab").unwrap();
         let report = compare_grey(
             &one_path(&sh, FillRule::NonZero),
+            &canvas(w, h),
             &theirs,
-            w,
-            h,
-            Semantics::Accumulated,
-            Quantization::Round16,
+            &grey_options(Semantics::Accumulated, Quantization::Round16),
         )
         .unwrap();
         let bound = if k == dejavu { r(7, 2) } else { r(11, 10) };
-        assert!(report.max_error <= bound, "scene {k} {s}: {}", report.to_text(10));
+        assert!(report.max_error <= bound, "scene {k} {s}: {}", report.levels_text(10));
         assert!(
             report.histogram.keys().all(|&d| d <= 4),
             "scene {k}: {:?}",
@@ -355,14 +356,12 @@ fn zeno_is_within_its_fixed_point_error_of_the_exact_coverage() {
         let theirs = GreyImage::read_png(&std::fs::read(out.as_ref().unwrap()).unwrap(), "zeno").unwrap();
         let report = compare_grey(
             &one_path(&sh, rule_of(&sh)),
+            &canvas(w, h),
             &theirs,
-            w,
-            h,
-            Semantics::Accumulated,
-            Quantization::FtGrays,
+            &grey_options(Semantics::Accumulated, Quantization::FtGrays),
         )
         .unwrap();
-        assert!(report.max_error <= r(5, 2), "scene {k} {s}: {}", report.to_text(10));
+        assert!(report.max_error <= r(5, 2), "scene {k} {s}: {}", report.levels_text(10));
         assert!(
             report.histogram.keys().all(|&d| d <= 3),
             "scene {k}: {:?}",
@@ -406,7 +405,7 @@ fn fit_names_each_renderer_first() {
         ),
     ] {
         let theirs = draw(&exe, &glyph, dir.path(), q.name());
-        let fit = fit_grey(&sh, &theirs, w, h).unwrap();
+        let fit = fit_grey(&sh, &canvas(w, h), &theirs, Model::Exact).unwrap().methods;
         assert_eq!(fit[0], (own, 0), "{fit:?}");
         assert!(fit[1..].iter().all(|(_, n)| *n >= best), "{fit:?}");
         assert_eq!(fit[1], (GreyMethod::Exact(Semantics::True, q), best), "{fit:?}");
@@ -448,7 +447,13 @@ fn overlapping_contours_add_in_one_path() {
     let theirs = GreyImage::read_png(&std::fs::read(out).unwrap(), "same-way").unwrap();
     assert!(theirs.levels.iter().all(|l| *l == 65535), "{:?}", theirs.levels);
     let (sh, w, h) = shapes(&same_way);
-    let report = compare_grey(&sh, &theirs, w, h, Semantics::True, Quantization::Round16).unwrap();
+    let report = compare_grey(
+        &sh,
+        &canvas(w, h),
+        &theirs,
+        &grey_options(Semantics::True, Quantization::Round16),
+    )
+    .unwrap();
     let differing: Vec<(u32, u32, u16, u16, GreyClass)> = report
         .pixels
         .iter()
@@ -463,7 +468,7 @@ fn overlapping_contours_add_in_one_path() {
             (2, 2, 65535, 49151, GreyClass::Accumulation),
         ],
         "{}",
-        report.to_text(10)
+        report.levels_text(10)
     );
 
     let mut b_reversed = rect("2", "1", "4", "5/2").as_array().unwrap().clone();
@@ -481,8 +486,14 @@ fn overlapping_contours_add_in_one_path() {
         assert_ne!(levels, (0, 32768), "{}", s.name());
     }
     let path = one_path(&sh, FillRule::NonZero);
-    let report = compare_grey(&path, &theirs, w, h, Semantics::Accumulated, Quantization::Round16).unwrap();
-    assert!(report.pixels.is_empty(), "{}", report.to_text(10));
+    let report = compare_grey(
+        &path,
+        &canvas(w, h),
+        &theirs,
+        &grey_options(Semantics::Accumulated, Quantization::Round16),
+    )
+    .unwrap();
+    assert!(report.pixels.is_empty(), "{}", report.levels_text(10));
     let z = draw(&zeno(), &opposite, dir.path(), "zeno-opposite");
     assert_eq!(at(&z, 2, 2), 0);
     assert!([127, 128].contains(&at(&z, 2, 1)), "{}", at(&z, 2, 1));

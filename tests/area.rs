@@ -7,7 +7,7 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 use proptest::prelude::*;
 
-use crate::common::config;
+use crate::common::{canvas, config, grey_options};
 use rasterproof::area::exact::{pixel, rasterize, value};
 use rasterproof::area::{cells, float, ftgrays, supersample, AreaImage, Quantization};
 use rasterproof::area::{path_signed_area, shoelace, triangle_shape, AreaShape, Semantics};
@@ -590,8 +590,8 @@ fn ft_levels(outline: &[Point]) -> Vec<u8> {
 }
 
 /// Their grey image as a `GreyImage` from 8-bit levels.
-fn grey8(width: u32, height: u32, levels: &[u8]) -> rasterproof::oracle::grey::GreyImage {
-    rasterproof::oracle::grey::GreyImage {
+fn grey8(width: u32, height: u32, levels: &[u8]) -> rasterproof::oracle::GreyImage {
+    rasterproof::oracle::GreyImage {
         width,
         height,
         bits: 8,
@@ -614,7 +614,7 @@ fn grey8(width: u32, height: u32, levels: &[u8]) -> rasterproof::oracle::grey::G
 ///   127.5, `quantization`.
 #[test]
 fn grey_classes_by_hand() {
-    use rasterproof::oracle::grey::{compare_grey, GreyClass};
+    use rasterproof::oracle::compare::grey::{compare_grey, GreyClass};
     let rect = vec![
         p(r(1, 4), r(1, 2)),
         p(r(11, 4), r(1, 2)),
@@ -628,11 +628,9 @@ fn grey_classes_by_hand() {
         let levels = ftgrays::rasterize(&shapes, 3, 3).unwrap();
         let report = compare_grey(
             &shapes,
+            &canvas(3, 3),
             &grey8(3, 3, &levels),
-            3,
-            3,
-            Semantics::True,
-            Quantization::FtGrays,
+            &grey_options(Semantics::True, Quantization::FtGrays),
         )
         .unwrap();
         if levels == exact_levels {
@@ -660,11 +658,9 @@ fn grey_classes_by_hand() {
     let class = |level: u8, shapes: &[AreaShape]| {
         let report = compare_grey(
             shapes,
+            &canvas(1, 1),
             &grey8(1, 1, &[level]),
-            1,
-            1,
-            Semantics::True,
-            Quantization::Round8,
+            &grey_options(Semantics::True, Quantization::Round8),
         )
         .unwrap();
         report.pixels.first().map(|px| px.class)
@@ -688,23 +684,21 @@ fn grey_classes_by_hand() {
     // Bad input: another size, another bit depth.
     let e = compare_grey(
         &shapes,
+        &canvas(1, 1),
         &grey8(2, 1, &[0, 0]),
-        1,
-        1,
-        Semantics::True,
-        Quantization::Round8,
+        &grey_options(Semantics::True, Quantization::Round8),
     )
-    .unwrap_err();
+    .unwrap_err()
+    .to_string();
     assert!(e.contains("their image is 2x1, the scene's canvas 1x1"), "{e}");
     let e = compare_grey(
         &shapes,
+        &canvas(1, 1),
         &grey8(1, 1, &[0]),
-        1,
-        1,
-        Semantics::True,
-        Quantization::Round16,
+        &grey_options(Semantics::True, Quantization::Round16),
     )
-    .unwrap_err();
+    .unwrap_err()
+    .to_string();
     assert!(
         e.contains("8-bit levels; the quantization round16 makes 16-bit ones"),
         "{e}"
@@ -788,7 +782,7 @@ fn compare_grey_cli() {
 /// samples: level 96; 8x8 gives 28/64, level 112; the exact value 1/2, level 128).
 #[test]
 fn grey_fit_names_the_method() {
-    use rasterproof::oracle::grey::{fit_grey, GreyMethod};
+    use rasterproof::oracle::compare::fit::grey::{fit_grey, GreyMethod};
     let rect = vec![
         p(r(1, 4), r(1, 2)),
         p(r(11, 4), r(1, 2)),
@@ -798,7 +792,14 @@ fn grey_fit_names_the_method() {
     for outline in [rect.clone(), rect.iter().rev().cloned().collect()] {
         let shapes = [Polygon::new(outline, FillRule::NonZero)];
         let levels = ftgrays::rasterize(&shapes, 3, 3).unwrap();
-        let found = fit_grey(&shapes, &grey8(3, 3, &levels), 3, 3).unwrap();
+        let found = fit_grey(
+            &shapes,
+            &canvas(3, 3),
+            &grey8(3, 3, &levels),
+            rasterproof::model::Model::Exact,
+        )
+        .unwrap()
+        .methods;
         let exact: Vec<GreyMethod> = found.iter().filter(|(_, n)| *n == 0).map(|(m, _)| *m).collect();
         assert!(exact.contains(&GreyMethod::FtGrays), "{found:?}");
         if levels != [96, 128, 96, 192, 255, 192, 96, 128, 96] {
@@ -822,7 +823,14 @@ fn grey_fit_names_the_method() {
     let sampled = supersample::rasterize(&shapes, 3, 3, 4).levels(Quantization::Round8);
     assert_eq!(sampled[2], 96);
     let levels: Vec<u8> = sampled.iter().map(|&l| u8::try_from(l).unwrap()).collect();
-    let found = fit_grey(&shapes, &grey8(3, 3, &levels), 3, 3).unwrap();
+    let found = fit_grey(
+        &shapes,
+        &canvas(3, 3),
+        &grey8(3, 3, &levels),
+        rasterproof::model::Model::Exact,
+    )
+    .unwrap()
+    .methods;
     let exact: Vec<GreyMethod> = found.iter().filter(|(_, n)| *n == 0).map(|(m, _)| *m).collect();
     assert!(
         exact.contains(&GreyMethod::Supersampling(4, Quantization::Round8)),

@@ -31,7 +31,7 @@ use num_traits::ToPrimitive;
 use rasterproof::area::{abglyph, zeno as zeno_model, AreaShape};
 use rasterproof::geom::{FillRule, Point, Polygon};
 use rasterproof::model::{area_shapes, Model};
-use rasterproof::oracle::grey::GreyImage;
+use rasterproof::oracle::GreyImage;
 use rasterproof::scene::parse_scene;
 use serde_json::{json, Value};
 

@@ -11,7 +11,7 @@ use rasterproof::convention::{Preset, Target};
 use rasterproof::coverage::Coverage;
 use rasterproof::geom::{Point, Triangle};
 use rasterproof::model::{render_conservative, render_samples, ConservativeRule, Model, Primitives};
-use rasterproof::oracle::conservative::judge_conservative;
+use rasterproof::oracle::compare::conservative::compare_conservative;
 use rasterproof::oracle::{Format, Theirs};
 use rasterproof::pattern::SamplePattern;
 use rasterproof::strategy::{any_triangle, delaunay_mesh, tie_heavy_triangle};
@@ -121,17 +121,19 @@ fn a_degenerate_triangle_must_not_vanish_under_tier_2() {
         }
         Theirs::from_coverage(&c, Format::Mask)
     };
-    let nothing = judge_conservative(&tier2, &rule("d3d12-tier2"), &image(&[])).unwrap();
+    let nothing = compare_conservative(&scene, &target, &image(&[]), &rule("d3d12-tier2")).unwrap();
     assert_eq!(nothing.vanished, vec![0]);
-    assert!(!nothing.right());
-    assert!(judge_conservative(&tier2, &rule("d3d12-tier2"), &image(&[(1, 1)]))
-        .unwrap()
-        .right());
-    let far = judge_conservative(&tier2, &rule("d3d12-tier2"), &image(&[(1, 1), (3, 3)])).unwrap();
+    assert!(!nothing.identical());
+    assert!(
+        compare_conservative(&scene, &target, &image(&[(1, 1)]), &rule("d3d12-tier2"))
+            .unwrap()
+            .identical()
+    );
+    let far = compare_conservative(&scene, &target, &image(&[(1, 1), (3, 3)]), &rule("d3d12-tier2")).unwrap();
     assert_eq!(far.beyond, vec![(3, 3)]);
-    assert!(judge_conservative(&tier1, &rule("d3d12-tier1"), &image(&[]))
+    assert!(compare_conservative(&scene, &target, &image(&[]), &rule("d3d12-tier1"))
         .unwrap()
-        .right());
+        .identical());
 }
 
 fn subset(a: &Coverage, b: &Coverage) -> Result<(), (u32, u32)> {

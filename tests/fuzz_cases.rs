@@ -138,6 +138,6 @@ fn fuzz_case_05_grey_png_with_a_13_byte_palette() {
         e.to_string().contains("PLTE") || e.to_string().contains("palette"),
         "{e}"
     );
-    let e = rasterproof::oracle::grey::GreyImage::read_png(&bytes, "theirs.png").unwrap_err();
+    let e = rasterproof::oracle::GreyImage::read_png(&bytes, "theirs.png").unwrap_err();
     assert!(e.starts_with("theirs.png: not a PNG this reader takes"), "{e}");
 }

@@ -9,13 +9,16 @@ use std::process::Command;
 use num_rational::BigRational;
 use rasterproof::area::{conflate, Quantization, Semantics};
 use rasterproof::geom::{FillRule, Point, Polygon};
-use rasterproof::oracle::grey::{compare_grey, fit_grey, GreyClass, GreyImage, GreyMethod};
+use rasterproof::oracle::compare::fit::grey::{fit_grey, GreyMethod};
+use rasterproof::oracle::compare::grey::{compare_grey, GreyClass};
 use rasterproof::oracle::hunt::{judge_grey, GreySignature, GreyVerdict};
-use rasterproof::oracle::program::FailureKind;
+use rasterproof::oracle::renderer::program::FailureKind;
+use rasterproof::oracle::GreyImage;
 use rasterproof::oracle::{Background, Format, Theirs};
 use rasterproof::scene::{parse_scene, Scene};
 use serde_json::Value;
 
+use crate::common::{canvas, grey_options};
 use crate::tempdir;
 
 fn r(n: i64, d: i64) -> BigRational {
@@ -44,7 +47,13 @@ fn one_pixel(level: u16, bits: u32) -> GreyImage {
 #[test]
 fn conflation_by_hand() {
     let halves = [strip(r(0, 1), r(1, 2)), strip(r(1, 2), r(1, 1))];
-    let report = compare_grey(&halves, &one_pixel(191, 8), 1, 1, Semantics::True, Quantization::Round8).unwrap();
+    let report = compare_grey(
+        &halves,
+        &canvas(1, 1),
+        &one_pixel(191, 8),
+        &grey_options(Semantics::True, Quantization::Round8),
+    )
+    .unwrap();
     assert_eq!(report.pixels.len(), 1);
     assert_eq!(report.pixels[0].class, GreyClass::Conflation);
     assert_eq!(report.pixels[0].error, r(-64, 1));
@@ -52,21 +61,31 @@ fn conflation_by_hand() {
         conflate::pixel(&halves, 0, 0, conflate::Own::Exact(Semantics::True)),
         r(3, 4)
     );
-    let same = compare_grey(&halves, &one_pixel(255, 8), 1, 1, Semantics::True, Quantization::Round8).unwrap();
+    let same = compare_grey(
+        &halves,
+        &canvas(1, 1),
+        &one_pixel(255, 8),
+        &grey_options(Semantics::True, Quantization::Round8),
+    )
+    .unwrap();
     assert!(same.pixels.is_empty());
     let single = [strip(r(0, 1), r(3, 4))];
-    let report = compare_grey(&single, &one_pixel(191, 8), 1, 1, Semantics::True, Quantization::Round8).unwrap();
+    let report = compare_grey(
+        &single,
+        &canvas(1, 1),
+        &one_pixel(191, 8),
+        &grey_options(Semantics::True, Quantization::Round8),
+    )
+    .unwrap();
     assert!(report.pixels.is_empty());
     // 192 rounds 191.25 up: quantization; 190 is no rounding of it, and one shape cannot
     // conflate: precision (1.25 quanta off).
     let at = |level| {
         let report = compare_grey(
             &single,
+            &canvas(1, 1),
             &one_pixel(level, 8),
-            1,
-            1,
-            Semantics::True,
-            Quantization::Round8,
+            &grey_options(Semantics::True, Quantization::Round8),
         )
         .unwrap();
         report.pixels[0].class
@@ -84,7 +103,13 @@ fn per_shape_quantization_by_hand() {
     let strips = [strip(r(0, 1), r(3, 10)), strip(r(3, 10), r(6, 10))];
     let q = Quantization::FtGrays;
     let at = |level| {
-        let report = compare_grey(&strips, &one_pixel(level, 8), 1, 1, Semantics::Accumulated, q).unwrap();
+        let report = compare_grey(
+            &strips,
+            &canvas(1, 1),
+            &one_pixel(level, 8),
+            &grey_options(Semantics::Accumulated, q),
+        )
+        .unwrap();
         report.pixels.first().map(|p| p.class)
     };
     assert_eq!(at(153), None);
@@ -118,7 +143,9 @@ fn fit_names_shapes_blended_one_by_one() {
         bits: 8,
         levels,
     };
-    let fits = fit_grey(&shapes, &theirs, 4, 1).unwrap();
+    let fits = fit_grey(&shapes, &canvas(4, 1), &theirs, rasterproof::model::Model::Exact)
+        .unwrap()
+        .methods;
     assert_eq!(fits[0], (GreyMethod::Conflated(Quantization::Round8), 0), "{fits:?}");
     let exact = fits
         .iter()

@@ -9,7 +9,7 @@ use rasterproof::convention::AnyTieRule;
 use rasterproof::coverage::Coverage;
 use rasterproof::model::{render, Model};
 use rasterproof::oracle::hunt::{hunt, primitive_count, HuntConfig, HuntVerdict, Signature};
-use rasterproof::oracle::program::FailureKind;
+use rasterproof::oracle::renderer::program::FailureKind;
 use rasterproof::oracle::{Format, PixelKind, ReasonClass, Theirs};
 use rasterproof::tri::planned::PlannedTriangle;
 
@@ -140,7 +140,9 @@ fn failing_programs_are_findings_and_bad_commands_exit_2() {
 
 /// The planned engine under the top-right tie rule for triangles (lines and polygons drawn
 /// honestly): a renderer wrong at ties only.
-pub(crate) fn top_right(s: &rasterproof::scene::Scene) -> Result<Theirs, rasterproof::oracle::program::RenderFailure> {
+pub(crate) fn top_right(
+    s: &rasterproof::scene::Scene,
+) -> Result<Theirs, rasterproof::oracle::renderer::program::RenderFailure> {
     let target = s.target().unwrap();
     let mut c = Coverage::new(s.width, s.height);
     for (k, t) in s.triangles().iter().enumerate() {
@@ -215,7 +217,7 @@ fn a_closure_renderer_is_hunted_and_its_failures_shrunk() {
 /// not an error: the CLI prints it and exits 1, as `compare --fit` does for its findings.
 #[test]
 fn a_fit_first_that_finds_an_unstatable_rule_names_it() {
-    let found = rasterproof::oracle::hunt::fit_convention(&HuntConfig::default(), &top_right).unwrap();
+    let found = rasterproof::oracle::hunt::fit_convention(&top_right, &HuntConfig::default()).unwrap();
     let rasterproof::oracle::hunt::FitFirst::Unstatable(fits) = found else {
         panic!("expected an unstatable fit, got {found:?}")
     };
@@ -561,7 +563,7 @@ fn the_report_and_junit_describe_every_finding() {
         assert_eq!(!kinds.is_empty(), pixel, "{f}");
     }
 
-    let program = rasterproof::oracle::program::Program::new(
+    let program = rasterproof::oracle::renderer::program::Program::new(
         &cmd,
         Format::Ids,
         rasterproof::oracle::Background::default(),

@@ -9,6 +9,8 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
+#[path = "layering/house.rs"]
+mod house;
 #[path = "layering/map.rs"]
 mod map;
 

@@ -27,7 +27,13 @@ fn scene(text: &str) -> Scene {
 /// `theirs` (a coverage of the scene's canvas) compared in `format` against `model`.
 fn report(s: &Scene, theirs: &Coverage, format: Format, model: Model) -> CompareReport {
     let target = s.target().unwrap();
-    compare(&s.primitives(), &target, &Theirs::from_coverage(theirs, format), model).unwrap()
+    compare(
+        &s.primitives(),
+        &target,
+        &Theirs::from_coverage(theirs, format),
+        &model.into(),
+    )
+    .unwrap()
 }
 
 /// The scene rendered by `model` under the scene's convention changed by `change`.
@@ -805,7 +811,7 @@ fn fit_names_the_convention_of_a_renderer_made_to_follow_it() {
             .iter()
             .all(|c| matches!(c.tie_rule, AnyTieRule::BottomLeft | AnyTieRule::BottomRight)),
         "{}",
-        found.to_text()
+        found.fit_text()
     );
     assert!(found.exact.iter().any(|c| c.tie_rule == AnyTieRule::BottomLeft
         && c.snapping.bits == Some(8)
@@ -817,21 +823,21 @@ fn fit_names_the_convention_of_a_renderer_made_to_follow_it() {
     assert!(
         found.exact.iter().any(|c| c.tie_rule == AnyTieRule::TopRight),
         "{}",
-        found.to_text()
+        found.fit_text()
     );
     assert!(
         found.exact.iter().all(|c| c.tie_rule != AnyTieRule::TopLeft),
         "{}",
-        found.to_text()
+        found.fit_text()
     );
     // Their image with one stray pixel: nothing fits; the closest is one pixel away.
     let mut stray = render(&s.primitives(), &target, Model::ExactSnapped).unwrap();
     stray.cover(11, 0, 0);
     let found = fit(&stray);
     assert!(found.exact.is_empty());
-    assert_eq!(found.closest[0].total(), 1, "{}", found.to_text());
+    assert_eq!(found.closest[0].total(), 1, "{}", found.fit_text());
     assert_eq!(found.closest[0].candidate.tie_rule, AnyTieRule::TopLeft);
-    assert!(found.to_text().contains("no convention explains their image exactly"));
+    assert!(found.fit_text().contains("no convention explains their image exactly"));
 }
 
 #[test]
@@ -1200,7 +1206,7 @@ fn every_finding_prints_its_exact_distance() {
 /// many were classified, and the JSON marks each pixel.
 #[test]
 fn a_renderer_wrong_everywhere_is_counted_whole_and_classified_in_part() {
-    use rasterproof::oracle::compare::{compare_classifying, CLASSIFY_AT_MOST};
+    use rasterproof::oracle::compare::{CompareOptions, CLASSIFY_AT_MOST};
     let scene = parse_scene(
         r#"{"width": 64, "height": 64, "triangles": [
             {"v": [[0, 0], [64, 0], [64, 64]]}, {"v": [[0, 0], [64, 64], [0, 64]]}]}"#,
@@ -1209,7 +1215,17 @@ fn a_renderer_wrong_everywhere_is_counted_whole_and_classified_in_part() {
     .unwrap();
     let target = scene.target().unwrap();
     let nothing = Theirs::from_coverage(&Coverage::new(64, 64), Format::Json);
-    let r = compare_classifying(&scene.primitives(), &target, &nothing, Model::ExactSnapped, Some(10), 1).unwrap();
+    let r = compare(
+        &scene.primitives(),
+        &target,
+        &nothing,
+        &CompareOptions {
+            model: Model::ExactSnapped,
+            classify_at_most: Some(10),
+            jobs: 1,
+        },
+    )
+    .unwrap();
     assert_eq!(r.pixels.len(), 64 * 64);
     assert_eq!(r.pixels_by_kind().get(&PixelKind::Missing), Some(&4096));
     assert_eq!(r.classified(), 10);
@@ -1240,7 +1256,7 @@ fn a_renderer_wrong_everywhere_is_counted_whole_and_classified_in_part() {
         (Some(4096), Some(10))
     );
     assert_eq!(json["unclassified_by_kind"]["missing"].as_u64(), Some(4086));
-    let default = compare(&scene.primitives(), &target, &nothing, Model::ExactSnapped).unwrap();
+    let default = compare(&scene.primitives(), &target, &nothing, &Model::ExactSnapped.into()).unwrap();
     assert_eq!((default.pixels.len(), default.classified()), (4096, CLASSIFY_AT_MOST));
 }
 
@@ -1268,7 +1284,7 @@ fn one_convention_that_explains_every_difference_is_named_at_the_top() {
         &render(&scene.primitives(), &corner, Model::ExactSnapped).unwrap(),
         Format::Json,
     );
-    let r = compare(&scene.primitives(), &target, &theirs, Model::ExactSnapped).unwrap();
+    let r = compare(&scene.primitives(), &target, &theirs, &Model::ExactSnapped.into()).unwrap();
     assert!(!r.identical());
     let expected = "every classified difference is explained by one convention: the sample at (i, j)";
     assert_eq!(r.headline().as_deref(), Some(expected));
@@ -1282,7 +1298,7 @@ fn one_convention_that_explains_every_difference_is_named_at_the_top() {
         &render(&scene.primitives(), &target, Model::ExactSnapped).unwrap(),
         Format::Json,
     );
-    let r = compare(&scene.primitives(), &target, &same, Model::ExactSnapped).unwrap();
+    let r = compare(&scene.primitives(), &target, &same, &Model::ExactSnapped.into()).unwrap();
     assert_eq!(r.headline(), None);
     // Edges through pixel centres: the top, the left and the hypotenuse (a right edge).
     let ties = parse_scene(
@@ -1295,7 +1311,7 @@ fn one_convention_that_explains_every_difference_is_named_at_the_top() {
         &ties.primitives(),
         &ties.target().unwrap(),
         &theirs,
-        Model::ExactSnapped,
+        &Model::ExactSnapped.into(),
     )
     .unwrap();
     let h = r.headline().expect("one tie rule explains every difference");

@@ -11,7 +11,7 @@ use std::time::{Duration, Instant};
 
 use num_rational::BigRational;
 use rasterproof::geom::{Point, Triangle};
-use rasterproof::oracle::program::{FailureKind, Program};
+use rasterproof::oracle::renderer::program::{FailureKind, Program};
 use rasterproof::oracle::{Background, Format};
 use rasterproof::scene::Scene;
 

@@ -11,7 +11,7 @@ use rasterproof::coverage::Coverage;
 use rasterproof::geom::{Point, Triangle};
 use rasterproof::model::{render, Model};
 use rasterproof::oracle::hunt::{judge, shrink, shrink_batched, HuntVerdict};
-use rasterproof::oracle::program::RenderFailure;
+use rasterproof::oracle::renderer::program::RenderFailure;
 use rasterproof::oracle::{Format, Theirs};
 use rasterproof::scene::Scene;
 

@@ -10,8 +10,8 @@
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use rasterproof::oracle::program::FailureKind;
-use rasterproof::oracle::stay_alive::StayAlive;
+use rasterproof::oracle::renderer::program::FailureKind;
+use rasterproof::oracle::renderer::stay_alive::StayAlive;
 use rasterproof::oracle::{Background, Format};
 use rasterproof::scene::Scene;
 

@@ -11,7 +11,7 @@
 //! ```
 //!
 //! With `--serve` it stays alive and takes one scene per line on stdin (the stay-alive
-//! protocol of `rasterproof::oracle::stay_alive`), through `rasterproof::oracle::adapter`.
+//! protocol of `rasterproof::oracle::renderer::stay_alive`), through `rasterproof::oracle::renderer::adapter`.
 //!
 //! What it draws: **one `Rasterizer` for the whole scene**, as a glyph is drawn: every
 //! triangle (its three edges) and every polygon (its outline and each hole, as written:
@@ -66,7 +66,7 @@ use ab_glyph_rasterizer::{point, Rasterizer};
 use num_rational::BigRational;
 use num_traits::ToPrimitive;
 use rasterproof::geom::{FillRule, Point, Triangle};
-use rasterproof::oracle::adapter::adapter_main;
+use rasterproof::oracle::renderer::adapter::adapter_main;
 use rasterproof::scene::Scene;
 
 /// A contour's exact points and its name in messages (`polygons[2].holes[0]`).

@@ -9,7 +9,7 @@
 //! ```
 //!
 //! With `--serve` it stays alive and takes one scene per line on stdin (the stay-alive
-//! protocol of `rasterproof::oracle::stay_alive`), through `rasterproof::oracle::adapter`.
+//! protocol of `rasterproof::oracle::renderer::stay_alive`), through `rasterproof::oracle::renderer::adapter`.
 //!
 //! What it draws, in id order (triangles, lines, polygons): the last writer wins a pixel,
 //! so it holds the highest id + 1 of the primitives that cover it, with alpha 254 where two
@@ -62,7 +62,7 @@ use num_rational::BigRational;
 use num_traits::Zero;
 use rasterproof::geom::{FillRule, Point};
 use rasterproof::line::LineRule;
-use rasterproof::oracle::adapter::adapter_main;
+use rasterproof::oracle::renderer::adapter::adapter_main;
 use rasterproof::scene::Scene;
 use tiny_skia::{BlendMode, Mask, Paint, Path, PathBuilder, Pixmap, Stroke, Transform};
 

@@ -11,7 +11,7 @@
 //! ```
 //!
 //! With `--serve` it stays alive and takes one scene per line on stdin (the stay-alive
-//! protocol of `rasterproof::oracle::stay_alive`), through `rasterproof::oracle::adapter`.
+//! protocol of `rasterproof::oracle::renderer::stay_alive`), through `rasterproof::oracle::renderer::adapter`.
 //!
 //! What it draws: **one path** of every shape, in id order: each triangle a `MoveTo`, two
 //! `LineTo`s and a `Close`; each polygon its outline and each hole (as written: the
@@ -54,7 +54,7 @@ use std::process::ExitCode;
 
 use num_rational::BigRational;
 use rasterproof::geom::{FillRule, Point, Triangle};
-use rasterproof::oracle::adapter::adapter_main;
+use rasterproof::oracle::renderer::adapter::adapter_main;
 use rasterproof::scene::Scene;
 use zeno::{Command, Fill, Mask};
 

@@ -34,7 +34,7 @@ use rasterproof::coverage::picture::Scale;
 use rasterproof::coverage::{Coverage, CoverageSink};
 use rasterproof::model::{render, Model, Primitives};
 use rasterproof::oracle::compare::count_differences;
-use rasterproof::oracle::fit::fit;
+use rasterproof::oracle::compare::fit::fit;
 use rasterproof::oracle::reason::Snapping;
 use rasterproof::oracle::theirs::{Background, Format};
 use rasterproof::oracle::{compare, explain_pixel, Theirs};
@@ -181,7 +181,7 @@ fn own_output_is_identical(primitives: &Primitives, target: &Target, model: Mode
         assert_eq!(read, own, "the oracle's own {} file reads back differently", f.name());
     }
     let theirs = Theirs::from_coverage(ours, format);
-    let report = compare(primitives, target, &theirs, model).expect("an exact model and the same canvas");
+    let report = compare(primitives, target, &theirs, &model.into()).expect("an exact model and the same canvas");
     let name = format.name();
     assert!(
         report.identical(),
@@ -194,7 +194,7 @@ fn edited_output_is_reported(input: &Input, primitives: &Primitives, target: &Ta
     let (format, model) = (input.format(), input.model());
     let theirs = Theirs::from_coverage(&edited(ours, &input.edits()), format);
     let own = Theirs::from_coverage(ours, format);
-    let report = compare(primitives, target, &theirs, model).expect("an exact model and the same canvas");
+    let report = compare(primitives, target, &theirs, &model.into()).expect("an exact model and the same canvas");
     let mut expected = Vec::new();
     for y in 0..target.height {
         for x in 0..target.width {
@@ -260,7 +260,7 @@ fn fit_finds_the_convention(primitives: &Primitives, target: &Target, model: Mod
         }
     };
     let report = fit(primitives, target, &Theirs::from_coverage(ours, Format::Json)).expect("fit takes the scene");
-    let _ = report.to_text();
+    let _ = report.fit_text();
     let own = report
         .exact
         .iter()

@@ -27,7 +27,7 @@ use rasterproof::oracle::hunt::{
     generate_scene, hunt, judge, pixel_kinds, primitive_count, rust_test, shrink, signatures, HuntConfig, HuntFinding,
     HuntVerdict, SceneFamily,
 };
-use rasterproof::oracle::program::{FailureKind, RenderFailure};
+use rasterproof::oracle::renderer::program::{FailureKind, RenderFailure};
 use rasterproof::oracle::{Format, Theirs};
 use rasterproof::scene::{parse_scene, Scene};
 

@@ -20,7 +20,7 @@ use common::scene::FuzzScene;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use rasterproof::model::{render, render_samples, Model, ModelError};
-use rasterproof::oracle::samples::compare_samples;
+use rasterproof::oracle::compare::samples::{compare_samples, SampleOptions};
 use rasterproof::oracle::{Format, Theirs};
 use rasterproof::pattern::{SamplePattern, STANDARD_COUNTS};
 
@@ -101,7 +101,16 @@ fuzz_target!(|input: (PatternChoice, FuzzScene)| {
             .write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
             .expect("encoding a PNG in memory");
         let theirs = Theirs::read(&png, "stacked.png", Format::Ids, Default::default()).expect("our own PNG reads");
-        if let Ok(report) = compare_samples(&primitives, &target, &pattern, &theirs, Model::ExactSnapped, Some(4)) {
+        if let Ok(report) = compare_samples(
+            &primitives,
+            &target,
+            &theirs,
+            &SampleOptions {
+                pattern: pattern.clone(),
+                model: Model::ExactSnapped,
+                classify_at_most: Some(4),
+            },
+        ) {
             assert!(report.identical(), "the oracle's own stacked image differs from it");
         }
     }

@@ -5,8 +5,11 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use rasterproof::coverage::picture::{legend_path, Scale};
-use rasterproof::oracle::compare::compare_classifying;
-use rasterproof::oracle::{Background, Format, Theirs};
+use rasterproof::oracle::compare::fit::samples::{SampleFitOptions, POSITION_GRID};
+use rasterproof::oracle::compare::grey::GreyOptions;
+use rasterproof::oracle::compare::samples::SampleOptions;
+use rasterproof::oracle::compare::HtmlInputs;
+use rasterproof::oracle::{judge, Background, CompareOptions, Comparison, Format, Question, Theirs};
 
 use super::{ConventionArgs, OutputFormat, Outputs};
 
@@ -136,352 +139,122 @@ fn parse_background(text: &str) -> Result<Background, String> {
     }
 }
 
-/// Compares their output with the oracle (or, with `--fit`, searches the conventions),
-/// writes `--diff-out` and prints the report; exit 1 when the images differ (or no
-/// convention fits).
+/// Compares their output with the oracle (or, with `--fit`, searches the conventions):
+/// parses the options into one [`Question`], reads both files, asks
+/// [`rasterproof::oracle::judge`], writes `--diff-out` and `--html`, and prints the report;
+/// exit 1 when the images differ (or no convention fits).
 pub fn run(o: &Options) -> Result<ExitCode, String> {
-    if o.theirs_as.as_deref() == Some("grey") {
-        return run_grey(o);
+    let format = their_format(o)?;
+    let background = background(o, format)?;
+    let grey = format == Format::Grey;
+    if grey && (o.diff_out.is_some() || o.html.is_some()) {
+        return Err("--as grey prints its comparison (text or JSON); --diff-out, --html and --background are for the one-sample formats".to_string());
     }
-    if o.semantics != "true" || o.quantization != "round" {
+    if !grey && (o.semantics != "true" || o.quantization != "round") {
         return Err("--semantics and --quantization are for --as grey".to_string());
     }
-    let model = super::parse_model(o.model.as_deref().unwrap_or("exact-snapped"))?;
-    let format = match &o.theirs_as {
-        Some(f) => Format::from_name(f)
-            .ok_or_else(|| format!("--as: unknown format {f:?} (expected mask, ids, json or grey)"))?,
-        None if o.theirs.extension().is_some_and(|e| e.eq_ignore_ascii_case("json")) => Format::Json,
-        None => Format::Ids,
+    let model = super::parse_model(
+        o.model
+            .as_deref()
+            .unwrap_or(if grey { "exact" } else { "exact-snapped" }),
+    )?;
+    let grey_options = if grey {
+        Some(GreyOptions {
+            model,
+            semantics: super::parse_semantics(&o.semantics)?,
+            quantization: super::parse_quantization(&o.quantization)?,
+        })
+    } else {
+        None
     };
-    let background = o
-        .background
-        .as_deref()
-        .map(parse_background)
-        .transpose()?
-        .unwrap_or_default();
-    if o.background.is_some() && format != Format::Mask {
-        return Err("--background: only a mask (--as mask) has a background".to_string());
-    }
     let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention, o.jobs as usize)?;
     let theirs_name = o.theirs.display().to_string();
     let bytes = std::fs::read(&o.theirs).map_err(|e| format!("{theirs_name}: cannot read: {e}"))?;
     let theirs = Theirs::read(&bytes, &theirs_name, format, background).map_err(|e| e.to_string())?;
-    if let Some(rule) = &o.conservative {
-        let rule = super::parse_conservative(rule)?;
-        let sets = rasterproof::model::render_conservative(&scene.primitives(), &target, &rule)
-            .map_err(|e| format!("{name}: {e}"))?;
-        let report = rasterproof::oracle::conservative::judge_conservative(&sets, &rule, &theirs)
-            .map_err(|e| format!("{theirs_name}: {e} ({name})"))?;
-        match o.format_out {
-            OutputFormat::Text => {
-                super::write_stdout(|out| out.write_all(report.to_text(&name, &theirs_name, o.limit).as_bytes()))?
-            }
-            OutputFormat::Json => super::print_stdout(&report.to_json().to_string())?,
-        }
-        return Ok(if report.right() {
-            ExitCode::SUCCESS
-        } else {
-            ExitCode::from(1)
-        });
-    }
     let pattern = match o.samples {
         Some(n) => Some(super::parse_samples(n)?),
         None => scene.samples.clone(),
-    };
-    if let Some(pattern) = pattern.filter(|p| !p.is_single(&target.convention)) {
-        if o.diff_out.is_some() || o.html.is_some() {
+    }
+    .filter(|p| !p.is_single(&target.convention));
+    let question = match (grey_options, &o.conservative, pattern) {
+        (Some(g), ..) if o.fit => Question::FitGrey(g.model),
+        (Some(g), ..) => Question::Grey(g),
+        (None, Some(rule), _) => Question::Conservative(super::parse_conservative(rule)?),
+        (None, None, Some(pattern)) if o.diff_out.is_some() || o.html.is_some() => {
             return Err(format!(
                 "{name}: under the {pattern} sample pattern compare prints its comparison per sample (text or JSON); --diff-out and --html are for one sample per pixel"
-            ));
+            ))
         }
-        let per_sample = Samples {
-            name: &name,
-            theirs_name: &theirs_name,
-            primitives: scene.primitives(),
-            target,
+        (None, None, Some(pattern)) if o.fit => Question::FitSamples(SampleFitOptions {
             pattern,
-        };
-        return if o.fit {
-            per_sample.fit(o, &theirs)
-        } else {
-            per_sample.compare(o, model, &theirs)
-        };
-    }
-    if o.fit {
-        let found = rasterproof::oracle::fit(&scene.primitives(), &target, &theirs).map_err(|e| match e {
-            rasterproof::oracle::FitError::Size(_) => format!("{theirs_name}: {e} ({name})"),
-            other => format!("{name}: {other}"),
-        })?;
-        match o.format_out {
-            OutputFormat::Text => super::write_stdout(|out| {
-                writeln!(
-                    out,
-                    "compare --fit: {theirs_name} (as {}) against {name}",
-                    format.name()
-                )?;
-                out.write_all(found.to_text().as_bytes())
-            })?,
-            OutputFormat::Json => super::print_stdout(&found.to_json().to_string())?,
-        }
-        return Ok(if found.exact.is_empty() {
-            ExitCode::from(1)
-        } else {
-            ExitCode::SUCCESS
-        });
-    }
-    let report = compare_classifying(
-        &scene.primitives_parallel(o.jobs as usize),
-        &target,
-        &theirs,
-        model,
-        o.classify.0,
-        o.jobs as usize,
-    )
-    .map_err(|e| match e {
-        rasterproof::oracle::CompareError::Size(_) => format!("{theirs_name}: {e} ({name})"),
-        other => format!("{name}: {other} (model {model})"),
-    })?;
+            grid: POSITION_GRID,
+        }),
+        (None, None, Some(pattern)) => Question::Samples(SampleOptions {
+            pattern,
+            model,
+            classify_at_most: o.classify.0,
+        }),
+        (None, None, None) if o.fit => Question::Fit,
+        (None, None, None) => Question::Binary(CompareOptions {
+            model,
+            classify_at_most: o.classify.0,
+            jobs: o.jobs as usize,
+        }),
+    };
+    let judgement = judge(&scene.primitives_parallel(o.jobs as usize), &target, &theirs, &question)
+        .map_err(|e| question.error_text(&e, &name, &theirs_name))?;
     let mut outputs = Outputs::new();
-    if let Some(path) = &o.diff_out {
+    if let (Some(path), Some(report)) = (&o.diff_out, judgement.binary()) {
         let scale = Scale::default_for(target.width, target.height);
         outputs.stage_png(path, &report.diff_picture(scale))?;
         outputs.stage_text(&legend_path(path), &report.diff_legend(scale))?;
     }
     if let Some(path) = &o.html {
-        let scene_text = std::fs::read_to_string(&o.scene).unwrap_or_else(|_| scene.to_json());
+        let scene_json = std::fs::read_to_string(&o.scene).unwrap_or_else(|_| scene.to_json());
         let command = shell_words::join(std::env::args());
-        outputs.stage_text(path, &report.to_html(&name, &theirs_name, &scene_text, &command))?;
+        let page = HtmlInputs {
+            scene: &name,
+            theirs: &theirs_name,
+            scene_json: &scene_json,
+            command: &command,
+        };
+        if let Some(html) = judgement.to_html(&page) {
+            outputs.stage_text(path, &html)?;
+        }
     }
     outputs.commit()?;
     match o.format_out {
         OutputFormat::Text => {
-            super::write_stdout(|out| out.write_all(report.to_text(&name, &theirs_name, o.limit).as_bytes()))?
+            super::write_stdout(|out| out.write_all(judgement.to_text(&name, &theirs_name, o.limit).as_bytes()))?
         }
-        OutputFormat::Json => super::print_stdout(&report.to_json(&name, &theirs_name).to_string())?,
+        OutputFormat::Json => super::print_stdout(&judgement.to_json(&name, &theirs_name).to_string())?,
     }
-    Ok(if report.identical() {
+    Ok(if judgement.identical() {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
     })
 }
 
-/// `--fit` under a pattern tries every sample position on this grid (1/16 px: the grid of
-/// the standard patterns and of D3D's and Vulkan's programmable sample positions).
-const POSITION_GRID: u32 = 16;
-
-/// A comparison under a pattern of several samples.
-struct Samples<'a> {
-    name: &'a str,
-    theirs_name: &'a str,
-    primitives: rasterproof::model::Primitives,
-    target: rasterproof::convention::Target,
-    pattern: rasterproof::pattern::SamplePattern,
-}
-
-impl Samples<'_> {
-    /// Every sample index compared; exit 0 when all are identical, 1 otherwise.
-    fn compare(&self, o: &Options, model: rasterproof::model::Model, theirs: &Theirs) -> Result<ExitCode, String> {
-        let report = rasterproof::oracle::samples::compare_samples(
-            &self.primitives,
-            &self.target,
-            &self.pattern,
-            theirs,
-            model,
-            o.classify.0,
-        )
-        .map_err(|e| match e {
-            rasterproof::oracle::CompareError::Samples(_) => format!("{}: {e} ({})", self.theirs_name, self.name),
-            other => format!("{}: {other} (model {model}, {} samples)", self.name, self.pattern),
-        })?;
-        match o.format_out {
-            OutputFormat::Text => super::write_stdout(|out| {
-                out.write_all(report.to_text(self.name, self.theirs_name, o.limit).as_bytes())
-            })?,
-            OutputFormat::Json => super::print_stdout(&report.to_json(self.name, self.theirs_name).to_string())?,
+/// `--as`, or the default: json for a `.json` file, ids otherwise.
+fn their_format(o: &Options) -> Result<Format, String> {
+    match &o.theirs_as {
+        Some(f) => {
+            Format::from_name(f).ok_or_else(|| format!("--as: unknown format {f:?} (expected mask, ids, json or grey)"))
         }
-        Ok(if report.identical() {
-            ExitCode::SUCCESS
-        } else {
-            ExitCode::from(1)
-        })
-    }
-
-    /// `--fit` per sample index: each sample's image against every convention, the scene
-    /// moved exactly to that sample (unsnapped: each candidate snaps the moved scene, which
-    /// is the snapped scene moved except at a coordinate exactly halfway between two
-    /// subpixels); then the conventions that give every sample. Exit 0 when one does.
-    fn fit(&self, o: &Options, theirs: &Theirs) -> Result<ExitCode, String> {
-        use rasterproof::model::{Model, SampleFrames};
-        let per_sample = theirs
-            .unstack(self.pattern.len(), self.target.height)
-            .map_err(|e| format!("{}: {e} ({})", self.theirs_name, self.name))?;
-        let frames = SampleFrames::new(&self.primitives, &self.target, &self.pattern, Model::Exact)
-            .map_err(|e| format!("{}: {e}", self.name))?;
-        let mut fits = Vec::new();
-        for (s, theirs) in per_sample.iter().enumerate() {
-            let moved = frames.at(s).map_err(|e| format!("{}: {e}", self.name))?;
-            let found = rasterproof::oracle::fit(&moved, &self.target, theirs)
-                .map_err(|e| format!("{}: sample {s}: {e}", self.name))?;
-            fits.push(found);
-        }
-        let common: Vec<_> = fits[0]
-            .exact
-            .iter()
-            .filter(|c| fits.iter().all(|f| f.exact.contains(c)))
-            .collect();
-        // Where their samples sit: every 1/16 px position that gives each sample index's
-        // image under the scene's own convention.
-        let positions = rasterproof::oracle::samples::fit_positions(
-            &self.primitives,
-            &self.target,
-            &self.pattern,
-            &per_sample,
-            Model::ExactSnapped,
-            POSITION_GRID,
-        )
-        .map_err(|e| format!("{}: {e}", self.name))?;
-        let exact_text = |p: &[num_rational::BigRational; 2]| {
-            format!(
-                "({}, {})",
-                rasterproof::num::exact::exact_text(&p[0]),
-                rasterproof::num::exact::exact_text(&p[1])
-            )
-        };
-        match o.format_out {
-            OutputFormat::Text => super::write_stdout(|out| {
-                writeln!(
-                    out,
-                    "compare --fit: {} against {}, {} samples, each sample index on its own",
-                    self.theirs_name, self.name, self.pattern
-                )?;
-                for (s, f) in fits.iter().enumerate() {
-                    writeln!(out, "sample {s} at {}:", self.pattern.position_text(s))?;
-                    for line in f.to_text().lines() {
-                        writeln!(out, "  {line}")?;
-                    }
-                }
-                writeln!(
-                    out,
-                    "sample positions on the 1/{POSITION_GRID} px grid that give each sample's image under {}:",
-                    self.target.convention
-                )?;
-                for p in &positions {
-                    let listed: Vec<String> = p.fits.iter().take(8).map(exact_text).collect();
-                    let more = p.fits.len().saturating_sub(8);
-                    writeln!(
-                        out,
-                        "  sample {}: the pattern's {} {}; {} of {} positions fit{}{}",
-                        p.index,
-                        self.pattern.position_text(p.index),
-                        if p.standard_fits { "fits" } else { "does NOT fit" },
-                        p.fits.len(),
-                        POSITION_GRID * POSITION_GRID,
-                        if listed.is_empty() {
-                            String::new()
-                        } else {
-                            format!(": {}", listed.join(" "))
-                        },
-                        if more > 0 {
-                            format!(" and {more} more")
-                        } else {
-                            String::new()
-                        }
-                    )?;
-                }
-                if common.is_empty() {
-                    writeln!(out, "no convention gives every sample's image exactly (if each sample has fits of its own, their sample positions are not the {}'s)", self.pattern)
-                } else {
-                    writeln!(
-                        out,
-                        "{} conventions give every sample's image exactly, at the {} positions:",
-                        common.len(),
-                        self.pattern
-                    )?;
-                    for c in &common {
-                        writeln!(out, "  {c}")?;
-                    }
-                    Ok(())
-                }
-            })?,
-            OutputFormat::Json => super::print_stdout(
-                &serde_json::json!({
-                    "pattern": self.pattern.to_json(),
-                    "every_sample": common.iter().map(ToString::to_string).collect::<Vec<_>>(),
-                    "samples": fits.iter().map(|f| f.to_json()).collect::<Vec<_>>(),
-                    "positions": positions.iter().map(|p| serde_json::json!({
-                        "index": p.index,
-                        "pattern_fits": p.standard_fits,
-                        "fits": p.fits.iter().map(exact_text).collect::<Vec<_>>(),
-                    })).collect::<Vec<_>>(),
-                })
-                .to_string(),
-            )?,
-        }
-        Ok(if common.is_empty() {
-            ExitCode::from(1)
-        } else {
-            ExitCode::SUCCESS
-        })
+        None if o.theirs.extension().is_some_and(|e| e.eq_ignore_ascii_case("json")) => Ok(Format::Json),
+        None => Ok(Format::Ids),
     }
 }
 
-/// `compare --as grey`: their grey levels against the exact area coverage; exit 0 when
-/// every pixel has the exact value's level, 1 when some differ.
-fn run_grey(o: &Options) -> Result<ExitCode, String> {
-    if o.diff_out.is_some() || o.html.is_some() || o.background.is_some() {
+/// `--background`, which only a mask has.
+fn background(o: &Options, format: Format) -> Result<Background, String> {
+    if o.background.is_some() && format == Format::Grey {
         return Err("--as grey prints its comparison (text or JSON); --diff-out, --html and --background are for the one-sample formats".to_string());
     }
-    let model = super::parse_model(o.model.as_deref().unwrap_or("exact"))?;
-    let semantics = super::parse_semantics(&o.semantics)?;
-    let quantization = super::parse_quantization(&o.quantization)?;
-    let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention, o.jobs as usize)?;
-    let theirs_name = o.theirs.display().to_string();
-    let bytes = std::fs::read(&o.theirs).map_err(|e| format!("{theirs_name}: cannot read: {e}"))?;
-    let theirs = rasterproof::oracle::grey::GreyImage::read_png(&bytes, &theirs_name)?;
-    let shapes = rasterproof::model::area_shapes(&scene.primitives(), &target, model)
-        .map_err(|e| format!("{name}: {e} (model {model})"))?;
-    if o.fit {
-        let found = rasterproof::oracle::grey::fit_grey(&shapes, &theirs, target.width, target.height)
-            .map_err(|e| format!("{theirs_name}: {e} ({name})"))?;
-        let exact: Vec<_> = found.iter().filter(|(_, n)| *n == 0).collect();
-        match o.format_out {
-            OutputFormat::Text => super::write_stdout(|out| {
-                writeln!(out, "compare --as grey --fit: {theirs_name} against {name} (model {model})")?;
-                writeln!(out, "{} methods tried, {} give their image exactly", found.len(), exact.len())?;
-                let closest: Vec<_> = found.iter().take(5).collect();
-                for (m, n) in if exact.is_empty() { closest } else { exact.clone() } {
-                    writeln!(out, "  {}: {n} pixels differ", m.describe())?;
-                }
-                Ok(())
-            })?,
-            OutputFormat::Json => super::print_stdout(
-                &serde_json::json!({
-                    "tried": found.len(),
-                    "methods": found.iter().map(|(m, n)| serde_json::json!({"method": m.describe(), "differing": n})).collect::<Vec<_>>(),
-                })
-                .to_string(),
-            )?,
-        }
-        return Ok(if exact.is_empty() {
-            ExitCode::from(1)
-        } else {
-            ExitCode::SUCCESS
-        });
+    let background = o.background.as_deref().map(parse_background).transpose()?;
+    if background.is_some() && format != Format::Mask {
+        return Err("--background: only a mask (--as mask) has a background".to_string());
     }
-    let report =
-        rasterproof::oracle::grey::compare_grey(&shapes, &theirs, target.width, target.height, semantics, quantization)
-            .map_err(|e| format!("{theirs_name}: {e} ({name})"))?;
-    match o.format_out {
-        OutputFormat::Text => super::write_stdout(|out| {
-            writeln!(out, "compare --as grey: {theirs_name} against {name} (model {model})")?;
-            out.write_all(report.to_text(o.limit).as_bytes())
-        })?,
-        OutputFormat::Json => super::print_stdout(&report.to_json().to_string())?,
-    }
-    Ok(if report.pixels.is_empty() {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    })
+    Ok(background.unwrap_or_default())
 }

@@ -10,13 +10,13 @@ use std::time::Duration;
 
 use rasterproof::area::{Quantization, Semantics};
 use rasterproof::convention::Preset;
-use rasterproof::oracle::grey::GreyImage;
 use rasterproof::oracle::hunt::{
     fit_convention, hunt_grey, hunt_interruptible, rust_test, FitFirst, GreyHuntConfig, GreyVerdict, HuntConfig,
     SceneFamily, AREA_FAMILIES, FIT_PROBES,
 };
-use rasterproof::oracle::program::{Program, Renderer};
-use rasterproof::oracle::stay_alive::StayAlive;
+use rasterproof::oracle::renderer::program::{Program, Renderer};
+use rasterproof::oracle::renderer::stay_alive::StayAlive;
+use rasterproof::oracle::GreyImage;
 use rasterproof::oracle::{Background, Format};
 
 use rasterproof::model::Model;
@@ -249,7 +249,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     };
     let render_with = program.as_ref();
     if o.fit_first {
-        match fit_convention(&config, render_with)? {
+        match fit_convention(render_with, &config)? {
             FitFirst::Statable { fit, overrides, model } => {
                 eprintln!("fit: hunting under {fit} (oracle {})", model.name());
                 config.overrides = overrides;
@@ -339,7 +339,7 @@ fn run_grey(o: &Options, config: &GreyHuntConfig, renderer: &dyn Renderer, cmd: 
             outputs.stage_text(&path("json"), &f.minimal.to_json())?;
             let mut about = format!("{}\n", f.signature.describe());
             if let GreyVerdict::Differs(r) = &f.verdict {
-                about.push_str(&r.to_text(usize::MAX));
+                about.push_str(&r.levels_text(usize::MAX));
             }
             outputs.stage_text(&path("txt"), &about)?;
             if let Some(theirs) = &f.theirs {

@@ -108,42 +108,6 @@ pub fn parse_model(name: &str) -> Result<rasterproof::model::Model, String> {
     })
 }
 
-/// A file's bytes; a big regular file on `jobs` threads, each reading its part of one
-/// buffer at its offset (the copies and the fresh memory they touch are most of the
-/// time of reading a cached file), then checked to end where its size said. Anything
-/// else (one job, a small file, a pipe, a file that changed size) is read as one stream.
-fn read_file(path: &Path, jobs: usize) -> std::io::Result<Vec<u8>> {
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::FileExt;
-        const BIG: u64 = 8 << 20;
-        let file = std::fs::File::open(path)?;
-        let meta = file.metadata()?;
-        if jobs > 1 && meta.is_file() && meta.len() >= BIG {
-            let len = usize::try_from(meta.len()).map_err(std::io::Error::other)?;
-            let mut bytes = vec![0u8; len];
-            let part = len.div_ceil(jobs);
-            let read: std::io::Result<()> = std::thread::scope(|s| {
-                let parts: Vec<_> = bytes
-                    .chunks_mut(part)
-                    .enumerate()
-                    .map(|(k, chunk)| {
-                        let file = &file;
-                        s.spawn(move || file.read_exact_at(chunk, (k * part) as u64))
-                    })
-                    .collect();
-                parts
-                    .into_iter()
-                    .try_for_each(|p| p.join().expect("a reading thread does not panic"))
-            });
-            if read.is_ok() && file.read_at(&mut [0u8; 1], meta.len())? == 0 {
-                return Ok(bytes);
-            }
-        }
-    }
-    std::fs::read(path)
-}
-
 /// Reads and parses a scene file, applies `--preset`, and builds its target: the
 /// scene's name (its path as given), the scene and the target.
 pub fn load_scene(
@@ -153,18 +117,7 @@ pub fn load_scene(
 ) -> Result<(String, rasterproof::scene::Scene, rasterproof::convention::Target), String> {
     use rasterproof::convention::Preset;
     let name = path.display().to_string();
-    let limit = rasterproof::scene::parse::MAX_SCENE_BYTES;
-    // Checked before reading, so that a huge file costs nothing.
-    if let Ok(m) = std::fs::metadata(path) {
-        if m.len() > limit as u64 {
-            return Err(format!(
-                "{name}: {} bytes, at most {limit} (1 GiB) per scene file",
-                m.len()
-            ));
-        }
-    }
-    let bytes = read_file(path, jobs).map_err(|e| format!("{name}: cannot read: {e}"))?;
-    let mut scene = rasterproof::scene::parse_scene_bytes_parallel(&bytes, &name, jobs).map_err(|e| e.to_string())?;
+    let mut scene = rasterproof::scene::read_scene_file(path, jobs).map_err(|e| e.to_string())?;
     if let Some(p) = preset {
         scene.preset = Preset::from_name(p)
             .ok_or_else(|| format!("--preset: unknown preset {p:?} (expected one of d3d11, vulkan, gl, cts)"))?;

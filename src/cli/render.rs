@@ -365,21 +365,7 @@ fn run_conservative(
     );
     match o.format {
         OutputFormat::Json => {
-            let pixels = |c: &Coverage| {
-                c.iter()
-                    .map(|(x, y, ids)| serde_json::json!([x, y, ids]))
-                    .collect::<Vec<_>>()
-            };
-            let mut v = serde_json::json!({
-                "width": w, "height": h, "rule": rule.to_string(),
-                "must": pixels(&sets.must), "may": pixels(&sets.may),
-                "one_of": sets.one_of.iter().map(|(id, px)| serde_json::json!([id, px.iter().map(|(x, y)| [x, y]).collect::<Vec<_>>()])).collect::<Vec<_>>(),
-            });
-            if let Some((must, may)) = &sets.inner {
-                v["inner_must"] = serde_json::json!(pixels(must));
-                v["inner_may"] = serde_json::json!(pixels(may));
-            }
-            crate::cli::print_stdout(&v.to_string())?;
+            crate::cli::print_stdout(&sets.to_json(&rule).to_string())?;
             eprintln!("{summary}");
         }
         OutputFormat::Text => {

@@ -131,6 +131,32 @@ pub struct ConservativeCoverage {
     pub one_of: Vec<(u32, Vec<(u32, u32)>)>,
 }
 
+impl ConservativeCoverage {
+    /// For programs (`render --conservative --format json`): `{"width", "height", "rule",
+    /// "must": [[x, y, [ids]]], "may": [...], "one_of": [[id, [[x, y]]]]}`, and
+    /// `"inner_must"`, `"inner_may"` where the rule has underestimation.
+    pub fn to_json(&self, rule: &ConservativeRule) -> serde_json::Value {
+        let pixels = |c: &Coverage| {
+            c.iter()
+                .map(|(x, y, ids)| serde_json::json!([x, y, ids]))
+                .collect::<Vec<_>>()
+        };
+        let one_of = |(id, px): &(u32, Vec<(u32, u32)>)| {
+            serde_json::json!([id, px.iter().map(|(x, y)| [x, y]).collect::<Vec<_>>()])
+        };
+        let mut v = serde_json::json!({
+            "width": self.must.width(), "height": self.must.height(), "rule": rule.to_string(),
+            "must": pixels(&self.must), "may": pixels(&self.may),
+            "one_of": self.one_of.iter().map(one_of).collect::<Vec<_>>(),
+        });
+        if let Some((must, may)) = &self.inner {
+            v["inner_must"] = serde_json::json!(pixels(must));
+            v["inner_may"] = serde_json::json!(pixels(may));
+        }
+        v
+    }
+}
+
 /// Why a scene cannot be rasterized conservatively.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ConservativeError(pub String);

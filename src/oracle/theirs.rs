@@ -7,8 +7,53 @@ use std::fmt;
 use image::DynamicImage;
 use serde_json::Value;
 
-use super::grey::GreyImage;
 use crate::coverage::{Coverage, CoverageSink, MAX_ID};
+
+/// A grey image: one level per pixel, row-major, of `bits` bits (8 or 16).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct GreyImage {
+    /// Width.
+    pub width: u32,
+    /// Height.
+    pub height: u32,
+    /// Bits per level: 8 or 16.
+    pub bits: u32,
+    /// The levels, row-major.
+    pub levels: Vec<u16>,
+}
+
+impl GreyImage {
+    /// A grey PNG (8- or 16-bit grey, with or without alpha, whose alpha is ignored),
+    /// named `name` in errors.
+    ///
+    /// # Errors
+    /// Not a PNG, or another colour type: the error names the file and what it holds.
+    pub fn read_png(bytes: &[u8], name: &str) -> Result<GreyImage, String> {
+        // The crate's guarded decoder: a malformed palette or a hostile size is an error,
+        // not a panic inside the decoder or an allocation of gigabytes.
+        let image = crate::fill::flood::decode_png_as_decoded(bytes, name, crate::convention::MAX_CANVAS)
+            .map_err(|e| format!("{name}: not a PNG this reader takes: {}", e.detail()))?;
+        let (width, height) = (image.width(), image.height());
+        match image {
+            image::DynamicImage::ImageLuma8(_) | image::DynamicImage::ImageLumaA8(_) => Ok(GreyImage {
+                width,
+                height,
+                bits: 8,
+                levels: image.to_luma8().into_raw().into_iter().map(u16::from).collect(),
+            }),
+            image::DynamicImage::ImageLuma16(_) | image::DynamicImage::ImageLumaA16(_) => Ok(GreyImage {
+                width,
+                height,
+                bits: 16,
+                levels: image.to_luma16().into_raw(),
+            }),
+            other => Err(format!(
+                "{name}: a {:?} PNG; --as grey reads 8- or 16-bit grey (with or without alpha)",
+                other.color()
+            )),
+        }
+    }
+}
 
 /// How to read the other renderer's file.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

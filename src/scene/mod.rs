@@ -1,6 +1,7 @@
 //! Scene files (JSON): the canvas, the convention and the primitives, every coordinate
 //! read exactly as written. See [`parse::parse_scene`] for the format and its errors.
 
+mod file;
 pub mod parse;
 
 use std::fmt;
@@ -20,6 +21,7 @@ use crate::num::compact::Compact;
 use crate::num::exact::{exact_text, json_pair};
 use crate::pattern::SamplePattern;
 
+pub use file::read_scene_file;
 pub use parse::{
     parse_scene, parse_scene_bytes, parse_scene_bytes_parallel, parse_scene_parallel, parse_scene_with_vertex_limit,
 };

@@ -142,3 +142,23 @@ pub fn coverage_map(c: &rasterproof::coverage::Coverage) -> BTreeMap<(u32, u32),
 pub fn q(n: i64, d: i64) -> BigRational {
     BigRational::new(n.into(), d.into())
 }
+
+/// A canvas of `width x height` pixels under the default convention (what a grey
+/// comparison of area shapes is drawn on).
+pub fn canvas(width: u32, height: u32) -> rasterproof::convention::Target {
+    rasterproof::convention::Target::new(width, height, rasterproof::convention::Convention::default())
+        .expect("a valid canvas")
+}
+
+/// Grey levels judged under `semantics` and `quantization`, against the exact model's
+/// (unsnapped) shapes.
+pub fn grey_options(
+    semantics: rasterproof::area::Semantics,
+    quantization: rasterproof::area::Quantization,
+) -> rasterproof::oracle::compare::grey::GreyOptions {
+    rasterproof::oracle::compare::grey::GreyOptions {
+        model: rasterproof::model::Model::Exact,
+        semantics,
+        quantization,
+    }
+}

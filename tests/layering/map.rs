@@ -20,7 +20,7 @@ use std::fs;
 use std::path::Path;
 
 /// The repository-relative paths (`src/tri/fixed.rs`) of every Rust file under `src/`.
-fn source_files(root: &Path) -> Vec<String> {
+pub(super) fn source_files(root: &Path) -> Vec<String> {
     let mut files = Vec::new();
     rust_files(&root.join("src"), &mut files);
     files
@@ -138,7 +138,7 @@ fn named_paths(code: &str) -> Vec<Vec<String>> {
 
 /// The paths of the `use` tree (or plain path) starting at `k` under `prefix`, and the
 /// index just past it.
-fn path_tree(c: &[char], mut k: usize, mut prefix: Vec<String>) -> (Vec<Vec<String>>, usize) {
+pub(super) fn path_tree(c: &[char], mut k: usize, mut prefix: Vec<String>) -> (Vec<Vec<String>>, usize) {
     let skip = |mut k: usize| {
         while k < c.len() && c[k].is_whitespace() {
             k += 1;

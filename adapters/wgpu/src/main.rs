@@ -13,8 +13,8 @@
 //!
 //! Arguments: `[--samples N] [--conservative] [--clip] (SCENE.json OUT.png | --serve)`, or `--info`
 //! alone. With `--serve` it stays alive and takes one scene per line on stdin (the
-//! stay-alive protocol of `rasterproof::oracle::stay_alive`, through
-//! `rasterproof::oracle::adapter`); the device, its pipelines and its render targets are
+//! stay-alive protocol of `rasterproof::oracle::renderer::stay_alive`, through
+//! `rasterproof::oracle::renderer::adapter`); the device, its pipelines and its render targets are
 //! made once per process (the targets again when a scene needs a larger one).
 //!
 //! **What it draws**: the scene's triangles (ids 0..), in id order, in one draw call of a
@@ -110,7 +110,7 @@ use std::sync::{Arc, Mutex};
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use rasterproof::num::exact::nearest_f32;
-use rasterproof::oracle::adapter::adapter_main;
+use rasterproof::oracle::renderer::adapter::adapter_main;
 use rasterproof::scene::Scene;
 
 /// The name every message starts with.

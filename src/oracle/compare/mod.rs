@@ -1,93 +1,90 @@
-//! Comparing another renderer's output with the oracle's, pixel by pixel, and explaining
-//! every difference ([`compare`], [`CompareReport`]).
+//! Every comparison of another renderer's output with the oracle, in one shape.
 //!
-//! This module holds the diffing: how a pixel differs ([`PixelKind`], [`Relation`]), why
-//! a comparison cannot be made ([`CompareError`]) and [`compare`] itself. Its parts, each
-//! re-exported here: the evidence at one differing pixel and the spatial index of the
-//! shapes that may explain it (`pixel`), and the [`CompareReport`] with its text, JSON and
-//! difference picture (`report`).
+//! Each kind of answer a renderer gives has its comparison here, one file each, and each
+//! takes the same four things, `(primitives, target, theirs, options)`, and returns a
+//! report with the same surface, the [`Comparison`] trait: [`Comparison::identical`], its
+//! counts by class, text, JSON and, where one exists, the HTML page. Every failure to
+//! compare is a [`CompareError`].
+//!
+//! | answer | function | options | report |
+//! |---|---|---|---|
+//! | one sample per pixel (mask, ids, JSON) | [`compare()`] | [`CompareOptions`] | [`CompareReport`] |
+//! | one image per sample index of a pattern | [`samples::compare_samples`] | [`samples::SampleOptions`] | [`samples::SampleCompareReport`] |
+//! | anti-aliased grey levels | [`grey::compare_grey`] | [`grey::GreyOptions`] | [`grey::GreyReport`] |
+//! | a conservative coverage | [`conservative::compare_conservative`] | [`crate::model::ConservativeRule`] | [`conservative::ConservativeReport`] |
+//! | the convention of a one-sample image | [`fit::fit`] | none | [`fit::FitReport`] |
+//! | the convention and sample positions under a pattern | [`fit::samples::fit_samples`] | [`fit::samples::SampleFitOptions`] | [`fit::samples::SampleFitReport`] |
+//! | the method of a grey image | [`fit::grey::fit_grey`] | none | [`fit::grey::GreyFitReport`] |
+//!
+//! [`judge`] is the one entry point over all of them: a [`Question`] in, a [`Judgement`]
+//! (any of the reports, itself a [`Comparison`]) out; what the CLI's `compare` calls.
+//!
+//! A new kind of answer adds one file here (its options, its report implementing
+//! [`Comparison`], its function), a variant of [`Question`] and of [`Judgement`], and the
+//! error variants it needs in [`CompareError`].
 
-mod html;
-mod pixel;
-mod report;
+pub mod binary;
+pub mod conservative;
+pub mod fit;
+pub mod grey;
+pub mod samples;
 
-use std::collections::BTreeMap;
 use std::fmt;
 
-pub use html::{escape as html_escape, html_page, HTML_EXPLAINED_AT_MOST};
-pub(crate) use pixel::{evidence, evidence_at, pixel_box_holds};
-pub use pixel::{DiffPixel, PixelFinding};
-pub use report::{reason_text, CompareReport, EMPTY_COLOUR, MATCHED_COLOUR, REPORT_VERSION};
+use serde_json::Value;
 
-use super::candidate::{image, snapped, Candidate};
-use super::reason::{decide, Classifier, Snapping, Support};
-use super::theirs::{Format, TheirPixel, Theirs};
+pub use binary::{
+    compare, count_differences, html_escape, html_page, pick_classified, reason_text, CompareOptions, CompareReport,
+    DiffPixel, PixelFinding, PixelKind, Relation, CLASSIFY_AT_MOST, EMPTY_COLOUR, HTML_EXPLAINED_AT_MOST,
+    MATCHED_COLOUR, REPORT_VERSION,
+};
+pub(crate) use binary::{evidence, evidence_at, pixel_box_holds};
+
+use crate::area::{AreaShape, Quantization};
 use crate::convention::Target;
-use crate::coverage::Coverage;
-use crate::model::{prepare_parallel, Model, ModelError, Primitives};
-use pixel::{guessed, named, Candidates};
-use report::Joint;
+use crate::model::{AreaError, ConservativeError, ConservativeRule, Model, ModelError, Primitives};
+use crate::oracle::theirs::{Format, Theirs};
 
-/// How a differing pixel differs, seen from the whole pixel.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum PixelKind {
-    /// The oracle covers it, they do not (or they name fewer owners).
-    Missing,
-    /// They cover it, the oracle does not.
-    Extra,
-    /// Both cover it, with different owners.
-    WrongOwner,
-    /// They cover it more often than the oracle (a second owner, or one twice).
-    Double,
-}
+/// What every comparison's report answers: whether their output is right, how many
+/// differences of each class it has, and the report for people (text, HTML) and programs
+/// (JSON).
+pub trait Comparison {
+    /// Their output is exactly what the oracle allows: nothing differs (one sample, every
+    /// sample index, grey levels), every must-pixel is covered and none beyond the
+    /// may-pixels (conservative), or some convention or method gives it exactly (a fit).
+    /// What `compare` exits 0 on.
+    fn identical(&self) -> bool;
 
-impl PixelKind {
-    /// Every kind, in report order.
-    pub const ALL: [PixelKind; 4] = [
-        PixelKind::Missing,
-        PixelKind::Extra,
-        PixelKind::WrongOwner,
-        PixelKind::Double,
-    ];
+    /// The differences counted by class, in report order: reason classes of the
+    /// classified differing pixels (one sample, every sample index), grey classes, the
+    /// conservative kinds, or the exact fits found.
+    fn counts(&self) -> Vec<(String, usize)>;
 
-    /// Its name in reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            PixelKind::Missing => "missing",
-            PixelKind::Extra => "extra",
-            PixelKind::WrongOwner => "wrong owner",
-            PixelKind::Double => "double",
-        }
-    }
+    /// For people: the headline, the counts and at most `limit` differences one by one.
+    /// `scene` and `theirs` are the names the text quotes (file names, as given).
+    fn to_text(&self, scene: &str, theirs: &str, limit: usize) -> String;
 
-    /// Its colour in the difference picture.
-    pub fn colour(self) -> [u8; 3] {
-        match self {
-            PixelKind::Missing => [230, 40, 40],
-            PixelKind::Extra => [40, 200, 60],
-            PixelKind::WrongOwner => [240, 220, 40],
-            PixelKind::Double => [220, 60, 220],
-        }
+    /// For programs: everything, as one JSON object (schemas in docs/oracle.md).
+    fn to_json(&self, scene: &str, theirs: &str) -> Value;
+
+    /// As one self-contained HTML page, where this kind of answer has one.
+    fn to_html(&self, _page: &HtmlInputs<'_>) -> Option<String> {
+        None
     }
 }
 
-/// One primitive's part in a differing pixel.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Relation {
-    /// The primitive covers the pixel in the oracle, not in theirs.
-    Missing,
-    /// The primitive covers the pixel in theirs, not in the oracle.
-    Extra,
-}
-
-impl Relation {
-    /// `missing` or `extra`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Relation::Missing => "missing",
-            Relation::Extra => "extra",
-        }
-    }
+/// What an HTML report quotes besides the comparison: the two names, the scene's text and
+/// the command that made it.
+#[derive(Debug, Clone, Copy)]
+pub struct HtmlInputs<'a> {
+    /// The scene's name.
+    pub scene: &'a str,
+    /// Their output's name.
+    pub theirs: &'a str,
+    /// The scene file's text.
+    pub scene_json: &'a str,
+    /// The command line, as the page shows it.
+    pub command: &'a str,
 }
 
 /// Their canvas is not the scene's.
@@ -100,10 +97,10 @@ pub struct SizeMismatch {
 }
 
 impl SizeMismatch {
-    /// `Err` when `theirs` is not `target`'s size.
-    pub fn check(theirs: &Theirs, target: &Target) -> Result<(), SizeMismatch> {
+    /// `Err` when their `(width, height)` is not `target`'s size.
+    pub fn check_size(theirs: (u32, u32), target: &Target) -> Result<(), SizeMismatch> {
         let m = SizeMismatch {
-            theirs: (theirs.width(), theirs.height()),
+            theirs,
             scene: (target.width, target.height),
         };
         if m.theirs == m.scene {
@@ -111,6 +108,11 @@ impl SizeMismatch {
         } else {
             Err(m)
         }
+    }
+
+    /// `Err` when `theirs` is not `target`'s size.
+    pub fn check(theirs: &Theirs, target: &Target) -> Result<(), SizeMismatch> {
+        SizeMismatch::check_size((theirs.width(), theirs.height()), target)
     }
 }
 
@@ -124,23 +126,71 @@ impl fmt::Display for SizeMismatch {
     }
 }
 
-/// Why a comparison could not be made.
+/// Why a comparison (or a fit) could not be made.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum CompareError {
     /// Their canvas is not the scene's.
     Size(SizeMismatch),
+    /// Their grey image's canvas is not the scene's.
+    GreySize(SizeMismatch),
     /// The oracle must be an exact model.
     NotExact(Model),
     /// The oracle model refused the scene.
     Model(ModelError),
     /// Their multisampled image is not the pattern's images stacked.
     Samples(String),
+    /// The scene's exact area coverage cannot be computed (a grey comparison).
+    Area(AreaError),
+    /// The scene's conservative coverage cannot be computed.
+    Conservative(ConservativeError),
+    /// Their grey image's levels are not of the quantization's bit depth.
+    Levels {
+        /// Bits per level of their image.
+        bits: u32,
+        /// The quantization asked for.
+        quantization: Quantization,
+    },
+    /// The question needs another kind of output than theirs (grey levels, or one-sample
+    /// coverage) and their file was read as this format.
+    Format(Format),
+    /// A fit does not search scenes with clip-space triangles.
+    ClipSpace,
+}
+
+impl CompareError {
+    /// Whether their output is at fault (its size, stacking, depth or format), rather than
+    /// the scene or the options: the CLI names their file first then.
+    pub fn is_theirs(&self) -> bool {
+        matches!(
+            self,
+            CompareError::Size(_)
+                | CompareError::GreySize(_)
+                | CompareError::Samples(_)
+                | CompareError::Levels { .. }
+                | CompareError::Format(_)
+        )
+    }
+
+    /// The one-line message naming the file at fault: `THEIRS: why (SCENE)` when their
+    /// output is at fault, `SCENE: why` otherwise.
+    pub fn to_text(&self, scene: &str, theirs: &str) -> String {
+        if self.is_theirs() {
+            format!("{theirs}: {self} ({scene})")
+        } else {
+            format!("{scene}: {self}")
+        }
+    }
 }
 
 impl fmt::Display for CompareError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             CompareError::Size(m) => write!(f, "{m}"),
+            CompareError::GreySize(m) => write!(
+                f,
+                "their image is {}x{}, the scene's canvas {}x{}",
+                m.theirs.0, m.theirs.1, m.scene.0, m.scene.1
+            ),
             CompareError::NotExact(m) => write!(
                 f,
                 "--model {}: the oracle must be an exact model (exact, exact-snapped, exact-plain, exact-snapped-plain)",
@@ -148,318 +198,171 @@ impl fmt::Display for CompareError {
             ),
             CompareError::Model(e) => write!(f, "{e}"),
             CompareError::Samples(e) => write!(f, "{e}"),
+            CompareError::Area(e) => write!(f, "{e}"),
+            CompareError::Conservative(e) => write!(f, "{e}"),
+            CompareError::Levels { bits, quantization } => write!(
+                f,
+                "their image has {bits}-bit levels; the quantization {} makes {}-bit ones",
+                quantization.name(),
+                quantization.bits()
+            ),
+            CompareError::Format(format) => write!(
+                f,
+                "their output was read as {}, which this comparison does not take (grey levels are compared with \
+                 --as grey, coverage with --as mask, ids or json)",
+                format.name()
+            ),
+            CompareError::ClipSpace => f.write_str(
+                "--fit does not search scenes with clip_space_triangles (their window-space vertices exist only \
+                 after clipping); compare them under a stated convention",
+            ),
         }
     }
 }
 
 impl std::error::Error for CompareError {}
 
-/// How many differing pixels [`compare`] classifies: a renderer that gets a whole image
-/// wrong is judged in seconds, not hours (each classification runs exact searches). Its
-/// differing pixels are all found and counted by kind; [`pick_classified`] says which are
-/// classified.
-pub const CLASSIFY_AT_MOST: usize = 2000;
-
-/// Which of `total` differing pixels (in row order) a comparison that classifies at most
-/// `at_most` classifies: all when they are that few; else the first half of `at_most` in
-/// row order (the top of the picture, whole) and the other half spread evenly over the
-/// rest (pixel `h + floor(j (total - h) / k)` for `j` in `0..k`, `h` and `k` the two
-/// halves), so the sample reaches down the picture.
-///
-/// ```
-/// use rasterproof::oracle::compare::pick_classified;
-/// assert_eq!(pick_classified(3, 10), vec![true; 3]);
-/// let picked = pick_classified(10, 4);
-/// let at: Vec<usize> = (0..10).filter(|&i| picked[i]).collect();
-/// assert_eq!(at, vec![0, 1, 2, 6]); // 2 first, then 2 + floor(j * 8 / 2) for j = 0, 1
-/// ```
-pub fn pick_classified(total: usize, at_most: usize) -> Vec<bool> {
-    if total <= at_most {
-        return vec![true; total];
-    }
-    let head = at_most / 2;
-    let spread = at_most - head;
-    let mut picked = vec![false; total];
-    picked[..head].fill(true);
-    for j in 0..spread {
-        picked[head + j * (total - head) / spread] = true;
-    }
-    picked
+/// One question about their output: which comparison (or fit) [`judge`] makes.
+#[derive(Debug, Clone)]
+pub enum Question {
+    /// One sample per pixel against the exact model ([`compare()`]).
+    Binary(CompareOptions),
+    /// Every sample index of a pattern ([`samples::compare_samples`]).
+    Samples(samples::SampleOptions),
+    /// Grey levels against the exact area coverage ([`grey::compare_grey`]).
+    Grey(grey::GreyOptions),
+    /// A conservative coverage under a rule ([`conservative::compare_conservative`]).
+    Conservative(ConservativeRule),
+    /// The conventions that give their one-sample image ([`fit::fit`]).
+    Fit,
+    /// The conventions and sample positions that give each sample index
+    /// ([`fit::samples::fit_samples`]).
+    FitSamples(fit::samples::SampleFitOptions),
+    /// The grey methods that give their levels, the scene's area shapes under this exact
+    /// model ([`fit::grey::fit_grey`]).
+    FitGrey(Model),
 }
 
-/// Compares `theirs` with what the exact `model` renders of `primitives` on `target`, and
-/// explains the differing pixels (see [`super::reason`] for the classes): every one of
-/// them is found and counted by kind, and at most [`CLASSIFY_AT_MOST`] are classified
-/// ([`pick_classified`]; [`compare_classifying`] sets the bound).
-///
-/// What a pixel's owners are in each format, and so what can differ: a mask names none
-/// (missing and extra only; an extra pixel is explained by the primitive that explains it
-/// best, `guessed`); an ids PNG names the highest owner and marks several (a pixel the
-/// oracle gives owners `O` should hold `max(O)`, marked when `|O| >= 2`); JSON names all.
-///
-/// ```
-/// use rasterproof::model::{render, Model};
-/// use rasterproof::oracle::{compare, Format, Theirs};
-/// use rasterproof::scene::parse_scene;
-/// let scene = parse_scene(r#"{"width": 4, "height": 4, "triangles": [{"v": [[0, 0], [4, 0], [0, 4]]}]}"#, "s.json").unwrap();
-/// let target = scene.target().unwrap();
-/// let ours = render(&scene.primitives(), &target, Model::ExactSnapped).unwrap();
-/// let theirs = Theirs::from_coverage(&ours, Format::Ids);
-/// let report = compare(&scene.primitives(), &target, &theirs, Model::ExactSnapped).unwrap();
-/// assert!(report.pixels.is_empty());
-/// ```
-///
-/// # Errors
-/// Their canvas differs from `target`'s, `model` is not exact, or it refuses the scene.
-pub fn compare(
-    primitives: &Primitives,
-    target: &Target,
-    theirs: &Theirs,
-    model: Model,
-) -> Result<CompareReport, CompareError> {
-    compare_classifying(primitives, target, theirs, model, Some(CLASSIFY_AT_MOST), 1)
-}
-
-/// [`compare`], classifying at most `at_most` differing pixels (`None`: every one), the
-/// scene drawn on `jobs` threads ([`crate::model::PreparedScene::coverage_parallel`]: the
-/// same coverage as one thread's).
-///
-/// # Errors
-/// As [`compare`].
-pub fn compare_classifying(
-    primitives: &Primitives,
-    target: &Target,
-    theirs: &Theirs,
-    model: Model,
-    at_most: Option<usize>,
-    jobs: usize,
-) -> Result<CompareReport, CompareError> {
-    SizeMismatch::check(theirs, target).map_err(CompareError::Size)?;
-    if !model.is_exact() {
-        return Err(CompareError::NotExact(model));
-    }
-    let prepared = prepare_parallel(primitives, target, model, jobs).map_err(CompareError::Model)?;
-    let ours = prepared.coverage_parallel(target, jobs, &|| {});
-    // The differing pixels, all of them; then which are classified.
-    let differing: Vec<(u32, u32, TheirPixel, DiffOwners)> = covered_by_either(&ours, theirs)
-        .filter_map(|(y, x)| {
-            let t = theirs.pixel(x, y);
-            differ(ours.owners(x, y), &t, theirs.format()).map(|d| (x, y, t, d))
-        })
-        .collect();
-    // The index is built only when a pixel differs: an identical image costs its render,
-    // its shapes and one pass over the covered pixels.
-    let shapes = prepared.shapes().ok_or(CompareError::NotExact(model))?;
-    let mut classifier = Classifier::new(primitives, target, model, &shapes);
-    let index = if differing.is_empty() {
-        Candidates::new(&[], target)
-    } else {
-        Candidates::new(&shapes, target)
-    };
-    let picked = pick_classified(differing.len(), at_most.unwrap_or(usize::MAX));
-    // Pass one: every finding with what the searches found; pass two decides each with
-    // the support of the whole comparison (`reason::decide`).
-    let mut pixels = Vec::new();
-    let mut found = Vec::new();
-    let mut support = Support::default();
-    for ((x, y, t, (kind, missing, extra, unnamed)), classified) in differing.into_iter().zip(picked) {
-        let o = ours.owners(x, y);
-        if !classified {
-            pixels.push(DiffPixel {
-                x,
-                y,
-                kind,
-                ours: o.to_vec(),
-                theirs: t,
-                classified: false,
-                findings: Vec::new(),
-            });
-            continue;
+impl Question {
+    /// The one-line message of `error`, met answering this question: the file at fault
+    /// first ([`CompareError::to_text`]), and for a fault of the scene, the model (and
+    /// pattern) it was drawn under.
+    pub fn error_text(&self, error: &CompareError, scene: &str, theirs: &str) -> String {
+        let text = error.to_text(scene, theirs);
+        if error.is_theirs() {
+            return text;
         }
-        let mut findings = Vec::new();
-        let mut push = |(finding, f)| {
-            support.add(&f);
-            found.push(f);
-            findings.push(finding);
-        };
-        for id in missing {
-            push(named(&mut classifier, primitives, id, Relation::Missing, x, y, target));
-        }
-        for id in extra {
-            push(named(&mut classifier, primitives, id, Relation::Extra, x, y, target));
-        }
-        if unnamed {
-            let candidates: Vec<usize> = index
-                .near(x, y)
-                .into_iter()
-                .filter(|&k| !o.iter().any(|&id| usize::try_from(id).ok() == Some(k)))
-                .collect();
-            push(guessed(&mut classifier, primitives, &candidates, x, y, target));
-        }
-        pixels.push(DiffPixel {
-            x,
-            y,
-            kind,
-            ours: o.to_vec(),
-            theirs: t,
-            classified: true,
-            findings,
-        });
-    }
-    let mut found = found.into_iter();
-    for f in pixels.iter_mut().flat_map(|p: &mut DiffPixel| p.findings.iter_mut()) {
-        f.reason = decide(found.next().expect("one found per finding"), &support);
-    }
-    let joint = joint_checked(&pixels, primitives, target, theirs.format());
-    Ok(CompareReport {
-        model,
-        convention: target.convention,
-        format: theirs.format(),
-        width: target.width,
-        height: target.height,
-        ours_covered: ours.covered_pixels(),
-        theirs_covered: theirs.covered_pixels(),
-        pixels,
-        ours,
-        joint,
-    })
-}
-
-/// The two-part explanation of the classified differences ([`report::joint_parts`]),
-/// checked: the scene snapped to its grid with its first rounding, drawn under its first
-/// tie rule with the oracle's sample position, must give their answer at every classified
-/// differing pixel. Unchecked (`checked: None`) when that image cannot be drawn: clip-space
-/// triangles, or a rule other than top-left and bottom-left under a clip window.
-fn joint_checked(pixels: &[DiffPixel], primitives: &Primitives, target: &Target, format: Format) -> Option<Joint> {
-    let mut joint = report::joint_parts(pixels)?;
-    let candidate = Candidate {
-        tie_rule: joint.rules[0],
-        snapping: Snapping {
-            bits: Some(joint.bits),
-            rounding: joint.roundings[0],
-        },
-        pixel_centre: target.convention.pixel_centre,
-    };
-    if primitives.clip_space_triangles.is_empty() {
-        if let Ok(Some(both)) = image(&snapped(primitives, candidate.snapping), target, &candidate) {
-            joint.checked = Some(
-                pixels
-                    .iter()
-                    .filter(|p| p.classified)
-                    .all(|p| differ(both.owners(p.x, p.y), &p.theirs, format).is_none()),
-            );
+        match self {
+            Question::Binary(o) => format!("{text} (model {})", o.model),
+            Question::Samples(o) => format!("{text} (model {}, {} samples)", o.model, o.pattern),
+            Question::Grey(o) => format!("{text} (model {})", o.model),
+            Question::FitGrey(model) => format!("{text} (model {model})"),
+            Question::Conservative(_) | Question::Fit | Question::FitSamples(_) => text,
         }
     }
-    Some(joint)
 }
 
-/// Differing pixels of `ours` against `theirs`, by kind, as [`compare`] counts them (without
-/// explaining them); with `stop`, counting ends once that many are found.
-pub fn count_differences(ours: &Coverage, theirs: &Theirs, stop: Option<usize>) -> BTreeMap<PixelKind, usize> {
-    let mut out = BTreeMap::new();
-    let mut total = 0;
-    for (y, x) in covered_by_either(ours, theirs) {
-        if let Some((kind, ..)) = differ(ours.owners(x, y), &theirs.pixel(x, y), theirs.format()) {
-            *out.entry(kind).or_insert(0) += 1;
-            total += 1;
-            if stop.is_some_and(|s| total >= s) {
-                break;
-            }
-        }
-    }
-    out
+/// The answer to a [`Question`]: one of the reports, itself a [`Comparison`].
+#[derive(Debug, Clone)]
+pub enum Judgement {
+    /// [`Question::Binary`]'s.
+    Binary(Box<CompareReport>),
+    /// [`Question::Samples`]'s.
+    Samples(samples::SampleCompareReport),
+    /// [`Question::Grey`]'s.
+    Grey(grey::GreyReport),
+    /// [`Question::Conservative`]'s.
+    Conservative(conservative::ConservativeReport),
+    /// [`Question::Fit`]'s.
+    Fit(fit::FitReport),
+    /// [`Question::FitSamples`]'s.
+    FitSamples(fit::samples::SampleFitReport),
+    /// [`Question::FitGrey`]'s.
+    FitGrey(fit::grey::GreyFitReport),
 }
 
-/// The pixels either side covers, `(y, x)` in row order, each once: the two row-ordered
-/// lists merged (no sort: a fit counts the differences of a thousand images).
-fn covered_by_either<'a>(ours: &'a Coverage, theirs: &Theirs) -> impl Iterator<Item = (u32, u32)> + 'a {
-    let mut a = ours.iter().map(|(x, y, _)| (y, x)).peekable();
-    let mut b = theirs.covered().into_iter().map(|(x, y)| (y, x)).peekable();
-    std::iter::from_fn(move || match (a.peek().copied(), b.peek().copied()) {
-        (Some(p), Some(q)) => {
-            if p <= q {
-                a.next();
-            }
-            if q <= p {
-                b.next();
-            }
-            Some(p.min(q))
-        }
-        (Some(_), None) => a.next(),
-        (None, _) => b.next(),
-    })
-}
-
-/// How a pixel differs ([`differ`]): its kind, the ids missing in theirs, the ids extra in
-/// theirs, and whether an owner they do not name is extra.
-type DiffOwners = (PixelKind, Vec<u32>, Vec<u32>, bool);
-
-/// The multiset difference `a - b` of two ascending lists.
-fn minus(a: &[u32], b: &[u32]) -> Vec<u32> {
-    let mut rest = b.to_vec();
-    let mut out = Vec::new();
-    for &v in a {
-        if let Some(k) = rest.iter().position(|&w| w == v) {
-            rest.remove(k);
-        } else {
-            out.push(v);
-        }
-    }
-    out
-}
-
-/// How ours (`o`) and theirs (`t`) differ at a pixel: the kind, the ids missing in theirs,
-/// the ids extra in theirs, and whether an owner they do not name is extra; `None` when
-/// they agree (as far as the format tells).
-fn differ(o: &[u32], t: &TheirPixel, format: Format) -> Option<DiffOwners> {
-    match format {
-        Format::Mask | Format::Grey => match (o.is_empty(), t.covered) {
-            (false, false) => Some((PixelKind::Missing, o.to_vec(), Vec::new(), false)),
-            (true, true) => Some((PixelKind::Extra, Vec::new(), Vec::new(), true)),
+impl Judgement {
+    /// The one-sample report, when the question was [`Question::Binary`]: what has a
+    /// difference picture.
+    pub fn binary(&self) -> Option<&CompareReport> {
+        match self {
+            Judgement::Binary(r) => Some(r),
             _ => None,
-        },
-        Format::Ids => {
-            let (Some(&h), Some(&top)) = (t.ids.first(), o.last()) else {
-                return match (o.is_empty(), t.covered) {
-                    (false, false) => Some((PixelKind::Missing, o.to_vec(), Vec::new(), false)),
-                    (true, true) => Some((PixelKind::Extra, Vec::new(), t.ids.clone(), t.several)),
-                    _ => None,
-                };
-            };
-            let several = o.len() > 1;
-            if h == top && t.several == several {
-                None
-            } else if h == top && t.several {
-                Some((PixelKind::Double, Vec::new(), Vec::new(), true))
-            } else if h == top {
-                Some((PixelKind::Missing, o[..o.len() - 1].to_vec(), Vec::new(), false))
-            } else {
-                // One owner named: every other owner of ours is missing. Several marked: the
-                // highest is named, so only ours above it are known to be missing.
-                let missing: Vec<u32> = o
-                    .iter()
-                    .copied()
-                    .filter(|&id| if t.several { id > h } else { id != h })
-                    .collect();
-                let extra = if o.contains(&h) { Vec::new() } else { vec![h] };
-                Some((PixelKind::WrongOwner, missing, extra, false))
-            }
-        }
-        Format::Json => {
-            if o == t.ids.as_slice() {
-                return None;
-            }
-            let (missing, extra) = (minus(o, &t.ids), minus(&t.ids, o));
-            let kind = if t.ids.is_empty() || extra.is_empty() {
-                PixelKind::Missing
-            } else if o.is_empty() {
-                PixelKind::Extra
-            } else if missing.is_empty() {
-                PixelKind::Double
-            } else {
-                PixelKind::WrongOwner
-            };
-            Some((kind, missing, extra, false))
         }
     }
+
+    /// The report behind it, as its common surface.
+    pub fn report(&self) -> &dyn Comparison {
+        match self {
+            Judgement::Binary(r) => r.as_ref(),
+            Judgement::Samples(r) => r,
+            Judgement::Grey(r) => r,
+            Judgement::Conservative(r) => r,
+            Judgement::Fit(r) => r,
+            Judgement::FitSamples(r) => r,
+            Judgement::FitGrey(r) => r,
+        }
+    }
+}
+
+impl Comparison for Judgement {
+    fn identical(&self) -> bool {
+        self.report().identical()
+    }
+
+    fn counts(&self) -> Vec<(String, usize)> {
+        self.report().counts()
+    }
+
+    fn to_text(&self, scene: &str, theirs: &str, limit: usize) -> String {
+        self.report().to_text(scene, theirs, limit)
+    }
+
+    fn to_json(&self, scene: &str, theirs: &str) -> Value {
+        self.report().to_json(scene, theirs)
+    }
+
+    fn to_html(&self, page: &HtmlInputs<'_>) -> Option<String> {
+        self.report().to_html(page)
+    }
+}
+
+/// Answers `question` about `theirs`, their output of `primitives` on `target`: the one
+/// entry point over every comparison and fit of this module.
+///
+/// # Errors
+/// As the comparison asked for: see [`CompareError`].
+pub fn judge(
+    primitives: &Primitives,
+    target: &Target,
+    theirs: &Theirs,
+    question: &Question,
+) -> Result<Judgement, CompareError> {
+    Ok(match question {
+        Question::Binary(o) => Judgement::Binary(Box::new(compare(primitives, target, theirs, o)?)),
+        Question::Samples(o) => Judgement::Samples(samples::compare_samples(primitives, target, theirs, o)?),
+        Question::Grey(o) => {
+            let shapes = area_shapes(primitives, target, o.model)?;
+            Judgement::Grey(grey::compare_grey(&shapes, target, grey_of(theirs)?, o)?)
+        }
+        Question::Conservative(rule) => {
+            Judgement::Conservative(conservative::compare_conservative(primitives, target, theirs, rule)?)
+        }
+        Question::Fit => Judgement::Fit(fit::fit(primitives, target, theirs)?),
+        Question::FitSamples(o) => Judgement::FitSamples(fit::samples::fit_samples(primitives, target, theirs, o)?),
+        Question::FitGrey(model) => {
+            let shapes = area_shapes(primitives, target, *model)?;
+            Judgement::FitGrey(fit::grey::fit_grey(&shapes, target, grey_of(theirs)?, *model)?)
+        }
+    })
+}
+
+/// The scene's area shapes under an exact `model`.
+fn area_shapes(primitives: &Primitives, target: &Target, model: Model) -> Result<Vec<AreaShape>, CompareError> {
+    crate::model::area_shapes(primitives, target, model).map_err(CompareError::Area)
+}
+
+/// Their grey levels, or the error that they were read otherwise.
+fn grey_of(theirs: &Theirs) -> Result<&crate::oracle::theirs::GreyImage, CompareError> {
+    theirs.grey().ok_or(CompareError::Format(theirs.format()))
 }

@@ -5,8 +5,8 @@
 use super::{generate_scene, HuntConfig, SceneFamily};
 use crate::convention::{AnyTieRule, PixelCentre, TieRule};
 use crate::model::Model;
-use crate::oracle::fit::{fit, Candidate};
-use crate::oracle::program::Renderer;
+use crate::oracle::compare::fit::{fit, Candidate};
+use crate::oracle::renderer::program::Renderer;
 use crate::scene::Overrides;
 
 /// How many tie-heavy probe scenes [`fit_convention`] renders: the conventions that
@@ -41,7 +41,7 @@ pub enum FitFirst {
 ///
 /// # Errors
 /// A probe scene cannot be made, the renderer fails on one, or the fit refuses one.
-pub fn fit_convention(config: &HuntConfig, renderer: &dyn Renderer) -> Result<FitFirst, String> {
+pub fn fit_convention(renderer: &dyn Renderer, config: &HuntConfig) -> Result<FitFirst, String> {
     let probe = HuntConfig {
         families: vec![SceneFamily::Mesh],
         ..config.clone()
@@ -63,7 +63,7 @@ pub fn fit_convention(config: &HuntConfig, renderer: &dyn Renderer) -> Result<Fi
     }
     let exact = exact.unwrap_or_default();
     if exact.is_empty() {
-        return Ok(FitFirst::NoneExplains(last.map(|f| f.to_text()).unwrap_or_default()));
+        return Ok(FitFirst::NoneExplains(last.map(|f| f.fit_text()).unwrap_or_default()));
     }
     let Some(fit) = preferred(&exact) else {
         return Ok(FitFirst::Unstatable(exact));

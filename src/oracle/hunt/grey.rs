@@ -26,8 +26,9 @@ use crate::harness::shrink::shrink_batched;
 use crate::model::area_shapes;
 use crate::model::Model;
 use crate::num::exact::{exact_text, nearest_f64, round_to_integer, Rounding};
-use crate::oracle::grey::{compare_grey, GreyClass, GreyImage, GreyReport};
-use crate::oracle::program::{FailureKind, RenderFailure, Renderer};
+use crate::oracle::compare::grey::{compare_grey, GreyClass, GreyOptions, GreyReport};
+use crate::oracle::renderer::program::{FailureKind, RenderFailure, Renderer};
+use crate::oracle::theirs::GreyImage;
 use crate::oracle::theirs::Theirs;
 use crate::scene::Scene;
 
@@ -104,10 +105,15 @@ pub fn judge_grey(
         Ok(s) => s,
         Err(e) => return GreyVerdict::Refused(e.to_string()),
     };
-    match compare_grey(&shapes, grey, scene.width, scene.height, semantics, quantization) {
+    let options = GreyOptions {
+        model: Model::Exact,
+        semantics,
+        quantization,
+    };
+    match compare_grey(&shapes, &target, grey, &options) {
         Ok(r) if r.pixels.is_empty() => GreyVerdict::Same,
         Ok(r) => GreyVerdict::Differs(Box::new(r)),
-        Err(e) => bad(e),
+        Err(e) => bad(e.to_string()),
     }
 }
 
@@ -232,7 +238,7 @@ pub struct GreyHuntReport {
 /// use rasterproof::area::{Quantization, Semantics};
 /// use rasterproof::model::render_area;
 /// use rasterproof::model::Model;
-/// use rasterproof::oracle::grey::GreyImage;
+/// use rasterproof::oracle::GreyImage;
 /// use rasterproof::oracle::hunt::{hunt_grey, GreyHuntConfig, HuntConfig, AREA_FAMILIES};
 /// use rasterproof::oracle::Theirs;
 /// // A renderer that truncates the exact value where the hunt expects it rounded.
@@ -417,7 +423,7 @@ impl GreyHuntReport {
             ));
             match &f.verdict {
                 GreyVerdict::Differs(r) => {
-                    for line in r.to_text(pixels).lines() {
+                    for line in r.levels_text(pixels).lines() {
                         s.push_str(&format!("  {line}\n"));
                     }
                 }
@@ -455,7 +461,7 @@ impl GreyHuntReport {
                     "minimal": serde_json::from_str::<serde_json::Value>(&f.minimal.to_json()).unwrap_or_default(),
                 });
                 match &f.verdict {
-                    GreyVerdict::Differs(r) => entry["comparison"] = r.to_json(),
+                    GreyVerdict::Differs(r) => entry["comparison"] = r.levels_json(),
                     GreyVerdict::Failed(e) => entry["failure"] = json!(e.to_string()),
                     GreyVerdict::Refused(e) => entry["refused"] = json!(e),
                     GreyVerdict::Same => {}

@@ -4,7 +4,7 @@
 //! explanation and a ready-to-paste Rust test.
 //!
 //! Their renderer is any `Fn(&Scene) -> Result<Theirs, RenderFailure>`: an external program
-//! ([`crate::oracle::program::Program`]) or a Rust closure.
+//! ([`crate::oracle::renderer::program::Program`]) or a Rust closure.
 //!
 //! At scale, as `check` runs: one [`Shard`] of the cases (N machines run disjoint cases
 //! and together exactly the unsharded hunt's), within a time budget (the cases that ran
@@ -52,7 +52,7 @@ use crate::harness::runner::{RunError, Runner};
 use crate::harness::suite::Shard;
 use crate::model::Model;
 use crate::oracle::compare::PixelKind;
-use crate::oracle::program::Renderer;
+use crate::oracle::renderer::program::Renderer;
 use crate::pattern::SamplePattern;
 use crate::scene::{Overrides, Scene};
 

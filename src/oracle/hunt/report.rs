@@ -12,7 +12,7 @@ use crate::harness::shrink::primitive_count;
 use crate::harness::suite::report::{json_object as object, json_value as j};
 use crate::harness::suite::Shard;
 use crate::oracle::compare::PixelKind;
-use crate::oracle::program::RendererRuns;
+use crate::oracle::renderer::program::RendererRuns;
 use crate::scene::Scene;
 
 /// A distinct failure, shrunk.
@@ -231,7 +231,7 @@ impl HuntReport {
     ///
     /// ```
     /// use rasterproof::oracle::hunt::{hunt, HuntConfig};
-    /// use rasterproof::oracle::program::{RenderFailure, FailureKind};
+    /// use rasterproof::oracle::renderer::program::{RenderFailure, FailureKind};
     /// // A renderer that always fails: one finding.
     /// let broken = |_: &rasterproof::scene::Scene| {
     ///     Err(RenderFailure { kind: FailureKind::Exit, message: "exit status 3".to_string() })
@@ -334,7 +334,7 @@ impl HuntReport {
     ///
     /// ```
     /// use rasterproof::oracle::hunt::{hunt, HuntConfig};
-    /// use rasterproof::oracle::program::{RenderFailure, FailureKind};
+    /// use rasterproof::oracle::renderer::program::{RenderFailure, FailureKind};
     /// let broken = |_: &rasterproof::scene::Scene| {
     ///     Err(RenderFailure { kind: FailureKind::Exit, message: "exit <3> & more".to_string() })
     /// };
@@ -425,7 +425,7 @@ mod tests {
     use super::*;
     use crate::harness::suite::Shard;
     use crate::oracle::hunt::hunt;
-    use crate::oracle::program::RenderFailure;
+    use crate::oracle::renderer::program::RenderFailure;
     use crate::oracle::theirs::Theirs;
 
     /// A report of no case is still a whole document: every field, empty findings.

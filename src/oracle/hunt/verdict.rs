@@ -3,10 +3,10 @@
 //! ([`signatures`]).
 
 use crate::model::Model;
+use crate::oracle::compare::samples::{compare_samples, SampleCompareReport, SampleOptions};
 use crate::oracle::compare::{compare, CompareReport, PixelKind, CLASSIFY_AT_MOST};
-use crate::oracle::program::{FailureKind, RenderFailure};
 use crate::oracle::reason::ReasonClass;
-use crate::oracle::samples::{compare_samples, SampleCompareReport};
+use crate::oracle::renderer::program::{FailureKind, RenderFailure};
 use crate::oracle::theirs::Theirs;
 use crate::scene::Scene;
 
@@ -37,14 +37,12 @@ pub fn judge(scene: &Scene, theirs: Result<Theirs, RenderFailure>, model: Model)
         return HuntVerdict::Refused("invalid canvas or convention".to_string());
     };
     if let Some(pattern) = scene.samples.as_ref().filter(|p| !p.is_single(&target.convention)) {
-        return match compare_samples(
-            &scene.primitives(),
-            &target,
-            pattern,
-            &theirs,
+        let options = SampleOptions {
+            pattern: pattern.clone(),
             model,
-            Some(CLASSIFY_AT_MOST),
-        ) {
+            classify_at_most: Some(CLASSIFY_AT_MOST),
+        };
+        return match compare_samples(&scene.primitives(), &target, &theirs, &options) {
             Ok(r) if r.identical() => HuntVerdict::Same,
             Ok(r) => HuntVerdict::DiffersPerSample(Box::new(r)),
             Err(crate::oracle::CompareError::Samples(message)) => HuntVerdict::Failed(RenderFailure {
@@ -54,7 +52,7 @@ pub fn judge(scene: &Scene, theirs: Result<Theirs, RenderFailure>, model: Model)
             Err(e) => HuntVerdict::Refused(e.to_string()),
         };
     }
-    match compare(&scene.primitives(), &target, &theirs, model) {
+    match compare(&scene.primitives(), &target, &theirs, &model.into()) {
         Ok(r) if r.identical() => HuntVerdict::Same,
         Ok(r) => HuntVerdict::Differs(Box::new(r)),
         Err(e) => HuntVerdict::Refused(e.to_string()),

@@ -12,8 +12,10 @@ use std::fmt::Write as _;
 
 use serde_json::{json, Value};
 
-use super::theirs::Theirs;
-use crate::model::{ConservativeCoverage, ConservativeRule};
+use super::{CompareError, SizeMismatch};
+use crate::convention::Target;
+use crate::model::{render_conservative, ConservativeRule, Primitives};
+use crate::oracle::theirs::Theirs;
 
 /// The judgement of one image.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -35,15 +37,16 @@ pub struct ConservativeReport {
 }
 
 impl ConservativeReport {
-    /// `must ⊆ theirs ⊆ may`, and no degenerate triangle vanished.
-    pub fn right(&self) -> bool {
+    /// `must ⊆ theirs ⊆ may`, and no degenerate triangle vanished: their image is one the
+    /// rule allows.
+    pub fn identical(&self) -> bool {
         self.missing.is_empty() && self.beyond.is_empty() && self.vanished.is_empty()
     }
 
     /// The report as text, listing at most `limit` pixels of each kind.
     pub fn to_text(&self, scene: &str, theirs: &str, limit: usize) -> String {
         let mut s = format!("{theirs} against {scene}, conservative {}: ", self.rule);
-        if self.right() {
+        if self.identical() {
             s.push_str("right (every must-pixel covered, none beyond the may-pixels)\n");
         } else {
             let _ = writeln!(
@@ -89,7 +92,7 @@ impl ConservativeReport {
     pub fn to_json(&self) -> Value {
         json!({
             "rule": self.rule,
-            "right": self.right(),
+            "right": self.identical(),
             "missing": self.missing.iter().map(|(x, y, ids)| json!([x, y, ids])).collect::<Vec<_>>(),
             "beyond": self.beyond.iter().map(|(x, y)| json!([x, y])).collect::<Vec<_>>(),
             "band_covered": self.band_covered.iter().map(|(x, y, ids)| json!([x, y, ids])).collect::<Vec<_>>(),
@@ -99,23 +102,20 @@ impl ConservativeReport {
     }
 }
 
-/// Judges `theirs` (same canvas) against `sets` under `rule`.
+/// Judges `theirs` against the conservative coverage of `primitives` on `target` under
+/// `rule` ([`render_conservative`]'s must and may sets).
 ///
 /// # Errors
-/// Their canvas is not the sets'.
-pub fn judge_conservative(
-    sets: &ConservativeCoverage,
-    rule: &ConservativeRule,
+/// Their canvas is not the scene's; the scene cannot be rasterized conservatively.
+pub fn compare_conservative(
+    primitives: &Primitives,
+    target: &Target,
     theirs: &Theirs,
-) -> Result<ConservativeReport, String> {
-    let (w, h) = (sets.must.width(), sets.must.height());
-    if (theirs.width(), theirs.height()) != (w, h) {
-        return Err(format!(
-            "their image is {}x{} but the scene's canvas is {w}x{h}",
-            theirs.width(),
-            theirs.height()
-        ));
-    }
+    rule: &ConservativeRule,
+) -> Result<ConservativeReport, CompareError> {
+    let sets = render_conservative(primitives, target, rule).map_err(CompareError::Conservative)?;
+    SizeMismatch::check(theirs, target).map_err(CompareError::Size)?;
+    let (w, h) = (target.width, target.height);
     let mut report = ConservativeReport {
         rule: rule.to_string(),
         missing: Vec::new(),
@@ -144,4 +144,29 @@ pub fn judge_conservative(
         }
     }
     Ok(report)
+}
+
+impl super::Comparison for ConservativeReport {
+    fn identical(&self) -> bool {
+        ConservativeReport::identical(self)
+    }
+
+    /// Missing pixels, pixels beyond the uncertainty region, degenerate triangles vanished,
+    /// and the band pixels covered (never wrong).
+    fn counts(&self) -> Vec<(String, usize)> {
+        vec![
+            ("missing".to_string(), self.missing.len()),
+            ("beyond".to_string(), self.beyond.len()),
+            ("vanished".to_string(), self.vanished.len()),
+            ("band covered".to_string(), self.band_covered.len()),
+        ]
+    }
+
+    fn to_text(&self, scene: &str, theirs: &str, limit: usize) -> String {
+        ConservativeReport::to_text(self, scene, theirs, limit)
+    }
+
+    fn to_json(&self, _scene: &str, _theirs: &str) -> Value {
+        ConservativeReport::to_json(self)
+    }
 }

@@ -9,57 +9,15 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use serde_json::json;
 
-use crate::area::{conflate, exact, planned, supersample, AreaImage, AreaShape, Quantization, Semantics};
+use super::{CompareError, SizeMismatch};
+use crate::area::{conflate, exact, planned, supersample, AreaShape, Quantization, Semantics};
+use crate::convention::Target;
+use crate::model::Model;
 use crate::num::exact::{exact_text, nearest_f64};
+use crate::oracle::theirs::GreyImage;
 
 /// The supersampling counts tried (per axis).
 pub const SUPERSAMPLING: [u32; 4] = [2, 4, 8, 16];
-
-/// A grey image: one level per pixel, row-major, of `bits` bits (8 or 16).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct GreyImage {
-    /// Width.
-    pub width: u32,
-    /// Height.
-    pub height: u32,
-    /// Bits per level: 8 or 16.
-    pub bits: u32,
-    /// The levels, row-major.
-    pub levels: Vec<u16>,
-}
-
-impl GreyImage {
-    /// A grey PNG (8- or 16-bit grey, with or without alpha, whose alpha is ignored),
-    /// named `name` in errors.
-    ///
-    /// # Errors
-    /// Not a PNG, or another colour type: the error names the file and what it holds.
-    pub fn read_png(bytes: &[u8], name: &str) -> Result<GreyImage, String> {
-        // The crate's guarded decoder: a malformed palette or a hostile size is an error,
-        // not a panic inside the decoder or an allocation of gigabytes.
-        let image = crate::fill::flood::decode_png_as_decoded(bytes, name, crate::convention::MAX_CANVAS)
-            .map_err(|e| format!("{name}: not a PNG this reader takes: {}", e.detail()))?;
-        let (width, height) = (image.width(), image.height());
-        match image {
-            image::DynamicImage::ImageLuma8(_) | image::DynamicImage::ImageLumaA8(_) => Ok(GreyImage {
-                width,
-                height,
-                bits: 8,
-                levels: image.to_luma8().into_raw().into_iter().map(u16::from).collect(),
-            }),
-            image::DynamicImage::ImageLuma16(_) | image::DynamicImage::ImageLumaA16(_) => Ok(GreyImage {
-                width,
-                height,
-                bits: 16,
-                levels: image.to_luma16().into_raw(),
-            }),
-            other => Err(format!(
-                "{name}: a {:?} PNG; --as grey reads 8- or 16-bit grey (with or without alpha)",
-                other.color()
-            )),
-        }
-    }
-}
 
 /// Why their level differs from the exact value's, the most plausible first.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -132,6 +90,8 @@ pub struct GreyPixel {
 /// A grey comparison.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct GreyReport {
+    /// The exact model the shapes came from.
+    pub model: Model,
     /// The canvas.
     pub width: u32,
     /// The canvas.
@@ -271,32 +231,42 @@ fn conflated(
         })
 }
 
-/// Compares `theirs` with the exact area coverage of `shapes` under `semantics`, their
-/// levels read under `quantization`.
+/// How grey levels are judged: the exact model the scene's shapes come from (what the
+/// report names), the area semantics their levels approximate, and how they quantize.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct GreyOptions {
+    /// The exact model whose snapped or unsnapped shapes are compared (`exact`: as
+    /// written, what anti-aliasing renderers draw).
+    pub model: Model,
+    /// The exact semantics their levels approximate.
+    pub semantics: Semantics,
+    /// How their levels quantize a value.
+    pub quantization: Quantization,
+}
+
+/// Compares `theirs` with the exact area coverage of `shapes` on `target`'s canvas under
+/// `options.semantics`, their levels read under `options.quantization`.
 ///
 /// # Errors
 /// Their image's size or bit depth does not fit the canvas or the quantization.
 pub fn compare_grey(
     shapes: &[AreaShape],
+    target: &Target,
     theirs: &GreyImage,
-    width: u32,
-    height: u32,
-    semantics: Semantics,
-    quantization: Quantization,
-) -> Result<GreyReport, String> {
-    if (theirs.width, theirs.height) != (width, height) {
-        return Err(format!(
-            "their image is {}x{}, the scene's canvas {width}x{height}",
-            theirs.width, theirs.height
-        ));
-    }
+    options: &GreyOptions,
+) -> Result<GreyReport, CompareError> {
+    let GreyOptions {
+        model,
+        semantics,
+        quantization,
+    } = *options;
+    let (width, height) = (target.width, target.height);
+    SizeMismatch::check_size((theirs.width, theirs.height), target).map_err(CompareError::GreySize)?;
     if theirs.bits != quantization.bits() {
-        return Err(format!(
-            "their image has {}-bit levels; the quantization {} makes {}-bit ones",
-            theirs.bits,
-            quantization.name(),
-            quantization.bits()
-        ));
+        return Err(CompareError::Levels {
+            bits: theirs.bits,
+            quantization,
+        });
     }
     let s = scale(quantization);
     let top = u16::try_from((1u32 << theirs.bits) - 1).unwrap_or(u16::MAX);
@@ -372,6 +342,7 @@ pub fn compare_grey(
     }
     let count = u64::from(width) * u64::from(height);
     Ok(GreyReport {
+        model,
         width,
         height,
         semantics,
@@ -384,6 +355,11 @@ pub fn compare_grey(
 }
 
 impl GreyReport {
+    /// Every pixel has the exact value's level under the named quantization.
+    pub fn identical(&self) -> bool {
+        self.pixels.is_empty()
+    }
+
     /// How many differing pixels each class explains.
     pub fn classes(&self) -> BTreeMap<GreyClass, usize> {
         let mut out = BTreeMap::new();
@@ -393,8 +369,9 @@ impl GreyReport {
         out
     }
 
-    /// As text: the summary, the classes, then up to `limit` pixels.
-    pub fn to_text(&self, limit: usize) -> String {
+    /// As text without the header naming the files: the summary, the classes, then up to
+    /// `limit` pixels.
+    pub fn levels_text(&self, limit: usize) -> String {
         let approx = |v: &BigRational| nearest_f64(v).map_or_else(|| exact_text(v), |f| format!("{f:.4}"));
         let mut s = format!(
             "{} of {} pixels differ from the exact {} coverage quantized by {}; error in quanta: max {}, mean {}\n",
@@ -431,7 +408,7 @@ impl GreyReport {
     /// As JSON: `{"width","height","semantics","quantization","differing","classes",
     /// "max_error","mean_error","histogram","pixels":[{"x","y","theirs","ours","exact",
     /// "error","class"}]}` (exact values as fraction strings).
-    pub fn to_json(&self) -> serde_json::Value {
+    pub fn levels_json(&self) -> serde_json::Value {
         json!({
             "width": self.width,
             "height": self.height,
@@ -455,179 +432,27 @@ impl GreyReport {
     }
 }
 
-/// One way a renderer may produce grey levels, as `compare --as grey --fit` tries it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum GreyMethod {
-    /// The exact value under a semantics, quantized.
-    Exact(Semantics, Quantization),
-    /// The share of `k x k` samples covered, quantized.
-    Supersampling(u32, Quantization),
-    /// f32 signed-area accumulation (font-rs, ab_glyph's method), folded as FreeType
-    /// folds, quantized.
-    Float(Quantization),
-    /// Each shape's exact accumulated coverage, blended one by one source-over
-    /// ([`crate::area::conflate`]), quantized.
-    Conflated(Quantization),
-    /// FreeType's smooth rasterizer's integer method ([`crate::area::ftgrays`]).
-    FtGrays,
-    /// tiny-skia's anti-aliasing: 4 x 4 samples and its levels
-    /// ([`crate::area::supersample::tiny_skia_levels`]).
-    TinySkia,
-    /// ab_glyph_rasterizer's f32 accumulation of every shape in one buffer, 16-bit levels
-    /// rounded from its value clamped to 1 ([`crate::area::abglyph`]).
-    AbGlyph,
-    /// zeno's rasterizer, FreeType's method with a 32-bit reciprocal and f32 input
-    /// ([`crate::area::zeno`]).
-    Zeno,
-}
-
-impl GreyMethod {
-    /// In words.
-    pub fn describe(self) -> String {
-        match self {
-            GreyMethod::Exact(s, q) => format!("exact {} coverage, quantized by {}", s.name(), q.name()),
-            GreyMethod::Supersampling(k, q) => format!("{k}x{k} supersampling, quantized by {}", q.name()),
-            GreyMethod::Float(q) => format!("f32 accumulation, quantized by {}", q.name()),
-            GreyMethod::Conflated(q) => format!(
-                "each shape's exact accumulated coverage blended source-over (conflation), quantized by {}",
-                q.name()
-            ),
-            GreyMethod::FtGrays => "FreeType's smooth rasterizer (ftgrays.c's integer method)".to_string(),
-            GreyMethod::TinySkia => "tiny-skia's anti-aliasing (4x4 supersampling, its 8-bit levels)".to_string(),
-            GreyMethod::AbGlyph => {
-                "ab_glyph_rasterizer's f32 accumulation (one buffer, round16 of its value clamped to 1)".to_string()
-            }
-            GreyMethod::Zeno => "zeno's rasterizer (FreeType's method, 32-bit reciprocal, f32 input)".to_string(),
-        }
+impl super::Comparison for GreyReport {
+    fn identical(&self) -> bool {
+        GreyReport::identical(self)
     }
 
-    /// The levels this method gives `shapes` on the canvas, or `None` when it cannot draw
-    /// them (FreeType's, ab_glyph's or zeno's envelope or refusals).
-    pub fn levels(self, shapes: &[AreaShape], width: u32, height: u32) -> Option<Vec<u16>> {
-        match self {
-            GreyMethod::FtGrays => crate::area::ftgrays::rasterize(shapes, width, height)
-                .ok()
-                .map(|l| l.into_iter().map(u16::from).collect()),
-            GreyMethod::TinySkia => Some(
-                supersample::tiny_skia_levels(shapes, width, height)
-                    .into_iter()
-                    .map(u16::from)
-                    .collect(),
-            ),
-            GreyMethod::AbGlyph => crate::area::abglyph::levels(shapes, width, height).ok(),
-            GreyMethod::Zeno => crate::area::zeno::rasterize(shapes, width, height)
-                .ok()
-                .map(|l| l.into_iter().map(u16::from).collect()),
-            _ => self.values(shapes, width, height).map(|(image, q)| image.levels(q)),
-        }
+    /// The differing pixels by grey class.
+    fn counts(&self) -> Vec<(String, usize)> {
+        self.classes().into_iter().map(|(c, n)| (c.name(), n)).collect()
     }
 
-    /// The exact values the method quantizes, and how (`None` for the renderers' own
-    /// methods, which make their levels themselves, and for f32 values that are not finite).
-    fn values(self, shapes: &[AreaShape], width: u32, height: u32) -> Option<(AreaImage, Quantization)> {
-        match self {
-            GreyMethod::Exact(s, q) => Some((planned::rasterize(shapes, width, height, s), q)),
-            GreyMethod::Supersampling(k, q) => Some((supersample::rasterize(shapes, width, height, k), q)),
-            GreyMethod::Float(q) => {
-                let values = crate::area::float::rasterize(shapes, width, height, Semantics::Accumulated);
-                Some((
-                    AreaImage::from_f32(width, height, Semantics::Accumulated, &values).ok()?,
-                    q,
-                ))
-            }
-            GreyMethod::Conflated(q) => Some((conflate::rasterize(shapes, width, height, Semantics::Accumulated), q)),
-            GreyMethod::FtGrays | GreyMethod::TinySkia | GreyMethod::AbGlyph | GreyMethod::Zeno => None,
-        }
+    /// A header naming both files and the model, then [`GreyReport::levels_text`].
+    fn to_text(&self, scene: &str, theirs: &str, limit: usize) -> String {
+        format!(
+            "compare --as grey: {theirs} against {scene} (model {})\n{}",
+            self.model,
+            self.levels_text(limit)
+        )
     }
 
-    /// Its quantization (`None` for the methods of FreeType, tiny-skia, ab_glyph and zeno,
-    /// which make their own levels).
-    fn quantization(self) -> Option<Quantization> {
-        match self {
-            GreyMethod::Exact(_, q)
-            | GreyMethod::Supersampling(_, q)
-            | GreyMethod::Float(q)
-            | GreyMethod::Conflated(q) => Some(q),
-            GreyMethod::FtGrays | GreyMethod::TinySkia | GreyMethod::AbGlyph | GreyMethod::Zeno => None,
-        }
+    /// [`GreyReport::levels_json`].
+    fn to_json(&self, _scene: &str, _theirs: &str) -> serde_json::Value {
+        self.levels_json()
     }
-
-    /// The same method under another quantization (the renderers' own methods keep theirs).
-    fn quantized(self, q: Quantization) -> GreyMethod {
-        match self {
-            GreyMethod::Exact(s, _) => GreyMethod::Exact(s, q),
-            GreyMethod::Supersampling(k, _) => GreyMethod::Supersampling(k, q),
-            GreyMethod::Float(_) => GreyMethod::Float(q),
-            GreyMethod::Conflated(_) => GreyMethod::Conflated(q),
-            GreyMethod::FtGrays => GreyMethod::FtGrays,
-            m @ (GreyMethod::TinySkia | GreyMethod::AbGlyph | GreyMethod::Zeno) => m,
-        }
-    }
-
-    /// Every method whose levels have `bits` bits, the exact ones first.
-    pub fn all(bits: u32) -> Vec<GreyMethod> {
-        let qs: Vec<Quantization> = Quantization::ALL.into_iter().filter(|q| q.bits() == bits).collect();
-        let mut out = Vec::new();
-        for s in Semantics::ALL {
-            out.extend(qs.iter().map(|&q| GreyMethod::Exact(s, q)));
-        }
-        for k in SUPERSAMPLING {
-            out.extend(qs.iter().map(|&q| GreyMethod::Supersampling(k, q)));
-        }
-        out.extend(qs.iter().map(|&q| GreyMethod::Float(q)));
-        out.extend(qs.iter().map(|&q| GreyMethod::Conflated(q)));
-        if bits == 8 {
-            out.push(GreyMethod::FtGrays);
-            out.push(GreyMethod::TinySkia);
-            out.push(GreyMethod::Zeno);
-        } else {
-            out.push(GreyMethod::AbGlyph);
-        }
-        out
-    }
-}
-
-/// `compare --as grey --fit`: every method of [`GreyMethod::all`] with how many of their
-/// pixels it gets wrong, fewest first (ties in the order tried).
-///
-/// # Errors
-/// Their image's size does not fit the canvas.
-pub fn fit_grey(
-    shapes: &[AreaShape],
-    theirs: &GreyImage,
-    width: u32,
-    height: u32,
-) -> Result<Vec<(GreyMethod, usize)>, String> {
-    if (theirs.width, theirs.height) != (width, height) {
-        return Err(format!(
-            "their image is {}x{}, the scene's canvas {width}x{height}",
-            theirs.width, theirs.height
-        ));
-    }
-    // Each method's values are computed once (the exact ones are the costly part) and
-    // quantized as each of its methods asks.
-    let mut values: Vec<(GreyMethod, Option<(AreaImage, Quantization)>)> = Vec::new();
-    let mut out = Vec::new();
-    for m in GreyMethod::all(theirs.bits) {
-        let levels = if m.quantization().is_none() {
-            m.levels(shapes, width, height)
-        } else {
-            // Keyed by the method under a fixed quantization.
-            let key = m.quantized(Quantization::Round8);
-            if !values.iter().any(|(k, _)| *k == key) {
-                values.push((key, m.values(shapes, width, height)));
-            }
-            let q = m.quantization().unwrap_or(Quantization::Round8);
-            values
-                .iter()
-                .find(|(k, _)| *k == key)
-                .and_then(|(_, v)| v.as_ref())
-                .map(|(image, _)| image.levels(q))
-        };
-        if let Some(levels) = levels {
-            out.push((m, levels.iter().zip(&theirs.levels).filter(|(a, b)| a != b).count()));
-        }
-    }
-    out.sort_by_key(|(_, n)| *n);
-    Ok(out)
 }

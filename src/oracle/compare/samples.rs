@@ -1,5 +1,5 @@
 //! Another renderer's multisampled output judged sample by sample:
-//! [`compare_samples`].
+//! [`compare_samples`] (where their samples sit: [`super::fit::samples`]).
 //!
 //! Their output is one ids (or mask) image per sample index, stacked (what `render
 //! --ids-out` writes under a pattern, and what a GPU adapter reads back from a
@@ -15,11 +15,12 @@ use std::fmt::Write as _;
 
 use serde_json::{json, Value};
 
-use super::compare::{compare_classifying, count_differences, CompareError, CompareReport};
-use super::theirs::Theirs;
+use super::binary::{compare, CompareOptions, CompareReport};
+use super::CompareError;
 use crate::convention::Target;
-use crate::model::{render_samples, Model, Primitives, SampleFrames};
+use crate::model::{Model, Primitives, SampleFrames};
 use crate::num::exact::exact_text;
+use crate::oracle::theirs::Theirs;
 use crate::pattern::SamplePattern;
 
 /// The comparison of every sample index.
@@ -105,14 +106,27 @@ impl SampleCompareReport {
     }
 }
 
-/// Compares their stacked per-sample output with the scene at every sample of `pattern`,
-/// classifying at most `at_most` differing pixels per sample index (`None`: all).
+/// How a multisampled output is compared: the pattern of their samples, the oracle model,
+/// and how many differing pixels of each sample index are classified.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SampleOptions {
+    /// The pattern their stacked image follows, one image per sample index.
+    pub pattern: SamplePattern,
+    /// The exact model whose coverage at each sample is the answer.
+    pub model: Model,
+    /// How many differing pixels of each sample index are classified (`None`: every one).
+    pub classify_at_most: Option<usize>,
+}
+
+/// Compares their stacked per-sample output with the scene at every sample of
+/// `options.pattern`, each sample index as a one-sample comparison ([`super::compare()`])
+/// of the scene moved to that sample.
 ///
 /// ```
 /// use rasterproof::convention::{Convention, Target};
 /// use rasterproof::geom::{Point, Triangle};
 /// use rasterproof::model::{render_samples, Model, Primitives};
-/// use rasterproof::oracle::samples::compare_samples;
+/// use rasterproof::oracle::compare::samples::{compare_samples, SampleOptions};
 /// use rasterproof::oracle::{Format, Theirs};
 /// use rasterproof::pattern::SamplePattern;
 /// let t = Triangle::new(Point::from_ints(0, 0), Point::from_ints(4, 0), Point::from_ints(0, 4));
@@ -125,7 +139,8 @@ impl SampleCompareReport {
 /// let mut png = Vec::new();
 /// stacked.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png).unwrap();
 /// let theirs = Theirs::read(&png, "theirs.png", Format::Ids, Default::default()).unwrap();
-/// let report = compare_samples(&scene, &target, &four, &theirs, Model::ExactSnapped, None).unwrap();
+/// let options = SampleOptions { pattern: four, model: Model::ExactSnapped, classify_at_most: None };
+/// let report = compare_samples(&scene, &target, &theirs, &options).unwrap();
 /// assert!(report.identical());
 /// ```
 ///
@@ -135,20 +150,28 @@ impl SampleCompareReport {
 pub fn compare_samples(
     primitives: &Primitives,
     target: &Target,
-    pattern: &SamplePattern,
     theirs: &Theirs,
-    model: Model,
-    at_most: Option<usize>,
+    options: &SampleOptions,
 ) -> Result<SampleCompareReport, CompareError> {
+    let SampleOptions {
+        pattern,
+        model,
+        classify_at_most,
+    } = options;
+    let one = CompareOptions {
+        model: *model,
+        classify_at_most: *classify_at_most,
+        jobs: 1,
+    };
     let per_sample = theirs
         .unstack(pattern.len(), target.height)
         .map_err(CompareError::Samples)?;
-    let frames = SampleFrames::new(primitives, target, pattern, model).map_err(CompareError::Model)?;
+    let frames = SampleFrames::new(primitives, target, pattern, *model).map_err(CompareError::Model)?;
     let mut samples = Vec::with_capacity(pattern.len());
     let mut moved_by = Vec::with_capacity(pattern.len());
     for (s, theirs) in per_sample.iter().enumerate() {
         let moved = frames.at(s).map_err(CompareError::Model)?;
-        samples.push(compare_classifying(&moved, target, theirs, model, at_most, 1)?);
+        samples.push(compare(&moved, target, theirs, &one)?);
         let [dx, dy] = pattern.offset(s, &target.convention);
         moved_by.push([exact_text(&-dx), exact_text(&-dy)]);
     }
@@ -159,92 +182,28 @@ pub fn compare_samples(
     })
 }
 
-/// Where their samples sit, as far as their images tell: for each sample index of their
-/// stacked image, every position on the `1/grid` pixel grid whose one-sample image of the
-/// scene (under `model` and the target's convention) equals theirs exactly, and whether
-/// `pattern`'s own position for that index is among them. What `compare --fit` prints
-/// under a pattern, so that a renderer whose positions are not the standard ones is named
-/// with the positions its images allow.
-///
-/// ```
-/// use rasterproof::convention::{Convention, Target};
-/// use rasterproof::geom::{Point, Triangle};
-/// use rasterproof::model::{render_samples, Model, Primitives};
-/// use rasterproof::oracle::samples::fit_positions;
-/// use rasterproof::oracle::{Format, Theirs};
-/// use rasterproof::pattern::SamplePattern;
-/// // Two triangles splitting a 1x1 canvas on its diagonal x = y; their "renderer" has
-/// // the 2x pattern's samples swapped: (1/4, 1/4) first, then (3/4, 3/4). Both lie on the
-/// // diagonal, and a position on the 1/4 grid explains sample 0 exactly when it falls
-/// // on the same side or tie as (1/4, 1/4).
-/// let t = |a: [i64; 2], b: [i64; 2], c: [i64; 2]| Triangle::new(Point::from_ints(a[0], a[1]), Point::from_ints(b[0], b[1]), Point::from_ints(c[0], c[1]));
-/// let scene = Primitives::from_triangles(&[t([0, 0], [1, 0], [1, 1]), t([0, 0], [1, 1], [0, 1])]);
-/// let target = Target::new(1, 1, Convention::default()).unwrap();
-/// let two = SamplePattern::standard(2).unwrap();
-/// let swapped = SamplePattern::custom(vec![two.positions()[1].clone(), two.positions()[0].clone()]).unwrap();
-/// let theirs = render_samples(&scene, &target, &swapped, Model::ExactSnapped).unwrap();
-/// let theirs: Vec<Theirs> = theirs.samples().iter().map(|c| Theirs::from_coverage(c, Format::Ids)).collect();
-/// let found = fit_positions(&scene, &target, &two, &theirs, Model::ExactSnapped, 4).unwrap();
-/// assert_eq!(found.len(), 2);
-/// assert!(found.iter().all(|f| !f.fits.is_empty()));
-/// ```
-///
-/// # Errors
-/// `theirs` is not one image per sample index of `pattern`; the model refuses the scene.
-pub fn fit_positions(
-    primitives: &Primitives,
-    target: &Target,
-    pattern: &SamplePattern,
-    theirs: &[Theirs],
-    model: Model,
-    grid: u32,
-) -> Result<Vec<PositionFit>, CompareError> {
-    if theirs.len() != pattern.len() {
-        return Err(CompareError::Samples(format!(
-            "{} sample images for the {} positions of the {pattern} pattern",
-            theirs.len(),
-            pattern.len()
-        )));
+impl super::Comparison for SampleCompareReport {
+    fn identical(&self) -> bool {
+        SampleCompareReport::identical(self)
     }
-    let grid = grid.max(1);
-    let q = |n: u32| num_rational::BigRational::new(n.into(), grid.into());
-    let candidates: Vec<[num_rational::BigRational; 2]> = (0..grid)
-        .flat_map(|j| (0..grid).map(move |i| (i, j)))
-        .map(|(i, j)| [q(i), q(j)])
-        .collect();
-    // Every candidate rendered once, as a pattern of all of them (each is one sample).
-    let chunks: Vec<_> = candidates.chunks(crate::pattern::MAX_SAMPLES).collect();
-    let mut images = Vec::with_capacity(candidates.len());
-    for chunk in chunks {
-        let all = SamplePattern::custom(chunk.to_vec()).map_err(|e| CompareError::Samples(e.to_string()))?;
-        let c = render_samples(primitives, target, &all, model).map_err(CompareError::Model)?;
-        images.extend(c.samples().iter().cloned());
-    }
-    let mut out = Vec::with_capacity(pattern.len());
-    for (s, their) in theirs.iter().enumerate() {
-        let fits: Vec<[num_rational::BigRational; 2]> = candidates
-            .iter()
-            .zip(&images)
-            .filter(|(_, ours)| count_differences(ours, their, Some(1)).is_empty())
-            .map(|(p, _)| p.clone())
-            .collect();
-        let own = &pattern.positions()[s];
-        out.push(PositionFit {
-            index: s,
-            standard_fits: fits.contains(own),
-            fits,
-        });
-    }
-    Ok(out)
-}
 
-/// The positions that explain one sample index of their image ([`fit_positions`]).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct PositionFit {
-    /// The sample index.
-    pub index: usize,
-    /// Whether the pattern's own position for this index explains it.
-    pub standard_fits: bool,
-    /// Every grid position that explains it exactly.
-    pub fits: Vec<[num_rational::BigRational; 2]>,
+    /// Every sample index's counts, added class by class.
+    fn counts(&self) -> Vec<(String, usize)> {
+        let mut out: Vec<(String, usize)> = Vec::new();
+        for (class, n) in self.samples.iter().flat_map(super::Comparison::counts) {
+            match out.iter_mut().find(|(c, _)| *c == class) {
+                Some((_, m)) => *m += n,
+                None => out.push((class, n)),
+            }
+        }
+        out
+    }
+
+    fn to_text(&self, scene: &str, theirs: &str, limit: usize) -> String {
+        SampleCompareReport::to_text(self, scene, theirs, limit)
+    }
+
+    fn to_json(&self, scene: &str, theirs: &str) -> Value {
+        SampleCompareReport::to_json(self, scene, theirs)
+    }
 }

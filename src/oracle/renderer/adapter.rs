@@ -5,7 +5,7 @@
 //! response per line on stdout; [`super::stay_alive`] states the protocol).
 //!
 //! ```no_run
-//! use rasterproof::oracle::adapter::adapter_main;
+//! use rasterproof::oracle::renderer::adapter::adapter_main;
 //! // A "renderer" that covers nothing: an all-transparent ids PNG of the canvas.
 //! fn main() -> std::process::ExitCode {
 //!     adapter_main("empty-adapter", std::env::args_os().skip(1).collect(), |scene| {

@@ -52,7 +52,7 @@ use super::program::{
     command_words, kill_group, read_output, stderr_tail, FailureKind, ProcessGroups, RenderFailure, TempDir,
 };
 use super::program::{Renderer, RendererRuns};
-use super::theirs::{Background, Format, Theirs};
+use crate::oracle::theirs::{Background, Format, Theirs};
 use crate::scene::Scene;
 
 /// The protocol's version, sent in every request as `"rasterproof"`.

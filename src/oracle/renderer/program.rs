@@ -18,7 +18,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, PoisonError};
 use std::time::{Duration, Instant};
 
-use super::theirs::{Background, Format, Theirs};
+use crate::oracle::theirs::{Background, Format, Theirs};
 use crate::scene::Scene;
 
 /// Another renderer as `hunt`, its convention fit and its shrinker call it: scene in,

@@ -21,25 +21,29 @@
 //! snapped scenes are equal (compared exactly) share their counts.
 
 use std::collections::BTreeMap;
-use std::fmt::{self, Write as _};
+use std::fmt::Write as _;
 
 use num_bigint::BigInt;
 use num_traits::One;
 use serde_json::{json, Value};
 
-use super::candidate::{image, snapped, snappings};
-use super::compare::{count_differences, PixelKind, SizeMismatch};
-use super::reason::Snapping;
-use super::theirs::Theirs;
+pub mod grey;
+pub mod samples;
+
+use super::binary::{count_differences, PixelKind};
+use super::{CompareError, SizeMismatch};
 use crate::convention::{AnyTieRule, PixelCentre, Target};
 use crate::coverage::Coverage;
 use crate::geom::{CompactTriangle, Point, Triangle};
 use crate::line::LineRule;
-use crate::model::{ModelError, Primitives};
+use crate::model::Primitives;
 use crate::num::plan::scale_of;
 use crate::num::Rounding;
+use crate::oracle::candidate::{image, snapped, snappings};
+use crate::oracle::reason::Snapping;
+use crate::oracle::theirs::{Format, Theirs};
 
-pub use super::candidate::{Candidate, MAX_FIT_BITS};
+pub use crate::oracle::candidate::{Candidate, MAX_FIT_BITS};
 
 /// How many of the closest conventions a fit keeps when none is exact.
 pub const CLOSEST: usize = 5;
@@ -63,6 +67,8 @@ impl Fit {
 /// What a fit found.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct FitReport {
+    /// How their image was read (a mask, an ids PNG, JSON).
+    pub format: Format,
     /// Every convention whose image equals theirs, in search order.
     pub exact: Vec<Candidate>,
     /// When none does: the closest few, fewest differing pixels first.
@@ -73,32 +79,6 @@ pub struct FitReport {
     /// and bottom-left), with how many.
     pub not_searched: Option<(usize, String)>,
 }
-
-/// Why a fit cannot run.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum FitError {
-    /// Their canvas is not the scene's.
-    Size(SizeMismatch),
-    /// The scene has clip-space triangles.
-    ClipSpace,
-    /// A candidate's render failed (a coordinate beyond what the exact engine accepts).
-    Model(ModelError),
-}
-
-impl fmt::Display for FitError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            FitError::Size(m) => write!(f, "{m}"),
-            FitError::ClipSpace => f.write_str(
-                "--fit does not search scenes with clip_space_triangles (their window-space vertices exist only \
-                 after clipping); compare them under a stated convention",
-            ),
-            FitError::Model(e) => write!(f, "{e}"),
-        }
-    }
-}
-
-impl std::error::Error for FitError {}
 
 /// Searches the conventions (see the module docs) for those under which the exact image of
 /// `primitives` on `target`'s canvas equals `theirs`.
@@ -128,10 +108,10 @@ impl std::error::Error for FitError {}
 /// # Errors
 /// Their canvas differs, the scene has clip-space triangles, or a snapped coordinate is
 /// beyond what the exact engine accepts.
-pub fn fit(primitives: &Primitives, target: &Target, theirs: &Theirs) -> Result<FitReport, FitError> {
-    SizeMismatch::check(theirs, target).map_err(FitError::Size)?;
+pub fn fit(primitives: &Primitives, target: &Target, theirs: &Theirs) -> Result<FitReport, CompareError> {
+    SizeMismatch::check(theirs, target).map_err(CompareError::Size)?;
     if !primitives.clip_space_triangles.is_empty() {
-        return Err(FitError::ClipSpace);
+        return Err(CompareError::ClipSpace);
     }
     let mut exact = Vec::new();
     let mut closest: Vec<Fit> = Vec::new();
@@ -210,6 +190,7 @@ pub fn fit(primitives: &Primitives, target: &Target, theirs: &Theirs) -> Result<
         closest.clear();
     }
     Ok(FitReport {
+        format: theirs.format(),
         exact,
         closest,
         searched,
@@ -236,7 +217,7 @@ fn counts_of(
     pixel_centre: PixelCentre,
     theirs: &Theirs,
     stop: Option<usize>,
-) -> Result<Counts, FitError> {
+) -> Result<Counts, CompareError> {
     let candidate = |tie_rule| Candidate {
         tie_rule,
         snapping: Snapping {
@@ -245,7 +226,7 @@ fn counts_of(
         },
         pixel_centre,
     };
-    let render = |tie_rule| image(scene, target, &candidate(tie_rule)).map_err(FitError::Model);
+    let render = |tie_rule| image(scene, target, &candidate(tie_rule)).map_err(CompareError::Model);
     // Every rule covers at least what all-exclusive covers and at most what all-inclusive
     // covers, primitive by primitive: when those two images are equal, no sample lies on
     // an edge and every rule draws that same image, which is then counted once.
@@ -324,7 +305,7 @@ impl FitReport {
     ///
     /// ```
     /// use rasterproof::model::{render, Model};
-    /// use rasterproof::oracle::{fit::fit, Format, Theirs};
+    /// use rasterproof::oracle::{fit, Format, Theirs};
     /// use rasterproof::scene::parse_scene;
     /// // A triangle whose edges pass through no sample: every tie rule draws it alike.
     /// let scene = parse_scene(r#"{"width": 8, "height": 8, "triangles": [{"v": [[0.1, 0.2], [7.3, 0.4], [0.3, 6.9]]}]}"#, "s.json").unwrap();
@@ -376,7 +357,7 @@ impl FitReport {
     /// For people: the exact fits (what the image tells of each part of the convention,
     /// then the fits grouped), or the closest conventions with their differing pixels by
     /// kind.
-    pub fn to_text(&self) -> String {
+    pub fn fit_text(&self) -> String {
         let mut s = format!("fit: {} conventions searched", self.searched);
         if let Some((n, why)) = &self.not_searched {
             let _ = write!(s, " ({n} not: {why})");
@@ -411,7 +392,7 @@ impl FitReport {
     /// For programs: `{"searched", "not_searched": {count, why} or null, "exact":
     /// [{tie_rule, subpixel_bits (null: unsnapped), rounding, pixel_centre}], "closest":
     /// [{convention, differing, by_kind}]}`.
-    pub fn to_json(&self) -> Value {
+    pub fn fit_json(&self) -> Value {
         let conv = |c: &Candidate| {
             json!({
                 "tie_rule": c.tie_rule.name(),
@@ -480,6 +461,35 @@ fn snappings_text(found: &[Snapping], all: &[Snapping]) -> String {
         .collect();
     text.extend(parts);
     text.join("; ")
+}
+
+impl super::Comparison for FitReport {
+    /// Some convention gives their image exactly.
+    fn identical(&self) -> bool {
+        !self.exact.is_empty()
+    }
+
+    /// The conventions that give their image exactly, then the closest kept.
+    fn counts(&self) -> Vec<(String, usize)> {
+        vec![
+            ("exact".to_string(), self.exact.len()),
+            ("closest".to_string(), self.closest.len()),
+        ]
+    }
+
+    /// The header naming both files, then [`FitReport::fit_text`].
+    fn to_text(&self, scene: &str, theirs: &str, _limit: usize) -> String {
+        format!(
+            "compare --fit: {theirs} (as {}) against {scene}\n{}",
+            self.format.name(),
+            self.fit_text()
+        )
+    }
+
+    /// [`FitReport::fit_json`].
+    fn to_json(&self, _scene: &str, _theirs: &str) -> Value {
+        self.fit_json()
+    }
 }
 
 #[cfg(test)]

@@ -1,0 +1,69 @@
+//! A scene file read from disk: [`read_scene_file`], its size checked before reading, a big
+//! file read on several threads, then parsed ([`super::parse_scene_bytes_parallel`]).
+
+use std::path::Path;
+
+use super::parse::{parse_scene_bytes_parallel, MAX_SCENE_BYTES};
+use super::{Scene, SceneError};
+
+/// Reads and parses the scene file at `path` on up to `jobs` threads, named in errors as
+/// the path is written. A file over [`MAX_SCENE_BYTES`] is refused before it is read, so
+/// that a huge file costs nothing.
+///
+/// # Errors
+/// The file is too big or cannot be read, or it is not a valid scene: a [`SceneError`]
+/// naming the file (and the field and value where one is at fault).
+pub fn read_scene_file(path: &Path, jobs: usize) -> Result<Scene, SceneError> {
+    let name = path.display().to_string();
+    let whole = |message: String| SceneError {
+        source: name.clone(),
+        field: String::new(),
+        message,
+    };
+    if let Ok(m) = std::fs::metadata(path) {
+        if m.len() > MAX_SCENE_BYTES as u64 {
+            return Err(whole(format!(
+                "{} bytes, at most {MAX_SCENE_BYTES} (1 GiB) per scene file",
+                m.len()
+            )));
+        }
+    }
+    let bytes = read_file(path, jobs).map_err(|e| whole(format!("cannot read: {e}")))?;
+    parse_scene_bytes_parallel(&bytes, &name, jobs)
+}
+
+/// A file's bytes; a big regular file on `jobs` threads, each reading its part of one
+/// buffer at its offset (the copies and the fresh memory they touch are most of the
+/// time of reading a cached file), then checked to end where its size said. Anything
+/// else (one job, a small file, a pipe, a file that changed size) is read as one stream.
+fn read_file(path: &Path, jobs: usize) -> std::io::Result<Vec<u8>> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileExt;
+        const BIG: u64 = 8 << 20;
+        let file = std::fs::File::open(path)?;
+        let meta = file.metadata()?;
+        if jobs > 1 && meta.is_file() && meta.len() >= BIG {
+            let len = usize::try_from(meta.len()).map_err(std::io::Error::other)?;
+            let mut bytes = vec![0u8; len];
+            let part = len.div_ceil(jobs);
+            let read: std::io::Result<()> = std::thread::scope(|s| {
+                let parts: Vec<_> = bytes
+                    .chunks_mut(part)
+                    .enumerate()
+                    .map(|(k, chunk)| {
+                        let file = &file;
+                        s.spawn(move || file.read_exact_at(chunk, (k * part) as u64))
+                    })
+                    .collect();
+                parts
+                    .into_iter()
+                    .try_for_each(|p| p.join().expect("a reading thread does not panic"))
+            });
+            if read.is_ok() && file.read_at(&mut [0u8; 1], meta.len())? == 0 {
+                return Ok(bytes);
+            }
+        }
+    }
+    std::fs::read(path)
+}
