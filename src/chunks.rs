@@ -1,8 +1,22 @@
-//! Work on a slice cut into runs of consecutive items, one thread per run, the results in
-//! input order: what reading a scene's triangles and preparing them for a model do on
-//! several threads (`--jobs`). The answer is the one a single thread gives, error
-//! included: the error of the lowest index is the one returned. [`map_each`] hands a few
-//! items to the threads in turn instead (the reader's runs of triangles).
+//! Every thread the library starts to map a known set of items, the results in input
+//! order (the answer is the one a single thread gives, error included: the error of the
+//! lowest index is the one returned). Two mechanisms, each for what it is good at:
+//!
+//! - **rayon's pool** ([`map`], [`try_map`], [`defaults`]): a slice cut into at most
+//!   `jobs` runs of consecutive items, each run written in place into one output vector;
+//!   for many cheap items of even cost (reading and preparing a scene's triangles), where
+//!   collecting each thread's part and copying it would cost what the threads save.
+//! - **threads of its own** ([`map_each`], [`map_each_with`]): items handed out in turn to
+//!   up to `jobs` scoped threads, each taking the next as soon as it is done; for a few
+//!   items of uneven cost, items that block (a renderer's process), or threads that carry
+//!   state from one item to the next (a band's spare tiles). No pool thread is held
+//!   blocked, and no item waits behind a run cut in advance.
+//!
+//! The other threads of the crate: `harness::runner` (feature `proptest`), the one case
+//! runner of the suite and the hunt, a stream of cases up to `2^64` with a stop condition,
+//! each result consumed in case order as it arrives, on named threads with a stack of
+//! their own; and the one reader thread per renderer process kept alive
+//! (`oracle::renderer::stay_alive`), which waits on the process's output.
 
 use std::sync::{Mutex, PoisonError};
 
@@ -82,8 +96,29 @@ where
 /// assert_eq!(lengths, [1, 2, 3]);
 /// ```
 pub fn map_each<T: Send, U: Send>(items: Vec<T>, jobs: usize, f: impl Fn(T) -> U + Sync) -> Vec<U> {
+    map_each_with(items, jobs, || (), |(), item| f(item))
+}
+
+/// [`map_each`] with a state of each thread's own, made by `state` when the thread starts
+/// and handed to `f` with each item it takes: what a thread carries from one item to the
+/// next (the tiles of its last band, to draw the next into).
+///
+/// ```
+/// use rasterproof::chunks::map_each_with;
+/// // Each thread counts the items it has taken; every item is counted by one thread.
+/// let counts = map_each_with(vec![10, 20, 30], 2, || 0, |seen: &mut u32, n| { *seen += 1; (n, *seen) });
+/// assert_eq!(counts.iter().map(|&(n, _)| n).collect::<Vec<_>>(), [10, 20, 30]);
+/// assert!(counts.iter().all(|&(_, seen)| (1..=3).contains(&seen)));
+/// ```
+pub fn map_each_with<T: Send, U: Send, S>(
+    items: Vec<T>,
+    jobs: usize,
+    state: impl Fn() -> S + Sync,
+    f: impl Fn(&mut S, T) -> U + Sync,
+) -> Vec<U> {
     if jobs <= 1 || items.len() < 2 {
-        return items.into_iter().map(f).collect();
+        let mut mine = state();
+        return items.into_iter().map(|item| f(&mut mine, item)).collect();
     }
     let threads = jobs.min(items.len());
     let next = Mutex::new(items.into_iter().enumerate());
@@ -91,13 +126,14 @@ pub fn map_each<T: Send, U: Send>(items: Vec<T>, jobs: usize, f: impl Fn(T) -> U
         let workers: Vec<_> = (0..threads)
             .map(|_| {
                 s.spawn(|| {
+                    let mut own = state();
                     let mut mine = Vec::new();
                     loop {
                         let item = next.lock().unwrap_or_else(PoisonError::into_inner).next();
                         let Some((k, item)) = item else {
                             return mine;
                         };
-                        mine.push((k, f(item)));
+                        mine.push((k, f(&mut own, item)));
                     }
                 })
             })
@@ -109,6 +145,24 @@ pub fn map_each<T: Send, U: Send>(items: Vec<T>, jobs: usize, f: impl Fn(T) -> U
     });
     done.sort_unstable_by_key(|&(k, _)| k);
     done.into_iter().map(|(_, u)| u).collect()
+}
+
+/// `count` default values, made on up to `jobs` threads of rayon's pool in runs written in
+/// place (the fresh memory a big vector touches is most of its cost): the places a reader
+/// on several threads then fills.
+///
+/// ```
+/// let zeros: Vec<u64> = rasterproof::chunks::defaults(5, 2);
+/// assert_eq!(zeros, [0; 5]);
+/// ```
+pub fn defaults<U: Send + Default>(count: usize, jobs: usize) -> Vec<U> {
+    let mut out = Vec::with_capacity(count);
+    (0..count)
+        .into_par_iter()
+        .with_min_len(count.div_ceil(jobs.max(1)).max(1))
+        .map(|_| U::default())
+        .collect_into_vec(&mut out);
+    out
 }
 
 /// `f` over `items` on rayon's pool in at most `jobs` runs, each writing its part of the

@@ -13,7 +13,7 @@ use proptest::prelude::*;
 
 use crate::common::config;
 use rasterproof::area::exact::{self, pixel};
-use rasterproof::area::planned::{self, plan, Width, FINE_BITS};
+use rasterproof::area::planned::{self, plan, AreaWidth, FINE_BITS};
 use rasterproof::area::{cells, triangle_shape, AreaShape, Semantics};
 use rasterproof::geom::{FillRule, Point, Polygon};
 use rasterproof::strategy::polygon::any_polygon;
@@ -134,9 +134,9 @@ fn the_fine_unit_bound_by_hand() {
     let at = slanted_quad(q(1, 1), q(1, s));
     let past = slanted_quad(q(s + 1, s), q(1, s));
     let far_past = slanted_quad(q(1, 2), q(1, 2 * s));
-    assert_eq!(plan(&at), Width::I128);
-    assert_eq!(plan(&past), Width::Big);
-    assert_eq!(plan(&far_past), Width::Big);
+    assert_eq!(plan(&at), AreaWidth::I128);
+    assert_eq!(plan(&past), AreaWidth::Big);
+    assert_eq!(plan(&far_past), AreaWidth::Big);
     for shape in [at, past, far_past] {
         assert_planned_is_exact(std::slice::from_ref(&shape), 4).unwrap();
         // Pixel (0, 0) by hand: the unit square less the sliver above the edge.
@@ -164,7 +164,7 @@ fn the_fine_unit_bound_by_hand() {
 #[test]
 fn the_coordinate_bound_by_hand() {
     let limit = 1i128 << 62;
-    for (x, width) in [(limit - 1, Width::I128), (limit, Width::Big)] {
+    for (x, width) in [(limit - 1, AreaWidth::I128), (limit, AreaWidth::Big)] {
         let p = |x: BigRational, y: BigRational| Point::new(x, y);
         let strip = Polygon::new(
             vec![

@@ -16,7 +16,7 @@ use rasterproof::coverage::{Coverage, CoverageSink};
 use rasterproof::geom::{Point, Triangle};
 use rasterproof::model::{prepare, render_triangles, Model, Primitives};
 use rasterproof::num::plan::Width;
-use rasterproof::strategy::{any_triangle, tie_heavy_triangle, triangle, Scale};
+use rasterproof::strategy::{any_triangle, tie_heavy_triangle, triangle, TriangleScale};
 use rasterproof::tri::exact;
 use rasterproof::tri::planned::PlannedTriangle;
 
@@ -95,7 +95,7 @@ proptest! {
 
     /// Small triangles near the far corner of the largest canvas.
     #[test]
-    fn planned_equals_plain_far_from_origin(t in triangle(Scale::FarFromOrigin, MAX_CANVAS), conv in convention()) {
+    fn planned_equals_plain_far_from_origin(t in triangle(TriangleScale::FarFromOrigin, MAX_CANVAS), conv in convention()) {
         let target = Target::new(MAX_CANVAS, MAX_CANVAS, conv).unwrap();
         same(&t, &target)?;
     }

@@ -14,7 +14,7 @@ use rasterproof::convention::{Preset, Target, MAX_CANVAS};
 use rasterproof::geom::{Point, Triangle};
 use rasterproof::interp::{gouraud_exact, Plane};
 use rasterproof::model::{render_triangles, Model};
-use rasterproof::strategy::{any_triangle, delaunay_mesh, tie_heavy_mesh, tie_heavy_triangle, triangle, Scale};
+use rasterproof::strategy::{any_triangle, delaunay_mesh, tie_heavy_mesh, tie_heavy_triangle, triangle, TriangleScale};
 
 const CANVAS: u32 = 32;
 
@@ -68,7 +68,7 @@ proptest! {
 
     /// Model agreement far from the origin, on the largest canvas.
     #[test]
-    fn fixed_equals_exact_snapped_far_from_origin(t in triangle(Scale::FarFromOrigin, MAX_CANVAS), p in preset()) {
+    fn fixed_equals_exact_snapped_far_from_origin(t in triangle(TriangleScale::FarFromOrigin, MAX_CANVAS), p in preset()) {
         agree(&[t], &target(MAX_CANVAS, p))?;
     }
 

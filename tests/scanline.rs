@@ -10,7 +10,7 @@ use rasterproof::check::{check_agreement, check_watertight};
 use rasterproof::convention::{PixelCentre, Preset, Target, MAX_CANVAS};
 use rasterproof::geom::{Point, Triangle};
 use rasterproof::model::{render_triangles, Model};
-use rasterproof::strategy::{any_triangle, delaunay_mesh, tie_heavy_mesh, triangle, Scale};
+use rasterproof::strategy::{any_triangle, delaunay_mesh, tie_heavy_mesh, triangle, TriangleScale};
 
 fn agree(tris: &[Triangle], target: &Target) -> Result<(), TestCaseError> {
     let exact = render_triangles(tris, target, Model::ExactSnappedPlain).unwrap();
@@ -42,7 +42,7 @@ proptest! {
     }
 
     #[test]
-    fn scanline_equals_exact_snapped_far_from_origin(t in triangle(Scale::FarFromOrigin, MAX_CANVAS)) {
+    fn scanline_equals_exact_snapped_far_from_origin(t in triangle(TriangleScale::FarFromOrigin, MAX_CANVAS)) {
         agree(&[t], &Target::new(MAX_CANVAS, MAX_CANVAS, Preset::D3d11.convention()).unwrap())?;
     }
 

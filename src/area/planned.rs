@@ -51,7 +51,7 @@ const SCALED_BITS: u32 = 62;
 
 /// The arithmetic the plan chose for a shape.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Width {
+pub enum AreaWidth {
     /// Every edge in `i128` (pixel sums that leave it are summed in big rationals).
     I128,
     /// Big rationals throughout ([`super::cells`]).
@@ -63,20 +63,20 @@ pub enum Width {
 ///
 /// ```
 /// use num_rational::BigRational;
-/// use rasterproof::area::planned::{plan, Width};
+/// use rasterproof::area::planned::{plan, AreaWidth};
 /// use rasterproof::geom::{FillRule, Point, Polygon};
 /// let p = |x: i64, y: i64, d: i64| Point::new(BigRational::new(x.into(), d.into()), BigRational::new(y.into(), d.into()));
 /// let glyph = Polygon::new(vec![p(0, 0, 64), p(300, 0, 64), p(0, 200, 64)], FillRule::NonZero);
-/// assert_eq!(plan(&glyph), Width::I128);
+/// assert_eq!(plan(&glyph), AreaWidth::I128);
 /// // A sliver 2^62 / 3 px long, in thirds: its slanted edge's F is 3 x 2^62.
 /// let far = Polygon::new(vec![p(0, 0, 3), p(1 << 62, 0, 3), p(0, 1, 3)], FillRule::NonZero);
-/// assert_eq!(plan(&far), Width::Big);
+/// assert_eq!(plan(&far), AreaWidth::Big);
 /// ```
-pub fn plan(shape: &AreaShape) -> Width {
+pub fn plan(shape: &AreaShape) -> AreaWidth {
     if fine_edges(shape).is_some() {
-        Width::I128
+        AreaWidth::I128
     } else {
-        Width::Big
+        AreaWidth::Big
     }
 }
 

@@ -8,7 +8,7 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use rasterproof::clip::arithmetic::Arithmetic;
+use rasterproof::clip::arithmetic::ClipArithmetic;
 use rasterproof::scene::parse_scene_bytes;
 
 use super::OutputFormat;
@@ -46,13 +46,13 @@ const FORMATS: [(OutputFormat, &str); 2] = [
 /// Clips the scene's primitives as `o` asks and prints them (or the summary); exit 0.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
     let name = o.scene.display().to_string();
-    let arith = Arithmetic::from_name(&o.model).ok_or_else(|| {
+    let arith = ClipArithmetic::from_name(&o.model).ok_or_else(|| {
         format!(
             "--model: unknown model {:?} for clip (expected exact, float32 or float64)",
             o.model
         )
     })?;
-    if o.divide_first && arith != Arithmetic::Exact {
+    if o.divide_first && arith != ClipArithmetic::Exact {
         return Err("--divide-first: only with --model exact".into());
     }
     let bytes = std::fs::read(&o.scene).map_err(|e| format!("{name}: cannot read: {e}"))?;

@@ -19,8 +19,6 @@ use rasterproof::oracle::renderer::stay_alive::StayAlive;
 use rasterproof::oracle::GreyImage;
 use rasterproof::oracle::{Background, Format};
 
-use rasterproof::model::Model;
-
 use super::run_args::RunArgs;
 use super::{ConventionArgs, Outputs};
 
@@ -240,7 +238,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         return run_grey(o, &config, program.as_ref(), cmd);
     }
     config.model = match super::parse_model(&o.model)? {
-        m @ (Model::Exact | Model::ExactSnapped) => m,
+        m if m.plans() => m,
         m => {
             return Err(format!(
                 "--model: {m} is not an oracle (expected exact-snapped or exact)"

@@ -27,7 +27,7 @@ use crate::num::exact::json_pair;
 
 /// The arithmetic a [`Clipper`] runs in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Arithmetic {
+pub enum ClipArithmetic {
     /// BigRational: the exact result.
     Exact,
     /// f64 with glam.
@@ -36,24 +36,24 @@ pub enum Arithmetic {
     F32,
 }
 
-impl Arithmetic {
+impl ClipArithmetic {
     /// The arithmetic named `exact`, `float64` or `float32` (the CLI's `--model`), `None`
     /// for any other name.
-    pub fn from_name(name: &str) -> Option<Arithmetic> {
+    pub fn from_name(name: &str) -> Option<ClipArithmetic> {
         match name {
-            "exact" => Some(Arithmetic::Exact),
-            "float64" => Some(Arithmetic::F64),
-            "float32" => Some(Arithmetic::F32),
+            "exact" => Some(ClipArithmetic::Exact),
+            "float64" => Some(ClipArithmetic::F64),
+            "float32" => Some(ClipArithmetic::F32),
             _ => None,
         }
     }
 
-    /// Its name: `exact`, `float64` or `float32` (what [`Arithmetic::from_name`] reads).
+    /// Its name: `exact`, `float64` or `float32` (what [`ClipArithmetic::from_name`] reads).
     pub fn name(self) -> &'static str {
         match self {
-            Arithmetic::Exact => "exact",
-            Arithmetic::F64 => "float64",
-            Arithmetic::F32 => "float32",
+            ClipArithmetic::Exact => "exact",
+            ClipArithmetic::F64 => "float64",
+            ClipArithmetic::F32 => "float32",
         }
     }
 }
@@ -75,18 +75,18 @@ fn point32(p: Vec2) -> Result<Point, String> {
 /// that starts with the name of what was being clipped (`what`, e.g. `triangles[2]`).
 ///
 /// ```
-/// use rasterproof::clip::arithmetic::{Arithmetic, Clipper};
+/// use rasterproof::clip::arithmetic::{ClipArithmetic, Clipper};
 /// use rasterproof::clip::Window;
 /// use rasterproof::geom::Point;
 /// use rasterproof::num::parse_rational;
 /// let n = |s| parse_rational(s).unwrap();
 /// let window = Window::rect(n("0"), n("0"), n("2"), n("2")).unwrap();
-/// let clipper = Clipper::new(Arithmetic::F32, Some(&window)).unwrap();
+/// let clipper = Clipper::new(ClipArithmetic::F32, Some(&window)).unwrap();
 /// let kept = clipper.segment(&Point::from_ints(-2, 1), &Point::from_ints(4, 1), "lines[0]").unwrap();
 /// assert_eq!(kept, Some((Point::from_ints(0, 1), Point::from_ints(2, 1))));
 /// ```
 pub struct Clipper {
-    arithmetic: Arithmetic,
+    arithmetic: ClipArithmetic,
     window: Option<Window>,
     planes: Vec<HalfPlane>,
     planes64: Vec<HalfPlaneF64>,
@@ -99,13 +99,13 @@ impl Clipper {
     /// # Errors
     /// A line of the window has a coefficient beyond the float type (the message names
     /// the window edge).
-    pub fn new(arithmetic: Arithmetic, window: Option<&Window>) -> Result<Clipper, String> {
+    pub fn new(arithmetic: ClipArithmetic, window: Option<&Window>) -> Result<Clipper, String> {
         let planes = window.map(Window::half_planes).unwrap_or_default();
         let beyond = |k: usize, ty: &str| {
             format!("clip: the line of window edge {k} has a coefficient (a, b or c in a x + b y + c >= 0) beyond {ty}")
         };
         let planes64 = match arithmetic {
-            Arithmetic::F64 => planes
+            ClipArithmetic::F64 => planes
                 .iter()
                 .enumerate()
                 .map(|(k, h)| h.to_f64().ok_or_else(|| beyond(k, "f64")))
@@ -113,7 +113,7 @@ impl Clipper {
             _ => Vec::new(),
         };
         let planes32 = match arithmetic {
-            Arithmetic::F32 => planes
+            ClipArithmetic::F32 => planes
                 .iter()
                 .enumerate()
                 .map(|(k, h)| h.to_f32().ok_or_else(|| beyond(k, "f32")))
@@ -165,15 +165,15 @@ impl Clipper {
         }
         let back = |r: Result<Point, String>| r.map_err(|e| format!("{what}: {e}"));
         match self.arithmetic {
-            Arithmetic::Exact => Ok(sutherland_hodgman::clip_exact(c, &self.planes)
+            ClipArithmetic::Exact => Ok(sutherland_hodgman::clip_exact(c, &self.planes)
                 .into_iter()
                 .map(Ok)
                 .collect()),
-            Arithmetic::F64 => {
+            ClipArithmetic::F64 => {
                 let v = c.iter().map(|p| Self::to64(p, what)).collect::<Result<Vec<_>, _>>()?;
                 Ok(self.contour_f64(&v).into_iter().map(|p| back(point64(p))).collect())
             }
-            Arithmetic::F32 => {
+            ClipArithmetic::F32 => {
                 let v = c.iter().map(|p| Self::to32(p, what)).collect::<Result<Vec<_>, _>>()?;
                 Ok(self.contour_f32(&v).into_iter().map(|p| back(point32(p))).collect())
             }
@@ -185,14 +185,14 @@ impl Clipper {
     /// float64 models clip their converted vertices with.
     ///
     /// # Panics
-    /// With a window, when the clipper's arithmetic is not [`Arithmetic::F64`].
+    /// With a window, when the clipper's arithmetic is not [`ClipArithmetic::F64`].
     pub fn contour_f64(&self, c: &[DVec2]) -> Vec<DVec2> {
         if self.window.is_none() {
             return c.to_vec();
         }
         assert_eq!(
             self.arithmetic,
-            Arithmetic::F64,
+            ClipArithmetic::F64,
             "contour_f64 on a clipper in another arithmetic"
         );
         sutherland_hodgman::clip_f64(c, &self.planes64)
@@ -201,14 +201,14 @@ impl Clipper {
     /// [`Clipper::contour_f64`] in f32: what the float32 models clip with.
     ///
     /// # Panics
-    /// With a window, when the clipper's arithmetic is not [`Arithmetic::F32`].
+    /// With a window, when the clipper's arithmetic is not [`ClipArithmetic::F32`].
     pub fn contour_f32(&self, c: &[Vec2]) -> Vec<Vec2> {
         if self.window.is_none() {
             return c.to_vec();
         }
         assert_eq!(
             self.arithmetic,
-            Arithmetic::F32,
+            ClipArithmetic::F32,
             "contour_f32 on a clipper in another arithmetic"
         );
         sutherland_hodgman::clip_f32(c, &self.planes32)
@@ -219,7 +219,7 @@ impl Clipper {
     /// [`Clipper::contour_f64`]. What the float64 models draw as a fan.
     ///
     /// # Panics
-    /// With a window, when the clipper's arithmetic is not [`Arithmetic::F64`].
+    /// With a window, when the clipper's arithmetic is not [`ClipArithmetic::F64`].
     pub fn clip_space_f64(&self, t: &[ClipVertexF64], viewport: &ViewportF64) -> Vec<DVec2> {
         let points: Vec<DVec2> = homogeneous::clip_to_window_f64(t, viewport)
             .into_iter()
@@ -231,7 +231,7 @@ impl Clipper {
     /// [`Clipper::clip_space_f64`] in f32: what the float32 models draw as a fan.
     ///
     /// # Panics
-    /// With a window, when the clipper's arithmetic is not [`Arithmetic::F32`].
+    /// With a window, when the clipper's arithmetic is not [`ClipArithmetic::F32`].
     pub fn clip_space_f32(&self, t: &[ClipVertexF32], viewport: &ViewportF32) -> Vec<Vec2> {
         let points: Vec<Vec2> = homogeneous::clip_to_window_f32(t, viewport)
             .into_iter()
@@ -261,30 +261,30 @@ impl Clipper {
             return Ok(Some([Ok(a.clone()), Ok(b.clone())]));
         };
         let (fa, fb) = match self.arithmetic {
-            Arithmetic::Exact => (DVec2::ZERO, DVec2::ZERO),
-            Arithmetic::F64 => (Self::to64(a, what)?, Self::to64(b, what)?),
+            ClipArithmetic::Exact => (DVec2::ZERO, DVec2::ZERO),
+            ClipArithmetic::F64 => (Self::to64(a, what)?, Self::to64(b, what)?),
             // f32 values, held in f64 (exactly) until the f32 clipper takes them back
-            Arithmetic::F32 => (Self::to32(a, what)?.as_dvec2(), Self::to32(b, what)?.as_dvec2()),
+            ClipArithmetic::F32 => (Self::to32(a, what)?.as_dvec2(), Self::to32(b, what)?.as_dvec2()),
         };
         let exact = |r: Option<(Point, Point)>| r.map(|(p, q)| [Ok(p), Ok(q)]);
         let both =
             |r: Option<(DVec2, DVec2)>| r.map(|(p, q)| [p, q].map(|v| point64(v).map_err(|e| format!("{what}: {e}"))));
         Ok(match (window, self.arithmetic) {
-            (Window::Rect(r), Arithmetic::Exact) => exact(cohen_sutherland::clip_exact(a, b, r)),
-            (Window::Convex(_), Arithmetic::Exact) => exact(clip_segment_exact(a, b, &self.planes)),
-            (Window::Rect(r), Arithmetic::F64) => {
+            (Window::Rect(r), ClipArithmetic::Exact) => exact(cohen_sutherland::clip_exact(a, b, r)),
+            (Window::Convex(_), ClipArithmetic::Exact) => exact(clip_segment_exact(a, b, &self.planes)),
+            (Window::Rect(r), ClipArithmetic::F64) => {
                 let r = r.to_f64().ok_or("clip: a bound does not fit f64")?;
                 both(cohen_sutherland::clip_f64(fa, fb, &r))
             }
-            (Window::Rect(r), Arithmetic::F32) => {
+            (Window::Rect(r), ClipArithmetic::F32) => {
                 let r = r.to_f32().ok_or("clip: a bound does not fit f32")?;
                 both(
                     cohen_sutherland::clip_f32(fa.as_vec2(), fb.as_vec2(), &r)
                         .map(|(p, q)| (p.as_dvec2(), q.as_dvec2())),
                 )
             }
-            (Window::Convex(_), Arithmetic::F64) => both(HalfPlaneF64::clip_segment(fa, fb, &self.planes64)),
-            (Window::Convex(_), Arithmetic::F32) => both(
+            (Window::Convex(_), ClipArithmetic::F64) => both(HalfPlaneF64::clip_segment(fa, fb, &self.planes64)),
+            (Window::Convex(_), ClipArithmetic::F32) => both(
                 HalfPlaneF32::clip_segment(fa.as_vec2(), fb.as_vec2(), &self.planes32)
                     .map(|(p, q)| (p.as_dvec2(), q.as_dvec2())),
             ),
@@ -307,15 +307,15 @@ impl Clipper {
         what: &str,
     ) -> Result<Vec<Point>, String> {
         let window_space: Vec<Point> = match self.arithmetic {
-            Arithmetic::Exact if divide_first => match divide_then_clip_exact(t, viewport) {
+            ClipArithmetic::Exact if divide_first => match divide_then_clip_exact(t, viewport) {
                 // seen edge-on: it covers no sample, as on the clip-space path
                 Err(ProjectError::EdgeOn) => Vec::new(),
                 Err(e) => return Err(format!("{what}: {e} (--divide-first)")),
                 Ok(vertices) => vertices.into_iter().map(|v| v.point).collect(),
             },
             _ if divide_first => return Err("--divide-first: only with --model exact".into()),
-            Arithmetic::Exact => clip_to_window_exact(t, viewport).into_iter().map(|v| v.point).collect(),
-            Arithmetic::F64 => {
+            ClipArithmetic::Exact => clip_to_window_exact(t, viewport).into_iter().map(|v| v.point).collect(),
+            ClipArithmetic::F64 => {
                 let vp = viewport.to_f64().ok_or("viewport: a number does not fit f64")?;
                 let v = t
                     .iter()
@@ -327,7 +327,7 @@ impl Clipper {
                     .map(|v| point64(v.point).map_err(|e| format!("{what}: {e}")))
                     .collect::<Result<_, _>>()?
             }
-            Arithmetic::F32 => {
+            ClipArithmetic::F32 => {
                 let vp = viewport.to_f32().ok_or("viewport: a number does not fit f32")?;
                 let v = t
                     .iter()
@@ -353,7 +353,7 @@ impl Clipper {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Clipped {
     /// The arithmetic it was clipped in.
-    pub arithmetic: Arithmetic,
+    pub arithmetic: ClipArithmetic,
     /// Each triangle's contour ([`Clipper::contour`]; empty: no area left).
     pub triangles: Vec<Vec<Point>>,
     /// Each line's kept segment ([`Clipper::segment`]; `None`: nothing inside).
@@ -441,12 +441,15 @@ mod tests {
         let w = window();
         let c = [Vec2::new(-2.0, 1.0), Vec2::new(9.5, 2.0), Vec2::new(3.0, 10.0)];
         let planes: Vec<HalfPlaneF32> = w.half_planes().iter().map(|h| h.to_f32().unwrap()).collect();
-        let clipper = Clipper::new(Arithmetic::F32, Some(&w)).unwrap();
+        let clipper = Clipper::new(ClipArithmetic::F32, Some(&w)).unwrap();
         assert_eq!(clipper.contour_f32(&c), sutherland_hodgman::clip_f32(&c, &planes));
-        assert_eq!(Clipper::new(Arithmetic::F32, None).unwrap().contour_f32(&c), c.to_vec());
+        assert_eq!(
+            Clipper::new(ClipArithmetic::F32, None).unwrap().contour_f32(&c),
+            c.to_vec()
+        );
         // Without a window any arithmetic leaves a float contour as it is.
         assert_eq!(
-            Clipper::new(Arithmetic::Exact, None).unwrap().contour_f32(&c),
+            Clipper::new(ClipArithmetic::Exact, None).unwrap().contour_f32(&c),
             c.to_vec()
         );
     }
@@ -458,7 +461,7 @@ mod tests {
         let c = [Point::from_ints(0, 4), Point::from_ints(4, 0), Point::from_ints(0, 0)];
         let far = |x: f64| Point::new(BigRational::from_float(x).unwrap(), BigRational::from_integer(4.into()));
         let c = [far(-3e38), far(3e38), c[0].clone(), c[1].clone(), c[2].clone()];
-        let clipper = Clipper::new(Arithmetic::F32, Some(&w)).unwrap();
+        let clipper = Clipper::new(ClipArithmetic::F32, Some(&w)).unwrap();
         let each = clipper.contour_vertices(&c, "t").unwrap();
         let first = each
             .iter()
@@ -467,7 +470,7 @@ mod tests {
         assert!(first.starts_with("t: a float result is not finite"), "{first}");
         assert!(each.iter().any(Result::is_ok));
         assert_eq!(clipper.contour(&c, "t"), Err(first));
-        let exact = Clipper::new(Arithmetic::Exact, Some(&w)).unwrap();
+        let exact = Clipper::new(ClipArithmetic::Exact, Some(&w)).unwrap();
         assert!(exact.contour_vertices(&c, "t").unwrap().iter().all(Result::is_ok));
         // A segment's ends, each on its own.
         let ends = clipper.segment_ends(&far(-3e38), &far(3e38), "s").unwrap();

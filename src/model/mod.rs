@@ -228,6 +228,60 @@ impl Model {
         matches!(self.arithmetic(), Arithmetic::Exact { plain: true, .. })
     }
 
+    /// Whether the model computes in exact arithmetic with no envelope (the four exact
+    /// models): it refuses no finite coordinate.
+    pub fn is_unbounded(self) -> bool {
+        matches!(self.arithmetic(), Arithmetic::Exact { .. })
+    }
+
+    /// Whether the model computes in integers on the snapped scene, inside its envelope
+    /// (`fixed`, `scanline`).
+    pub fn is_integer(self) -> bool {
+        matches!(self.arithmetic(), Arithmetic::Integer(_))
+    }
+
+    /// Whether an integer model fills a polygon by triangulating it (`fixed`; `scanline`
+    /// walks an active edge table), so that it takes simple polygons only.
+    pub fn triangulates_polygons(self) -> bool {
+        matches!(self.arithmetic(), Arithmetic::Integer(IntegerTraversal::Blocks))
+    }
+
+    /// A float model's rule (`None` for the exact and integer models).
+    pub fn float_rule(self) -> Option<FloatRule> {
+        match self.arithmetic() {
+            Arithmetic::Float(_, rule) => Some(rule),
+            _ => None,
+        }
+    }
+
+    /// Whether the model computes in f32.
+    pub fn is_f32(self) -> bool {
+        self.float_type() == Some(FloatType::F32)
+    }
+
+    /// Whether two models compute in the same kind of arithmetic (exact, integer or
+    /// float), whatever their variant of it.
+    pub fn same_arithmetic(self, other: Model) -> bool {
+        std::mem::discriminant(&self.arithmetic()) == std::mem::discriminant(&other.arithmetic())
+    }
+
+    /// The variant's name in Rust (`ExactSnapped`), as generated code writes
+    /// `rasterproof::model::Model::ExactSnapped`.
+    pub fn rust_name(self) -> &'static str {
+        match self {
+            Model::Exact => "Exact",
+            Model::ExactSnapped => "ExactSnapped",
+            Model::ExactPlain => "ExactPlain",
+            Model::ExactSnappedPlain => "ExactSnappedPlain",
+            Model::Fixed => "Fixed",
+            Model::Scanline => "Scanline",
+            Model::Float32 => "Float32",
+            Model::Float64 => "Float64",
+            Model::Float32Naive => "Float32Naive",
+            Model::Float64Naive => "Float64Naive",
+        }
+    }
+
     /// Whether the model rasterizes the snapped scene (so `exact-snapped-plain` is its
     /// reference; `exact-plain` is the reference of the others).
     pub fn snaps(self) -> bool {

@@ -1,10 +1,8 @@
 //! A scene's primitives prepared for one model, ids assigned once, and drawn.
 
-use std::sync::atomic::{AtomicUsize, Ordering};
-
 use image::RgbImage;
 
-use crate::clip::arithmetic::{Arithmetic as ClipArithmetic, Clipper};
+use crate::clip::arithmetic::{ClipArithmetic, Clipper};
 use crate::clip::homogeneous::{ClipVertex, Viewport};
 use crate::clip::mask::ClipMask;
 use crate::clip::sutherland_hodgman::clip_polygon;
@@ -586,37 +584,16 @@ impl PreparedScene {
         after: &(dyn Fn() + Sync),
         finish: impl Fn(usize, Coverage, &mut Spare) -> R + Sync,
     ) -> Vec<R> {
-        let next = AtomicUsize::new(0);
         let meeting = self.triangles.meeting_each(target, jobs, bands);
-        let drawn: Vec<Vec<(usize, R)>> = std::thread::scope(|s| {
-            let workers: Vec<_> = (0..jobs.clamp(1, bands.len()))
-                .map(|_| {
-                    s.spawn(|| {
-                        let mut mine = Vec::new();
-                        let mut spare = Spare::default();
-                        loop {
-                            let b = next.fetch_add(1, Ordering::Relaxed);
-                            let Some(&(y0, y1)) = bands.get(b) else {
-                                return mine;
-                            };
-                            let mut coverage =
-                                Coverage::with_spare(target.width, target.height, std::mem::take(&mut spare));
-                            let band = Band { triangles: &meeting[b] };
-                            self.render_band(target, &mut RowBand::new(&mut coverage, y0, y1), Some(band), || {});
-                            mine.push((b, finish(b, coverage, &mut spare)));
-                            after();
-                        }
-                    })
-                })
-                .collect();
-            workers
-                .into_iter()
-                .map(|w| w.join().expect("a band's thread does not panic"))
-                .collect()
-        });
-        let mut drawn: Vec<(usize, R)> = drawn.into_iter().flatten().collect();
-        drawn.sort_by_key(|&(b, _)| b);
-        drawn.into_iter().map(|(_, r)| r).collect()
+        let each: Vec<(usize, &(u32, u32))> = bands.iter().enumerate().collect();
+        crate::chunks::map_each_with(each, jobs, Spare::default, |spare, (b, &(y0, y1))| {
+            let mut coverage = Coverage::with_spare(target.width, target.height, std::mem::take(spare));
+            let band = Band { triangles: &meeting[b] };
+            self.render_band(target, &mut RowBand::new(&mut coverage, y0, y1), Some(band), || {});
+            let kept = finish(b, coverage, spare);
+            after();
+            kept
+        })
     }
 
     /// The Gouraud colour of triangle `k` at the sample of pixel `(x, y)`, computed in the

@@ -148,7 +148,7 @@ pub fn explain_pixel(primitives: &Primitives, target: &Target, x: u32, y: u32) -
     }
     let models = Model::ALL
         .into_iter()
-        .filter(|m| !matches!(m, Model::ExactPlain | Model::ExactSnappedPlain))
+        .filter(|m| !m.is_plain())
         .map(|model| ModelAt {
             model,
             owners: prepare(primitives, target, model).map(|prepared| {

@@ -47,19 +47,11 @@ fn read_file(path: &Path, jobs: usize) -> std::io::Result<Vec<u8>> {
             let len = usize::try_from(meta.len()).map_err(std::io::Error::other)?;
             let mut bytes = vec![0u8; len];
             let part = len.div_ceil(jobs);
-            let read: std::io::Result<()> = std::thread::scope(|s| {
-                let parts: Vec<_> = bytes
-                    .chunks_mut(part)
-                    .enumerate()
-                    .map(|(k, chunk)| {
-                        let file = &file;
-                        s.spawn(move || file.read_exact_at(chunk, (k * part) as u64))
-                    })
-                    .collect();
-                parts
+            let parts: Vec<(usize, &mut [u8])> = bytes.chunks_mut(part).enumerate().collect();
+            let read: std::io::Result<()> =
+                crate::chunks::map_each(parts, jobs, |(k, chunk)| file.read_exact_at(chunk, (k * part) as u64))
                     .into_iter()
-                    .try_for_each(|p| p.join().expect("a reading thread does not panic"))
-            });
+                    .collect();
             if read.is_ok() && file.read_at(&mut [0u8; 1], meta.len())? == 0 {
                 return Ok(bytes);
             }

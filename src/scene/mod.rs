@@ -9,7 +9,7 @@ use std::fmt::Write as _;
 
 use num_rational::BigRational;
 
-use crate::clip::arithmetic::{Arithmetic, Clipped, Clipper};
+use crate::clip::arithmetic::{ClipArithmetic, Clipped, Clipper};
 use crate::clip::homogeneous::{ClipVertex, DepthRange, NdcY, Viewport};
 use crate::clip::Window;
 use crate::convention::{Convention, PixelCentre, Preset, Rounding, Target, TieRule};
@@ -181,7 +181,7 @@ impl Scene {
     /// naming the field (`triangles[2]`) or the window edge.
     ///
     /// ```
-    /// use rasterproof::clip::arithmetic::Arithmetic;
+    /// use rasterproof::clip::arithmetic::ClipArithmetic;
     /// use rasterproof::scene::parse_scene;
     /// let scene = parse_scene(
     ///     r#"{"width": 8, "height": 8, "triangles": [{"v": [[0, 0], [8, 0], [0, 8]]}],
@@ -189,11 +189,11 @@ impl Scene {
     ///     "example.json",
     /// )
     /// .unwrap();
-    /// let clipped = scene.clipped(Arithmetic::Exact, false).unwrap();
+    /// let clipped = scene.clipped(ClipArithmetic::Exact, false).unwrap();
     /// assert_eq!(clipped.to_json(), r#"{"triangles":[[["0","4"],["0","0"],["4","0"],["4","4"]]],"lines":[],"polygons":[],"clip_space_triangles":[]}"#);
     /// assert_eq!(clipped.to_text("example.json"), "example.json: exact clipping: 1/1 triangles, 0/0 lines, 0/0 polygons, 0/0 clip-space triangles keep something");
     /// ```
-    pub fn clipped(&self, arithmetic: Arithmetic, divide_first: bool) -> Result<Clipped, String> {
+    pub fn clipped(&self, arithmetic: ClipArithmetic, divide_first: bool) -> Result<Clipped, String> {
         let clipper = Clipper::new(arithmetic, self.clip.as_ref())?;
         let mut triangles = Vec::new();
         for (k, t) in self.triangles.iter().enumerate() {

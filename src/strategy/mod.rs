@@ -26,7 +26,7 @@ fn grid_point(xs: i64, ys: i64) -> Point {
 
 /// A triangle family.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Scale {
+pub enum TriangleScale {
     /// Vertices within 2 px of each other, on the grid.
     Pixel,
     /// Vertices anywhere on the canvas (and a little beyond), on the grid.
@@ -42,31 +42,31 @@ pub enum Scale {
     FarFromOrigin,
 }
 
-impl Scale {
+impl TriangleScale {
     /// Every family.
-    pub const ALL: [Scale; 5] = [
-        Scale::Pixel,
-        Scale::Medium,
-        Scale::Sliver,
-        Scale::Huge,
-        Scale::FarFromOrigin,
+    pub const ALL: [TriangleScale; 5] = [
+        TriangleScale::Pixel,
+        TriangleScale::Medium,
+        TriangleScale::Sliver,
+        TriangleScale::Huge,
+        TriangleScale::FarFromOrigin,
     ];
 
     /// The canvas side the family is drawn for (`canvas` unless the family needs its own).
     pub fn canvas_for(self, canvas: u32) -> u32 {
         match self {
-            Scale::FarFromOrigin => crate::convention::MAX_CANVAS,
+            TriangleScale::FarFromOrigin => crate::convention::MAX_CANVAS,
             _ => canvas,
         }
     }
 }
 
 /// A random triangle of the family `scale` for a `canvas` x `canvas` target
-/// (`FarFromOrigin` draws for 16384 whatever `canvas` says: see [`Scale::canvas_for`]).
-pub fn triangle(scale: Scale, canvas: u32) -> BoxedStrategy<Triangle> {
+/// (`FarFromOrigin` draws for 16384 whatever `canvas` says: see [`TriangleScale::canvas_for`]).
+pub fn triangle(scale: TriangleScale, canvas: u32) -> BoxedStrategy<Triangle> {
     let c = i64::from(canvas) * GRID;
     match scale {
-        Scale::Pixel => ((-GRID..c), (-GRID..c), prop::array::uniform4(-2 * GRID..=2 * GRID))
+        TriangleScale::Pixel => ((-GRID..c), (-GRID..c), prop::array::uniform4(-2 * GRID..=2 * GRID))
             .prop_map(|(x, y, d)| {
                 Triangle::new(
                     grid_point(x, y),
@@ -75,10 +75,10 @@ pub fn triangle(scale: Scale, canvas: u32) -> BoxedStrategy<Triangle> {
                 )
             })
             .boxed(),
-        Scale::Medium => prop::array::uniform6(-c / 4..c + c / 4)
+        TriangleScale::Medium => prop::array::uniform6(-c / 4..c + c / 4)
             .prop_map(|v| Triangle::new(grid_point(v[0], v[1]), grid_point(v[2], v[3]), grid_point(v[4], v[5])))
             .boxed(),
-        Scale::Sliver => (prop::array::uniform4(-c / 4..c + c / 4), 0i64..=GRID, -4i64..=4)
+        TriangleScale::Sliver => (prop::array::uniform4(-c / 4..c + c / 4), 0i64..=GRID, -4i64..=4)
             .prop_map(|(v, t, off)| {
                 // third vertex: at parameter t/GRID along a->b, nudged `off` subpixels in y
                 let (ax, ay, bx, by) = (v[0], v[1], v[2], v[3]);
@@ -87,13 +87,13 @@ pub fn triangle(scale: Scale, canvas: u32) -> BoxedStrategy<Triangle> {
                 Triangle::new(grid_point(ax, ay), grid_point(bx, by), Point::new(mx, my))
             })
             .boxed(),
-        Scale::Huge => {
+        TriangleScale::Huge => {
             let far = 1i64 << (crate::num::FIXED_ENVELOPE_BITS);
             (prop::array::uniform4(-far..=far), 0..c, 0..c)
                 .prop_map(|(v, x, y)| Triangle::new(grid_point(v[0], v[1]), grid_point(v[2], v[3]), grid_point(x, y)))
                 .boxed()
         }
-        Scale::FarFromOrigin => {
+        TriangleScale::FarFromOrigin => {
             let side = i64::from(crate::convention::MAX_CANVAS) * GRID;
             let lo = side - 200 * GRID;
             (
@@ -116,10 +116,10 @@ pub fn triangle(scale: Scale, canvas: u32) -> BoxedStrategy<Triangle> {
 /// excluded since it needs its own canvas.
 pub fn any_triangle(canvas: u32) -> BoxedStrategy<Triangle> {
     prop_oneof![
-        triangle(Scale::Pixel, canvas),
-        triangle(Scale::Medium, canvas),
-        triangle(Scale::Sliver, canvas),
-        triangle(Scale::Huge, canvas),
+        triangle(TriangleScale::Pixel, canvas),
+        triangle(TriangleScale::Medium, canvas),
+        triangle(TriangleScale::Sliver, canvas),
+        triangle(TriangleScale::Huge, canvas),
         tie_heavy_triangle(canvas),
     ]
     .boxed()

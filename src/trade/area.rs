@@ -59,7 +59,7 @@ use crate::convention::{Preset, Target};
 use crate::geom::{FillRule, Point, Polygon};
 use crate::model::{render_samples, Model, Primitives};
 use crate::pattern::SamplePattern;
-use crate::strategy::{triangle, Scale};
+use crate::strategy::{triangle, TriangleScale};
 
 use super::metric::Metric;
 use super::report::{Cell, Outcome, Placement, PlanSummary, WorkloadReport};
@@ -622,13 +622,13 @@ fn workloads(config: &Config, sizes: &Sizes) -> Vec<Workload> {
     let count = 100 * sizes.count;
     let slivers = draw_n(
         &mut runner(config.seed, "area slivers"),
-        &triangle(Scale::Sliver, side),
+        &triangle(TriangleScale::Sliver, side),
         count,
     );
     out.push(Workload {
         name: "area slivers".into(),
         description: format!(
-            "{count} random slivers (strategy::Scale::Sliver: long and thin, the third vertex within 4/256 px of the \
+            "{count} random slivers (strategy::TriangleScale::Sliver: long and thin, the third vertex within 4/256 px of the \
              line), each its own shape."
         ),
         shapes: slivers.iter().map(crate::area::triangle_shape).collect(),
@@ -688,7 +688,7 @@ fn plan(w: &Workload, mags: &[Magnitude]) -> PlanSummary {
         let i128s = w
             .shapes
             .iter()
-            .filter(|s| planned::plan(&s.translated(m, m)) == planned::Width::I128)
+            .filter(|s| planned::plan(&s.translated(m, m)) == planned::AreaWidth::I128)
             .count();
         (i128s, w.shapes.len() - i128s)
     };

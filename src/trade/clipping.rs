@@ -11,7 +11,7 @@ use num_rational::BigRational;
 use proptest::prelude::{prop_oneof, BoxedStrategy, Strategy};
 
 use crate::check::check_inside;
-use crate::clip::arithmetic::{Arithmetic, Clipper};
+use crate::clip::arithmetic::{ClipArithmetic, Clipper};
 use crate::clip::halfplane::{HalfPlane, HalfPlaneF32, HalfPlaneF64};
 use crate::clip::{cohen_sutherland, sutherland_hodgman, Rect, Window};
 use crate::geom::Point;
@@ -27,7 +27,7 @@ use super::workloads::{draw, place_point, place_window, runner};
 use super::{Config, Family, Magnitude, Sizes};
 
 /// The arithmetics of each workload's three contenders, in the order of their names.
-const ARITHMETICS: [Arithmetic; 3] = [Arithmetic::Exact, Arithmetic::F64, Arithmetic::F32];
+const ARITHMETICS: [ClipArithmetic; 3] = [ClipArithmetic::Exact, ClipArithmetic::F64, ClipArithmetic::F32];
 
 /// Measures the clipping workloads.
 pub(crate) fn run(config: &Config, sizes: &Sizes, progress: &mut dyn FnMut(&str)) -> Vec<WorkloadReport> {
@@ -46,7 +46,7 @@ type Out = Vec<Option<Point>>;
 fn clip_outputs<C>(
     cases: &[C],
     window: impl Fn(&C) -> &Window,
-    arithmetic: Arithmetic,
+    arithmetic: ClipArithmetic,
     clip: impl Fn(&Clipper, &C) -> Result<Vec<Result<Point, String>>, String>,
 ) -> Option<Vec<Out>> {
     cases
@@ -83,7 +83,7 @@ fn speed_entries(names: [&'static str; 3], jobs: Vec<Option<Job<'_>>>, count: u6
         .zip(jobs)
         .map(|((&name, a), job)| Contender {
             name: name.into(),
-            exact: a == Arithmetic::Exact,
+            exact: a == ClipArithmetic::Exact,
             reference: "the exact check",
             elements: count,
             subset: false,

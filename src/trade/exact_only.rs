@@ -8,7 +8,7 @@ use crate::convention::{Preset, Target};
 use crate::model::plan::plan_scene;
 use crate::model::{prepare, Model, Primitives};
 
-use super::measure::{area_metrics, corner_subset, departures, Pairs};
+use super::measure::{corner_subset, departure_metrics, departures, Pairs};
 use super::report::{Cell, Outcome, Placement, PlanSummary, WorkloadReport};
 use super::speed::{entries, model_jobs, refusal, Contender};
 use super::triangles::SUBSET_SIDE;
@@ -45,7 +45,7 @@ fn reference(model: Model) -> Model {
 }
 
 fn plain(model: Model) -> bool {
-    super::arith::is_plain(model)
+    model.is_plain()
 }
 
 fn pairs(model: Model, prims: &Primitives, target: &Target) -> Result<Pairs, String> {
@@ -111,7 +111,7 @@ pub(crate) fn measure(spec: &Spec<'_>, config: &Config, sizes: &Sizes) -> Worklo
                 Err(e) => Outcome::Refused(e),
                 Ok(p) => Outcome::Measured {
                     placement: Placement::OnCanvas,
-                    metrics: area_metrics(&departures(r, &p, None), false),
+                    metrics: departure_metrics(&departures(r, &p, None), false),
                 },
             }
         })

@@ -58,7 +58,7 @@ mod tests {
             let mu = u32::try_from(m).unwrap();
             let expected = theirs.restricted(mu, mu, big, big).translated(-m, -m);
             let mut ours = Coverage::new(big, big);
-            let (f32, rule) = crate::trade::arith::float_of(model).unwrap();
+            let (f32, rule) = (model.is_f32(), model.float_rule().unwrap());
             for (k, t) in placed.iter().enumerate() {
                 let id = u32::try_from(k).unwrap();
                 let o = window.origin();

@@ -179,8 +179,8 @@ pub(crate) fn shared_edge_pixels(reference: &Pairs, side: u32) -> (Vec<bool>, u6
     (mask, count)
 }
 
-/// The area metrics of a departure: wrong pixels, and for meshes gaps and double covers.
-pub(crate) fn area_metrics(d: &Departures, mesh: bool) -> Vec<Metric> {
+/// The metrics of a departure from the reference coverage: wrong pixels, and for meshes gaps and double covers.
+pub(crate) fn departure_metrics(d: &Departures, mesh: bool) -> Vec<Metric> {
     let mut out = vec![Metric::Rate {
         name: WRONG_PIXELS,
         count: d.wrong_pixels,
@@ -261,7 +261,7 @@ mod tests {
         let (rp, _) = both(&[(0, 0, 0)]);
         let flood: Vec<(u32, u32, u32)> = (0..10).flat_map(|y| (0..10).map(move |x| (x, y, 0))).collect();
         let (cp, _) = both(&flood);
-        let metrics = area_metrics(&departures(&rp, &cp, None), false);
+        let metrics = departure_metrics(&departures(&rp, &cp, None), false);
         assert_eq!(metrics[0].per_million(), Some(990_000.0));
     }
 

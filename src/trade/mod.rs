@@ -68,37 +68,6 @@ pub use plot::Picture;
 pub use predicate_map::{Decision, MapPanel, PredicateMap};
 pub use report::{Cell, Onset, Outcome, Placement, PlanSummary, SpeedEntry, SpeedOutcome, TradeReport, WorkloadReport};
 
-/// The arithmetic facts the trade needs about a model, read from the model's own
-/// [`crate::model::Arithmetic`] (the one per-model choice; the trade runs the float
-/// models' loop over a window no canvas reaches, so it needs their float type and rule).
-pub(crate) mod arith {
-    use crate::model::{Arithmetic, FloatType, Model};
-    use crate::tri::float::FloatRule;
-
-    /// The plain BigRational oracles (`exact-plain`, `exact-snapped-plain`).
-    pub(crate) fn is_plain(m: Model) -> bool {
-        matches!(m.arithmetic(), Arithmetic::Exact { plain: true, .. })
-    }
-
-    /// The exact models, whose envelope is unbounded (they refuse no finite coordinate).
-    pub(crate) fn is_unbounded(m: Model) -> bool {
-        matches!(m.arithmetic(), Arithmetic::Exact { .. })
-    }
-
-    /// The integer models (`fixed`, `scanline`).
-    pub(crate) fn is_integer(m: Model) -> bool {
-        matches!(m.arithmetic(), Arithmetic::Integer(_))
-    }
-
-    /// A float model's type (`true`: f32) and rule.
-    pub(crate) fn float_of(m: Model) -> Option<(bool, FloatRule)> {
-        match m.arithmetic() {
-            Arithmetic::Float(t, rule) => Some((t == FloatType::F32, rule)),
-            _ => None,
-        }
-    }
-}
-
 /// A family of workloads (`--family`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Family {

@@ -101,7 +101,7 @@ pub(crate) fn model_jobs<'a>(
 /// Whether `model` takes `prims` (placed at a magnitude): its own preparation's verdict,
 /// or nothing to check for the exact models, whose envelope is unbounded.
 pub(crate) fn refusal(model: Model, prims: &Primitives, target: &Target) -> Result<(), String> {
-    if super::arith::is_unbounded(model) {
+    if model.is_unbounded() {
         return Ok(());
     }
     prepare(prims, target, model).map(|_| ()).map_err(|e| e.to_string())

@@ -12,19 +12,19 @@ use crate::interp::{barycentric_f32, barycentric_f64, gouraud_exact, gouraud_f32
 use crate::model::plan::plan_scene;
 use crate::model::{prepare, Model, Primitives};
 use crate::raster::sample_exact;
-use crate::strategy::{triangle, Scale};
+use crate::strategy::{triangle, TriangleScale};
 use crate::tri::float::{self, FloatRule};
 
 use super::far::FarWindow;
 use super::measure::{
-    area_metrics, corner_subset, departures, median_max, shared_edge_pixels, Pairs, BARYCENTRIC_EXACT,
+    corner_subset, departure_metrics, departures, median_max, shared_edge_pixels, Pairs, BARYCENTRIC_EXACT,
     BARYCENTRIC_ULPS, GOURAUD,
 };
 use super::metric::Metric;
 use super::report::{Cell, Outcome, Placement, PlanSummary, WorkloadReport};
 use super::speed::{entries, model_jobs, refusal, Contender};
 use super::workloads::{colours, draw_n, mesh, place_triangles, runner};
-use super::{arith, Config, Family, Sizes};
+use super::{Config, Family, Sizes};
 
 /// The contenders, in report order: every model of [`Model::ALL`], the exact ones first,
 /// unsnapped before snapped and each plain oracle just before its planned engine
@@ -34,8 +34,8 @@ fn models() -> Vec<Model> {
     let mut all = Model::ALL.to_vec();
     // A stable sort: the models of one key keep their order in `ALL`.
     all.sort_by_key(|&m| {
-        if arith::is_unbounded(m) {
-            (u8::from(m.snaps()), u8::from(!arith::is_plain(m)))
+        if m.is_unbounded() {
+            (u8::from(m.snaps()), u8::from(!m.is_plain()))
         } else {
             (2, 0)
         }
@@ -58,13 +58,13 @@ struct Workload {
 
 fn workloads(config: &Config, sizes: &Sizes) -> Vec<Workload> {
     let (s, n) = (sizes.canvas, sizes.count);
-    let family = |name: &'static str, scale: Scale, count: usize, what: &str| {
+    let family = |name: &'static str, scale: TriangleScale, count: usize, what: &str| {
         let mut r = runner(config.seed, name);
         let triangles = draw_n(&mut r, &triangle(scale, s), count);
         let colours = colours(&mut r, count);
         Workload {
             name,
-            description: format!("{count} random triangles: {what} (strategy::Scale::{scale:?})."),
+            description: format!("{count} random triangles: {what} (strategy::TriangleScale::{scale:?})."),
             triangles,
             colours,
             mesh: false,
@@ -88,25 +88,25 @@ fn workloads(config: &Config, sizes: &Sizes) -> Vec<Workload> {
     vec![
         family(
             "pixel triangles",
-            Scale::Pixel,
+            TriangleScale::Pixel,
             2000 * n,
             "vertices within 2 px of each other, 1/256 px grid",
         ),
         family(
             "medium triangles",
-            Scale::Medium,
+            TriangleScale::Medium,
             10 * n,
             "vertices anywhere on the canvas, 1/256 px grid",
         ),
         family(
             "huge triangles",
-            Scale::Huge,
+            TriangleScale::Huge,
             2 * n,
             "two vertices up to 2^21 px away, one on the canvas",
         ),
         family(
             "sliver triangles",
-            Scale::Sliver,
+            TriangleScale::Sliver,
             100 * n,
             "long and thin, the third vertex within 4/256 px of the line (1/65536 px grid)",
         ),
@@ -190,7 +190,7 @@ fn measure(w: &Workload, config: &Config, sizes: &Sizes) -> WorkloadReport {
         Reference::new(Model::Exact, &sub, &corner, w.mesh),
         Reference::new(Model::ExactSnapped, &sub, &corner, w.mesh),
     ];
-    let plain = arith::is_plain;
+    let plain = Model::is_plain;
     let pick = |m: Model| {
         let k = usize::from(reference(m) == Model::ExactSnapped);
         if plain(m) {
@@ -336,7 +336,7 @@ fn origin_metrics(
     let mut p = Pairs::default();
     prepared.render(target, &mut p);
     let d = departures(&r.pairs, &p.sorted(), r.mask());
-    let mut metrics = area_metrics(&d, r.mask.is_some());
+    let mut metrics = departure_metrics(&d, r.mask.is_some());
     let picks = samples(r, n);
     let conv = &target.convention;
     // Barycentric sums.
@@ -348,7 +348,7 @@ fn origin_metrics(
                 if model.snaps() {
                     let s = t.snapped(conv);
                     match s.to_fixed() {
-                        Ok(f) if arith::is_integer(model) => check_barycentric_fixed(&f, x, y, target).is_err(),
+                        Ok(f) if model.is_integer() => check_barycentric_fixed(&f, x, y, target).is_err(),
                         _ => check_barycentric_exact(&s.to_exact(), &sample_exact(x, y, target)).is_err(),
                     }
                 } else {
@@ -407,7 +407,7 @@ fn origin_metrics(
 }
 
 fn is_f32(model: Model) -> bool {
-    arith::float_of(model).is_some_and(|(f32, _)| f32)
+    model.is_f32()
 }
 
 /// Channels where `ours` is one or more off `exact` (a missing colour on either side
@@ -432,7 +432,7 @@ fn far_metrics(
     (n, exact_colours): (usize, &[Option<Rgb>]),
 ) -> Vec<Metric> {
     let conv = &target.convention;
-    let rule = arith::float_of(model).map_or(FloatRule::WithTieRule, |(_, rule)| rule);
+    let rule = model.float_rule().unwrap_or(FloatRule::WithTieRule);
     let mut p = Pairs::default();
     // The placed coordinates fit both types (|M| <= 2^40): prepare accepted them.
     let t32: Vec<Option<[Vec2; 3]>> = placed.iter().map(Triangle::to_f32).collect();
@@ -448,7 +448,7 @@ fn far_metrics(
         }
     }
     let d = departures(&r.pairs, &p.sorted(), r.mask());
-    let mut metrics = area_metrics(&d, r.mask.is_some());
+    let mut metrics = departure_metrics(&d, r.mask.is_some());
     let picks = samples(r, n);
     #[allow(clippy::cast_possible_truncation)] // rounding the sample to f32 is the model's
     let at = |x: u32, y: u32| {

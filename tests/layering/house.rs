@@ -6,6 +6,16 @@
 //!   library modules ([`cli_coupling`]: the distinct modules of the `rasterproof::` paths
 //!   it names, each path counted at the deepest module it reaches), at most
 //!   [`MOST_MODULES_PER_CLI_FILE`].
+//! - **`Model` is asked, not matched.** Outside `src/model/` no code matches on a
+//!   `Model` variant (`Model::X =>`, `Model::X | ...`, `matches!(m, Model::X)`) or reads a
+//!   model's `arithmetic()`: what a caller needs to know of a model is a method of `Model`
+//!   (`is_plain`, `is_integer`, `float_rule`, ...), so a new model is one more arm in
+//!   `src/model/` only.
+//! - **Threads start in three places.** `src/chunks.rs` (every map of a known set of items:
+//!   rayon's pool, or threads of its own handed items in turn), `src/harness/runner.rs`
+//!   (the case runner of the suite and the hunt) and `src/oracle/renderer/` (a reader
+//!   thread per renderer process): no other file names `thread::scope`, `thread::spawn`,
+//!   `thread::Builder`, `spawn_scoped` or rayon.
 //! - **One comparison shape.** Every report type of `src/oracle/compare/` (a `pub struct`
 //!   whose name ends in `Report`) implements `Comparison`, and the compiler checks that
 //!   the reports the crate exports do (`comparison_reports_have_the_common_surface`).
@@ -136,6 +146,100 @@ fn each_cli_file_names_few_library_modules() {
     );
 }
 
+/// The places in one file's source that match on a `Model` variant or read a model's
+/// arithmetic, as `file:line: what`.
+fn model_matches(file: &str, src: &str) -> Vec<String> {
+    let code = code_only(src);
+    let mut out = Vec::new();
+    for (n, line) in code.lines().enumerate() {
+        let at = |what: &str| format!("{file}:{}: {what}", n + 1);
+        if line.contains(".arithmetic()") {
+            out.push(at("reads a model's arithmetic()"));
+        }
+        let c: Vec<char> = line.chars().collect();
+        let key: Vec<char> = "Model::".chars().collect();
+        let mut i = 0;
+        while i + key.len() <= c.len() {
+            let starts_word = i == 0 || !(c[i - 1].is_alphanumeric() || c[i - 1] == '_');
+            if !(starts_word && c[i..i + key.len()] == key[..]) {
+                i += 1;
+                continue;
+            }
+            let mut k = i + key.len();
+            let upper = c.get(k).is_some_and(|ch| ch.is_ascii_uppercase());
+            while k < c.len() && (c[k].is_alphanumeric() || c[k] == '_') {
+                k += 1;
+            }
+            let rest: String = c[k..].iter().collect::<String>().trim_start().to_string();
+            let in_pattern = rest.starts_with("=>") || (rest.starts_with('|') && !rest.starts_with("||"));
+            let before = &line[..line.char_indices().nth(i).map_or(line.len(), |(b, _)| b)];
+            let in_matches = before.rfind("matches!(").is_some_and(|m| !before[m..].contains(')'));
+            if upper && (in_pattern || in_matches) {
+                out.push(at("matches on a Model variant"));
+            }
+            i = k;
+        }
+    }
+    out.dedup();
+    out
+}
+
+#[test]
+fn no_code_outside_model_matches_on_a_model() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut all = Vec::new();
+    for f in source_files(root).into_iter().filter(|f| !f.starts_with("src/model/")) {
+        let src = fs::read_to_string(root.join(&f)).unwrap_or_else(|e| panic!("reading {f}: {e}"));
+        all.extend(model_matches(&f, &src));
+    }
+    assert!(
+        all.is_empty(),
+        "ask the model (a method of Model in src/model/mod.rs) instead:\n{}",
+        all.join("\n")
+    );
+}
+
+/// The files that may start threads (see the module documentation).
+const THREAD_PLACES: &[&str] = &["src/chunks.rs", "src/harness/runner.rs", "src/oracle/renderer/"];
+
+/// The places in one file's source that start threads, as `file:line: what`.
+fn threads_started(file: &str, src: &str) -> Vec<String> {
+    let code = code_only(src);
+    let mut out = Vec::new();
+    for (n, line) in code.lines().enumerate() {
+        for what in [
+            "thread::scope",
+            "thread::spawn",
+            "thread::Builder",
+            "spawn_scoped",
+            "rayon",
+        ] {
+            if line.contains(what) {
+                out.push(format!("{file}:{}: `{what}`", n + 1));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn threads_start_only_in_chunks_the_runner_and_the_renderer_processes() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut all = Vec::new();
+    for f in source_files(root) {
+        if THREAD_PLACES.iter().any(|p| f.starts_with(p)) {
+            continue;
+        }
+        let src = fs::read_to_string(root.join(&f)).unwrap_or_else(|e| panic!("reading {f}: {e}"));
+        all.extend(threads_started(&f, &src));
+    }
+    assert!(
+        all.is_empty(),
+        "map on threads through crate::chunks instead:\n{}",
+        all.join("\n")
+    );
+}
+
 #[test]
 fn every_report_of_the_comparisons_implements_the_common_surface() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
@@ -227,6 +331,34 @@ mod planted {
         assert_eq!(
             cli_breaches("src/cli/x.rs", src),
             ["src/cli/x.rs:2: `thread::` starts threads (the library's functions take `jobs`)"]
+        );
+    }
+
+    #[test]
+    fn a_match_on_a_model_is_found() {
+        let src = "match model {\n    Model::Exact => 1,\n    _ => 2,\n}\nlet p = matches!(m, Model::ExactPlain);\nlet q = m.arithmetic();\nlet r = m == Model::Fixed || m == Model::Scanline;\nlet s = AreaModel::Plain | AreaModel::Cells;\n";
+        assert_eq!(
+            model_matches("src/x.rs", src),
+            [
+                "src/x.rs:2: matches on a Model variant",
+                "src/x.rs:5: matches on a Model variant",
+                "src/x.rs:6: reads a model's arithmetic()",
+            ]
+        );
+        let alternatives = "m @ (Model::Exact | Model::ExactSnapped) => m,\n";
+        assert_eq!(
+            model_matches("src/y.rs", alternatives),
+            ["src/y.rs:1: matches on a Model variant"]
+        );
+    }
+
+    #[test]
+    fn a_thread_started_elsewhere_is_found() {
+        let src =
+            "let v = std::thread::scope(|s| s.spawn(|| 1).join());\n// rayon in a comment\nuse rayon::prelude::*;\n";
+        assert_eq!(
+            threads_started("src/x.rs", src),
+            ["src/x.rs:1: `thread::scope`", "src/x.rs:3: `rayon`"]
         );
     }
 

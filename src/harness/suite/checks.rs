@@ -458,11 +458,7 @@ fn line_checks(c: &Case, out: &mut Vec<CheckOutcome>) {
     let target = target(CANVAS, c.preset);
     for model in models::diamond() {
         // The integer models share one diamond-exit walk, named by the algorithm.
-        let label = if models::is_integer(model) {
-            "diamond"
-        } else {
-            model.name()
-        };
+        let label = if model.is_integer() { "diamond" } else { model.name() };
         push(
             "diamond agreement",
             model,

@@ -3,25 +3,13 @@
 //! the checks its arithmetic calls for instead of silently staying out of the table.
 //! Each list is in the order the checks run (the order of the failures within a case).
 
-use std::mem::discriminant;
-
-use crate::model::{Arithmetic, IntegerTraversal, Model};
+use crate::model::Model;
 use crate::tri::float::FloatRule;
 
-/// The plain BigRational oracles (`exact-plain`, `exact-snapped-plain`): the references
-/// the other models are checked against, never checked themselves.
-fn is_plain(m: Model) -> bool {
-    matches!(m.arithmetic(), Arithmetic::Exact { plain: true, .. })
-}
-
-/// The integer models (`fixed`, `scanline`).
-pub(super) fn is_integer(m: Model) -> bool {
-    matches!(m.arithmetic(), Arithmetic::Integer(_))
-}
-
-/// The models under test: every model but the plain oracles, in [`Model::ALL`] order.
+/// The models under test: every model but the plain oracles ([`Model::is_plain`], the
+/// references the others are checked against), in [`Model::ALL`] order.
 fn under_test() -> impl DoubleEndedIterator<Item = Model> {
-    Model::ALL.into_iter().filter(|&m| !is_plain(m))
+    Model::ALL.into_iter().filter(|&m| !m.is_plain())
 }
 
 /// The first model of each arithmetic (exact, integer, float) among those `keep` takes:
@@ -29,10 +17,7 @@ fn under_test() -> impl DoubleEndedIterator<Item = Model> {
 fn one_per_arithmetic(keep: impl Fn(Model) -> bool) -> Vec<Model> {
     let mut out: Vec<Model> = Vec::new();
     for m in under_test().filter(|&m| keep(m)) {
-        if !out
-            .iter()
-            .any(|o| discriminant(&o.arithmetic()) == discriminant(&m.arithmetic()))
-        {
+        if !out.iter().any(|o| o.same_arithmetic(m)) {
             out.push(m);
         }
     }
@@ -50,7 +35,7 @@ pub(super) fn mesh() -> Vec<Model> {
 /// exact and integer models hold there by construction; the naive ones fail everywhere).
 pub(super) fn fine_mesh() -> Vec<Model> {
     under_test()
-        .filter(|m| matches!(m.arithmetic(), Arithmetic::Float(_, FloatRule::WithTieRule)))
+        .filter(|m| m.float_rule() == Some(FloatRule::WithTieRule))
         .collect()
 }
 
@@ -85,7 +70,7 @@ pub(super) fn polygon_agreement() -> Vec<Model> {
     under_test()
         .rev()
         .filter(|&m| super::must_hold(m))
-        .filter(|m| !matches!(m.arithmetic(), Arithmetic::Integer(IntegerTraversal::Blocks)))
+        .filter(|m| !m.triangulates_polygons())
         .collect()
 }
 
@@ -95,7 +80,7 @@ pub(super) fn polygon_agreement() -> Vec<Model> {
 pub(super) fn diamond() -> Vec<Model> {
     let mut out: Vec<Model> = Vec::new();
     for m in under_test().filter(|&m| super::must_hold(m)) {
-        if !(is_integer(m) && out.iter().any(|&o| is_integer(o))) {
+        if !(m.is_integer() && out.iter().any(|&o| o.is_integer())) {
             out.push(m);
         }
     }

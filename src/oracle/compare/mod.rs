@@ -35,8 +35,8 @@ use serde_json::Value;
 
 pub use binary::{
     compare, count_differences, html_escape, html_page, pick_classified, reason_text, CompareOptions, CompareReport,
-    DiffPixel, PixelFinding, PixelKind, Relation, CLASSIFY_AT_MOST, EMPTY_COLOUR, HTML_EXPLAINED_AT_MOST,
-    MATCHED_COLOUR, REPORT_VERSION,
+    DiffPixel, PixelFinding, PixelKind, Relation, CLASSIFY_AT_MOST, COMPARE_REPORT_VERSION, EMPTY_COLOUR,
+    HTML_EXPLAINED_AT_MOST, MATCHED_COLOUR,
 };
 pub(crate) use binary::{evidence, evidence_at, pixel_box_holds};
 

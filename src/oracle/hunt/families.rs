@@ -10,7 +10,7 @@ use crate::geom::{Point, Polygon, Triangle};
 use crate::line::{BresenhamTie, Line, LineRule};
 use crate::scene::Scene;
 use crate::strategy::polygon::any_polygon;
-use crate::strategy::{delaunay_mesh, diamond_line, pixel_line, tie_heavy_mesh, triangle, Scale};
+use crate::strategy::{delaunay_mesh, diamond_line, pixel_line, tie_heavy_mesh, triangle, TriangleScale};
 
 /// A family of generated scenes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -111,8 +111,8 @@ impl SceneFamily {
             SceneFamily::Mesh => mesh(tie_heavy_mesh(canvas, 12)),
             SceneFamily::Delaunay => mesh(delaunay_mesh([0, 0], side, 8, 12)),
             SceneFamily::Triangles => tris(crate::strategy::any_triangle(canvas)),
-            SceneFamily::Slivers => tris(triangle(Scale::Sliver, canvas)),
-            SceneFamily::Huge => tris(triangle(Scale::Huge, canvas)),
+            SceneFamily::Slivers => tris(triangle(TriangleScale::Sliver, canvas)),
+            SceneFamily::Huge => tris(triangle(TriangleScale::Huge, canvas)),
             SceneFamily::Fine => mesh(delaunay_mesh([0, 0], side, 16, 12)),
             SceneFamily::Lines => (
                 proptest::collection::vec(pixel_line(side, 2), 0..3),

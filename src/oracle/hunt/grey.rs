@@ -337,10 +337,7 @@ where
             kept
         };
         let mut first_kept = |batch: &[Scene]| -> Option<usize> {
-            let kept: Vec<bool> = std::thread::scope(|scope| {
-                let running: Vec<_> = batch.iter().map(|c| scope.spawn(|| keeps(c))).collect();
-                running.into_iter().map(|h| h.join().unwrap_or(false)).collect()
-            });
+            let kept = crate::chunks::map_each(batch.iter().collect(), batch.len(), keeps);
             kept.iter().position(|&k| k)
         };
         let budget = if interrupted.load(Ordering::SeqCst) {

@@ -12,7 +12,7 @@
 
 use serde_json::{json, Map, Value};
 
-use super::report::{REPORT_FORMAT, REPORT_VERSION};
+use super::report::{HUNT_REPORT_FORMAT, HUNT_REPORT_VERSION};
 use crate::oracle::compare::PixelKind;
 
 /// The settings the shards of one run must share.
@@ -45,14 +45,14 @@ pub fn merge_reports(reports: &[(String, Value)]) -> Result<Value, String> {
         return Err("no reports to merge".to_string());
     };
     for (name, r) in reports {
-        if r.get("format").and_then(Value::as_str) != Some(REPORT_FORMAT) {
+        if r.get("format").and_then(Value::as_str) != Some(HUNT_REPORT_FORMAT) {
             return Err(format!(
-                "{name}: not a hunt report (its format is not {REPORT_FORMAT:?})"
+                "{name}: not a hunt report (its format is not {HUNT_REPORT_FORMAT:?})"
             ));
         }
-        if r.get("version").and_then(Value::as_u64) != Some(REPORT_VERSION) {
+        if r.get("version").and_then(Value::as_u64) != Some(HUNT_REPORT_VERSION) {
             return Err(format!(
-                "{name}: version {}: this rasterproof merges version {REPORT_VERSION}",
+                "{name}: version {}: this rasterproof merges version {HUNT_REPORT_VERSION}",
                 r.get("version").map_or("(none)".to_string(), Value::to_string)
             ));
         }

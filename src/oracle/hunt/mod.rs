@@ -41,7 +41,7 @@ pub use grey::{
     GreyVerdict, AREA_FAMILIES,
 };
 pub use merge::merge_reports;
-pub use report::{HuntFinding, HuntReport, REPORT_FORMAT, REPORT_VERSION};
+pub use report::{HuntFinding, HuntReport, HUNT_REPORT_FORMAT, HUNT_REPORT_VERSION};
 pub use test_text::rust_test;
 pub use verdict::{judge, pixel_kinds, signatures, HuntVerdict, Signature};
 
@@ -249,10 +249,7 @@ where
                 if batch.len() == 1 {
                     return keeps(&batch[0]).then_some(0);
                 }
-                let kept: Vec<bool> = std::thread::scope(|scope| {
-                    let running: Vec<_> = batch.iter().map(|c| scope.spawn(|| keeps(c))).collect();
-                    running.into_iter().map(|h| h.join().unwrap_or(false)).collect()
-                });
+                let kept = crate::chunks::map_each(batch.iter().collect(), batch.len(), keeps);
                 kept.iter().position(|&k| k)
             };
             let budget = if interrupted.load(Ordering::SeqCst) {
@@ -275,25 +272,7 @@ where
                 renderer_calls,
             }
         };
-    let queue = Mutex::new(first.into_iter());
-    let found = Mutex::new(Vec::new());
-    std::thread::scope(|scope| -> Result<(), String> {
-        let work = || loop {
-            let next = lock(&queue).next();
-            let Some(entry) = next else { break };
-            let finding = shrink_one(entry);
-            lock(&found).push(finding);
-        };
-        for _ in 1..jobs.max(1) {
-            std::thread::Builder::new()
-                .name("rasterproof-shrink".into())
-                .spawn_scoped(scope, work)
-                .map_err(|e| format!("cannot start a shrinking thread: {e}"))?;
-        }
-        work();
-        Ok(())
-    })?;
-    let mut findings = found.into_inner().unwrap_or_else(PoisonError::into_inner);
+    let mut findings = crate::chunks::map_each(first.into_iter().collect(), jobs, shrink_one);
     findings.sort_by_key(|f| (f.case, f.signature.clone()));
     Ok(HuntReport {
         config: config.clone(),

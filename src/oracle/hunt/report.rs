@@ -1,5 +1,5 @@
 //! What a hunt found: its [`HuntFinding`]s and the [`HuntReport`], written as JSON
-//! ([`HuntReport::to_json`], format [`REPORT_FORMAT`] version [`REPORT_VERSION`]) or JUnit
+//! ([`HuntReport::to_json`], format [`HUNT_REPORT_FORMAT`] version [`HUNT_REPORT_VERSION`]) or JUnit
 //! XML ([`HuntReport::junit`]).
 
 use std::fmt::Write as _;
@@ -71,10 +71,10 @@ pub struct HuntReport {
 }
 
 /// The `format` of a hunt report ([`HuntReport::to_json`]).
-pub const REPORT_FORMAT: &str = "rasterproof hunt report";
+pub const HUNT_REPORT_FORMAT: &str = "rasterproof hunt report";
 
 /// The schema version of a hunt report ([`HuntReport::to_json`]).
-pub const REPORT_VERSION: u64 = 2;
+pub const HUNT_REPORT_VERSION: u64 = 2;
 
 impl HuntFinding {
     /// Its pixel kinds in words, after the signature: ` (missing and extra pixels)`;
@@ -203,7 +203,7 @@ impl HuntReport {
         ])
     }
 
-    /// The report as a JSON document (schema version [`REPORT_VERSION`]; also in README's
+    /// The report as a JSON document (schema version [`HUNT_REPORT_VERSION`]; also in README's
     /// `hunt` section), `renderer` naming what was hunted (`hunt --cmd`'s command): one
     /// object, one field a line in this order, each finding on a line of its own, ending in
     /// a newline.
@@ -277,8 +277,8 @@ impl HuntReport {
             .renderer_runs
             .map(|r| object(&[("calls", j(&r.calls)), ("starts", j(&r.starts))]));
         let fields: [(&str, String); 22] = [
-            ("format", j(REPORT_FORMAT)),
-            ("version", j(&REPORT_VERSION)),
+            ("format", j(HUNT_REPORT_FORMAT)),
+            ("version", j(&HUNT_REPORT_VERSION)),
             ("rasterproof", j(env!("CARGO_PKG_VERSION"))),
             ("cmd", j(renderer)),
             ("seed", j(&c.seed)),

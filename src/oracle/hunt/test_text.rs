@@ -11,10 +11,7 @@ use crate::oracle::compare::DiffPixel;
 /// owners of every pixel where their renderer differed (asserted: they hold), and where to
 /// call their renderer.
 pub fn rust_test(f: &HuntFinding, n: usize, model: Model) -> String {
-    let model_path = match model {
-        Model::Exact => "Exact",
-        _ => "ExactSnapped",
-    };
+    let model_path = model.rust_name();
     let mut s = format!(
         "/// Found by `rasterproof hunt` (case {}): {}.\n#[test]\nfn hunt_finding_{n:02}_{}() {{\n",
         f.case,

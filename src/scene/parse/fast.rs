@@ -25,7 +25,6 @@ use serde_json::value::RawValue;
 
 use super::json::{from_raw, Map};
 use super::{keys, MAX_TRIANGLES};
-use rayon::iter::{IndexedParallelIterator, IntoParallelIterator, ParallelIterator};
 
 use crate::chunks;
 use crate::geom::{CompactTriangle, Rgb};
@@ -99,12 +98,7 @@ fn read_split(text: &str, jobs: usize) -> Option<Read> {
     if places > MAX_TRIANGLES {
         return None;
     }
-    let mut triangles = Vec::with_capacity(places);
-    (0..places)
-        .into_par_iter()
-        .with_min_len(places.div_ceil(jobs).max(1))
-        .map(|_| SceneTriangle::default())
-        .collect_into_vec(&mut triangles);
+    let mut triangles: Vec<SceneTriangle> = chunks::defaults(places, jobs);
     let mut rest = triangles.as_mut_slice();
     let mut slots = Vec::with_capacity(runs.len());
     for (&run, &bound) in runs.iter().zip(&bounds) {

@@ -17,7 +17,7 @@ use std::collections::BTreeMap;
 pub use html::{escape as html_escape, html_page, HTML_EXPLAINED_AT_MOST};
 pub(crate) use pixel::{evidence, evidence_at, pixel_box_holds};
 pub use pixel::{DiffPixel, PixelFinding};
-pub use report::{reason_text, CompareReport, EMPTY_COLOUR, MATCHED_COLOUR, REPORT_VERSION};
+pub use report::{reason_text, CompareReport, COMPARE_REPORT_VERSION, EMPTY_COLOUR, MATCHED_COLOUR};
 
 use super::{CompareError, SizeMismatch};
 use crate::convention::Target;

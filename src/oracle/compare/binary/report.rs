@@ -19,7 +19,7 @@ use crate::oracle::reason::{offset_text, Reason, ReasonClass};
 use crate::oracle::theirs::{Format, TheirPixel};
 
 /// The version of the JSON report's schema ([`CompareReport::to_json`]).
-pub const REPORT_VERSION: u32 = 1;
+pub const COMPARE_REPORT_VERSION: u32 = 1;
 
 /// The colour of a pixel both cover with the same owners, in the difference picture.
 pub const MATCHED_COLOUR: [u8; 3] = [128, 128, 128];
@@ -325,7 +325,7 @@ impl CompareReport {
         s
     }
 
-    /// The JSON report (schema version [`REPORT_VERSION`]), complete:
+    /// The JSON report (schema version [`COMPARE_REPORT_VERSION`]), complete:
     /// `{"version", "scene", "theirs", "format", "model", "convention": {preset, tie_rule,
     /// pixel_centre, subpixel_bits, rounding}, "width", "height", "ours_covered",
     /// "theirs_covered", "differing", "classified", "headline" ([`Self::headline`], or
@@ -388,7 +388,7 @@ impl CompareReport {
             })
             .collect();
         json!({
-            "version": REPORT_VERSION,
+            "version": COMPARE_REPORT_VERSION,
             "scene": scene,
             "theirs": theirs,
             "format": self.format.name(),
