@@ -10,9 +10,7 @@ use assert_cmd::Command;
 use num_rational::BigRational;
 use rasterproof::area::{planned, triangle_shape, AreaShape, Quantization, Semantics};
 use rasterproof::geom::{FillRule, Point, Polygon, Triangle};
-use rasterproof::trade::area::{
-    area_metrics, ftgrays_at, rasterize_f32_at, AreaModel, AreaOutput, COVERAGE_ERROR, OFF_HALF_QUANTUM,
-};
+use rasterproof::trade::area::{area_metrics, AreaModel, AreaOutput, COVERAGE_ERROR, OFF_HALF_QUANTUM};
 use rasterproof::trade::{run, Config, Magnitude, Metric, Outcome, TradeReport};
 use serde_json::Value;
 
@@ -405,7 +403,19 @@ fn f32_accumulation_loses_a_half_pixel_at_2_23_by_hand() {
     };
     let reference = planned::rasterize(&rect(0), 2, 2, Semantics::Accumulated);
     assert_eq!(reference.value(0, 0), half);
-    let metrics = |m: i64| area_metrics(&reference, &AreaOutput::F32(rasterize_f32_at(&rect(m), m, 2, 2)), None);
+    let metrics = |m: i64| {
+        area_metrics(
+            &reference,
+            &AreaOutput::F32(rasterproof::area::float::rasterize_at(
+                &rect(m),
+                m,
+                2,
+                2,
+                Semantics::Accumulated,
+            )),
+            None,
+        )
+    };
     let at22 = metrics(1 << 22);
     assert!(at22.iter().all(Metric::is_zero), "{at22:?}");
     let at23 = metrics(1 << 23);
@@ -487,8 +497,8 @@ fn ftgrays_is_refused_beyond_its_envelope_by_hand() {
         ],
         FillRule::NonZero,
     )];
-    let inside = ftgrays_at(&square, (1 << 23) - 2, 2, 2).unwrap();
+    let inside = rasterproof::area::ftgrays::rasterize_at(&square, (1 << 23) - 2, 2, 2).unwrap();
     assert_eq!(inside, vec![255, 0, 0, 0]);
-    let err = ftgrays_at(&square, (1 << 23) - 1, 2, 2).unwrap_err();
+    let err = rasterproof::area::ftgrays::rasterize_at(&square, (1 << 23) - 1, 2, 2).unwrap_err();
     assert!(err.contains("24.8 envelope") && err.contains("8388608"), "{err}");
 }

@@ -28,10 +28,10 @@
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::ToPrimitive;
+use num_traits::{Signed, ToPrimitive};
 
 use super::AreaShape;
-use crate::geom::FillRule;
+use crate::geom::{FillRule, Point, Polygon};
 
 /// Subpixel bits of a cell coordinate (24.8).
 pub(super) const PIXEL_BITS: u32 = 8;
@@ -282,4 +282,53 @@ pub(super) fn sweep(cells: &Cells, w: i64, mut emit: impl FnMut(i64, i64, i64)) 
             x = column + 1;
         }
     }
+}
+
+/// [`rasterize`] on the window at `(origin, origin)` of the placed shapes: each placed
+/// coordinate `x + origin` rounded to 26.6 as the model rounds it (nearest 1/64, ties away
+/// from zero) and checked against its 24.8 envelope (`|v| < 2^23` px) there; the model
+/// then runs on the window's canvas with the rounded coordinates moved back by
+/// `-origin`, a whole number of cells: its walk uses only cell indices (moved by whole
+/// numbers), cell-local offsets and differences (unchanged), so its levels are those of
+/// the placed walk. y needs no moving: the model's frame is flipped about the canvas's
+/// bottom (`y' = H - y`), and on a canvas reaching the window, `H = origin + height`, so
+/// `y'` is the window's own. Equal to the model on such a canvas, restricted to the
+/// window (tested at 2^10).
+///
+/// # Errors
+/// A placed coordinate outside the 24.8 envelope, named with its shape (the model's own
+/// message).
+pub fn rasterize_at(shapes: &[AreaShape], origin: i64, width: u32, height: u32) -> Result<Vec<u8>, String> {
+    let m = BigRational::from_integer(origin.into());
+    let sixty_four = BigRational::from_integer(64.into());
+    let limit = BigInt::from(1i64 << 31);
+    let mut local = Vec::with_capacity(shapes.len());
+    for (k, shape) in shapes.iter().enumerate() {
+        let mut bad = None;
+        let mut mv = |c: &[Point]| -> Vec<Point> {
+            c.iter()
+                .map(|p| {
+                    let placed = &p.x + &m;
+                    // round(): to the nearest, ties away from zero, as the model's to_24_8.
+                    let units = (&placed * &sixty_four).round().to_integer();
+                    if (&units * BigInt::from(4)).abs() >= limit {
+                        bad.get_or_insert_with(|| (placed.clone(), &p.y + &m));
+                    }
+                    Point::new(BigRational::new(units, 64.into()) - &m, p.y.clone())
+                })
+                .collect()
+        };
+        let moved = Polygon {
+            outline: mv(&shape.outline),
+            holes: shape.holes.iter().map(|h| mv(h)).collect(),
+            fill_rule: shape.fill_rule,
+        };
+        if let Some((x, y)) = bad {
+            return Err(format!(
+                "shape {k}: ({x}, {y}) is outside FreeType's 24.8 envelope (|v| < 2^23 px)"
+            ));
+        }
+        local.push(moved);
+    }
+    rasterize(&local, width, height)
 }

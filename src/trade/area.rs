@@ -45,8 +45,8 @@
 //!   the origin's, marked `translated`. The two models with rounding compute with the
 //!   placed coordinates (shapes moved by `(M, M)` exactly, the window `[M, M + side)^2`),
 //!   as `trade::far` does for the float triangle models: `f32-accum` by
-//!   [`rasterize_f32_at`], `area::float`'s walk with its canvas origin at `(M, M)`;
-//!   `ftgrays` by [`ftgrays_at`], its 26.6 rounding and 24.8 envelope at the placed
+//!   [`float::rasterize_at`], `area::float`'s walk with its canvas origin at `(M, M)`;
+//!   `ftgrays` by [`ftgrays::rasterize_at`], its 26.6 rounding and 24.8 envelope at the placed
 //!   coordinates, the rest by the model. Beyond the envelope `ftgrays` refuses, with its
 //!   own message.
 
@@ -56,7 +56,7 @@ use num_traits::{Signed, ToPrimitive, Zero};
 
 use crate::area::{cells, exact, float, ftgrays, planned, supersample, AreaImage, AreaShape, Quantization, Semantics};
 use crate::convention::{Preset, Target};
-use crate::geom::{FillRule, Point, Polygon};
+use crate::geom::{Point, Polygon};
 use crate::model::{render_samples, Model, Primitives};
 use crate::pattern::SamplePattern;
 use crate::strategy::{triangle, TriangleScale};
@@ -343,217 +343,6 @@ pub fn area_metrics(reference: &AreaImage, output: &AreaOutput, own: Option<Quan
     out
 }
 
-/// `area::float`'s accumulation with the canvas origin at `(origin, origin)`: the shapes
-/// (placed coordinates, each rounded to the nearest f32) walked in f32 over the window
-/// `[origin, origin + width) x [origin, origin + height)`, row by row, each row's piece cut
-/// at the columns, every area and cover rounded to f32 as it is added, each row summed
-/// left to right in f32, folded and added over the shapes as the model does. The row and
-/// column boundaries are the integers `origin + i` rounded to f32, exact below 2^24; past
-/// it they collapse as f32 collapses them (a row or column whose boundaries round to one
-/// value gets nothing). Equal to [`float::rasterize`] at origin 0, and to the model on a
-/// canvas that reaches the window, restricted to it, where no shape reaches left of the
-/// window (the model folds the cover of cells left of its canvas into its first column in
-/// walk order, which changes the f32 sums) (tested at 2^10).
-pub fn rasterize_f32_at(shapes: &[AreaShape], origin: i64, width: u32, height: u32) -> Vec<f32> {
-    let (w, h) = (width as usize, height as usize);
-    let mut out = vec![0f32; w * h];
-    for shape in shapes {
-        let path = path_f32(shape);
-        let ys = path.iter().flat_map(|(a, b)| [a[1], b[1]]).filter(|v| v.is_finite());
-        let (lo, hi) = ys.fold((f32::INFINITY, f32::NEG_INFINITY), |(l, u), v| (l.min(v), u.max(v)));
-        if lo > hi {
-            continue;
-        }
-        let first = f32_floor(lo).max(origin);
-        let last = f32_ceil(hi).min(origin + i64::from(height));
-        if first >= last {
-            continue;
-        }
-        let mut buffer = FarBuffer {
-            origin,
-            first,
-            width: w,
-            rows: usize::try_from(last - first).unwrap_or(0),
-            cells: vec![[0.0; 2]; usize::try_from(last - first).unwrap_or(0) * w],
-        };
-        for (a, b) in path {
-            buffer.walk(a, b, i64::from(height));
-        }
-        let row0 = usize::try_from(first - origin).unwrap_or(0);
-        for r in 0..buffer.rows {
-            let mut carry = 0f32;
-            for x in 0..w {
-                let [cover, area] = buffer.cells[r * w + x];
-                let acc = (carry + area).abs();
-                carry += cover;
-                out[(row0 + r) * w + x] += match shape.fill_rule {
-                    FillRule::NonZero => acc.min(1.0),
-                    FillRule::EvenOdd => {
-                        let m = acc % 2.0;
-                        if m > 1.0 {
-                            2.0 - m
-                        } else {
-                            m
-                        }
-                    }
-                };
-            }
-        }
-    }
-    out
-}
-
-/// A point in f32.
-type P = [f32; 2];
-
-/// `shape`'s path in f32, as `area::float` reads it.
-fn path_f32(shape: &AreaShape) -> Vec<(P, P)> {
-    let f = |v: &BigRational| v.to_f32().unwrap_or(f32::NAN);
-    let mut out = Vec::new();
-    for contour in shape.contours() {
-        let n = contour.len();
-        for i in 0..n {
-            let (a, b) = (&contour[i], &contour[(i + 1) % n]);
-            out.push(([f(&a.x), f(&a.y)], [f(&b.x), f(&b.y)]));
-        }
-    }
-    out
-}
-
-/// `v.floor()` as an i64 (f32 integers are exact; saturating beyond i64).
-#[allow(clippy::cast_possible_truncation)]
-fn f32_floor(v: f32) -> i64 {
-    v.floor() as i64
-}
-
-/// `v.ceil()` as an i64.
-#[allow(clippy::cast_possible_truncation)]
-fn f32_ceil(v: f32) -> i64 {
-    v.ceil() as i64
-}
-
-/// The integer `v` rounded to the nearest f32, ties to even.
-#[allow(clippy::cast_precision_loss)]
-fn to_f32(v: i64) -> f32 {
-    v as f32
-}
-
-/// One shape's f32 cells over the rows `first..first + rows` of the window at `origin`.
-struct FarBuffer {
-    origin: i64,
-    first: i64,
-    width: usize,
-    rows: usize,
-    cells: Vec<[f32; 2]>,
-}
-
-impl FarBuffer {
-    /// `area::float`'s `add`: a piece in plane column `column` (its f32 value `cf`) and
-    /// plane row `row`; columns left of the window give their cover to its first column.
-    fn add(&mut self, column: i64, cf: f32, row: i64, dy: f32, xm: f32) {
-        let Some(r) = usize::try_from(row - self.first).ok().filter(|&r| r < self.rows) else {
-            return;
-        };
-        let first = r * self.width;
-        if column < self.origin {
-            self.cells[first][1] += dy; // all of the first column lies right of it
-            self.cells[first][0] += dy;
-            return;
-        }
-        let Some(c) = usize::try_from(column - self.origin).ok().filter(|&c| c < self.width) else {
-            return;
-        };
-        self.cells[first + c][1] += dy * (1.0 - (xm - cf));
-        self.cells[first + c][0] += dy;
-    }
-
-    /// `area::float`'s `walk` of the edge `a -> b` (plane coordinates in f32).
-    fn walk(&mut self, a: P, b: P, height: i64) {
-        if a[1] == b[1] || !(a[0].is_finite() && a[1].is_finite() && b[0].is_finite() && b[1].is_finite()) {
-            return;
-        }
-        let dxdy = (b[0] - a[0]) / (b[1] - a[1]);
-        let (top, bottom) = (a[1].min(b[1]), a[1].max(b[1]));
-        let sign = if b[1] > a[1] { 1.0 } else { -1.0 };
-        let first = f32_floor(top).max(self.origin);
-        let last = f32_ceil(bottom).min(self.origin + height);
-        let right = self.origin + i64::try_from(self.width).unwrap_or(i64::MAX);
-        for row in first..last {
-            let y0 = top.max(to_f32(row));
-            let y1 = bottom.min(to_f32(row + 1));
-            if y1 <= y0 {
-                continue; // the row's f32 boundaries collapsed: it has no height
-            }
-            let (x0, x1) = (a[0] + (y0 - a[1]) * dxdy, a[0] + (y1 - a[1]) * dxdy);
-            let dy = (y1 - y0) * sign;
-            let (lo, hi) = (x0.min(x1), x0.max(x1));
-            let (c0, c1) = (lo.floor(), hi.ceil().max(lo.floor() + 1.0));
-            if c1 - c0 <= 1.0 {
-                self.add(f32_floor(c0), c0, row, dy, (x0 + x1) * 0.5);
-            } else {
-                for c in f32_floor(c0)..f32_ceil(c1).min(right) {
-                    let (cf, cn) = (to_f32(c), to_f32(c + 1));
-                    if cf >= c1 {
-                        break;
-                    }
-                    let (from, to) = (lo.max(cf), hi.min(cn));
-                    let share = (to - from) / (hi - lo);
-                    self.add(c, cf, row, dy * share, (from + to) * 0.5);
-                }
-            }
-        }
-    }
-}
-
-/// `area::ftgrays` on the window at `(origin, origin)` of the placed shapes: each placed
-/// coordinate `x + origin` rounded to 26.6 as the model rounds it (nearest 1/64, ties away
-/// from zero) and checked against its 24.8 envelope (`|v| < 2^23` px) there; the model
-/// then runs on the window's canvas with the rounded coordinates moved back by
-/// `-origin`, a whole number of cells: its walk uses only cell indices (moved by whole
-/// numbers), cell-local offsets and differences (unchanged), so its levels are those of
-/// the placed walk. y needs no moving: the model's frame is flipped about the canvas's
-/// bottom (`y' = H - y`), and on a canvas reaching the window, `H = origin + height`, so
-/// `y'` is the window's own. Equal to the model on such a canvas, restricted to the
-/// window (tested at 2^10).
-///
-/// # Errors
-/// A placed coordinate outside the 24.8 envelope, named with its shape (the model's own
-/// message).
-pub fn ftgrays_at(shapes: &[AreaShape], origin: i64, width: u32, height: u32) -> Result<Vec<u8>, String> {
-    let m = BigRational::from_integer(origin.into());
-    let sixty_four = BigRational::from_integer(64.into());
-    let limit = BigInt::from(1i64 << 31);
-    let mut local = Vec::with_capacity(shapes.len());
-    for (k, shape) in shapes.iter().enumerate() {
-        let mut bad = None;
-        let mut mv = |c: &[Point]| -> Vec<Point> {
-            c.iter()
-                .map(|p| {
-                    let placed = &p.x + &m;
-                    // round(): to the nearest, ties away from zero, as the model's to_24_8.
-                    let units = (&placed * &sixty_four).round().to_integer();
-                    if (&units * BigInt::from(4)).abs() >= limit {
-                        bad.get_or_insert_with(|| (placed.clone(), &p.y + &m));
-                    }
-                    Point::new(BigRational::new(units, 64.into()) - &m, p.y.clone())
-                })
-                .collect()
-        };
-        let moved = Polygon {
-            outline: mv(&shape.outline),
-            holes: shape.holes.iter().map(|h| mv(h)).collect(),
-            fill_rule: shape.fill_rule,
-        };
-        if let Some((x, y)) = bad {
-            return Err(format!(
-                "shape {k}: ({x}, {y}) is outside FreeType's 24.8 envelope (|v| < 2^23 px)"
-            ));
-        }
-        local.push(moved);
-    }
-    ftgrays::rasterize(&local, width, height)
-}
-
 /// One area workload.
 struct Workload {
     name: String,
@@ -768,13 +557,13 @@ fn measure(w: &Workload, config: &Config, sizes: &Sizes) -> WorkloadReport {
             let outcome = match (at, m) {
                 (0, _) => at_origin.clone(),
                 (_, AreaModel::Float) => {
-                    let out = AreaOutput::F32(rasterize_f32_at(&placed, at, w.width, w.height));
+                    let out = AreaOutput::F32(float::rasterize_at(&placed, at, w.width, w.height, SEMANTICS));
                     Outcome::Measured {
                         placement: Placement::AtMagnitude,
                         metrics: area_metrics(&reference, &out, None),
                     }
                 }
-                (_, AreaModel::FtGrays) => match ftgrays_at(&w.shapes, at, w.width, w.height) {
+                (_, AreaModel::FtGrays) => match ftgrays::rasterize_at(&w.shapes, at, w.width, w.height) {
                     Ok(levels) => Outcome::Measured {
                         placement: Placement::AtMagnitude,
                         metrics: area_metrics(&reference, &AreaOutput::Levels(levels), own(*m)),
@@ -820,7 +609,7 @@ mod tests {
     fn far_f32_equals_the_model_where_a_canvas_reaches() {
         let (shapes, w, h) = glyphs(9);
         assert_eq!(
-            rasterize_f32_at(&shapes, 0, w, h),
+            float::rasterize_at(&shapes, 0, w, h, SEMANTICS),
             float::rasterize(&shapes, w, h, SEMANTICS)
         );
         let m = 1i64 << 10;
@@ -831,18 +620,18 @@ mod tests {
             .flat_map(|y| (0..w).map(move |x| (x, y)))
             .map(|(x, y)| big[((mu + y) * (mu + w) + mu + x) as usize])
             .collect();
-        let far = rasterize_f32_at(&placed, m, w, h);
+        let far = float::rasterize_at(&placed, m, w, h, SEMANTICS);
         assert_eq!(far, window);
         // And f32 rounds there: the far answer is not the origin's.
         assert_ne!(far, float::rasterize(&shapes, w, h, SEMANTICS));
     }
 
-    /// `ftgrays_at` is the model on a canvas that reaches the window, restricted to it.
+    /// `ftgrays::rasterize_at` is the model on a canvas that reaches the window, restricted to it.
     #[test]
     fn ftgrays_at_equals_the_model_where_a_canvas_reaches() {
         let (shapes, w, h) = glyphs(9);
         assert_eq!(
-            ftgrays_at(&shapes, 0, w, h).unwrap(),
+            ftgrays::rasterize_at(&shapes, 0, w, h).unwrap(),
             ftgrays::rasterize(&shapes, w, h).unwrap()
         );
         let m = 1i64 << 10;
@@ -853,7 +642,7 @@ mod tests {
             .flat_map(|y| (0..w).map(move |x| (x, y)))
             .map(|(x, y)| big[((mu + y) * (mu + w) + mu + x) as usize])
             .collect();
-        assert_eq!(ftgrays_at(&shapes, m, w, h).unwrap(), window);
+        assert_eq!(ftgrays::rasterize_at(&shapes, m, w, h).unwrap(), window);
     }
 
     /// The glyph scene scales exactly: 7 polygons, 102x32 at 24 px/em, 850x267 at 200.
