@@ -12,12 +12,12 @@ use rasterproof::area::{Quantization, Semantics};
 use rasterproof::convention::Preset;
 use rasterproof::oracle::hunt::{
     fit_convention, hunt_grey, hunt_interruptible, rust_test, FitFirst, GreyHuntConfig, GreyVerdict, HuntConfig,
-    SceneFamily, AREA_FAMILIES, FIT_PROBES,
+    HuntReport, SceneFamily, AREA_FAMILIES, FIT_PROBES,
 };
-use rasterproof::oracle::renderer::program::{Program, Renderer};
-use rasterproof::oracle::renderer::stay_alive::StayAlive;
+use rasterproof::oracle::renderer::{Program, Renderer, StayAlive};
 use rasterproof::oracle::GreyImage;
 use rasterproof::oracle::{Background, Format};
+use rasterproof::pattern::SamplePattern;
 
 use super::run_args::RunArgs;
 use super::{ConventionArgs, Outputs};
@@ -113,6 +113,52 @@ pub struct Options {
 /// prints the summary; exit 1 when something was found.
 pub fn run(o: &Options) -> Result<ExitCode, String> {
     o.run.outputs.check_writable()?;
+    let (format, grey, samples) = mode(o)?;
+    let families = families(o, grey.is_some(), samples.is_some())?;
+    let (cmd, program) = renderer(o, format)?;
+    stop_cleanly_when_interrupted(program.as_ref());
+    let mut config = hunt_config(o, families, samples)?;
+    if let Some((semantics, quantization)) = grey {
+        let config = GreyHuntConfig {
+            hunt: config,
+            semantics,
+            quantization,
+            grid: o.grid,
+        };
+        return run_grey(o, &config, program.as_ref(), cmd);
+    }
+    config.model = match super::parse_model(&o.model)? {
+        m if m.plans() => m,
+        m => {
+            return Err(format!(
+                "--model: {m} is not an oracle (expected exact-snapped or exact)"
+            ))
+        }
+    };
+    let render_with = program.as_ref();
+    if o.fit_first {
+        if let Some(exit) = fit_first(render_with, &mut config)? {
+            return Ok(exit);
+        }
+    }
+    let bar = o.run.progress_bar(config.shard.case_count(config.cases), "scenes");
+    let report = hunt_interruptible(render_with, &config, o.run.jobs, &|| bar.inc(1), &INTERRUPTED)?;
+    bar.finish_and_clear();
+    write_outputs(o, &report, cmd, &config)?;
+    super::write_stdout(|out| out.write_all(report.to_text(o.out.as_deref()).as_bytes()))?;
+    Ok(if report.interrupted {
+        ExitCode::from(130)
+    } else if report.findings.is_empty() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
+
+/// The kind of hunt the options ask for, checked: how their output is read, the grey
+/// options of a grey hunt, the pattern of a multisample hunt.
+#[allow(clippy::type_complexity)]
+fn mode(o: &Options) -> Result<(Format, Option<(Semantics, Quantization)>, Option<SamplePattern>), String> {
     let format = Format::from_name(&o.theirs_as).ok_or_else(|| {
         format!(
             "--as: unknown format {:?} (expected ids, mask, json or grey)",
@@ -154,9 +200,15 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
                 .to_string(),
         );
     }
-    let families = if o.families.is_empty() && grey.is_some() {
+    Ok((format, grey, samples))
+}
+
+/// `--family`, or the default families of the kind of hunt (area shapes for a grey hunt,
+/// triangles for a multisample one, every family otherwise).
+fn families(o: &Options, grey: bool, samples: bool) -> Result<Vec<SceneFamily>, String> {
+    Ok(if o.families.is_empty() && grey {
         AREA_FAMILIES.to_vec()
-    } else if o.families.is_empty() && samples.is_some() {
+    } else if o.families.is_empty() && samples {
         SceneFamily::TRIANGLES_ONLY.to_vec()
     } else if o.families.is_empty() {
         SceneFamily::ALL.to_vec()
@@ -174,9 +226,13 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             families.extend(expanded);
         }
         families
-    };
+    })
+}
+
+/// The renderer (`--serve` or `--cmd`) and its command line.
+fn renderer(o: &Options, format: Format) -> Result<(&str, Box<dyn Renderer>), String> {
     let timeout = Duration::from_secs_f64(o.timeout);
-    let (cmd, program): (&str, Box<dyn Renderer>) = match (&o.cmd, &o.serve) {
+    Ok(match (&o.cmd, &o.serve) {
         (_, Some(serve)) => (
             serve,
             Box::new(StayAlive::new(serve, format, Background::default(), timeout)?),
@@ -186,7 +242,11 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             Box::new(Program::new(cmd, format, Background::default(), timeout)?),
         ),
         (None, None) => return Err("give the renderer with --cmd or --serve".to_string()),
-    };
+    })
+}
+
+/// Sets what Ctrl-C (or SIGTERM) does during the hunt (see inside).
+fn stop_cleanly_when_interrupted(program: &dyn Renderer) {
     // Interrupted (Ctrl-C, SIGTERM): the first time, no case starts any more, the running
     // ones finish and the report of the cases done is written (findings not shrunk). The
     // second time at once: no stray temporary files and no renderer left running. The
@@ -208,6 +268,11 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         eprintln!("hunt: interrupted twice; nothing written");
         std::process::exit(130);
     });
+}
+
+/// The hunt's configuration from the options: cases, families, canvas, shard, budget,
+/// pattern, preset and convention overrides.
+fn hunt_config(o: &Options, families: Vec<SceneFamily>, samples: Option<SamplePattern>) -> Result<HuntConfig, String> {
     let mut config = HuntConfig {
         cases: o.cases,
         seed: o.seed,
@@ -228,57 +293,45 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             .ok_or_else(|| format!("--preset: unknown preset {p:?} (expected one of d3d11, vulkan, gl, cts)"))?;
     }
     o.convention.apply(&mut config.overrides)?;
-    if let Some((semantics, quantization)) = grey {
-        let config = GreyHuntConfig {
-            hunt: config,
-            semantics,
-            quantization,
-            grid: o.grid,
-        };
-        return run_grey(o, &config, program.as_ref(), cmd);
-    }
-    config.model = match super::parse_model(&o.model)? {
-        m if m.plans() => m,
-        m => {
-            return Err(format!(
-                "--model: {m} is not an oracle (expected exact-snapped or exact)"
-            ))
+    Ok(config)
+}
+
+/// `--fit-first`: the convention the renderer follows, stated in `config`; or, when no
+/// scene file can state it or none explains its images, the exit after saying so.
+fn fit_first(render_with: &dyn Renderer, config: &mut HuntConfig) -> Result<Option<ExitCode>, String> {
+    match fit_convention(render_with, config)? {
+        FitFirst::Statable { fit, overrides, model } => {
+            eprintln!("fit: hunting under {fit} (oracle {})", model.name());
+            config.overrides = overrides;
+            config.model = model;
         }
-    };
-    let render_with = program.as_ref();
-    if o.fit_first {
-        match fit_convention(render_with, &config)? {
-            FitFirst::Statable { fit, overrides, model } => {
-                eprintln!("fit: hunting under {fit} (oracle {})", model.name());
-                config.overrides = overrides;
-                config.model = model;
-            }
-            // What the renderer follows is the finding: exit 1, as `compare --fit` does.
-            FitFirst::Unstatable(fits) => {
-                let names: Vec<String> = fits.iter().map(ToString::to_string).collect();
-                super::print_stdout(&format!(
-                    "fit: the renderer's images of the {FIT_PROBES} probe scenes are explained exactly by {} \
+        // What the renderer follows is the finding: exit 1, as `compare --fit` does.
+        FitFirst::Unstatable(fits) => {
+            let names: Vec<String> = fits.iter().map(ToString::to_string).collect();
+            super::print_stdout(&format!(
+                "fit: the renderer's images of the {FIT_PROBES} probe scenes are explained exactly by {} \
                      convention(s), none of which a scene file can state (scene files state the tie rules top-left \
                      and bottom-left, and a grid of 1 to 16 subpixel bits or none), so hunt cannot hunt under it; \
                      nothing else was run or written. The convention(s):\n  {}",
-                    fits.len(),
-                    names.join("\n  ")
-                ))?;
-                return Ok(ExitCode::from(1));
-            }
-            FitFirst::NoneExplains(last) => {
-                super::print_stdout(&format!(
-                    "fit: no convention explains the renderer's images of the {FIT_PROBES} probe scenes; nothing \
+                fits.len(),
+                names.join("\n  ")
+            ))?;
+            return Ok(Some(ExitCode::from(1)));
+        }
+        FitFirst::NoneExplains(last) => {
+            super::print_stdout(&format!(
+                "fit: no convention explains the renderer's images of the {FIT_PROBES} probe scenes; nothing \
                      else was run or written. The last probe's fit:\n{last}"
-                ))?;
-                return Ok(ExitCode::from(1));
-            }
+            ))?;
+            return Ok(Some(ExitCode::from(1)));
         }
     }
-    let bar = o.run.progress_bar(config.shard.case_count(config.cases), "scenes");
-    let report = hunt_interruptible(render_with, &config, o.run.jobs, &|| bar.inc(1), &INTERRUPTED)?;
-    bar.finish_and_clear();
+    Ok(None)
+}
 
+/// `--out` (each finding's scene, text and Rust test, and the HTML page), `--report` and
+/// `--junit`: all or none.
+fn write_outputs(o: &Options, report: &HuntReport, cmd: &str, config: &HuntConfig) -> Result<(), String> {
     let mut outputs = Outputs::new();
     if let Some(dir) = &o.out {
         std::fs::create_dir_all(dir).map_err(|e| format!("--out {}: cannot create: {e}", dir.display()))?;
@@ -297,15 +350,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     if let Some(path) = &o.run.outputs.junit {
         outputs.stage_text(path, &report.junit(cmd))?;
     }
-    outputs.commit()?;
-    super::write_stdout(|out| out.write_all(report.to_text(o.out.as_deref()).as_bytes()))?;
-    Ok(if report.interrupted {
-        ExitCode::from(130)
-    } else if report.findings.is_empty() {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    })
+    outputs.commit()
 }
 
 /// `--semantics` and `--quantization` of a grey hunt.
