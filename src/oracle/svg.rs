@@ -42,211 +42,284 @@ pub fn neighbourhood_svg(
     let prepared = prepare(primitives, target, model)?;
     let coverage = prepared.coverage(target);
     let shapes = prepared.shapes().unwrap_or_default();
-    let (x0, y0) = (i64::from(x) - REACH, i64::from(y) - REACH);
-    let side = (2 * REACH + 1) as f64 * UNIT;
-    // Picture coordinates of an exact point.
-    let at = |p: &Point| -> (f64, f64) {
-        let f = |v: &num_rational::BigRational| v.to_f64().unwrap_or(0.0);
-        ((f(&p.x) - x0 as f64) * UNIT, TOP + (f(&p.y) - y0 as f64) * UNIT)
-    };
-    let sample = sample_exact(x, y, target);
     let owners = coverage.owners(x, y).to_vec();
-    let mut svg = String::new();
-    let _ = writeln!(
-        svg,
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" font-family=\"sans-serif\" font-size=\"13\">",
-        w = side,
-        h = side + TOP
-    );
-    let _ = writeln!(
-        svg,
-        "<defs><clipPath id=\"window\"><rect x=\"0\" y=\"{TOP}\" width=\"{side}\" height=\"{side}\"/></clipPath></defs>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>"
-    );
-    let covered = if owners.is_empty() {
-        "covered by nothing".to_string()
-    } else {
-        let ids: Vec<String> = owners.iter().map(u32::to_string).collect();
-        format!("covered by {}", ids.join(", "))
-    };
-    let _ = writeln!(
-        svg,
-        "<text x=\"8\" y=\"20\" font-weight=\"bold\">pixel ({x}, {y}), sample ({}, {}): {covered} ({})</text>",
-        sample.x,
-        sample.y,
-        model.name()
-    );
-    let _ = writeln!(
-        svg,
-        "<text x=\"8\" y=\"40\">tie rule {}: solid edges own their samples, dashed ones do not</text>",
-        target.convention.tie_rule.name()
-    );
-    // The pixels: off-canvas ones grey, the chosen one tinted, the grid.
-    let grid = ExactGrid::of(target);
-    let mut body = String::new();
-    let mut labels: Vec<(f64, f64)> = Vec::new();
-    // A label's place, moved down until it clears those already placed.
-    let mut place = |(lx, mut ly): (f64, f64)| {
-        while labels
+    let mut view = View::new(target, x, y);
+    let svg = view.header(&owners, model);
+    view.pixels();
+    for (id, shape) in shapes.iter().enumerate() {
+        let colour = hue(id);
+        match shape {
+            Shape::Triangle(t) => view.triangle(id, t, &colour),
+            Shape::Polygon(poly) => view.polygon(id, poly, &colour),
+            Shape::Diamond { from, to } => view.diamond(from, to, &colour),
+            Shape::Bresenham { from, to, .. } => view.bresenham(from, to, &colour),
+        }
+    }
+    view.samples(&owners);
+    Ok(Some(format!(
+        "{svg}<g clip-path=\"url(#window)\">\n{}</g>\n</svg>\n",
+        view.body
+    )))
+}
+
+/// The 5x5 pixels around pixel `(x, y)` being drawn: where they sit, the sample, the
+/// labels placed so far, and the picture's body.
+struct View<'a> {
+    target: &'a Target,
+    x: u32,
+    y: u32,
+    /// The top-left pixel of the window.
+    x0: i64,
+    y0: i64,
+    sample: Point,
+    grid: ExactGrid,
+    labels: Vec<(f64, f64)>,
+    body: String,
+}
+
+impl<'a> View<'a> {
+    fn new(target: &'a Target, x: u32, y: u32) -> View<'a> {
+        View {
+            target,
+            x,
+            y,
+            x0: i64::from(x) - REACH,
+            y0: i64::from(y) - REACH,
+            sample: sample_exact(x, y, target),
+            grid: ExactGrid::of(target),
+            labels: Vec::new(),
+            body: String::new(),
+        }
+    }
+
+    /// Picture coordinates of an exact point.
+    fn at(&self, p: &Point) -> (f64, f64) {
+        let f = |v: &num_rational::BigRational| v.to_f64().unwrap_or(0.0);
+        (
+            (f(&p.x) - self.x0 as f64) * UNIT,
+            TOP + (f(&p.y) - self.y0 as f64) * UNIT,
+        )
+    }
+
+    /// A label's place, moved down until it clears those already placed.
+    fn place(&mut self, (lx, mut ly): (f64, f64)) -> (f64, f64) {
+        while self
+            .labels
             .iter()
             .any(|&(px, py)| (px - lx).abs() < 150.0 && (py - ly).abs() < 15.0)
         {
             ly += 16.0;
         }
-        labels.push((lx, ly));
+        self.labels.push((lx, ly));
         (lx, ly)
-    };
-    for j in 0..=2 * REACH {
-        for i in 0..=2 * REACH {
-            let (px, py) = (x0 + i, y0 + j);
-            let on_canvas = px >= 0 && py >= 0 && px < i64::from(target.width) && py < i64::from(target.height);
-            let fill = if (px, py) == (i64::from(x), i64::from(y)) {
-                "#fff4c2"
-            } else if on_canvas {
-                "#ffffff"
+    }
+
+    /// The `<svg>` element's opening, the window's clip path and the caption.
+    fn header(&self, owners: &[u32], model: Model) -> String {
+        let side = (2 * REACH + 1) as f64 * UNIT;
+        let mut svg = String::new();
+        let _ = writeln!(
+            svg,
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" font-family=\"sans-serif\" font-size=\"13\">",
+            w = side,
+            h = side + TOP
+        );
+        let _ = writeln!(
+            svg,
+            "<defs><clipPath id=\"window\"><rect x=\"0\" y=\"{TOP}\" width=\"{side}\" height=\"{side}\"/></clipPath></defs>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>"
+        );
+        let covered = if owners.is_empty() {
+            "covered by nothing".to_string()
+        } else {
+            let ids: Vec<String> = owners.iter().map(u32::to_string).collect();
+            format!("covered by {}", ids.join(", "))
+        };
+        let _ = writeln!(
+            svg,
+            "<text x=\"8\" y=\"20\" font-weight=\"bold\">pixel ({}, {}), sample ({}, {}): {covered} ({})</text>",
+            self.x,
+            self.y,
+            self.sample.x,
+            self.sample.y,
+            model.name()
+        );
+        let _ = writeln!(
+            svg,
+            "<text x=\"8\" y=\"40\">tie rule {}: solid edges own their samples, dashed ones do not</text>",
+            self.target.convention.tie_rule.name()
+        );
+        svg
+    }
+
+    /// The pixels: off-canvas ones grey, the chosen one tinted, the grid.
+    fn pixels(&mut self) {
+        for j in 0..=2 * REACH {
+            for i in 0..=2 * REACH {
+                let (px, py) = (self.x0 + i, self.y0 + j);
+                let on_canvas =
+                    px >= 0 && py >= 0 && px < i64::from(self.target.width) && py < i64::from(self.target.height);
+                let fill = if (px, py) == (i64::from(self.x), i64::from(self.y)) {
+                    "#fff4c2"
+                } else if on_canvas {
+                    "#ffffff"
+                } else {
+                    "#e4e4e4"
+                };
+                let _ = writeln!(
+                    self.body,
+                    "<rect x=\"{}\" y=\"{}\" width=\"{UNIT}\" height=\"{UNIT}\" fill=\"{fill}\" stroke=\"#c8c8c8\"/>",
+                    i as f64 * UNIT,
+                    TOP + j as f64 * UNIT
+                );
+            }
+        }
+    }
+
+    /// A triangle that reaches the sample's neighbourhood: its fill, each edge drawn 3
+    /// units inside it, solid where it owns the samples on it, with its edge value.
+    fn triangle(&mut self, id: usize, t: &crate::geom::Triangle, colour: &str) {
+        let Some(evidence) = triangle_at(t, &self.sample, self.target.convention.tie_rule.into()) else {
+            return;
+        };
+        let points: Vec<String> =
+            t.v.iter()
+                .map(|p| self.at(p))
+                .map(|(a, b)| format!("{a:.2},{b:.2}"))
+                .collect();
+        let _ = writeln!(
+            self.body,
+            "<polygon class=\"primitive\" points=\"{}\" fill=\"{colour}\" fill-opacity=\"0.18\" stroke=\"none\"/>",
+            points.join(" ")
+        );
+        for e in &evidence.edges {
+            let ((ax, ay), (bx, by)) = (self.at(&e.from), self.at(&e.to));
+            // Drawn 3 units inside the triangle (the side where E > 0, along (dy, -dx)),
+            // so two triangles sharing the edge show both flags.
+            let (dx, dy) = (bx - ax, by - ay);
+            let len = (dx * dx + dy * dy).sqrt().max(1e-9);
+            let (ox, oy) = (3.0 * dy / len, -3.0 * dx / len);
+            let ((ax, ay), (bx, by)) = ((ax + ox, ay + oy), (bx + ox, by + oy));
+            let (class, dash) = if e.inclusive {
+                ("edge inclusive", "")
             } else {
-                "#e4e4e4"
+                ("edge exclusive", " stroke-dasharray=\"10 7\"")
             };
             let _ = writeln!(
-                body,
-                "<rect x=\"{}\" y=\"{}\" width=\"{UNIT}\" height=\"{UNIT}\" fill=\"{fill}\" stroke=\"#c8c8c8\"/>",
-                i as f64 * UNIT,
-                TOP + j as f64 * UNIT
+                self.body,
+                "<line class=\"{class}\" data-primitive=\"{id}\" data-edge=\"{}\" x1=\"{ax:.2}\" y1=\"{ay:.2}\" x2=\"{bx:.2}\" y2=\"{by:.2}\" stroke=\"{colour}\" stroke-width=\"3\"{dash}/>",
+                e.index
+            );
+            let label = label_point(&e.from, &e.to, &self.sample, &|p: &Point| self.at(p));
+            let (lx, ly) = self.place(label);
+            let _ = writeln!(
+                self.body,
+                "<text x=\"{lx:.1}\" y=\"{ly:.1}\" fill=\"{colour}\">#{id} e{} {} E={}</text>",
+                e.index,
+                e.side.name(),
+                e.value
             );
         }
     }
-    for (id, shape) in shapes.iter().enumerate() {
-        let colour = hue(id);
-        match shape {
-            Shape::Triangle(t) => {
-                let Some(evidence) = triangle_at(t, &sample, target.convention.tie_rule.into()) else {
-                    continue;
-                };
-                let points: Vec<String> = t.v.iter().map(&at).map(|(a, b)| format!("{a:.2},{b:.2}")).collect();
-                let _ = writeln!(
-                    body,
-                    "<polygon class=\"primitive\" points=\"{}\" fill=\"{colour}\" fill-opacity=\"0.18\" stroke=\"none\"/>",
-                    points.join(" ")
-                );
-                for e in &evidence.edges {
-                    let ((ax, ay), (bx, by)) = (at(&e.from), at(&e.to));
-                    // Drawn 3 units inside the triangle (the side where E > 0, along
-                    // (dy, -dx)), so two triangles sharing the edge show both flags.
-                    let (dx, dy) = (bx - ax, by - ay);
-                    let len = (dx * dx + dy * dy).sqrt().max(1e-9);
-                    let (ox, oy) = (3.0 * dy / len, -3.0 * dx / len);
-                    let ((ax, ay), (bx, by)) = ((ax + ox, ay + oy), (bx + ox, by + oy));
-                    let (class, dash) = if e.inclusive {
-                        ("edge inclusive", "")
-                    } else {
-                        ("edge exclusive", " stroke-dasharray=\"10 7\"")
-                    };
+
+    /// A polygon: its path under its fill rule, and its winding number at the sample
+    /// where the sample is inside or on an edge.
+    fn polygon(&mut self, id: usize, poly: &crate::geom::Polygon, colour: &str) {
+        let mut d = String::new();
+        for contour in poly.contours() {
+            for (k, v) in contour.iter().enumerate() {
+                let (a, b) = self.at(v);
+                let _ = write!(d, "{}{a:.2},{b:.2} ", if k == 0 { "M" } else { "L" });
+            }
+            d.push_str("Z ");
+        }
+        let rule = match poly.fill_rule {
+            FillRule::NonZero => "nonzero",
+            FillRule::EvenOdd => "evenodd",
+        };
+        let _ = writeln!(
+            self.body,
+            "<path class=\"primitive\" d=\"{}\" fill=\"{colour}\" fill-opacity=\"0.18\" fill-rule=\"{rule}\" stroke=\"{colour}\" stroke-width=\"3\"/>",
+            d.trim_end()
+        );
+        let w = polygon_at(poly, &self.sample, self.target.convention.tie_rule);
+        if w.windings.iter().all(|&k| k == 0) && !w.on_boundary {
+            return;
+        }
+        let (sx, sy) = self.at(&self.sample);
+        let (sx, sy) = self.place((sx + 10.0, sy - 10.0));
+        let _ = writeln!(
+            self.body,
+            "<text class=\"winding\" x=\"{:.1}\" y=\"{:.1}\" fill=\"{colour}\">#{id} winding {}{}</text>",
+            sx,
+            sy,
+            w.windings[0],
+            if w.on_boundary { ", on an edge" } else { "" }
+        );
+    }
+
+    /// A diamond-exit line, with the diamond `|dx| + |dy| < 1/2` around the pixel's centre.
+    fn diamond(&mut self, from: &Point, to: &Point, colour: &str) {
+        let ((ax, ay), (bx, by)) = (self.at(from), self.at(to));
+        let _ = writeln!(
+            self.body,
+            "<line class=\"line\" x1=\"{ax:.2}\" y1=\"{ay:.2}\" x2=\"{bx:.2}\" y2=\"{by:.2}\" stroke=\"{colour}\" stroke-width=\"3\"/>"
+        );
+        let c = self.at(&Point::new(
+            self.grid.coordinate(i64::from(self.x)),
+            self.grid.coordinate(i64::from(self.y)),
+        ));
+        let r = UNIT / 2.0;
+        let _ = writeln!(
+            self.body,
+            "<polygon class=\"diamond\" points=\"{:.1},{:.1} {:.1},{:.1} {:.1},{:.1} {:.1},{:.1}\" fill=\"none\" stroke=\"{colour}\" stroke-dasharray=\"4 4\"/>",
+            c.0,
+            c.1 - r,
+            c.0 + r,
+            c.1,
+            c.0,
+            c.1 + r,
+            c.0 - r,
+            c.1
+        );
+    }
+
+    /// A Bresenham line, between its endpoint pixels' centres.
+    fn bresenham(&mut self, from: &[i64; 2], to: &[i64; 2], colour: &str) {
+        let centre = |p: &[i64; 2]| {
+            (
+                (p[0] - self.x0) as f64 * UNIT + UNIT / 2.0,
+                TOP + (p[1] - self.y0) as f64 * UNIT + UNIT / 2.0,
+            )
+        };
+        let ((ax, ay), (bx, by)) = (centre(from), centre(to));
+        let _ = writeln!(
+            self.body,
+            "<line class=\"line\" x1=\"{ax:.2}\" y1=\"{ay:.2}\" x2=\"{bx:.2}\" y2=\"{by:.2}\" stroke=\"{colour}\" stroke-width=\"3\" stroke-dasharray=\"2 4\"/>"
+        );
+    }
+
+    /// Every pixel's sample; the chosen one ringed, filled when covered.
+    fn samples(&mut self, owners: &[u32]) {
+        for j in 0..=2 * REACH {
+            for i in 0..=2 * REACH {
+                let (px, py) = (self.x0 + i, self.y0 + j);
+                let p = Point::new(self.grid.coordinate(px), self.grid.coordinate(py));
+                let (cx, cy) = self.at(&p);
+                if (px, py) == (i64::from(self.x), i64::from(self.y)) {
+                    let fill = if owners.is_empty() { "#ffffff" } else { "#000000" };
                     let _ = writeln!(
-                        body,
-                        "<line class=\"{class}\" data-primitive=\"{id}\" data-edge=\"{}\" x1=\"{ax:.2}\" y1=\"{ay:.2}\" x2=\"{bx:.2}\" y2=\"{by:.2}\" stroke=\"{colour}\" stroke-width=\"3\"{dash}/>",
-                        e.index
+                        self.body,
+                        "<circle class=\"sample chosen\" cx=\"{cx:.2}\" cy=\"{cy:.2}\" r=\"6\" fill=\"{fill}\" stroke=\"#000000\" stroke-width=\"2\"/>\n<circle cx=\"{cx:.2}\" cy=\"{cy:.2}\" r=\"12\" fill=\"none\" stroke=\"#d00000\" stroke-width=\"2\"/>"
                     );
-                    let (lx, ly) = place(label_point(&e.from, &e.to, &sample, &at));
+                } else {
                     let _ = writeln!(
-                        body,
-                        "<text x=\"{lx:.1}\" y=\"{ly:.1}\" fill=\"{colour}\">#{id} e{} {} E={}</text>",
-                        e.index,
-                        e.side.name(),
-                        e.value
+                        self.body,
+                        "<circle class=\"sample\" cx=\"{cx:.2}\" cy=\"{cy:.2}\" r=\"3\" fill=\"#808080\"/>"
                     );
                 }
-            }
-            Shape::Polygon(poly) => {
-                let mut d = String::new();
-                for contour in poly.contours() {
-                    for (k, v) in contour.iter().enumerate() {
-                        let (a, b) = at(v);
-                        let _ = write!(d, "{}{a:.2},{b:.2} ", if k == 0 { "M" } else { "L" });
-                    }
-                    d.push_str("Z ");
-                }
-                let rule = match poly.fill_rule {
-                    FillRule::NonZero => "nonzero",
-                    FillRule::EvenOdd => "evenodd",
-                };
-                let _ = writeln!(
-                    body,
-                    "<path class=\"primitive\" d=\"{}\" fill=\"{colour}\" fill-opacity=\"0.18\" fill-rule=\"{rule}\" stroke=\"{colour}\" stroke-width=\"3\"/>",
-                    d.trim_end()
-                );
-                let w = polygon_at(poly, &sample, target.convention.tie_rule);
-                if w.windings.iter().all(|&k| k == 0) && !w.on_boundary {
-                    continue;
-                }
-                let (sx, sy) = at(&sample);
-                let (sx, sy) = place((sx + 10.0, sy - 10.0));
-                let _ = writeln!(
-                    body,
-                    "<text class=\"winding\" x=\"{:.1}\" y=\"{:.1}\" fill=\"{colour}\">#{id} winding {}{}</text>",
-                    sx,
-                    sy,
-                    w.windings[0],
-                    if w.on_boundary { ", on an edge" } else { "" }
-                );
-            }
-            Shape::Diamond { from, to } => {
-                let ((ax, ay), (bx, by)) = (at(from), at(to));
-                let _ = writeln!(
-                    body,
-                    "<line class=\"line\" x1=\"{ax:.2}\" y1=\"{ay:.2}\" x2=\"{bx:.2}\" y2=\"{by:.2}\" stroke=\"{colour}\" stroke-width=\"3\"/>"
-                );
-                // The diamond |dx| + |dy| < 1/2 around the pixel's centre.
-                let c = at(&Point::new(grid.coordinate(x), grid.coordinate(y)));
-                let r = UNIT / 2.0;
-                let _ = writeln!(
-                    body,
-                    "<polygon class=\"diamond\" points=\"{:.1},{:.1} {:.1},{:.1} {:.1},{:.1} {:.1},{:.1}\" fill=\"none\" stroke=\"{colour}\" stroke-dasharray=\"4 4\"/>",
-                    c.0,
-                    c.1 - r,
-                    c.0 + r,
-                    c.1,
-                    c.0,
-                    c.1 + r,
-                    c.0 - r,
-                    c.1
-                );
-            }
-            Shape::Bresenham { from, to, .. } => {
-                let centre = |p: &[i64; 2]| {
-                    (
-                        (p[0] - x0) as f64 * UNIT + UNIT / 2.0,
-                        TOP + (p[1] - y0) as f64 * UNIT + UNIT / 2.0,
-                    )
-                };
-                let ((ax, ay), (bx, by)) = (centre(from), centre(to));
-                let _ = writeln!(
-                    body,
-                    "<line class=\"line\" x1=\"{ax:.2}\" y1=\"{ay:.2}\" x2=\"{bx:.2}\" y2=\"{by:.2}\" stroke=\"{colour}\" stroke-width=\"3\" stroke-dasharray=\"2 4\"/>"
-                );
             }
         }
     }
-    // Every pixel's sample; the chosen one ringed, filled when covered.
-    for j in 0..=2 * REACH {
-        for i in 0..=2 * REACH {
-            let (px, py) = (x0 + i, y0 + j);
-            let p = Point::new(grid.coordinate(px), grid.coordinate(py));
-            let (cx, cy) = at(&p);
-            if (px, py) == (i64::from(x), i64::from(y)) {
-                let fill = if owners.is_empty() { "#ffffff" } else { "#000000" };
-                let _ = writeln!(
-                    body,
-                    "<circle class=\"sample chosen\" cx=\"{cx:.2}\" cy=\"{cy:.2}\" r=\"6\" fill=\"{fill}\" stroke=\"#000000\" stroke-width=\"2\"/>\n<circle cx=\"{cx:.2}\" cy=\"{cy:.2}\" r=\"12\" fill=\"none\" stroke=\"#d00000\" stroke-width=\"2\"/>"
-                );
-            } else {
-                let _ = writeln!(
-                    body,
-                    "<circle class=\"sample\" cx=\"{cx:.2}\" cy=\"{cy:.2}\" r=\"3\" fill=\"#808080\"/>"
-                );
-            }
-        }
-    }
-    let _ = writeln!(svg, "<g clip-path=\"url(#window)\">\n{body}</g>\n</svg>");
-    Ok(Some(svg))
 }
 
 /// Where an edge's label goes: the point of the edge nearest the sample (in the window
