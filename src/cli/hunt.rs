@@ -146,13 +146,18 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     bar.finish_and_clear();
     write_outputs(o, &report, cmd, &config)?;
     super::write_stdout(|out| out.write_all(report.to_text(o.out.as_deref()).as_bytes()))?;
-    Ok(if report.interrupted {
+    Ok(exit_code(report.interrupted, report.findings.is_empty()))
+}
+
+/// A hunt's exit: 130 when interrupted, 0 when it found nothing, 1 otherwise.
+fn exit_code(interrupted: bool, nothing_found: bool) -> ExitCode {
+    if interrupted {
         ExitCode::from(130)
-    } else if report.findings.is_empty() {
+    } else if nothing_found {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
-    })
+    }
 }
 
 /// The kind of hunt the options ask for, checked: how their output is read, the grey
@@ -398,13 +403,7 @@ fn run_grey(o: &Options, config: &GreyHuntConfig, renderer: &dyn Renderer, cmd: 
     }
     outputs.commit()?;
     super::print_stdout(text.trim_end())?;
-    Ok(if report.interrupted {
-        ExitCode::from(130)
-    } else if report.findings.is_empty() {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    })
+    Ok(exit_code(report.interrupted, report.findings.is_empty()))
 }
 
 /// Their grey levels as an 8- or 16-bit grey PNG image.

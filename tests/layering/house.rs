@@ -69,25 +69,31 @@ fn is_module(root: &Path, parts: &[String]) -> bool {
 fn modules_named(root: &Path, src: &str) -> BTreeSet<String> {
     let code = code_only(src);
     let c: Vec<char> = code.chars().collect();
-    let key: Vec<char> = "rasterproof::".chars().collect();
+    let key = "rasterproof::".len();
     let mut out = BTreeSet::new();
-    let mut i = 0;
-    while i + key.len() <= c.len() {
-        let starts_word = i == 0 || !(c[i - 1].is_alphanumeric() || c[i - 1] == '_');
-        if !(starts_word && c[i..i + key.len()] == key[..]) {
-            i += 1;
+    let mut resume = 0;
+    for i in word_starts(&c, "rasterproof::") {
+        if i < resume {
             continue;
         }
-        let (paths, next) = path_tree(&c, i + key.len(), Vec::new());
+        let (paths, next) = path_tree(&c, i + key, Vec::new());
         for path in paths {
             let deepest = (1..=path.len()).rev().find(|&k| is_module(root, &path[..k]));
             if let Some(k) = deepest {
                 out.insert(path[..k].join("::"));
             }
         }
-        i = next.max(i + key.len());
+        resume = next.max(i + key);
     }
     out
+}
+
+/// Where `key` starts in `c` at the start of a word (no identifier character before it).
+fn word_starts(c: &[char], key: &str) -> Vec<usize> {
+    let key: Vec<char> = key.chars().collect();
+    (0..(c.len() + 1).saturating_sub(key.len()))
+        .filter(|&i| (i == 0 || !(c[i - 1].is_alphanumeric() || c[i - 1] == '_')) && c[i..i + key.len()] == key[..])
+        .collect()
 }
 
 /// For each file of `src/cli/`, the library modules it names.
@@ -105,12 +111,7 @@ fn cli_coupling(root: &Path) -> BTreeMap<String, BTreeSet<String>> {
 
 #[test]
 fn the_cli_builds_no_json_and_starts_no_threads() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let mut all = Vec::new();
-    for f in source_files(root).into_iter().filter(|f| f.starts_with("src/cli/")) {
-        let src = fs::read_to_string(root.join(&f)).unwrap_or_else(|e| panic!("reading {f}: {e}"));
-        all.extend(cli_breaches(&f, &src));
-    }
+    let all = found_in_sources(|f| f.starts_with("src/cli/"), cli_breaches);
     assert!(all.is_empty(), "the CLI computes:\n{}", all.join("\n"));
 }
 
@@ -157,15 +158,8 @@ fn model_matches(file: &str, src: &str) -> Vec<String> {
             out.push(at("reads a model's arithmetic()"));
         }
         let c: Vec<char> = line.chars().collect();
-        let key: Vec<char> = "Model::".chars().collect();
-        let mut i = 0;
-        while i + key.len() <= c.len() {
-            let starts_word = i == 0 || !(c[i - 1].is_alphanumeric() || c[i - 1] == '_');
-            if !(starts_word && c[i..i + key.len()] == key[..]) {
-                i += 1;
-                continue;
-            }
-            let mut k = i + key.len();
+        for i in word_starts(&c, "Model::") {
+            let mut k = i + "Model::".len();
             let upper = c.get(k).is_some_and(|ch| ch.is_ascii_uppercase());
             while k < c.len() && (c[k].is_alphanumeric() || c[k] == '_') {
                 k += 1;
@@ -177,21 +171,26 @@ fn model_matches(file: &str, src: &str) -> Vec<String> {
             if upper && (in_pattern || in_matches) {
                 out.push(at("matches on a Model variant"));
             }
-            i = k;
         }
     }
     out.dedup();
     out
 }
 
-#[test]
-fn no_code_outside_model_matches_on_a_model() {
+/// What `check` finds in every source file that `read` takes.
+fn found_in_sources(read: impl Fn(&str) -> bool, check: fn(&str, &str) -> Vec<String>) -> Vec<String> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut all = Vec::new();
-    for f in source_files(root).into_iter().filter(|f| !f.starts_with("src/model/")) {
+    for f in source_files(root).into_iter().filter(|f| read(f)) {
         let src = fs::read_to_string(root.join(&f)).unwrap_or_else(|e| panic!("reading {f}: {e}"));
-        all.extend(model_matches(&f, &src));
+        all.extend(check(&f, &src));
     }
+    all
+}
+
+#[test]
+fn no_code_outside_model_matches_on_a_model() {
+    let all = found_in_sources(|f| !f.starts_with("src/model/"), model_matches);
     assert!(
         all.is_empty(),
         "ask the model (a method of Model in src/model/mod.rs) instead:\n{}",
@@ -224,15 +223,7 @@ fn threads_started(file: &str, src: &str) -> Vec<String> {
 
 #[test]
 fn threads_start_only_in_chunks_the_runner_and_the_renderer_processes() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let mut all = Vec::new();
-    for f in source_files(root) {
-        if THREAD_PLACES.iter().any(|p| f.starts_with(p)) {
-            continue;
-        }
-        let src = fs::read_to_string(root.join(&f)).unwrap_or_else(|e| panic!("reading {f}: {e}"));
-        all.extend(threads_started(&f, &src));
-    }
+    let all = found_in_sources(|f| !THREAD_PLACES.iter().any(|p| f.starts_with(p)), threads_started);
     assert!(
         all.is_empty(),
         "map on threads through crate::chunks instead:\n{}",
