@@ -148,7 +148,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let background = background(o, format)?;
     let grey = format == Format::Grey;
     if grey && (o.diff_out.is_some() || o.html.is_some()) {
-        return Err("--as grey prints its comparison (text or JSON); --diff-out, --html and --background are for the one-sample formats".to_string());
+        return Err(GREY_PRINTS.to_string());
     }
     if !grey && (o.semantics != "true" || o.quantization != "round") {
         return Err("--semantics and --quantization are for --as grey".to_string());
@@ -236,6 +236,10 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     })
 }
 
+/// Why `--as grey` refuses the picture and page options.
+const GREY_PRINTS: &str =
+    "--as grey prints its comparison (text or JSON); --diff-out, --html and --background are for the one-sample formats";
+
 /// `--as`, or the default: json for a `.json` file, ids otherwise.
 fn their_format(o: &Options) -> Result<Format, String> {
     match &o.theirs_as {
@@ -250,7 +254,7 @@ fn their_format(o: &Options) -> Result<Format, String> {
 /// `--background`, which only a mask has.
 fn background(o: &Options, format: Format) -> Result<Background, String> {
     if o.background.is_some() && format == Format::Grey {
-        return Err("--as grey prints its comparison (text or JSON); --diff-out, --html and --background are for the one-sample formats".to_string());
+        return Err(GREY_PRINTS.to_string());
     }
     let background = o.background.as_deref().map(parse_background).transpose()?;
     if background.is_some() && format != Format::Mask {

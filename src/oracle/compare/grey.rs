@@ -12,9 +12,9 @@ use serde_json::json;
 use super::{CompareError, SizeMismatch};
 use crate::area::{conflate, exact, planned, supersample, AreaShape, Quantization, Semantics};
 use crate::convention::Target;
-use crate::model::Model;
+use crate::model::{Model, Primitives};
 use crate::num::exact::{exact_text, nearest_f64};
-use crate::oracle::theirs::GreyImage;
+use crate::oracle::theirs::{GreyImage, Theirs};
 
 /// The supersampling counts tried (per axis).
 pub const SUPERSAMPLING: [u32; 4] = [2, 4, 8, 16];
@@ -242,6 +242,23 @@ pub struct GreyOptions {
     pub semantics: Semantics,
     /// How their levels quantize a value.
     pub quantization: Quantization,
+}
+
+/// [`compare_grey`] of a scene: their output (read as grey levels) against the area
+/// shapes of `primitives` under the exact `options.model`.
+///
+/// # Errors
+/// Their output is not grey levels, or as [`compare_grey`]; the scene has no area
+/// coverage under the model ([`CompareError::Area`]).
+pub fn compare_grey_scene(
+    primitives: &Primitives,
+    target: &Target,
+    theirs: &Theirs,
+    options: &GreyOptions,
+) -> Result<GreyReport, CompareError> {
+    let grey = super::grey_of(theirs)?;
+    let shapes = super::area_shapes(primitives, target, options.model)?;
+    compare_grey(&shapes, target, grey, options)
 }
 
 /// Compares `theirs` with the exact area coverage of `shapes` on `target`'s canvas under

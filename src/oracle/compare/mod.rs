@@ -341,28 +341,30 @@ pub fn judge(
     Ok(match question {
         Question::Binary(o) => Judgement::Binary(Box::new(compare(primitives, target, theirs, o)?)),
         Question::Samples(o) => Judgement::Samples(samples::compare_samples(primitives, target, theirs, o)?),
-        Question::Grey(o) => {
-            let shapes = area_shapes(primitives, target, o.model)?;
-            Judgement::Grey(grey::compare_grey(&shapes, target, grey_of(theirs)?, o)?)
-        }
+        Question::Grey(o) => Judgement::Grey(grey::compare_grey_scene(primitives, target, theirs, o)?),
         Question::Conservative(rule) => {
             Judgement::Conservative(conservative::compare_conservative(primitives, target, theirs, rule)?)
         }
         Question::Fit => Judgement::Fit(fit::fit(primitives, target, theirs)?),
         Question::FitSamples(o) => Judgement::FitSamples(fit::samples::fit_samples(primitives, target, theirs, o)?),
         Question::FitGrey(model) => {
+            let grey = grey_of(theirs)?;
             let shapes = area_shapes(primitives, target, *model)?;
-            Judgement::FitGrey(fit::grey::fit_grey(&shapes, target, grey_of(theirs)?, *model)?)
+            Judgement::FitGrey(fit::grey::fit_grey(&shapes, target, grey, *model)?)
         }
     })
 }
 
 /// The scene's area shapes under an exact `model`.
-fn area_shapes(primitives: &Primitives, target: &Target, model: Model) -> Result<Vec<AreaShape>, CompareError> {
+pub(crate) fn area_shapes(
+    primitives: &Primitives,
+    target: &Target,
+    model: Model,
+) -> Result<Vec<AreaShape>, CompareError> {
     crate::model::area_shapes(primitives, target, model).map_err(CompareError::Area)
 }
 
 /// Their grey levels, or the error that they were read otherwise.
-fn grey_of(theirs: &Theirs) -> Result<&crate::oracle::theirs::GreyImage, CompareError> {
+pub(crate) fn grey_of(theirs: &Theirs) -> Result<&crate::oracle::theirs::GreyImage, CompareError> {
     theirs.grey().ok_or(CompareError::Format(theirs.format()))
 }

@@ -23,10 +23,9 @@ use super::{generate_scene, lock, HuntConfig, SceneFamily};
 use crate::area::{Quantization, Semantics};
 use crate::harness::runner::{RunError, Runner};
 use crate::harness::shrink::shrink_batched;
-use crate::model::area_shapes;
 use crate::model::Model;
 use crate::num::exact::{exact_text, nearest_f64, round_to_integer, Rounding};
-use crate::oracle::compare::grey::{compare_grey, GreyClass, GreyOptions, GreyReport};
+use crate::oracle::compare::grey::{compare_grey_scene, GreyClass, GreyOptions, GreyReport};
 use crate::oracle::renderer::program::{FailureKind, RenderFailure, Renderer};
 use crate::oracle::theirs::GreyImage;
 use crate::oracle::theirs::Theirs;
@@ -86,34 +85,24 @@ pub fn judge_grey(
         Ok(t) => t,
         Err(f) => return GreyVerdict::Failed(f),
     };
-    let bad = |message: String| {
-        GreyVerdict::Failed(RenderFailure {
-            kind: FailureKind::BadOutput,
-            message,
-        })
-    };
-    let Some(grey) = theirs.grey() else {
-        return bad(format!(
-            "their output was read as {}, not as a grey image",
-            theirs.format().name()
-        ));
-    };
     let Some(target) = scene.target() else {
         return GreyVerdict::Refused("invalid canvas or convention".to_string());
-    };
-    let shapes = match area_shapes(&scene.primitives(), &target, Model::Exact) {
-        Ok(s) => s,
-        Err(e) => return GreyVerdict::Refused(e.to_string()),
     };
     let options = GreyOptions {
         model: Model::Exact,
         semantics,
         quantization,
     };
-    match compare_grey(&shapes, &target, grey, &options) {
-        Ok(r) if r.pixels.is_empty() => GreyVerdict::Same,
+    // Their output at fault (not grey, another size or depth) is their failure; the scene
+    // refused (no shape with area) is the oracle's.
+    match compare_grey_scene(&scene.primitives(), &target, &theirs, &options) {
+        Ok(r) if r.identical() => GreyVerdict::Same,
         Ok(r) => GreyVerdict::Differs(Box::new(r)),
-        Err(e) => bad(e.to_string()),
+        Err(e) if e.is_theirs() => GreyVerdict::Failed(RenderFailure {
+            kind: FailureKind::BadOutput,
+            message: e.to_string(),
+        }),
+        Err(e) => GreyVerdict::Refused(e.to_string()),
     }
 }
 
