@@ -32,7 +32,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use num_rational::BigRational;
-use rasterproof::area::{exact, AreaShape, Quantization, Semantics};
+use rasterproof::area::{exact, AreaMethod, AreaShape, Quantization, Semantics};
 use rasterproof::geom::{FillRule, Polygon};
 use rasterproof::model::{area_shapes, Model};
 use rasterproof::oracle::compare::fit::grey::{fit_grey, GreyMethod};
@@ -391,26 +391,36 @@ fn fit_names_each_renderer_first() {
     for (exe, own, q, best, float_or_ft) in [
         (
             ab_glyph(),
-            GreyMethod::AbGlyph,
+            GreyMethod::own(AreaMethod::AbGlyph),
             Quantization::Round16,
             3,
-            (GreyMethod::Float(Quantization::Round16), 4),
+            (
+                GreyMethod::quantized(AreaMethod::Float, Semantics::Accumulated, Quantization::Round16),
+                4,
+            ),
         ),
         (
             zeno(),
-            GreyMethod::Zeno,
+            GreyMethod::own(AreaMethod::Zeno),
             Quantization::FtGrays,
             43,
-            (GreyMethod::FtGrays, 59),
+            (GreyMethod::own(AreaMethod::FtGrays), 59),
         ),
     ] {
         let theirs = draw(&exe, &glyph, dir.path(), q.name());
         let fit = fit_grey(&sh, &canvas(w, h), &theirs, Model::Exact).unwrap().methods;
         assert_eq!(fit[0], (own, 0), "{fit:?}");
         assert!(fit[1..].iter().all(|(_, n)| *n >= best), "{fit:?}");
-        assert_eq!(fit[1], (GreyMethod::Exact(Semantics::True, q), best), "{fit:?}");
+        assert_eq!(
+            fit[1],
+            (GreyMethod::quantized(AreaMethod::Planned, Semantics::True, q), best),
+            "{fit:?}"
+        );
         for s in Semantics::ALL {
-            assert!(fit.contains(&(GreyMethod::Exact(s, q), best)), "{fit:?}");
+            assert!(
+                fit.contains(&(GreyMethod::quantized(AreaMethod::Planned, s, q), best)),
+                "{fit:?}"
+            );
         }
         assert!(fit.contains(&float_or_ft), "{fit:?}");
     }

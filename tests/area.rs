@@ -782,6 +782,7 @@ fn compare_grey_cli() {
 /// samples: level 96; 8x8 gives 28/64, level 112; the exact value 1/2, level 128).
 #[test]
 fn grey_fit_names_the_method() {
+    use rasterproof::area::AreaMethod;
     use rasterproof::oracle::compare::fit::grey::{fit_grey, GreyMethod};
     let rect = vec![
         p(r(1, 4), r(1, 2)),
@@ -801,19 +802,22 @@ fn grey_fit_names_the_method() {
         .unwrap()
         .methods;
         let exact: Vec<GreyMethod> = found.iter().filter(|(_, n)| *n == 0).map(|(m, _)| *m).collect();
-        assert!(exact.contains(&GreyMethod::FtGrays), "{found:?}");
+        assert!(exact.contains(&GreyMethod::own(AreaMethod::FtGrays)), "{found:?}");
         if levels != [96, 128, 96, 192, 255, 192, 96, 128, 96] {
             // 95, 127, 191 are also v x 255 truncated (95.6, 127.5, 191.25): this image
             // cannot tell FreeType's method from truncation, and the fit says both; no
             // rounding to the nearest gives it.
             assert!(
-                exact.contains(&GreyMethod::Exact(Semantics::True, Quantization::Truncate8)),
+                exact.contains(&GreyMethod::quantized(
+                    AreaMethod::Planned,
+                    Semantics::True,
+                    Quantization::Truncate8
+                )),
                 "{exact:?}"
             );
             assert!(
-                !exact
-                    .iter()
-                    .any(|m| matches!(m, GreyMethod::Exact(_, Quantization::Round8 | Quantization::FtGrays))),
+                !exact.iter().any(|m| m.area.is_exact()
+                    && matches!(m.quantization, Some(Quantization::Round8 | Quantization::FtGrays))),
                 "{exact:?}"
             );
         }
@@ -833,13 +837,17 @@ fn grey_fit_names_the_method() {
     .methods;
     let exact: Vec<GreyMethod> = found.iter().filter(|(_, n)| *n == 0).map(|(m, _)| *m).collect();
     assert!(
-        exact.contains(&GreyMethod::Supersampling(4, Quantization::Round8)),
+        exact.contains(&GreyMethod::quantized(
+            AreaMethod::Supersample(4),
+            Semantics::True,
+            Quantization::Round8
+        )),
         "{found:?}"
     );
     assert!(
         !exact
             .iter()
-            .any(|m| matches!(m, GreyMethod::Exact(..) | GreyMethod::Supersampling(8 | 16, _))),
+            .any(|m| m.area.is_exact() || matches!(m.area, AreaMethod::Supersample(8 | 16))),
         "{exact:?}"
     );
 }
@@ -891,4 +899,31 @@ fn tiny_skia_levels_by_hand() {
             "{shape:?}"
         );
     }
+}
+
+/// A shape reaching 2^30 px left of the canvas: f32 accumulation takes the part of each
+/// row left of the canvas in one piece, so it ends at once (a walk column by column in
+/// f32 would never end: past 2^24, `c + 1.0 == c`). The triangle (-2^30, 0) (2, 0) (2, 1)
+/// covers of pixel (x, 0) the part under the line `y = (u + 2^30) / (2^30 + 2)`: pixel 0
+/// `(2^30 + 1/2) / (2^30 + 2)`, pixel 1 `(2^30 + 3/2) / (2^30 + 2)`, both within 2^-29
+/// of 1, so f32 gives 1 for each (its ulp at 1 is 2^-23), and the rows below nothing.
+#[test]
+fn f32_accumulation_of_a_shape_far_left_ends_and_is_right() {
+    let far = -(1i64 << 30);
+    let t = Triangle::new(p(r(far, 1), r(0, 1)), p(r(2, 1), r(0, 1)), p(r(2, 1), r(1, 1)));
+    let shapes = [triangle_shape(&t)];
+    let exact = rasterize(&shapes, 2, 2, Semantics::Accumulated);
+    let d = r(-far + 2, 1);
+    assert_eq!(exact.value(0, 0), (r(-far, 1) + r(1, 2)) / &d);
+    assert_eq!(exact.value(1, 0), (r(-far, 1) + r(3, 2)) / &d);
+    assert_eq!(
+        float::rasterize(&shapes, 2, 2, Semantics::Accumulated),
+        vec![1.0, 1.0, 0.0, 0.0]
+    );
+    // Far from the origin too: the window at 2^20, the triangle moved with it.
+    let placed = [triangle_shape(&t).translated(1 << 20, 1 << 20)];
+    assert_eq!(
+        float::rasterize_at(&placed, 1 << 20, 2, 2, Semantics::Accumulated),
+        vec![1.0, 1.0, 0.0, 0.0]
+    );
 }

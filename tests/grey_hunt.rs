@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use num_rational::BigRational;
-use rasterproof::area::{conflate, Quantization, Semantics};
+use rasterproof::area::{conflate, AreaMethod, Quantization, Semantics};
 use rasterproof::geom::{FillRule, Point, Polygon};
 use rasterproof::oracle::compare::fit::grey::{fit_grey, GreyMethod};
 use rasterproof::oracle::compare::grey::{compare_grey, GreyClass};
@@ -146,10 +146,17 @@ fn fit_names_shapes_blended_one_by_one() {
     let fits = fit_grey(&shapes, &canvas(4, 1), &theirs, rasterproof::model::Model::Exact)
         .unwrap()
         .methods;
-    assert_eq!(fits[0], (GreyMethod::Conflated(Quantization::Round8), 0), "{fits:?}");
+    assert_eq!(
+        fits[0],
+        (
+            GreyMethod::quantized(AreaMethod::Conflated, Semantics::Accumulated, Quantization::Round8),
+            0
+        ),
+        "{fits:?}"
+    );
     let exact = fits
         .iter()
-        .find(|(m, _)| *m == GreyMethod::Exact(Semantics::Accumulated, Quantization::Round8))
+        .find(|(m, _)| *m == GreyMethod::quantized(AreaMethod::Planned, Semantics::Accumulated, Quantization::Round8))
         .unwrap();
     assert_eq!(exact.1, 2, "{fits:?}");
 }

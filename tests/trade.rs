@@ -8,9 +8,9 @@ use std::sync::OnceLock;
 
 use assert_cmd::Command;
 use num_rational::BigRational;
-use rasterproof::area::{planned, triangle_shape, AreaShape, Quantization, Semantics};
+use rasterproof::area::{planned, triangle_shape, AreaMethod, AreaOutput, AreaShape, Quantization, Semantics};
 use rasterproof::geom::{FillRule, Point, Polygon, Triangle};
-use rasterproof::trade::area::{area_metrics, AreaModel, AreaOutput, COVERAGE_ERROR, OFF_HALF_QUANTUM};
+use rasterproof::trade::area::{area_metrics, AreaContender, COVERAGE_ERROR, OFF_HALF_QUANTUM};
 use rasterproof::trade::{run, Config, Magnitude, Metric, Outcome, TradeReport};
 use serde_json::Value;
 
@@ -448,7 +448,9 @@ fn supersampling_is_off_by_an_eighth_by_hand() {
     let shapes = [triangle_shape(&t)];
     let reference = planned::rasterize(&shapes, 1, 1, Semantics::Accumulated);
     assert_eq!(reference.value(0, 0), BigRational::new(1.into(), 2.into()));
-    let ss = AreaModel::Supersample.draw(&shapes, 1, 1).unwrap();
+    let ss = AreaContender::Method(AreaMethod::Supersample(4))
+        .draw(&shapes, 1, 1)
+        .unwrap();
     let m = area_metrics(&reference, &ss, None);
     assert_eq!(
         m[1],
@@ -460,7 +462,7 @@ fn supersampling_is_off_by_an_eighth_by_hand() {
         }
     );
     assert_eq!(m[0].per_million(), Some(1e6));
-    for exact in [AreaModel::Plain, AreaModel::Cells, AreaModel::Planned] {
+    for exact in [AreaMethod::Plain, AreaMethod::Cells, AreaMethod::Planned].map(AreaContender::Method) {
         let out = exact.draw(&shapes, 1, 1).unwrap();
         assert!(
             area_metrics(&reference, &out, None).iter().all(Metric::is_zero),
@@ -472,8 +474,8 @@ fn supersampling_is_off_by_an_eighth_by_hand() {
     // x = 255/256: the area is short by 1/512, floor(256 x (1/2 - 1/512)) = 127, where its
     // own quantization of the exact 1/2 is 128. Read as 127/255 it is off by exactly
     // 1/510, half a quantum (not more).
-    let ft = AreaModel::FtGrays.draw(&shapes, 1, 1).unwrap();
-    assert_eq!(ft, AreaOutput::Levels(vec![127]));
+    let ft = AreaContender::Method(AreaMethod::FtGrays).draw(&shapes, 1, 1).unwrap();
+    assert_eq!(ft, AreaOutput::levels8(vec![127]));
     let m = area_metrics(&reference, &ft, Some(Quantization::FtGrays));
     assert_eq!(m[0].per_million(), Some(0.0));
     assert_eq!(m[2].per_million(), Some(1e6));

@@ -3,8 +3,9 @@
 //! in f32, each row's piece cut at the columns it crosses, every area and cover rounded to
 //! f32 as it is added, the row summed left to right in f32. Its departures from the exact
 //! values ([`super::cells`]) are what the trade measures and what the area checkers report.
-//! [`rasterize_at`] runs the same accumulation with the canvas origin far from 0, in the
-//! placed coordinates, as the trade measures it at a magnitude.
+//! [`rasterize_at`] is the one walk, with the canvas origin anywhere: in the placed
+//! coordinates far from 0, as the trade measures it at a magnitude; [`rasterize`] is it at
+//! the origin.
 
 use num_traits::ToPrimitive;
 
@@ -28,98 +29,12 @@ fn path_f32(shape: &AreaShape) -> Vec<(P, P)> {
     out
 }
 
-/// The f32 accumulation buffer of one shape: per pixel `(cover, area)`, row-major.
-struct Buffer {
-    width: usize,
-    height: usize,
-    cells: Vec<[f32; 2]>,
-}
-
-impl Buffer {
-    /// Adds a piece in cell (`column`, `row`) going down by `dy` at mean x `xm` (canvas
-    /// coordinates); cells left of the canvas give their cover to column 0.
-    #[allow(clippy::cast_possible_truncation, clippy::cast_precision_loss)]
-    fn add(&mut self, column: f32, row: usize, dy: f32, xm: f32) {
-        if row >= self.height || column >= self.width as f32 {
-            return;
-        }
-        let k = row * self.width;
-        if column < 0.0 {
-            self.cells[k][1] += dy; // all of column 0 lies right of it
-            self.cells[k][0] += dy;
-            return;
-        }
-        let c = column as usize;
-        self.cells[k + c][1] += dy * (1.0 - (xm - column));
-        self.cells[k + c][0] += dy;
-    }
-}
-
-/// Walks the edge `a -> b` into `buffer`, row by row, each row's piece cut at the columns.
-#[allow(
-    clippy::cast_possible_truncation,
-    clippy::cast_sign_loss,
-    clippy::cast_precision_loss
-)]
-fn walk(buffer: &mut Buffer, a: P, b: P) {
-    if a[1] == b[1] || !(a[0].is_finite() && a[1].is_finite() && b[0].is_finite() && b[1].is_finite()) {
-        return;
-    }
-    let dxdy = (b[0] - a[0]) / (b[1] - a[1]);
-    let (top, bottom) = (a[1].min(b[1]), a[1].max(b[1]));
-    let sign = if b[1] > a[1] { 1.0 } else { -1.0 };
-    let first = top.floor().max(0.0);
-    let last = bottom.ceil().min(buffer.height as f32);
-    let mut row = first;
-    while row < last {
-        let y0 = top.max(row);
-        let y1 = bottom.min(row + 1.0);
-        let (x0, x1) = (a[0] + (y0 - a[1]) * dxdy, a[0] + (y1 - a[1]) * dxdy);
-        let dy = (y1 - y0) * sign;
-        let (lo, hi) = (x0.min(x1), x0.max(x1));
-        let (c0, c1) = (lo.floor(), hi.ceil().max(lo.floor() + 1.0));
-        if c1 - c0 <= 1.0 {
-            buffer.add(c0, row as usize, dy, (x0 + x1) * 0.5);
-        } else {
-            // Cut at each column: the part of dy in each is its share of the x run.
-            let mut c = c0;
-            while c < c1 {
-                let (from, to) = (lo.max(c), hi.min(c + 1.0));
-                let share = (to - from) / (hi - lo);
-                buffer.add(c, row as usize, dy * share, (from + to) * 0.5);
-                c += 1.0;
-            }
-        }
-        row += 1.0;
-    }
-}
-
 /// The shapes' accumulated coverage in f32 on a `width` x `height` canvas, row-major:
 /// each shape's row sums folded under `semantics` (`True` is read as `Accumulated`:
-/// accumulation has no inside test) in f32, summed over the shapes.
+/// accumulation has no inside test) in f32, summed over the shapes ([`rasterize_at`] with
+/// the canvas at the origin).
 pub fn rasterize(shapes: &[AreaShape], width: u32, height: u32, semantics: Semantics) -> Vec<f32> {
-    let (w, h) = (width as usize, height as usize);
-    let mut out = vec![0f32; w * h];
-    for shape in shapes {
-        let mut buffer = Buffer {
-            width: w,
-            height: h,
-            cells: vec![[0.0; 2]; w * h],
-        };
-        for (a, b) in path_f32(shape) {
-            walk(&mut buffer, a, b);
-        }
-        for y in 0..h {
-            let mut carry = 0f32;
-            for x in 0..w {
-                let [cover, area] = buffer.cells[y * w + x];
-                let acc = (carry + area).abs();
-                carry += cover;
-                out[y * w + x] += fold(acc, semantics, shape.fill_rule);
-            }
-        }
-    }
-    out
+    rasterize_at(shapes, 0, width, height, semantics)
 }
 
 /// A pixel's accumulated `|cover + area|` in f32 folded under `semantics` and `rule`: kept
@@ -139,17 +54,17 @@ fn fold(acc: f32, semantics: Semantics, rule: FillRule) -> f32 {
     }
 }
 
-/// [`rasterize`]'s accumulation with the canvas origin at `(origin, origin)`: the shapes
-/// (placed coordinates, each rounded to the nearest f32) walked in f32 over the window
+/// The accumulation with the canvas origin at `(origin, origin)`: the shapes (placed
+/// coordinates, each rounded to the nearest f32) walked in f32 over the window
 /// `[origin, origin + width) x [origin, origin + height)`, row by row, each row's piece cut
 /// at the columns, every area and cover rounded to f32 as it is added, each row summed
-/// left to right in f32, folded and added over the shapes as the model does. The row and
+/// left to right in f32, folded under `semantics` and added over the shapes. The part of
+/// a row's piece left of the window adds its cover to the window's first column in one
+/// piece, so a shape far to the left costs what one at the edge does. The row and
 /// column boundaries are the integers `origin + i` rounded to f32, exact below 2^24; past
 /// it they collapse as f32 collapses them (a row or column whose boundaries round to one
-/// value gets nothing). Equal to [`rasterize`] at origin 0, and to the model on a
-/// canvas that reaches the window, restricted to it, where no shape reaches left of the
-/// window (the model folds the cover of cells left of its canvas into its first column in
-/// walk order, which changes the f32 sums) (tested at 2^10).
+/// value gets nothing). Equal to [`rasterize`] on a canvas that reaches the window,
+/// restricted to it, where no shape reaches left of the window (tested at 2^10).
 pub fn rasterize_at(shapes: &[AreaShape], origin: i64, width: u32, height: u32, semantics: Semantics) -> Vec<f32> {
     let (w, h) = (width as usize, height as usize);
     let mut out = vec![0f32; w * h];
@@ -165,7 +80,7 @@ pub fn rasterize_at(shapes: &[AreaShape], origin: i64, width: u32, height: u32, 
         if first >= last {
             continue;
         }
-        let mut buffer = FarBuffer {
+        let mut buffer = Buffer {
             origin,
             first,
             width: w,
@@ -207,8 +122,9 @@ fn to_f32(v: i64) -> f32 {
     v as f32
 }
 
-/// One shape's f32 cells over the rows `first..first + rows` of the window at `origin`.
-struct FarBuffer {
+/// One shape's f32 cells `(cover, area)` over the rows `first..first + rows` of the window
+/// at `origin`, row-major.
+struct Buffer {
     origin: i64,
     first: i64,
     width: usize,
@@ -216,9 +132,10 @@ struct FarBuffer {
     cells: Vec<[f32; 2]>,
 }
 
-impl FarBuffer {
-    /// [`Buffer::add`]'s, a piece in plane column `column` (its f32 value `cf`) and
-    /// plane row `row`; columns left of the window give their cover to its first column.
+impl Buffer {
+    /// Adds a piece in plane column `column` (its f32 value `cf`) and plane row `row`,
+    /// going down by `dy` at mean x `xm`; columns left of the window give their cover to
+    /// its first column.
     fn add(&mut self, column: i64, cf: f32, row: i64, dy: f32, xm: f32) {
         let Some(r) = usize::try_from(row - self.first).ok().filter(|&r| r < self.rows) else {
             return;
@@ -236,7 +153,8 @@ impl FarBuffer {
         self.cells[first + c][0] += dy;
     }
 
-    /// [`walk`]'s walk of the edge `a -> b` (plane coordinates in f32).
+    /// Walks the edge `a -> b` (plane coordinates in f32) row by row, each row's piece cut
+    /// at the columns.
     fn walk(&mut self, a: P, b: P, height: i64) {
         if a[1] == b[1] || !(a[0].is_finite() && a[1].is_finite() && b[0].is_finite() && b[1].is_finite()) {
             return;
@@ -260,7 +178,22 @@ impl FarBuffer {
             if c1 - c0 <= 1.0 {
                 self.add(f32_floor(c0), c0, row, dy, (x0 + x1) * 0.5);
             } else {
-                for c in f32_floor(c0)..f32_ceil(c1).min(right) {
+                let mut from_column = f32_floor(c0);
+                let left = to_f32(self.origin);
+                if lo < left {
+                    // The part left of the window, in one piece: all of the first
+                    // column lies right of it.
+                    let to = hi.min(left);
+                    self.add(
+                        self.origin - 1,
+                        left - 1.0,
+                        row,
+                        dy * ((to - lo) / (hi - lo)),
+                        (lo + to) * 0.5,
+                    );
+                    from_column = self.origin;
+                }
+                for c in from_column..f32_ceil(c1).min(right) {
                     let (cf, cn) = (to_f32(c), to_f32(c + 1));
                     if cf >= c1 {
                         break;

@@ -36,6 +36,9 @@
 //! buffer, one running sum, 16-bit levels), and [`zeno`], zeno 0.3.3's integers
 //! (FreeType's walk y down, 24.8 straight from f32, a 32-bit reciprocal, 8-bit levels).
 //! A grey image quantizes the exact values by a named [`Quantization`].
+//!
+//! [`method`] is the family's one list ([`AreaMethod::ALL`]): each method's name, what it
+//! computes and how it draws, which the trade and `compare --as grey --fit` both walk.
 
 pub mod abglyph;
 pub mod cells;
@@ -43,9 +46,12 @@ pub mod conflate;
 pub mod exact;
 pub mod float;
 pub mod ftgrays;
+pub mod method;
 pub mod planned;
 pub mod supersample;
 pub mod zeno;
+
+pub use method::{AreaMethod, AreaOutput};
 
 use num_bigint::BigInt;
 use num_rational::BigRational;

@@ -10,7 +10,7 @@
 //!   Every value is under [`Semantics::Accumulated`]: each shape's value folded, summed
 //!   over the shapes (what a renderer adding shapes into one accumulation buffer
 //!   computes; for the glyphs, whose contours do not overlap, it is their true coverage).
-//! - **Contenders** ([`AreaModel`]): the planned exact engine (`area::planned`, the
+//! - **Contenders** ([`AreaContender`]: methods of [`AreaMethod::ALL`], and multisampling): the planned exact engine (`area::planned`, the
 //!   reference and a speed contender), exact cell accumulation in big rationals
 //!   (`area::cells`) and the plain oracle (`area::exact`), both on the subset below; f32
 //!   accumulation (`area::float`, font-rs and ab_glyph's method); FreeType's 24.8 integer
@@ -45,16 +45,15 @@
 //!   the origin's, marked `translated`. The two models with rounding compute with the
 //!   placed coordinates (shapes moved by `(M, M)` exactly, the window `[M, M + side)^2`),
 //!   as `trade::far` does for the float triangle models: `f32-accum` by
-//!   [`float::rasterize_at`], `area::float`'s walk with its canvas origin at `(M, M)`;
-//!   `ftgrays` by [`ftgrays::rasterize_at`], its 26.6 rounding and 24.8 envelope at the placed
+//!   [`crate::area::float::rasterize_at`], `area::float`'s walk with its canvas origin at `(M, M)`;
+//!   `ftgrays` by [`crate::area::ftgrays::rasterize_at`], its 26.6 rounding and 24.8 envelope at the placed
 //!   coordinates, the rest by the model. Beyond the envelope `ftgrays` refuses, with its
 //!   own message.
 
-use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 
-use crate::area::{cells, exact, float, ftgrays, planned, supersample, AreaImage, AreaShape, Quantization, Semantics};
+use crate::area::{planned, AreaImage, AreaMethod, AreaOutput, AreaShape, Quantization, Semantics};
 use crate::convention::{Preset, Target};
 use crate::geom::{Point, Polygon};
 use crate::model::{render_samples, Model, Primitives};
@@ -62,7 +61,7 @@ use crate::pattern::SamplePattern;
 use crate::strategy::{triangle, TriangleScale};
 
 use super::metric::Metric;
-use super::report::{Cell, Outcome, Placement, PlanSummary, WorkloadReport};
+use super::report::{Cell, Outcome, Placement, PlanSummary, SpeedEntry, WorkloadReport};
 use super::speed::{entries, Contender, Job};
 use super::workloads::{draw_n, mesh, runner};
 use super::{Config, Family, Magnitude, Sizes};
@@ -83,122 +82,75 @@ pub const COVERAGE_ERROR: &str = "coverage error";
 /// `ftgrays`: its levels against its own quantization of the exact value.
 pub const LEVELS_OFF: &str = "levels off its quantization of the exact value";
 
-/// The samples per side of the sample-counting contenders.
-const SAMPLES: u32 = 4;
-
-/// An area contender.
+/// An area contender: a method of the area family's one list, or multisampling.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum AreaModel {
-    /// `area::exact`, the plain oracle (subset).
-    Plain,
-    /// `area::cells`, exact accumulation in big rationals (subset).
-    Cells,
-    /// `area::planned`, the planned exact engine: the reference.
-    Planned,
-    /// `area::float`, f32 accumulation.
-    Float,
-    /// `area::ftgrays`, FreeType's 24.8 integer cells, 8-bit levels.
-    FtGrays,
-    /// `area::supersample` with 4 x 4 samples, counted exactly (subset).
-    Supersample,
-    /// `area::supersample::tiny_skia_levels`, tiny-skia's 4 sub-scanlines (subset).
-    TinySkia,
-    /// Multisampling at the standard 4x positions: the `scanline` model per sample
-    /// (`model::render_samples`), vertices snapped to 8 subpixel bits as a GPU snaps them,
-    /// each shape's covered samples counted.
-    Msaa4,
-    /// The same at the standard 8x positions.
-    Msaa8,
-    /// The same at the standard 16x positions.
-    Msaa16,
+pub enum AreaContender {
+    /// A method of [`AreaMethod::ALL`], drawing under [`Semantics::Accumulated`].
+    Method(AreaMethod),
+    /// Multisampling at the standard positions of this count: the `scanline` model per
+    /// sample (`model::render_samples`), vertices snapped to 8 subpixel bits as a GPU
+    /// snaps them, each shape's covered samples counted.
+    Msaa(u32),
 }
 
-impl AreaModel {
+impl AreaContender {
     /// Every contender, in report order.
-    pub const ALL: [AreaModel; 10] = [
-        AreaModel::Plain,
-        AreaModel::Cells,
-        AreaModel::Planned,
-        AreaModel::Float,
-        AreaModel::FtGrays,
-        AreaModel::Supersample,
-        AreaModel::TinySkia,
-        AreaModel::Msaa4,
-        AreaModel::Msaa8,
-        AreaModel::Msaa16,
+    pub const ALL: [AreaContender; 10] = [
+        AreaContender::Method(AreaMethod::Plain),
+        AreaContender::Method(AreaMethod::Cells),
+        AreaContender::Method(AreaMethod::Planned),
+        AreaContender::Method(AreaMethod::Float),
+        AreaContender::Method(AreaMethod::FtGrays),
+        AreaContender::Method(AreaMethod::Supersample(4)),
+        AreaContender::Method(AreaMethod::TinySkia),
+        AreaContender::Msaa(4),
+        AreaContender::Msaa(8),
+        AreaContender::Msaa(16),
     ];
 
     /// Its name in the report.
     pub fn name(self) -> &'static str {
         match self {
-            AreaModel::Plain => "area-plain",
-            AreaModel::Cells => "area-cells",
-            AreaModel::Planned => "area-planned",
-            AreaModel::Float => "f32-accum",
-            AreaModel::FtGrays => "ftgrays",
-            AreaModel::Supersample => "supersample-4x4",
-            AreaModel::TinySkia => "tiny-skia-4x4",
-            AreaModel::Msaa4 => "msaa-4x",
-            AreaModel::Msaa8 => "msaa-8x",
-            AreaModel::Msaa16 => "msaa-16x",
+            AreaContender::Method(m) => m.name(),
+            AreaContender::Msaa(4) => "msaa-4x",
+            AreaContender::Msaa(8) => "msaa-8x",
+            AreaContender::Msaa(16) => "msaa-16x",
+            AreaContender::Msaa(_) => "msaa",
         }
     }
 
     /// Computes the exact value (its error must be zero).
     pub fn is_exact(self) -> bool {
-        matches!(self, AreaModel::Plain | AreaModel::Cells | AreaModel::Planned)
+        matches!(self, AreaContender::Method(m) if m.is_exact())
     }
 
-    /// Runs on the subset (slow by design).
+    /// Runs on the subset (slow by design: exact in big rationals, or every sample
+    /// decided exactly).
     fn on_subset(self) -> bool {
-        matches!(
-            self,
-            AreaModel::Plain | AreaModel::Cells | AreaModel::Supersample | AreaModel::TinySkia
-        )
+        match self {
+            AreaContender::Method(m) => {
+                m != AreaMethod::REFERENCE
+                    && (m.is_exact() || matches!(m, AreaMethod::Supersample(_) | AreaMethod::TinySkia))
+            }
+            AreaContender::Msaa(_) => false,
+        }
     }
 
-    /// The model's own output for `shapes` on a `width` x `height` canvas at the origin.
+    /// The quantization it applies itself, for [`LEVELS_OFF`] (`ftgrays`'s).
+    fn own_quantization(self) -> Option<Quantization> {
+        (self == AreaContender::Method(AreaMethod::FtGrays)).then_some(Quantization::FtGrays)
+    }
+
+    /// The contender's own output for `shapes` on a `width` x `height` canvas at the
+    /// origin, under [`Semantics::Accumulated`].
     ///
     /// # Errors
-    /// `ftgrays`'s refusal (a coordinate outside its 24.8 envelope).
+    /// The method's refusal (`ftgrays`: a coordinate outside its 24.8 envelope).
     pub fn draw(self, shapes: &[AreaShape], width: u32, height: u32) -> Result<AreaOutput, String> {
-        Ok(match self {
-            AreaModel::Plain => AreaOutput::Exact(exact::rasterize(shapes, width, height, SEMANTICS)),
-            AreaModel::Cells => AreaOutput::Exact(
-                cells::rasterize(shapes, width, height, SEMANTICS).expect("cells take the accumulated semantics"),
-            ),
-            AreaModel::Planned => AreaOutput::Exact(planned::rasterize(shapes, width, height, SEMANTICS)),
-            AreaModel::Float => AreaOutput::F32(float::rasterize(shapes, width, height, SEMANTICS)),
-            AreaModel::FtGrays => AreaOutput::Levels(ftgrays::rasterize(shapes, width, height)?),
-            AreaModel::Supersample => {
-                let mut counts = vec![0u32; width as usize * height as usize];
-                let k2 = BigRational::from_integer(BigInt::from(SAMPLES * SAMPLES));
-                for s in shapes {
-                    let image = supersample::rasterize(std::slice::from_ref(s), width, height, SAMPLES);
-                    for (x, y, v) in image.pixels {
-                        let n = (v * &k2).to_integer().to_u32().unwrap_or(0);
-                        counts[y as usize * width as usize + x as usize] += n;
-                    }
-                }
-                AreaOutput::Counts {
-                    counts,
-                    of: SAMPLES * SAMPLES,
-                }
-            }
-            AreaModel::TinySkia => {
-                let mut levels = vec![0u8; width as usize * height as usize];
-                for s in shapes {
-                    let one = supersample::tiny_skia_levels(std::slice::from_ref(s), width, height);
-                    for (l, v) in levels.iter_mut().zip(one) {
-                        *l = l.saturating_add(v);
-                    }
-                }
-                AreaOutput::Levels(levels)
-            }
-            AreaModel::Msaa4 => msaa(shapes, width, height, 4)?,
-            AreaModel::Msaa8 => msaa(shapes, width, height, 8)?,
-            AreaModel::Msaa16 => msaa(shapes, width, height, 16)?,
-        })
+        match self {
+            AreaContender::Method(m) => m.draw(shapes, width, height, SEMANTICS),
+            AreaContender::Msaa(n) => msaa(shapes, width, height, n as usize),
+        }
     }
 }
 
@@ -223,46 +175,6 @@ fn msaa(shapes: &[AreaShape], width: u32, height: u32, n: usize) -> Result<AreaO
         counts,
         of: u32::try_from(n).expect("at most 16"),
     })
-}
-
-/// What an area model outputs, row-major where dense.
-#[derive(Debug, Clone, PartialEq)]
-pub enum AreaOutput {
-    /// Exact values.
-    Exact(AreaImage),
-    /// f32 values, read exactly.
-    F32(Vec<f32>),
-    /// 8-bit levels, `L` read as `L / 255`.
-    Levels(Vec<u8>),
-    /// Sample counts, `n` read as `n / of`.
-    Counts {
-        /// Per pixel.
-        counts: Vec<u32>,
-        /// Samples per pixel.
-        of: u32,
-    },
-}
-
-impl AreaOutput {
-    /// The value of the pixel at row-major index `k`, exactly.
-    fn value(&self, k: usize, dense: &[BigRational]) -> BigRational {
-        match self {
-            AreaOutput::Exact(_) => dense[k].clone(),
-            AreaOutput::F32(v) => BigRational::from_float(v[k]).unwrap_or_else(BigRational::zero),
-            AreaOutput::Levels(l) => BigRational::new(BigInt::from(l[k]), BigInt::from(255)),
-            AreaOutput::Counts { counts, of } => BigRational::new(BigInt::from(counts[k]), BigInt::from(*of)),
-        }
-    }
-
-    /// A number the optimiser must not drop.
-    fn len(&self) -> u64 {
-        match self {
-            AreaOutput::Exact(i) => i.pixels.len() as u64,
-            AreaOutput::F32(v) => v.len() as u64,
-            AreaOutput::Levels(v) => v.len() as u64,
-            AreaOutput::Counts { counts, .. } => counts.len() as u64,
-        }
-    }
 }
 
 /// `image` as a dense row-major vector.
@@ -294,8 +206,8 @@ pub fn area_metrics(reference: &AreaImage, output: &AreaOutput, own: Option<Quan
             continue;
         }
         pixels += 1;
-        if let (Some(q), AreaOutput::Levels(l)) = (own, output) {
-            levels_off += u64::from(q.level(e) != u16::from(l[k]));
+        if let (Some(q), Some(l)) = (own, output.own_levels()) {
+            levels_off += u64::from(q.level(e) != l[k]);
         }
         if v == *e {
             continue;
@@ -496,81 +408,122 @@ fn plan(w: &Workload, mags: &[Magnitude]) -> PlanSummary {
     }
 }
 
-fn measure(w: &Workload, config: &Config, sizes: &Sizes) -> WorkloadReport {
-    let reference = planned::rasterize(&w.shapes, w.width, w.height, SEMANTICS);
-    let (sub, sw, sh) = subset(w, &reference, sizes.area_subset);
-    let sub_reference = planned::rasterize(&sub, sw, sh, SEMANTICS);
-    let pick = |m: AreaModel| {
-        if m.on_subset() {
-            (&sub[..], sw, sh, &sub_reference)
-        } else {
-            (&w.shapes[..], w.width, w.height, &reference)
-        }
-    };
+/// A workload with the exact answers its contenders are measured against: the whole
+/// canvas's, and the subset's (for the contenders slow by design).
+struct Stage<'a> {
+    w: &'a Workload,
+    reference: AreaImage,
+    sub: Vec<AreaShape>,
+    sub_size: (u32, u32),
+    sub_reference: AreaImage,
+}
 
-    // Speed at the origin, round-robin.
-    let contenders: Vec<Contender<'_>> = AreaModel::ALL
+impl<'a> Stage<'a> {
+    /// The planned engine's answers on the workload and on its subset.
+    fn new(w: &'a Workload, sizes: &Sizes) -> Stage<'a> {
+        let reference = planned::rasterize(&w.shapes, w.width, w.height, SEMANTICS);
+        let (sub, sw, sh) = subset(w, &reference, sizes.area_subset);
+        let sub_reference = planned::rasterize(&sub, sw, sh, SEMANTICS);
+        Stage {
+            w,
+            reference,
+            sub,
+            sub_size: (sw, sh),
+            sub_reference,
+        }
+    }
+
+    /// What `c` runs on: its shapes, canvas and exact answer.
+    fn pick(&self, c: AreaContender) -> (&[AreaShape], u32, u32, &AreaImage) {
+        if c.on_subset() {
+            (&self.sub, self.sub_size.0, self.sub_size.1, &self.sub_reference)
+        } else {
+            (&self.w.shapes, self.w.width, self.w.height, &self.reference)
+        }
+    }
+}
+
+fn measure(w: &Workload, config: &Config, sizes: &Sizes) -> WorkloadReport {
+    let stage = Stage::new(w, sizes);
+    let speed = speed_at_origin(&stage, sizes);
+    let origin = errors_at_origin(&stage);
+    let cells = errors_by_magnitude(&stage, &origin, &config.magnitudes);
+    WorkloadReport {
+        name: w.name.clone(),
+        family: Family::Area,
+        description: w.description.clone(),
+        primitives: w.shapes.len(),
+        unit: "Mpix/s",
+        baseline: AreaMethod::REFERENCE.name(),
+        on_grid: true,
+        plans: vec![plan(w, &config.magnitudes)],
+        speed,
+        cells,
+    }
+}
+
+/// Every contender's speed at the origin, round-robin.
+fn speed_at_origin(stage: &Stage<'_>, sizes: &Sizes) -> Vec<SpeedEntry> {
+    let contenders: Vec<Contender<'_>> = AreaContender::ALL
         .iter()
         .map(|&m| {
-            let (shapes, width, height, r) = pick(m);
+            let (shapes, width, height, r) = stage.pick(m);
             let jobs = m.draw(shapes, width, height).map(|_| {
-                let job: Job<'_> = Box::new(move || m.draw(shapes, width, height).map_or(0, |o| o.len()));
+                let job: Job<'_> = Box::new(move || m.draw(shapes, width, height).map_or(0, |o| o.len() as u64));
                 (job, None)
             });
             Contender {
                 name: m.name().into(),
                 exact: m.is_exact(),
-                reference: AreaModel::Planned.name(),
+                reference: AreaMethod::REFERENCE.name(),
                 elements: r.pixels.len() as u64,
                 subset: m.on_subset(),
                 jobs,
             }
         })
         .collect();
-    let speed = entries(contenders, sizes.repetitions, sizes.min_pass_seconds);
+    entries(contenders, sizes.repetitions, sizes.min_pass_seconds)
+}
 
-    // Errors at the origin, by each model's own code.
-    let own = |m: AreaModel| (m == AreaModel::FtGrays).then_some(Quantization::FtGrays);
-    let origin: Vec<(AreaModel, Outcome)> = AreaModel::ALL
+/// Every contender's errors at the origin, by its own code, or its refusal.
+fn errors_at_origin(stage: &Stage<'_>) -> Vec<(AreaContender, Outcome)> {
+    AreaContender::ALL
         .iter()
         .map(|&m| {
-            let (shapes, width, height, r) = pick(m);
+            let (shapes, width, height, r) = stage.pick(m);
             let outcome = match m.draw(shapes, width, height) {
                 Ok(out) => Outcome::Measured {
                     placement: Placement::OnCanvas,
-                    metrics: area_metrics(r, &out, own(m)),
+                    metrics: area_metrics(r, &out, m.own_quantization()),
                 },
                 Err(e) => Outcome::Refused(e),
             };
             (m, outcome)
         })
-        .collect();
+        .collect()
+}
+
+/// Every contender's errors at each magnitude: computed anew with the placed coordinates
+/// by the methods that round them ([`AreaMethod::draw_at`]), the origin's for the others
+/// (a whole-pixel move leaves them unchanged).
+fn errors_by_magnitude(stage: &Stage<'_>, origin: &[(AreaContender, Outcome)], magnitudes: &[Magnitude]) -> Vec<Cell> {
+    let w = stage.w;
     let mut cells = Vec::new();
-    for &mag in &config.magnitudes {
+    for &mag in magnitudes {
         let at = mag.px_i64();
-        let placed: Vec<AreaShape> = if at == 0 {
-            Vec::new()
-        } else {
-            w.shapes.iter().map(|s| s.translated(at, at)).collect()
-        };
-        for (m, at_origin) in &origin {
-            let outcome = match (at, m) {
-                (0, _) => at_origin.clone(),
-                (_, AreaModel::Float) => {
-                    let out = AreaOutput::F32(float::rasterize_at(&placed, at, w.width, w.height, SEMANTICS));
-                    Outcome::Measured {
-                        placement: Placement::AtMagnitude,
-                        metrics: area_metrics(&reference, &out, None),
-                    }
-                }
-                (_, AreaModel::FtGrays) => match ftgrays::rasterize_at(&w.shapes, at, w.width, w.height) {
-                    Ok(levels) => Outcome::Measured {
-                        placement: Placement::AtMagnitude,
-                        metrics: area_metrics(&reference, &AreaOutput::Levels(levels), own(*m)),
-                    },
-                    Err(e) => Outcome::Refused(e),
+        for (m, at_origin) in origin {
+            let placed = match m {
+                AreaContender::Method(method) if at != 0 => method.draw_at(&w.shapes, at, w.width, w.height, SEMANTICS),
+                _ => None,
+            };
+            let outcome = match placed {
+                Some(Ok(out)) => Outcome::Measured {
+                    placement: Placement::AtMagnitude,
+                    metrics: area_metrics(&stage.reference, &out, m.own_quantization()),
                 },
-                _ => match at_origin {
+                Some(Err(e)) => Outcome::Refused(e),
+                None if at == 0 => at_origin.clone(),
+                None => match at_origin {
                     Outcome::Measured { metrics, .. } => Outcome::Measured {
                         placement: Placement::Translated,
                         metrics: metrics.clone(),
@@ -585,23 +538,13 @@ fn measure(w: &Workload, config: &Config, sizes: &Sizes) -> WorkloadReport {
             });
         }
     }
-    WorkloadReport {
-        name: w.name.clone(),
-        family: Family::Area,
-        description: w.description.clone(),
-        primitives: w.shapes.len(),
-        unit: "Mpix/s",
-        baseline: AreaModel::Planned.name(),
-        on_grid: true,
-        plans: vec![plan(w, &config.magnitudes)],
-        speed,
-        cells,
-    }
+    cells
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::area::{float, ftgrays};
 
     /// The far f32 walk at origin 0 is the model itself; at 2^10, the model on a canvas
     /// that reaches the window, restricted to it.

@@ -10,14 +10,12 @@ use num_traits::{One, Signed, ToPrimitive, Zero};
 use serde_json::json;
 
 use super::{CompareError, SizeMismatch};
+use crate::area::method::SUPERSAMPLE_SIDES;
 use crate::area::{conflate, exact, planned, supersample, AreaShape, Quantization, Semantics};
 use crate::convention::Target;
 use crate::model::{Model, Primitives};
 use crate::num::exact::{exact_text, nearest_f64};
 use crate::oracle::theirs::{GreyImage, Theirs};
-
-/// The supersampling counts tried (per axis).
-pub const SUPERSAMPLING: [u32; 4] = [2, 4, 8, 16];
 
 /// Why their level differs from the exact value's, the most plausible first.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -210,7 +208,7 @@ fn conflated(
     let theirs = BigRational::from_integer(level.into());
     let off = |value: &BigRational| (&theirs - value * &scale).abs();
     std::iter::once(conflate::Own::Exact(semantics))
-        .chain(SUPERSAMPLING.into_iter().map(conflate::Own::Supersampled))
+        .chain(SUPERSAMPLE_SIDES.into_iter().map(conflate::Own::Supersampled))
         .any(|own| {
             let values = conflate::own_values(shapes, boxes, x, y, own);
             if values.len() < 2 {
@@ -337,7 +335,7 @@ pub fn compare_grey(
                 GreyClass::Conflation
             } else if error.abs() <= reach {
                 GreyClass::Precision
-            } else if let Some(k) = SUPERSAMPLING.into_iter().find(|&k| {
+            } else if let Some(k) = SUPERSAMPLE_SIDES.into_iter().find(|&k| {
                 supersample::pixel_under_each_rule(shapes, x, y, k)
                     .iter()
                     .any(|v| rounds(level, v, s, top))
