@@ -40,7 +40,7 @@
 //!
 //! | to | call | feature |
 //! |---|---|---|
-//! | read a scene file (exact numbers, errors naming file, field, value) | [`parse_scene`] (text), [`scene::read_scene_file`] (a file, on threads) | |
+//! | read a scene file (exact numbers, errors naming file, field, value) | [`parse_scene`] (text), [`scene::parse_scene_with`] (bytes, with [`scene::ParseOptions`]: threads, a vertex bound), [`scene::read_scene_file`] (a file) | |
 //! | render it with a model | [`render`]`(&scene.primitives(), &target, model)` ([`render_triangles`] for a list of triangles; [`prepare`] once and [`PreparedScene::render`] many times) | |
 //! | its exact area coverage (anti-aliasing) | [`model::render_area`] | |
 //! | its coverage at every sample of a pattern (multisampling) | [`model::render_samples`] | |

@@ -31,7 +31,7 @@ use std::process::{Command, Output};
 use rasterproof::convention::Target;
 use rasterproof::edge::exact::edge_function;
 use rasterproof::raster::sample_exact;
-use rasterproof::scene::{parse_scene, parse_scene_bytes};
+use rasterproof::scene::{parse_scene, parse_scene_with, ParseOptions};
 use serde_json::Value;
 
 use crate::tempdir;
@@ -536,7 +536,7 @@ fn the_fixtures_draw_the_same_through_the_protocol() {
                 None => continue,
             },
         };
-        let scene = parse_scene_bytes(&std::fs::read(&f.scene).unwrap(), "fixture").unwrap();
+        let scene = parse_scene_with(&std::fs::read(&f.scene).unwrap(), "fixture", &ParseOptions::default()).unwrap();
         let got = renderer.render(&scene);
         match &f.theirs {
             None => {

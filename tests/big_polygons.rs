@@ -10,7 +10,7 @@ use rasterproof::convention::{Preset, Target};
 use rasterproof::fill::triangulate::triangulate;
 use rasterproof::geom::{FillRule, Point, Polygon};
 use rasterproof::model::{render, Model, Primitives};
-use rasterproof::scene::parse::{parse_scene, parse_scene_with_vertex_limit, MAX_SCENE_VERTICES};
+use rasterproof::scene::parse::{parse_scene, parse_scene_with, ParseOptions, MAX_SCENE_VERTICES};
 use rasterproof::scene::Scene;
 
 /// The text of a scene: a `size` x `size` canvas and one regular `n`-gon of radius `r`
@@ -146,30 +146,31 @@ fn a_5000_vertex_polygon_equals_the_plain_oracle() {
 #[test]
 fn the_scene_vertex_limit_is_refused_with_field_and_count() {
     assert_eq!(MAX_SCENE_VERTICES, 10_000_000);
+    let limited = |text: &str, source: &str, max_vertices: usize| {
+        let options = ParseOptions {
+            max_vertices,
+            ..ParseOptions::default()
+        };
+        parse_scene_with(text.as_bytes(), source, &options)
+    };
     let text = ngon_text(5000, 10.0, 24);
-    assert!(parse_scene_with_vertex_limit(&text, "s.json", 5000).is_ok());
+    assert!(limited(&text, "s.json", 5000).is_ok());
     assert_eq!(
-        parse_scene_with_vertex_limit(&text, "s.json", 4999)
-            .unwrap_err()
-            .to_string(),
+        limited(&text, "s.json", 4999).unwrap_err().to_string(),
         "s.json: polygons[0].v: 5000 vertices make 5000 polygon and clip-window vertices in the scene, at most 4999"
     );
     let with_hole_and_clip = r#"{"width": 8, "height": 8,
         "polygons": [{"v": [[0,0],[8,0],[8,8],[0,8]], "holes": [[[2,2],[4,2],[2,4]]]}],
         "clip": {"convex": [[0,0],[6,0],[6,6],[0,6]]}}"#;
-    assert!(parse_scene_with_vertex_limit(with_hole_and_clip, "c.json", 11).is_ok());
+    assert!(limited(with_hole_and_clip, "c.json", 11).is_ok());
     assert_eq!(
-        parse_scene_with_vertex_limit(with_hole_and_clip, "c.json", 10)
-            .unwrap_err()
-            .to_string(),
+        limited(with_hole_and_clip, "c.json", 10).unwrap_err().to_string(),
         "c.json: clip.convex: 4 vertices make 11 polygon and clip-window vertices in the scene, at most 10"
     );
     assert_eq!(
-        parse_scene_with_vertex_limit(with_hole_and_clip, "c.json", 6)
-            .unwrap_err()
-            .to_string(),
+        limited(with_hole_and_clip, "c.json", 6).unwrap_err().to_string(),
         "c.json: polygons[0].holes[0]: 3 vertices make 7 polygon and clip-window vertices in the scene, at most 6"
     );
     // A larger limit than the crate's is lowered to it: the same scene parses.
-    assert!(parse_scene_with_vertex_limit(with_hole_and_clip, "c.json", usize::MAX).is_ok());
+    assert!(limited(with_hole_and_clip, "c.json", usize::MAX).is_ok());
 }

@@ -14,7 +14,7 @@ use rasterproof::num::compact::Compact;
 use rasterproof::num::fixed::{snap, MAX_SUBPIXEL_MAGNITUDE};
 use rasterproof::num::{parse_rational, Rounding};
 use rasterproof::scene::parse::parse_scene_slow;
-use rasterproof::scene::{parse_scene, parse_scene_parallel};
+use rasterproof::scene::{parse_scene, parse_scene_with, ParseOptions};
 use rasterproof::tri::planned::PlannedTriangle;
 
 use crate::common::config;
@@ -144,7 +144,7 @@ proptest! {
         // On several threads (the triangles cut into runs, each read on its own): the same
         // scene or error, and the same primitives copied on several threads.
         for jobs in [2, 3] {
-            let parallel = parse_scene_parallel(&text, "s.json", jobs).map_err(|e| e.to_string());
+            let parallel = parse_scene_with(text.as_bytes(), "s.json", &ParseOptions::with_jobs(jobs)).map_err(|e| e.to_string());
             prop_assert_eq!(&parallel, &slow, "{} jobs: {}", jobs, text);
         }
         if let Ok(scene) = &fast {

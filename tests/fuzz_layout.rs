@@ -14,7 +14,7 @@ use std::fs;
 use std::path::Path;
 
 use rasterproof::harness::suite::SuiteReport;
-use rasterproof::scene::parse_scene_bytes;
+use rasterproof::scene::{parse_scene_with, ParseOptions};
 
 fn targets() -> BTreeSet<String> {
     fs::read_dir("fuzz/fuzz_targets")
@@ -91,7 +91,7 @@ fn scene_seeds_are_scenes_and_report_seeds_are_reports() {
     for t in ["planned_exact", "scene_parse"] {
         let parsed = seeds(t)
             .iter()
-            .filter(|(_, b)| parse_scene_bytes(b, "seed").is_ok())
+            .filter(|(_, b)| parse_scene_with(b, "seed", &ParseOptions::default()).is_ok())
             .count();
         // scene_parse's seeds include refused files on purpose (seed-error-*).
         let refused = seeds(t).iter().filter(|(p, _)| p.contains("seed-error-")).count();
@@ -103,7 +103,7 @@ fn scene_seeds_are_scenes_and_report_seeds_are_reports() {
     }
     for (path, bytes) in seeds("compare_oracle") {
         assert!(bytes.len() > 16, "{path}");
-        parse_scene_bytes(&bytes[16..], &path).unwrap_or_else(|e| panic!("{e}"));
+        parse_scene_with(&bytes[16..], &path, &ParseOptions::default()).unwrap_or_else(|e| panic!("{e}"));
     }
     for (path, bytes) in seeds("check_report") {
         let text = String::from_utf8(bytes).expect("UTF-8");

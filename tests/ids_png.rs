@@ -7,7 +7,7 @@ use std::path::Path;
 
 use assert_cmd::Command;
 use rasterproof::model::{render, Model};
-use rasterproof::scene::parse_scene_bytes;
+use rasterproof::scene::{parse_scene_with, ParseOptions};
 
 use crate::tempdir;
 
@@ -46,7 +46,7 @@ fn ids_png_reads_back_as_the_coverage() {
     let png = png.to_rgba8();
     assert_eq!(png.dimensions(), (8, 6));
 
-    let parsed = parse_scene_bytes(SCENE.as_bytes(), "s.json").unwrap();
+    let parsed = parse_scene_with(SCENE.as_bytes(), "s.json", &ParseOptions::default()).unwrap();
     let target = parsed.target().unwrap();
     let coverage = render(&parsed.primitives(), &target, Model::Fixed).unwrap();
     let mut several = 0;
@@ -77,7 +77,7 @@ fn json_on_stdout_is_streamed_unchanged() {
         .output()
         .unwrap();
     assert!(run.status.success());
-    let parsed = parse_scene_bytes(SCENE.as_bytes(), "s.json").unwrap();
+    let parsed = parse_scene_with(SCENE.as_bytes(), "s.json", &ParseOptions::default()).unwrap();
     let coverage = render(&parsed.primitives(), &parsed.target().unwrap(), Model::Fixed).unwrap();
     assert_eq!(String::from_utf8(run.stdout).unwrap(), coverage.to_json() + "\n");
 }

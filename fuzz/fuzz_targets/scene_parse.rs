@@ -13,14 +13,14 @@ use libfuzzer_sys::fuzz_target;
 use rasterproof::num::compact::Compact;
 use rasterproof::num::parse_rational;
 use rasterproof::scene::parse::parse_scene_slow;
-use rasterproof::scene::{parse_scene, parse_scene_bytes, parse_scene_parallel};
+use rasterproof::scene::{parse_scene, parse_scene_with, ParseOptions};
 
 fuzz_target!(|data: &[u8]| {
     if let Ok(text) = std::str::from_utf8(data) {
         let fast = parse_scene(text, "<fuzz>").map_err(|e| e.to_string());
         let slow = parse_scene_slow(text, "<fuzz>").map_err(|e| e.to_string());
         assert_eq!(fast, slow, "the fast and slow readers differ on:\n{text}");
-        let parallel = parse_scene_parallel(text, "<fuzz>", 2).map_err(|e| e.to_string());
+        let parallel = parse_scene_with(text.as_bytes(), "<fuzz>", &ParseOptions::with_jobs(2)).map_err(|e| e.to_string());
         assert_eq!(parallel, slow, "the reader on two threads differs on:\n{text}");
         for word in text.split(|c: char| c.is_whitespace() || c == ',' || c == '[' || c == ']') {
             let compact = Compact::parse(word);
@@ -30,7 +30,7 @@ fuzz_target!(|data: &[u8]| {
             }
         }
     }
-    let Ok(scene) = parse_scene_bytes(data, "<fuzz>") else {
+    let Ok(scene) = parse_scene_with(data, "<fuzz>", &ParseOptions::default()) else {
         return;
     };
     let text = scene.to_json();

@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use rasterproof::clip::arithmetic::ClipArithmetic;
-use rasterproof::scene::parse_scene_bytes;
+use rasterproof::scene::{parse_scene_with, ParseOptions};
 
 use super::OutputFormat;
 
@@ -56,7 +56,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         return Err("--divide-first: only with --model exact".into());
     }
     let bytes = std::fs::read(&o.scene).map_err(|e| format!("{name}: cannot read: {e}"))?;
-    let scene = parse_scene_bytes(&bytes, &name).map_err(|e| e.to_string())?;
+    let scene = parse_scene_with(&bytes, &name, &ParseOptions::default()).map_err(|e| e.to_string())?;
     let clipped = scene
         .clipped(arith, o.divide_first)
         .map_err(|e| format!("{name}: {e}"))?;

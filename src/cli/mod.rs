@@ -117,7 +117,8 @@ pub fn load_scene(
 ) -> Result<(String, rasterproof::scene::Scene, rasterproof::convention::Target), String> {
     use rasterproof::convention::Preset;
     let name = path.display().to_string();
-    let mut scene = rasterproof::scene::read_scene_file(path, jobs).map_err(|e| e.to_string())?;
+    let mut scene = rasterproof::scene::read_scene_file(path, &rasterproof::scene::ParseOptions::with_jobs(jobs))
+        .map_err(|e| e.to_string())?;
     if let Some(p) = preset {
         scene.preset = Preset::from_name(p)
             .ok_or_else(|| format!("--preset: unknown preset {p:?} (expected one of d3d11, vulkan, gl, cts)"))?;

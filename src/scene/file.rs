@@ -1,19 +1,20 @@
 //! A scene file read from disk: [`read_scene_file`], its size checked before reading, a big
-//! file read on several threads, then parsed ([`super::parse_scene_bytes_parallel`]).
+//! file read on several threads, then parsed ([`super::parse_scene_with`]).
 
 use std::path::Path;
 
-use super::parse::{parse_scene_bytes_parallel, MAX_SCENE_BYTES};
+use super::parse::{parse_scene_with, ParseOptions, MAX_SCENE_BYTES};
 use super::{Scene, SceneError};
 
-/// Reads and parses the scene file at `path` on up to `jobs` threads, named in errors as
+/// Reads and parses the scene file at `path` as `options` ask (a big file read and its
+/// triangles parsed on up to `options.jobs` threads), named in errors as
 /// the path is written. A file over [`MAX_SCENE_BYTES`] is refused before it is read, so
 /// that a huge file costs nothing.
 ///
 /// # Errors
 /// The file is too big or cannot be read, or it is not a valid scene: a [`SceneError`]
 /// naming the file (and the field and value where one is at fault).
-pub fn read_scene_file(path: &Path, jobs: usize) -> Result<Scene, SceneError> {
+pub fn read_scene_file(path: &Path, options: &ParseOptions) -> Result<Scene, SceneError> {
     let name = path.display().to_string();
     let whole = |message: String| SceneError {
         source: name.clone(),
@@ -28,8 +29,8 @@ pub fn read_scene_file(path: &Path, jobs: usize) -> Result<Scene, SceneError> {
             )));
         }
     }
-    let bytes = read_file(path, jobs).map_err(|e| whole(format!("cannot read: {e}")))?;
-    parse_scene_bytes_parallel(&bytes, &name, jobs)
+    let bytes = read_file(path, options.jobs).map_err(|e| whole(format!("cannot read: {e}")))?;
+    parse_scene_with(&bytes, &name, options)
 }
 
 /// A file's bytes; a big regular file on `jobs` threads, each reading its part of one

@@ -22,9 +22,7 @@ use crate::num::exact::{exact_text, json_pair};
 use crate::pattern::SamplePattern;
 
 pub use file::read_scene_file;
-pub use parse::{
-    parse_scene, parse_scene_bytes, parse_scene_bytes_parallel, parse_scene_parallel, parse_scene_with_vertex_limit,
-};
+pub use parse::{parse_scene, parse_scene_with, ParseOptions};
 
 /// Choices a scene makes on top of its preset.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

@@ -17,7 +17,7 @@ use rasterproof::clip::Window;
 use rasterproof::convention::{PixelCentre, Preset, Rounding, TieRule};
 use rasterproof::geom::{FillRule, Point, Polygon, Triangle};
 use rasterproof::line::{BresenhamTie, Line, LineRule};
-use rasterproof::scene::{parse_scene, parse_scene_bytes, Overrides, Scene, SceneTriangle};
+use rasterproof::scene::{parse_scene, parse_scene_with, Overrides, ParseOptions, Scene, SceneTriangle};
 
 /// The largest canvas side a fuzzed scene keeps (a parsed scene's canvas is cut to it).
 /// These bounds set the targets' speed: the plain oracles and `compare`'s reason search
@@ -55,7 +55,7 @@ impl<'a> Arbitrary<'a> for FuzzScene {
 
     fn arbitrary_take_rest(mut u: Unstructured<'a>) -> Result<Self> {
         let bytes = u.peek_bytes(u.len()).unwrap_or_default();
-        if let Ok(scene) = parse_scene_bytes(bytes, "<fuzz>") {
+        if let Ok(scene) = parse_scene_with(bytes, "<fuzz>", &ParseOptions::default()) {
             return bounded(scene);
         }
         bounded(structured(&mut u)?)

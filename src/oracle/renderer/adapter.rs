@@ -21,7 +21,7 @@ use std::process::ExitCode;
 use image::DynamicImage;
 use serde_json::{json, Value};
 
-use crate::scene::{parse_scene, parse_scene_bytes, Scene};
+use crate::scene::{parse_scene, parse_scene_with, ParseOptions, Scene};
 
 /// Runs an adapter named `name` on its command-line `args` (without the program name):
 /// `SCENE.json OUT.png` renders one scene with `render` and writes the PNG (exit 0, or 2
@@ -54,7 +54,8 @@ fn once<I: Into<DynamicImage>>(
     render: &mut impl FnMut(&Scene) -> Result<I, String>,
 ) -> Result<(), String> {
     let bytes = std::fs::read(scene_path).map_err(|e| format!("{}: cannot read: {e}", scene_path.display()))?;
-    let scene = parse_scene_bytes(&bytes, &scene_path.display().to_string()).map_err(|e| e.to_string())?;
+    let scene = parse_scene_with(&bytes, &scene_path.display().to_string(), &ParseOptions::default())
+        .map_err(|e| e.to_string())?;
     let image = render(&scene).map_err(|e| format!("{}: {e}", scene_path.display()))?;
     write_png(image.into(), out)
 }

@@ -474,7 +474,13 @@ impl<'de> Visitor<'de> for Colour {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::parse::{parse_scene, parse_scene_parallel};
+    use crate::scene::parse::{parse_scene, parse_scene_with, ParseOptions};
+    use crate::scene::{Scene, SceneError};
+
+    /// [`parse_scene_with`] on `jobs` threads.
+    fn parse_scene_parallel(text: &str, source: &str, jobs: usize) -> Result<Scene, SceneError> {
+        parse_scene_with(text.as_bytes(), source, &ParseOptions::with_jobs(jobs))
+    }
 
     /// A scene of `n` triangles, `sep` between them, `before` and `after` the array.
     fn scene(n: usize, sep: &str, before: &str, after: &str) -> String {

@@ -66,14 +66,74 @@ pub const MAX_SLOW_BYTES: usize = 64 << 20;
 /// coordinates is about 650 MB).
 pub const MAX_SCENE_BYTES: usize = 1 << 30;
 
-/// Parses raw bytes (they must be UTF-8).
-pub fn parse_scene_bytes(bytes: &[u8], source: &str) -> Result<Scene, SceneError> {
-    parse_scene_bytes_parallel(bytes, source, 1)
+/// How a scene is read ([`parse_scene_with`], [`crate::scene::read_scene_file`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ParseOptions {
+    /// The threads that read the triangles, consecutive triangles on each: the same
+    /// scene, or the same error, as on one thread (what `render --jobs` reads a big frame
+    /// with). 0 is read as 1.
+    pub jobs: usize,
+    /// The most polygon and clip-window vertices in all: [`MAX_SCENE_VERTICES`], or a
+    /// smaller bound of the caller's (a service that reads scenes from others and wants a
+    /// smaller memory bound; a larger value is lowered to [`MAX_SCENE_VERTICES`]).
+    pub max_vertices: usize,
 }
 
-/// [`parse_scene_bytes`] with the triangles read on up to `jobs` threads
-/// ([`parse_scene_parallel`]).
-pub fn parse_scene_bytes_parallel(bytes: &[u8], source: &str, jobs: usize) -> Result<Scene, SceneError> {
+impl Default for ParseOptions {
+    /// One thread, [`MAX_SCENE_VERTICES`].
+    fn default() -> ParseOptions {
+        ParseOptions {
+            jobs: 1,
+            max_vertices: MAX_SCENE_VERTICES,
+        }
+    }
+}
+
+impl ParseOptions {
+    /// The defaults, on up to `jobs` threads.
+    pub fn with_jobs(jobs: usize) -> ParseOptions {
+        ParseOptions {
+            jobs,
+            ..ParseOptions::default()
+        }
+    }
+}
+
+/// Parses a scene file's text; `source` names the file in errors ([`parse_scene_with`]
+/// and the default [`ParseOptions`]).
+///
+/// ```
+/// use rasterproof::scene::parse_scene;
+/// let s = parse_scene(r#"{"width": 4, "height": 4, "triangles": [{"v": [[0,0],[4,0],["1/3",4]]}]}"#, "a.json").unwrap();
+/// assert_eq!(s.triangles.len(), 1);
+/// let err = parse_scene(r#"{"width": 4, "height": 4, "triangles": [{"v": [[0,0],[4,"NaN"],[0,4]]}]}"#, "a.json").unwrap_err();
+/// assert_eq!(err.to_string(), "a.json: triangles[0].v[1][1]: \"NaN\" is not a finite number (expected a decimal like -12.5 or 1e3, or a fraction like 1/3)");
+/// ```
+///
+/// # Errors
+/// The text is not a valid scene: a [`SceneError`] naming `source`, the field and the value.
+pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
+    parse_text(text, source, &ParseOptions::default())
+}
+
+/// Parses a scene file's bytes (UTF-8, at most [`MAX_SCENE_BYTES`]) as `options` ask;
+/// `source` names the file in errors.
+///
+/// ```
+/// use rasterproof::scene::{parse_scene, parse_scene_with, ParseOptions};
+/// let text = r#"{"width": 8, "height": 8, "polygons": [{"v": [[0,0],[4,0],[0,4]]}, {"v": [[0,0],[4,0],[4,4],[0,4]]}]}"#;
+/// // On two threads: the scene of one thread.
+/// let two = parse_scene_with(text.as_bytes(), "a.json", &ParseOptions::with_jobs(2)).unwrap();
+/// assert_eq!(two, parse_scene(text, "a.json").unwrap());
+/// // A vertex bound of the caller's.
+/// let six = ParseOptions { max_vertices: 6, ..ParseOptions::default() };
+/// let err = parse_scene_with(text.as_bytes(), "a.json", &six).unwrap_err();
+/// assert_eq!(err.to_string(), "a.json: polygons[1].v: 4 vertices make 7 polygon and clip-window vertices in the scene, at most 6");
+/// ```
+///
+/// # Errors
+/// As [`parse_scene`], and bytes that are too many or not UTF-8.
+pub fn parse_scene_with(bytes: &[u8], source: &str, options: &ParseOptions) -> Result<Scene, SceneError> {
     if bytes.len() > MAX_SCENE_BYTES {
         return Err(SceneError {
             source: source.to_string(),
@@ -89,62 +149,14 @@ pub fn parse_scene_bytes_parallel(bytes: &[u8], source: &str, jobs: usize) -> Re
         field: String::new(),
         message: format!("not UTF-8 text ({e})"),
     })?;
-    parse_scene_parallel(text, source, jobs)
+    parse_text(text, source, options)
 }
 
-/// Parses a scene file's text; `source` names the file in errors.
-///
-/// ```
-/// use rasterproof::scene::parse_scene;
-/// let s = parse_scene(r#"{"width": 4, "height": 4, "triangles": [{"v": [[0,0],[4,0],["1/3",4]]}]}"#, "a.json").unwrap();
-/// assert_eq!(s.triangles.len(), 1);
-/// let err = parse_scene(r#"{"width": 4, "height": 4, "triangles": [{"v": [[0,0],[4,"NaN"],[0,4]]}]}"#, "a.json").unwrap_err();
-/// assert_eq!(err.to_string(), "a.json: triangles[0].v[1][1]: \"NaN\" is not a finite number (expected a decimal like -12.5 or 1e3, or a fraction like 1/3)");
-/// ```
-pub fn parse_scene(text: &str, source: &str) -> Result<Scene, SceneError> {
-    parse_scene_in(text, source, MAX_SCENE_VERTICES, 1)
-}
-
-/// [`parse_scene`] with the triangles read on up to `jobs` threads (consecutive triangles
-/// on each): the same scene, or the same error, as on one thread. What `render --jobs`
-/// reads a big frame with.
-///
-/// ```
-/// use rasterproof::scene::parse::parse_scene_parallel;
-/// use rasterproof::scene::parse_scene;
-/// let text = r#"{"width": 8, "height": 8, "triangles": [{"v": [[0,0],[4,0],[0,4]]}, {"v": [[1,1],[5,1],["1/3",6]]}]}"#;
-/// assert_eq!(parse_scene_parallel(text, "a.json", 2).unwrap(), parse_scene(text, "a.json").unwrap());
-/// ```
-///
-/// # Errors
-/// As [`parse_scene`].
-pub fn parse_scene_parallel(text: &str, source: &str, jobs: usize) -> Result<Scene, SceneError> {
-    parse_scene_in(text, source, MAX_SCENE_VERTICES, jobs)
-}
-
-/// [`parse_scene`] with a vertex limit of the caller's, `max_vertices` polygon and
-/// clip-window vertices in all instead of [`MAX_SCENE_VERTICES`] (a service that reads
-/// scenes from others and wants a smaller memory bound; a larger value is lowered to
-/// [`MAX_SCENE_VERTICES`]).
-///
-/// ```
-/// use rasterproof::scene::parse::parse_scene_with_vertex_limit;
-/// let text = r#"{"width": 8, "height": 8, "polygons": [{"v": [[0,0],[4,0],[0,4]]}, {"v": [[0,0],[4,0],[4,4],[0,4]]}]}"#;
-/// assert!(parse_scene_with_vertex_limit(text, "a.json", 7).is_ok());
-/// let err = parse_scene_with_vertex_limit(text, "a.json", 6).unwrap_err();
-/// assert_eq!(err.to_string(), "a.json: polygons[1].v: 4 vertices make 7 polygon and clip-window vertices in the scene, at most 6");
-/// ```
-///
-/// # Errors
-/// As [`parse_scene`].
-pub fn parse_scene_with_vertex_limit(text: &str, source: &str, max_vertices: usize) -> Result<Scene, SceneError> {
-    parse_scene_in(text, source, max_vertices, 1)
-}
-
-/// [`parse_scene_with_vertex_limit`] on up to `jobs` threads.
-fn parse_scene_in(text: &str, source: &str, max_vertices: usize, jobs: usize) -> Result<Scene, SceneError> {
-    let p = Reader::new(source, max_vertices.min(MAX_SCENE_VERTICES));
-    match fast::read(text, jobs) {
+/// The scene of `text`, read as `options` ask: the fast path, or the slow one where it
+/// declines.
+fn parse_text(text: &str, source: &str, options: &ParseOptions) -> Result<Scene, SceneError> {
+    let p = Reader::new(source, options.max_vertices.min(MAX_SCENE_VERTICES));
+    match fast::read(text, options.jobs) {
         // The schema's error too: the fast path found no syntax error, no repeated key and
         // no triangle it could not read, so the slow path would reach the same one.
         fast::Read::Fields(root, triangles) => return p.scene(&root, triangles),
@@ -519,7 +531,7 @@ mod tests {
 
     #[test]
     fn non_utf8_is_an_error() {
-        assert!(parse_scene_bytes(&[0xff, 0xfe], "b")
+        assert!(parse_scene_with(&[0xff, 0xfe], "b", &ParseOptions::default())
             .unwrap_err()
             .to_string()
             .contains("not UTF-8"));
