@@ -125,7 +125,7 @@ pub use geom::{Point, Polygon, Triangle};
 #[cfg(feature = "proptest")]
 pub use harness::{find_counterexample, HarnessConfig};
 pub use model::plan::plan_scene;
-pub use model::{prepare, render, render_triangles, Model, PreparedScene, Primitives};
+pub use model::{prepare, render, render_area, render_samples, render_triangles, Model, PreparedScene, Primitives};
 #[cfg(feature = "proptest")]
 pub use oracle::hunt::{hunt, HuntConfig};
 pub use oracle::{compare, explain_pixel, fit, Theirs};

@@ -599,6 +599,94 @@ fn grey8(width: u32, height: u32, levels: &[u8]) -> rasterproof::oracle::GreyIma
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 16, ..config("proptest-regressions/area.txt") })]
+
+    /// What the grey comparison's cheap test of supersampling rests on: a `k x k`
+    /// supersampled value, under any tie rule, lies within `E (2k - 1) / k^2` of the exact
+    /// true coverage, `E` the edges that meet the pixel (only a cell whose interior an edge
+    /// crosses can have a sample decision other than its share of area, and an edge
+    /// crosses at most `2k - 1` of a pixel's `k x k` cells); and the blend of the shapes'
+    /// own supersampled values lies as near the blend of their own exact values (each
+    /// factor of the blend lies in [0, 1]).
+    #[test]
+    fn supersampling_stays_within_its_edges_reach(poly in any_polygon(5, 7), t in small_triangle()) {
+        use rasterproof::area::conflate::{blend, own_values, Boxes, Own};
+        use rasterproof::area::exact::crossing_edges;
+        let shapes = [shape_of(&poly), triangle_shape(&t)];
+        let boxes = Boxes::of(&shapes);
+        for (x, y) in (0..6u32).flat_map(|y| (0..6u32).map(move |x| (x, y))) {
+            let (px, py) = (i64::from(x), i64::from(y));
+            let edges = i64::try_from(crossing_edges(&shapes, px, py).len()).unwrap();
+            let exact = value(&shapes, px, py, Semantics::True);
+            let exact_blend = blend(&own_values(&shapes, &boxes, x, y, Own::Exact(Semantics::True)));
+            for k in [2i64, 4, 8] {
+                let reach = r(edges * (2 * k - 1), k * k);
+                let side = u32::try_from(k).unwrap();
+                for sampled in supersample::pixel_under_each_rule(&shapes, x, y, side) {
+                    prop_assert!((&sampled - &exact).abs() <= reach, "({x}, {y}) {k}x{k}: {sampled} vs {exact}");
+                }
+                let blended = blend(&own_values(&shapes, &boxes, x, y, Own::Supersampled(side)));
+                prop_assert!((&blended - &exact_blend).abs() <= reach, "({x}, {y}) {k}x{k} blended");
+            }
+        }
+    }
+
+    /// A correct `k x k` supersampler (top-left ties, rounded to 8 bits) is never called
+    /// `gross` under true coverage: the test that spares a gross pixel its samples never
+    /// rules out a real supersampler.
+    #[test]
+    fn a_supersampler_is_never_gross(poly in any_polygon(5, 7), t in small_triangle(), k in prop::sample::select(vec![2u32, 4, 8, 16])) {
+        use rasterproof::oracle::compare::grey::{compare_grey, GreyClass};
+        let shapes = [shape_of(&poly), triangle_shape(&t)];
+        let levels: Vec<u8> = supersample::rasterize(&shapes, 6, 6, k)
+            .levels(Quantization::Round8)
+            .into_iter()
+            .map(|l| u8::try_from(l).unwrap())
+            .collect();
+        let report = compare_grey(
+            &shapes,
+            &canvas(6, 6),
+            &grey8(6, 6, &levels),
+            &grey_options(Semantics::True, Quantization::Round8),
+        )
+        .unwrap();
+        let gross: Vec<_> = report.pixels.iter().filter(|p| p.class == GreyClass::Gross).collect();
+        prop_assert!(gross.is_empty(), "{k}x{k}: {gross:?}");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, ..config("proptest-regressions/area.txt") })]
+
+    /// FreeType's method (`area::ftgrays`, bit for bit FreeType's smooth rasterizer in the
+    /// adapter tests) on any polygon, tangled and self-overlapping ones included, judged
+    /// under true coverage: it accumulates the winding number (another semantics) and its
+    /// divisions round (precision), and where both meet at one pixel the two compose; a
+    /// correct renderer is never called `gross`.
+    #[test]
+    fn freetype_is_never_gross_under_true_coverage(poly in any_polygon(6, 7)) {
+        use rasterproof::oracle::compare::grey::{compare_grey, GreyClass};
+        // FreeType reads 26.6 fixed point: the shape on its 1/64 px grid (as `hunt --as
+        // grey --grid 6` puts it), so that its arithmetic is judged, not its input.
+        let mut scene = rasterproof::scene::Scene { polygons: vec![poly], ..rasterproof::scene::Scene::new(6, 6, vec![]) };
+        rasterproof::oracle::hunt::on_grid(&mut scene, 6);
+        let shapes = [shape_of(&scene.polygons[0])];
+        let Ok(levels) = ftgrays::rasterize(&shapes, 6, 6) else {
+            return Ok(());
+        };
+        let report = compare_grey(
+            &shapes,
+            &canvas(6, 6),
+            &grey8(6, 6, &levels),
+            &grey_options(Semantics::True, Quantization::FtGrays),
+        )
+        .unwrap();
+        let gross: Vec<_> = report.pixels.iter().filter(|p| p.class == GreyClass::Gross).collect();
+        prop_assert!(gross.is_empty(), "{gross:?}");
+    }
+}
+
 /// The grey comparison's classes, each from a renderer whose behaviour is known by hand:
 /// - FreeType's method on the rectangle of `ftgrays_rectangle_by_hand`, walked the way
 ///   round that complements negative values: its 8 partial pixels are one level under the
@@ -716,19 +804,26 @@ fn compare_grey_cli() {
         r#"{"width": 3, "height": 3, "triangles": [{"v": [[0, 0], [3, 0], [0, 3]]}]}"#,
     )
     .unwrap();
-    let grey = dir.path().join("g.png");
     let s = scene.to_str().unwrap();
-    let (code, _, err) = rasterproof(&[
-        "render",
-        s,
-        "--coverage",
-        "area",
-        "--model",
-        "exact",
-        "--grey-out",
-        grey.to_str().unwrap(),
-    ]);
-    assert_eq!(code, Some(0), "{err}");
+    // The oracle's own grey PNG of the scene under `quantization`.
+    let render_grey = |name: &str, quantization: &str| {
+        let grey = dir.path().join(name);
+        let (code, _, err) = rasterproof(&[
+            "render",
+            s,
+            "--coverage",
+            "area",
+            "--model",
+            "exact",
+            "--quantization",
+            quantization,
+            "--grey-out",
+            grey.to_str().unwrap(),
+        ]);
+        assert_eq!(code, Some(0), "{err}");
+        grey
+    };
+    let grey = render_grey("g.png", "round");
     let run = |theirs: &std::path::Path, extra: &[&str]| {
         rasterproof(
             &[
@@ -773,6 +868,23 @@ fn compare_grey_cli() {
     let (code, _, err) = run(&dir.path().join("none.png"), &[]);
     assert_eq!(code, Some(2));
     assert!(err.contains("none.png: cannot read"), "{err}");
+    // A 16-bit grey PNG: `round` (the default) reads it at its depth; a quantization of
+    // 8-bit levels is refused naming the one that reads 16.
+    let grey16 = render_grey("g16.png", "round16");
+    let (code, text, err) = run(&grey16, &[]);
+    assert_eq!(code, Some(0), "{text}{err}");
+    assert!(
+        text.contains("0 of 9 pixels differ") && text.contains("round16"),
+        "{text}"
+    );
+    let (code, _, err) = run(&grey16, &["--quantization", "truncate"]);
+    assert_eq!(code, Some(2));
+    assert!(
+        err.contains(
+            "16-bit levels; the quantization truncate makes 8-bit ones (the quantization of 16-bit levels is round16)"
+        ),
+        "{err}"
+    );
 }
 
 /// `--fit` for grey images names the method that draws their image, from images whose

@@ -565,3 +565,69 @@ fn plan_lists_primitives_in_id_order_in_text_and_json() {
         .sum();
     assert_eq!(planned, 1, "{json}");
 }
+
+/// The long flags that clap's `--help` text defines: each option line (`  -o, --out
+/// <OUT>`, `      --model <MODEL>`), not the flags its descriptions mention.
+fn help_flags(help: &str) -> std::collections::BTreeSet<String> {
+    help.lines()
+        .map(str::trim_start)
+        .filter(|l| l.starts_with('-'))
+        .flat_map(|l| l.split([' ', ',']).filter(|w| w.starts_with("--")).take(1))
+        .map(|w| w.split('=').next().unwrap_or(w).to_string())
+        .filter(|f| f != "--help" && f != "--version")
+        .collect()
+}
+
+/// The flags a synopsis names (`--name`; `-o` is `--out`), each once, sorted.
+fn synopsis_flags(text: &str) -> std::collections::BTreeSet<String> {
+    let mut out = std::collections::BTreeSet::new();
+    for word in text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '-')) {
+        if word == "-o" {
+            out.insert("--out".to_string());
+        } else if word.len() > 2 && word.starts_with("--") && word[2..].starts_with(|c: char| c.is_ascii_lowercase()) {
+            out.insert(word.to_string());
+        }
+    }
+    out
+}
+
+/// docs/cli.md's synopses name every flag that each subcommand's `--help` has, and no
+/// other: a flag added to the command without its synopsis (or the other way round) fails
+/// here, naming the subcommand and the flags.
+#[test]
+fn the_synopses_name_every_flag_of_help() {
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/cli.md")).unwrap();
+    let start = doc.find("## Command line").expect("docs/cli.md has its synopses");
+    let block = doc[start..].split("```").nth(1).expect("the synopses' block");
+    let mut subcommands: Vec<&str> = block
+        .lines()
+        .filter_map(|l| l.strip_prefix("rasterproof "))
+        .filter_map(|l| l.split_whitespace().next())
+        .collect();
+    subcommands.dedup();
+    assert!(subcommands.len() >= 12, "{subcommands:?}");
+    let mut wrong = Vec::new();
+    for sub in subcommands {
+        let synopsis: String = block
+            .lines()
+            .filter(|l| l.strip_prefix("rasterproof ").and_then(|l| l.split_whitespace().next()) == Some(sub))
+            .collect::<Vec<_>>()
+            .join("\n");
+        let out = bin().args([sub, "--help"]).output().unwrap();
+        assert!(out.status.success(), "{sub} --help");
+        let help = help_flags(&String::from_utf8_lossy(&out.stdout));
+        let documented = synopsis_flags(&synopsis);
+        let missing: Vec<&String> = help.difference(&documented).collect();
+        let extra: Vec<&String> = documented.difference(&help).collect();
+        if !missing.is_empty() || !extra.is_empty() {
+            wrong.push(format!(
+                "{sub}: --help has {missing:?} the synopsis lacks; the synopsis has {extra:?} --help lacks"
+            ));
+        }
+    }
+    assert!(
+        wrong.is_empty(),
+        "docs/cli.md's synopses against --help:\n{}",
+        wrong.join("\n")
+    );
+}

@@ -218,6 +218,8 @@ fn grey_verdicts() {
     };
     assert_eq!(f.kind, FailureKind::BadOutput);
     assert!(f.message.contains("16-bit"), "{f}");
+    // The message names the quantization that reads their depth.
+    assert!(f.message.contains("16-bit levels is round16"), "{f}");
     let ids = rasterproof::coverage::Coverage::new(2, 1);
     assert!(matches!(
         judge_grey(&scene, Ok(Theirs::from_coverage(&ids, Format::Ids)), Semantics::True, q),
@@ -450,4 +452,83 @@ fn grey_hunt_options_are_checked() {
     assert!(run(&["--as", "grey", "--fit-first"]).contains("--fit-first"));
     assert!(run(&["--as", "grey", "--quantization", "half"]).contains("--quantization: unknown quantization \"half\""));
     assert!(run(&["--as", "grey", "--grid", "20"]).contains("--grid: 20"));
+}
+
+/// A renderer that prints garbage: the grey hunt's finding is a failure whose text shows
+/// what it answered (not only "protocol error"), whose summary line gives no pixels and no
+/// error in quanta (a failure has none), and whose report names its format, version and
+/// the failure's kind and message.
+#[test]
+fn a_failing_renderer_is_reported_with_its_answer() {
+    use rasterproof::oracle::hunt::{hunt_grey, GreyHuntConfig, HuntConfig, AREA_FAMILIES};
+    use rasterproof::oracle::renderer::program::RenderFailure;
+    let garbage = |_: &Scene| -> Result<Theirs, RenderFailure> {
+        Err(RenderFailure {
+            kind: FailureKind::Protocol,
+            message: "its answer was not an image: \"hello, world\"".to_string(),
+        })
+    };
+    let config = GreyHuntConfig {
+        hunt: HuntConfig {
+            cases: 3,
+            canvas: 4,
+            families: AREA_FAMILIES.to_vec(),
+            shrink_runs: 20,
+            ..HuntConfig::default()
+        },
+        semantics: Semantics::True,
+        quantization: Quantization::Round8,
+        grid: None,
+    };
+    let report = hunt_grey(&garbage, &config, 1, &|| {}, &Default::default()).unwrap();
+    assert_eq!(report.failed + report.refused, 3);
+    let [finding] = report.findings.as_slice() else {
+        panic!("one failure signature: {:?}", report.findings);
+    };
+    assert_eq!(finding.signature, GreySignature::Failure(FailureKind::Protocol));
+    let text = finding.to_text(1);
+    assert!(
+        text.starts_with("finding 01: failure: protocol error (first in case"),
+        "{text}"
+    );
+    assert!(text.contains("\"hello, world\""), "{text}");
+    assert!(text.contains("the original scene:"), "{text}");
+    let summary = report.to_text(8);
+    assert!(!summary.contains("quanta") && !summary.contains("pixels,"), "{summary}");
+    assert!(summary.contains("hello, world"), "{summary}");
+    let json = report.to_json("garbage");
+    assert_eq!(json["format"], "rasterproof grey hunt report");
+    assert_eq!(json["version"], 2);
+    assert_eq!(json["rasterproof"], env!("CARGO_PKG_VERSION"));
+    assert_eq!(json["renderer_runs"], Value::Null, "a closure is not a program");
+    assert_eq!(json["findings"][0]["failure"]["kind"], "protocol error");
+    assert!(json["findings"][0]["failure"]["message"]
+        .as_str()
+        .unwrap()
+        .contains("hello, world"));
+}
+
+/// `--limit 0` asks for the counts alone: the grey text lists no pixel and says nothing of
+/// "more" of them; `--limit 1` lists one and says how many more.
+#[test]
+fn limit_zero_lists_no_pixels() {
+    let shapes = [strip(r(0, 1), r(3, 2))];
+    let theirs = GreyImage {
+        width: 2,
+        height: 1,
+        bits: 8,
+        levels: vec![250, 120],
+    };
+    let report = compare_grey(
+        &shapes,
+        &canvas(2, 1),
+        &theirs,
+        &grey_options(Semantics::True, Quantization::Round8),
+    )
+    .unwrap();
+    assert_eq!(report.pixels.len(), 2);
+    let none = report.levels_text(0);
+    assert!(!none.contains("more") && !none.contains("theirs 250"), "{none}");
+    let one = report.levels_text(1);
+    assert!(one.contains("theirs 250") && one.contains("... and 1 more"), "{one}");
 }

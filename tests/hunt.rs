@@ -907,3 +907,81 @@ fn the_findings_do_not_depend_on_the_jobs() {
     // 8 jobs for at most 4 findings: each shrink tries 2 or more candidates at once.
     assert_eq!(one, run("8"));
 }
+
+/// A finding's header names the kinds of pixels its minimal scene shows; where its cases
+/// showed other kinds, it says so after them: a shrink keeps the cause, not always the
+/// kind (seen: a minimal scene with an extra pixel under a header of missing and wrong
+/// owner pixels).
+#[test]
+fn a_finding_header_names_its_minimal_scenes_kinds() {
+    use rasterproof::coverage::CoverageSink;
+    use rasterproof::oracle::hunt::{judge, signatures, HuntFinding};
+    let scene = rasterproof::scene::parse_scene(
+        r#"{"width":4,"height":4,"triangles":[{"v":[[0,0],[2,0],[0,2]]}]}"#,
+        "s.json",
+    )
+    .unwrap();
+    let target = scene.target().unwrap();
+    // The oracle's coverage and one pixel more, far from the triangle: an extra pixel.
+    let mut theirs = render(&scene.primitives(), &target, Model::ExactSnapped).unwrap();
+    theirs.cover(3, 3, 0);
+    let verdict = judge(
+        &scene,
+        Ok(Theirs::from_coverage(&theirs, Format::Json)),
+        Model::ExactSnapped,
+    );
+    let signature = signatures(&verdict).into_iter().next().expect("a signature");
+    let finding = |kinds: Vec<PixelKind>| HuntFinding {
+        signature: signature.clone(),
+        kinds,
+        case: 0,
+        cases: 1,
+        original: scene.clone(),
+        minimal: scene.clone(),
+        verdict: verdict.clone(),
+        runs: 0,
+        renderer_calls: 0,
+    };
+    assert_eq!(finding(vec![PixelKind::Extra]).kinds_text(), " (extra pixels)");
+    assert_eq!(
+        finding(vec![PixelKind::Missing, PixelKind::WrongOwner]).kinds_text(),
+        " (extra pixels; its cases showed missing and wrong owner pixels)"
+    );
+}
+
+/// A renderer that drew nothing is told so in the headline, not left to read its
+/// scene's edge pixels as ties (seen: an all-transparent PNG against `tie-grid.json`
+/// reported as 63 `tie` and 18 `near-edge` pixels).
+#[test]
+fn an_empty_image_is_headlined_as_drawing_nothing() {
+    use rasterproof::coverage::CoverageSink;
+    use rasterproof::oracle::{compare, CompareOptions};
+    let scene =
+        rasterproof::scene::parse_scene(include_str!("../adapters/scenes/tie-grid.json"), "tie-grid.json").unwrap();
+    let target = scene.target().unwrap();
+    let nothing = Theirs::from_coverage(&Coverage::new(target.width, target.height), Format::Mask);
+    let options = CompareOptions {
+        model: Model::ExactSnapped,
+        classify_at_most: None,
+        jobs: 1,
+    };
+    let report = compare(&scene.primitives(), &target, &nothing, &options).unwrap();
+    let headline = report.headline().expect("a headline");
+    assert!(
+        headline.starts_with("their image covers no pixel: their renderer drew nothing"),
+        "{headline}"
+    );
+    assert!(report.to_text("tie-grid.json", "empty.png", 0).contains(&headline));
+    // One pixel drawn is not nothing: the headline is the classes' again.
+    let mut one = Coverage::new(target.width, target.height);
+    let (x, y) = (report.pixels[0].x, report.pixels[0].y);
+    one.cover(x, y, 0);
+    let some = compare(
+        &scene.primitives(),
+        &target,
+        &Theirs::from_coverage(&one, Format::Mask),
+        &options,
+    )
+    .unwrap();
+    assert!(!some.headline().unwrap_or_default().contains("drew nothing"));
+}

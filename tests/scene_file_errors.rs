@@ -63,3 +63,27 @@ fn a_bare_nan_says_it_is_not_json_and_what_to_write() {
     );
     assert_eq!(clip, render);
 }
+
+/// A parsed scene always has its target; a hand-built one with a side or subpixel bits
+/// out of range gets an error naming the field and its value (not a `None` to unwrap).
+#[test]
+fn a_hand_built_scene_target_names_the_bad_field() {
+    use rasterproof::scene::{parse_scene, Scene};
+    let parsed = parse_scene(r#"{"width": 3, "height": 2, "triangles": []}"#, "s.json").unwrap();
+    let target = parsed.target().unwrap();
+    assert_eq!((target.width, target.height), (3, 2));
+    let e = Scene::new(0, 2, vec![]).target().unwrap_err();
+    assert_eq!(
+        (e.field.as_str(), e.message.as_str()),
+        ("width", "0 is outside 1..=16384")
+    );
+    let e = Scene::new(3, 20_000, vec![]).target().unwrap_err();
+    assert_eq!(e.field, "height");
+    let mut bits = Scene::new(3, 2, vec![]);
+    bits.overrides.subpixel_bits = Some(0);
+    let e = bits.target().unwrap_err();
+    assert_eq!(
+        (e.field.as_str(), e.message.as_str()),
+        ("subpixel_bits", "0 is outside 1..=16")
+    );
+}

@@ -158,3 +158,43 @@ fn drops_go_on_with_the_primitive_before() {
         assert_eq!(name(&minimal), "C");
     }
 }
+
+/// The shape a grey hunt's finding kept before the shrinker dropped polygon parts: an
+/// outline with repeated points and a hole of three copies of (1, 1), against a
+/// renderer whose failure needs only a polygon with area at pixel (0, 0). The shrinker
+/// drops the repeated points and the empty hole: one hole-less polygon of three vertices,
+/// none repeated, is left.
+#[test]
+fn polygon_repeated_points_and_empty_holes_are_dropped() {
+    use rasterproof::geom::{FillRule, Polygon};
+    let q = |x: i64, y: i64| Point::from_ints(x, y);
+    let polygon = Polygon {
+        outline: vec![q(0, 0), q(0, 0), q(4, 0), q(4, 0), q(4, 4), q(0, 4), q(0, 4), q(0, 0)],
+        holes: vec![vec![q(1, 1), q(1, 1), q(1, 1)]],
+        fill_rule: FillRule::NonZero,
+    };
+    let scene = Scene {
+        polygons: vec![polygon],
+        ..Scene::new(4, 4, vec![])
+    };
+    // The failure: pixel (0, 0) covered by the exact oracle (a polygon with area there).
+    let mut keeps = |s: &Scene| {
+        let target = s.target().unwrap();
+        render(&s.primitives(), &target, Model::Exact).is_ok_and(|c| !c.owners(0, 0).is_empty())
+    };
+    assert!(keeps(&scene));
+    let (minimal, _) = shrink(&scene, &mut keeps, 400, None);
+    assert!(keeps(&minimal));
+    assert_eq!(minimal.polygons.len(), 1);
+    let p = &minimal.polygons[0];
+    assert!(p.holes.is_empty(), "the empty hole is dropped: {p:?}");
+    assert_eq!(p.outline.len(), 3, "a triangle is left: {:?}", p.outline);
+    for k in 0..3 {
+        assert_ne!(
+            p.outline[k],
+            p.outline[(k + 1) % 3],
+            "no repeated point: {:?}",
+            p.outline
+        );
+    }
+}

@@ -65,7 +65,7 @@ fuzz_target!(|input: (PatternChoice, FuzzScene)| {
     let (choice, FuzzScene { mut scene }) = input;
     let Some(pattern) = choice.pattern() else { return };
     scene.lines.clear();
-    let Some(target) = scene.target() else { return };
+    let Ok(target) = scene.target() else { return };
     let primitives = scene.primitives();
     let plain = render_samples(&primitives, &target, &pattern, Model::ExactPlain);
     let snapped = render_samples(&primitives, &target, &pattern, Model::ExactSnappedPlain);

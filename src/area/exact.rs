@@ -192,14 +192,62 @@ pub fn pixel(shapes: &[AreaShape], px: i64, py: i64) -> (BigRational, Vec<BigRat
 /// sum of each shape's folded accumulated value.
 pub fn value(shapes: &[AreaShape], px: i64, py: i64, semantics: Semantics) -> BigRational {
     let (union, accumulated) = pixel(shapes, px, py);
+    under(shapes, union, &accumulated, semantics)
+}
+
+/// Pixel `(px, py)`'s value under each semantics, in [`Semantics::ALL`] order, and each
+/// shape's signed integral of its path's winding number over it: [`value`] of every
+/// semantics, the pixel's pieces found once.
+pub fn values(shapes: &[AreaShape], px: i64, py: i64) -> (Vec<(Semantics, BigRational)>, Vec<BigRational>) {
+    let (union, accumulated) = pixel(shapes, px, py);
+    let values = Semantics::ALL
+        .into_iter()
+        .map(|s| (s, under(shapes, union.clone(), &accumulated, s)))
+        .collect();
+    (values, accumulated)
+}
+
+/// The value under `semantics` of a pixel whose union has area `union` and whose shapes'
+/// integrals are `accumulated`.
+fn under(shapes: &[AreaShape], union: BigRational, accumulated: &[BigRational], semantics: Semantics) -> BigRational {
     match semantics {
         Semantics::True => union,
         _ => shapes
             .iter()
-            .zip(&accumulated)
+            .zip(accumulated)
             .map(|(s, acc)| fold(s.fill_rule, acc, semantics))
             .sum(),
     }
+}
+
+/// The edges of `shapes` that meet pixel `(px, py)`'s closed square, in shape, contour
+/// and edge order.
+pub fn crossing_edges(shapes: &[AreaShape], px: i64, py: i64) -> Vec<CrossingEdge> {
+    let int = |v: i64| BigRational::from_integer(v.into());
+    let square = crate::clip::Rect {
+        xmin: int(px),
+        ymin: int(py),
+        xmax: int(px + 1),
+        ymax: int(py + 1),
+    };
+    let mut edges = Vec::new();
+    for (s, shape) in shapes.iter().enumerate() {
+        for (c, contour) in shape.contours().enumerate() {
+            for e in 0..contour.len() {
+                let (a, b) = (&contour[e], &contour[(e + 1) % contour.len()]);
+                if crate::clip::cohen_sutherland::clip_exact(a, b, &square).is_some() {
+                    edges.push(CrossingEdge {
+                        shape: s,
+                        contour: c,
+                        edge: e,
+                        from: a.clone(),
+                        to: b.clone(),
+                    });
+                }
+            }
+        }
+    }
+    edges
 }
 
 /// The exact area coverage of `shapes` on a `width` x `height` canvas: every pixel that
@@ -276,41 +324,13 @@ pub struct AreaExplanation {
 /// Pixel `(px, py)` explained: its exact values, each shape's integral, the edges that meet
 /// its square and its pieces with their winding numbers.
 pub fn explain(shapes: &[AreaShape], px: i64, py: i64) -> AreaExplanation {
-    let int = |v: i64| BigRational::from_integer(v.into());
-    let (x0, x1, y0, y1) = (int(px), int(px + 1), int(py), int(py + 1));
-    let square = crate::clip::Rect {
-        xmin: x0,
-        ymin: y0,
-        xmax: x1,
-        ymax: y1,
-    };
-    let mut edges = Vec::new();
-    for (s, shape) in shapes.iter().enumerate() {
-        for (c, contour) in shape.contours().enumerate() {
-            for e in 0..contour.len() {
-                let (a, b) = (&contour[e], &contour[(e + 1) % contour.len()]);
-                if crate::clip::cohen_sutherland::clip_exact(a, b, &square).is_some() {
-                    edges.push(CrossingEdge {
-                        shape: s,
-                        contour: c,
-                        edge: e,
-                        from: a.clone(),
-                        to: b.clone(),
-                    });
-                }
-            }
-        }
-    }
-    let (_, accumulated) = pixel(shapes, px, py);
+    let (values, accumulated) = values(shapes, px, py);
     AreaExplanation {
         x: px,
         y: py,
-        values: Semantics::ALL
-            .into_iter()
-            .map(|s| (s, value(shapes, px, py, s)))
-            .collect(),
+        values,
         accumulated,
-        edges,
+        edges: crossing_edges(shapes, px, py),
         pieces: pieces(shapes, px, py),
     }
 }

@@ -202,6 +202,24 @@ impl Quantization {
         Quantization::ALL.into_iter().find(|q| q.name() == name)
     }
 
+    /// The quantization of the same kind that makes `bits`-bit levels: rounding at 8 and
+    /// at 16 bits are each other's; truncation and FreeType's levels are 8-bit only
+    /// (`None` at 16).
+    ///
+    /// ```
+    /// use rasterproof::area::Quantization;
+    /// assert_eq!(Quantization::Round8.at_depth(16), Some(Quantization::Round16));
+    /// assert_eq!(Quantization::Round16.at_depth(8), Some(Quantization::Round8));
+    /// assert_eq!(Quantization::FtGrays.at_depth(16), None);
+    /// ```
+    pub fn at_depth(self, bits: u32) -> Option<Quantization> {
+        match (self, bits) {
+            (Quantization::Round8 | Quantization::Round16, 8) => Some(Quantization::Round8),
+            (Quantization::Round8 | Quantization::Round16, 16) => Some(Quantization::Round16),
+            (q, b) => (q.bits() == b).then_some(q),
+        }
+    }
+
     /// Bits per grey level: 8 or 16.
     pub fn bits(self) -> u32 {
         match self {

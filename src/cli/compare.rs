@@ -4,6 +4,7 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use rasterproof::area::Quantization;
 use rasterproof::coverage::picture::{legend_path, Scale};
 use rasterproof::oracle::compare::fit::samples::{SampleFitOptions, POSITION_GRID};
 use rasterproof::oracle::compare::grey::GreyOptions;
@@ -88,9 +89,10 @@ pub struct Options {
     /// `accumulated` or `unclamped`; see `render --coverage area`).
     #[arg(long, default_value = "true", value_name = "true|accumulated|unclamped")]
     semantics: String,
-    /// With `--as grey`: how their levels quantize a value (`round`, `truncate`,
-    /// `ftgrays`: 8-bit; `round16`: 16-bit). A pixel whose level is another rounding of the
-    /// exact value is classed `quantization`.
+    /// With `--as grey`: how their levels quantize a value (`round`: to the nearest level
+    /// at their image's depth, 8 or 16 bits; `truncate`, `ftgrays`: 8-bit; `round16`:
+    /// 16-bit). A pixel whose level is another rounding of the exact value is classed
+    /// `quantization`.
     #[arg(long, default_value = "round", value_name = "round|truncate|ftgrays|round16")]
     quantization: String,
 }
@@ -158,19 +160,23 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
             .as_deref()
             .unwrap_or(if grey { "exact" } else { "exact-snapped" }),
     )?;
-    let grey_options = if grey {
-        Some(GreyOptions {
-            model,
-            semantics: super::parse_semantics(&o.semantics)?,
-            quantization: super::parse_quantization(&o.quantization)?,
-        })
-    } else {
-        None
-    };
+    let semantics = super::parse_semantics(&o.semantics)?;
+    let quantization = super::parse_quantization(&o.quantization)?;
     let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention, o.jobs as usize)?;
     let theirs_name = o.theirs.display().to_string();
     let bytes = std::fs::read(&o.theirs).map_err(|e| format!("{theirs_name}: cannot read: {e}"))?;
     let theirs = Theirs::read(&bytes, &theirs_name, format, background).map_err(|e| e.to_string())?;
+    // Rounding is read at their image's depth (8 or 16 bits); the other quantizations
+    // name theirs.
+    let quantization = match theirs.grey() {
+        Some(g) if quantization == Quantization::Round8 => quantization.at_depth(g.bits).unwrap_or(quantization),
+        _ => quantization,
+    };
+    let grey_options = grey.then_some(GreyOptions {
+        model,
+        semantics,
+        quantization,
+    });
     let pattern = match o.samples {
         Some(n) => Some(super::parse_samples(n)?),
         None => scene.samples.clone(),

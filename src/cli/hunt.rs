@@ -11,8 +11,8 @@ use std::time::Duration;
 use rasterproof::area::{Quantization, Semantics};
 use rasterproof::convention::Preset;
 use rasterproof::oracle::hunt::{
-    fit_convention, hunt_grey, hunt_interruptible, rust_test, FitFirst, GreyHuntConfig, GreyVerdict, HuntConfig,
-    HuntReport, SceneFamily, AREA_FAMILIES, FIT_PROBES,
+    fit_convention, hunt_grey, hunt_interruptible, rust_test, FitFirst, GreyHuntConfig, HuntConfig, HuntReport,
+    SceneFamily, AREA_FAMILIES, FIT_PROBES,
 };
 use rasterproof::oracle::renderer::{Program, Renderer, StayAlive};
 use rasterproof::oracle::GreyImage;
@@ -385,11 +385,7 @@ fn run_grey(o: &Options, config: &GreyHuntConfig, renderer: &dyn Renderer, cmd: 
             let n = n + 1;
             let path = |ext: &str| dir.join(format!("finding-{n:02}.{ext}"));
             outputs.stage_text(&path("json"), &f.minimal.to_json())?;
-            let mut about = format!("{}\n", f.signature.describe());
-            if let GreyVerdict::Differs(r) = &f.verdict {
-                about.push_str(&r.levels_text(usize::MAX));
-            }
-            outputs.stage_text(&path("txt"), &about)?;
+            outputs.stage_text(&path("txt"), &f.to_text(n))?;
             if let Some(theirs) = &f.theirs {
                 let image = grey_png(theirs)?;
                 outputs.stage(&path("png"), "PNG", |w| {

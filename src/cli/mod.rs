@@ -125,7 +125,7 @@ pub fn load_scene(
     }
     let target = scene
         .target()
-        .ok_or_else(|| format!("{name}: invalid canvas or convention"))?;
+        .map_err(|e| format!("{name}: {}: {}", e.field, e.message))?;
     Ok((name, scene, target))
 }
 
@@ -199,7 +199,7 @@ pub fn load_scene_with(
     args.apply(&mut scene.overrides)?;
     let target = scene
         .target()
-        .ok_or_else(|| format!("{name}: invalid canvas or convention"))?;
+        .map_err(|e| format!("{name}: {}: {}", e.field, e.message))?;
     Ok((name, scene, target))
 }
 

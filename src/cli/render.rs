@@ -6,7 +6,7 @@ use std::process::ExitCode;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use num_rational::BigRational;
 use num_traits::{One, ToPrimitive, Zero};
-use rasterproof::area::AreaImage;
+use rasterproof::area::{AreaImage, Quantization, Semantics};
 use rasterproof::convention::Target;
 use rasterproof::coverage::picture::{legend_path, upscale};
 use rasterproof::coverage::Coverage;
@@ -412,69 +412,35 @@ fn run_area(o: &Options) -> Result<ExitCode, String> {
     let json = matches!(o.format, OutputFormat::Json);
     // The rows are streamed: to stdout as JSON, into the grey levels, into the counts; only
     // a canvas small enough for the text grid is kept whole.
-    let mut levels: Option<Vec<u16>> = o
-        .grey_out
-        .as_ref()
-        .map(|_| vec![0u16; width as usize * height as usize]);
-    let (mut count, mut whole, mut total) = (0usize, 0usize, BigRational::zero());
-    let mut kept = AreaImage {
+    let mut tally = AreaTally {
+        count: 0,
+        whole: 0,
+        total: BigRational::zero(),
         width,
-        height,
-        semantics,
-        pixels: Vec::new(),
+        levels: o
+            .grey_out
+            .as_ref()
+            .map(|_| vec![0u16; width as usize * height as usize]),
+        quantization,
+        kept: (small && !json).then(|| AreaImage {
+            width,
+            height,
+            semantics,
+            pixels: Vec::new(),
+        }),
     };
-    let mut stream = |out: Option<&mut dyn std::io::Write>| -> std::io::Result<()> {
-        let mut out = out;
-        if let Some(out) = out.as_mut() {
-            write!(
-                out,
-                "{{\"width\":{width},\"height\":{height},\"coverage\":\"area\",\"semantics\":\"{}\",\"model\":\"{model}\",\"pixels\":[",
-                semantics.name()
-            )?;
-        }
-        let mut written: std::io::Result<()> = Ok(());
-        render_area_rows(&primitives, &target, model, semantics, |y, row| {
-            for (x, v) in row {
-                if let (Some(out), Ok(())) = (out.as_mut(), &written) {
-                    let comma = if count == 0 { "" } else { "," };
-                    written = write!(out, "{comma}[{x},{y},\"{}\"]", exact_text(&v));
-                }
-                count += 1;
-                whole += usize::from(v.is_one());
-                total += &v;
-                if let Some(levels) = levels.as_mut() {
-                    levels[y as usize * width as usize + x as usize] = quantization.level(&v);
-                }
-                if small && !json {
-                    kept.pixels.push((x, y, v));
-                }
-            }
-        })
-        .map_err(|e| std::io::Error::other(e.to_string()))?;
-        written?;
-        if let Some(out) = out {
-            writeln!(out, "]}}")?;
-        }
-        Ok(())
+    let stream = |tally: &mut AreaTally, out: Option<&mut dyn std::io::Write>| {
+        stream_area(&primitives, &target, model, semantics, tally, out)
     };
     if json {
-        crate::cli::write_stdout(|out| stream(Some(out)))?;
+        crate::cli::write_stdout(|out| stream(&mut tally, Some(out)))?;
     } else {
-        stream(None).map_err(|e| format!("{name}: {e}"))?;
+        stream(&mut tally, None).map_err(|e| format!("{name}: {e}"))?;
     }
     let mut outputs = Outputs::new();
     let mut wrote = String::new();
-    if let (Some(path), Some(levels)) = (&o.grey_out, levels) {
-        if quantization.bits() == 16 {
-            let grey: image::ImageBuffer<image::Luma<u16>, Vec<u16>> =
-                image::ImageBuffer::from_raw(width, height, levels).ok_or("the grey image's size")?;
-            outputs.stage(path, "PNG", |out| grey.write_to(out, image::ImageFormat::Png))?;
-        } else {
-            let bytes = levels.iter().map(|&l| u8::try_from(l).unwrap_or(u8::MAX)).collect();
-            let grey: image::GrayImage =
-                image::ImageBuffer::from_raw(width, height, bytes).ok_or("the grey image's size")?;
-            outputs.stage_png(path, &grey)?;
-        }
+    if let (Some(path), Some(levels)) = (&o.grey_out, tally.levels.take()) {
+        stage_grey(&mut outputs, path, levels, (width, height), quantization)?;
         wrote = format!(
             "; wrote {} ({}-bit grey, {})",
             path.display(),
@@ -483,20 +449,114 @@ fn run_area(o: &Options) -> Result<ExitCode, String> {
         );
     }
     outputs.commit()?;
+    let AreaTally {
+        count, whole, total, ..
+    } = &tally;
     let summary = format!(
         "{name}: area coverage ({} semantics), model {model}, {}: {count} pixels with area, {whole} of them whole; total {}{}{wrote}",
         semantics.name(),
         target.convention,
-        exact_text(&total),
-        terminating_decimal(&total).map_or(String::new(), |d| format!(" = {d}")),
+        exact_text(total),
+        terminating_decimal(total).map_or(String::new(), |d| format!(" = {d}")),
     );
     if json {
         eprintln!("{summary}");
     } else {
-        let grid = if small { tenths_grid(&kept) } else { String::new() };
+        let grid = tally.kept.as_ref().map_or(String::new(), tenths_grid);
         crate::cli::print_stdout(&format!("{grid}{summary}"))?;
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Streams the area of every covered pixel, row by row, into `tally`, and as JSON to
+/// `out` when given.
+fn stream_area(
+    primitives: &rasterproof::model::Primitives,
+    target: &Target,
+    model: Model,
+    semantics: Semantics,
+    tally: &mut AreaTally,
+    mut out: Option<&mut dyn std::io::Write>,
+) -> std::io::Result<()> {
+    let (width, height) = (target.width, target.height);
+    if let Some(out) = out.as_mut() {
+        write!(
+            out,
+            "{{\"width\":{width},\"height\":{height},\"coverage\":\"area\",\"semantics\":\"{}\",\"model\":\"{model}\",\"pixels\":[",
+            semantics.name()
+        )?;
+    }
+    let mut written: std::io::Result<()> = Ok(());
+    render_area_rows(primitives, target, model, semantics, |y, row| {
+        for (x, v) in row {
+            if let (Some(out), Ok(())) = (out.as_mut(), &written) {
+                let comma = if tally.count == 0 { "" } else { "," };
+                written = write!(out, "{comma}[{x},{y},\"{}\"]", exact_text(&v));
+            }
+            tally.take(x, y, v);
+        }
+    })
+    .map_err(|e| std::io::Error::other(e.to_string()))?;
+    written?;
+    if let Some(out) = out {
+        writeln!(out, "]}}")?;
+    }
+    Ok(())
+}
+
+/// Stages the grey image of `levels` at `path`: 16-bit or 8-bit as `quantization` makes
+/// them.
+fn stage_grey(
+    outputs: &mut Outputs,
+    path: &std::path::Path,
+    levels: Vec<u16>,
+    (width, height): (u32, u32),
+    quantization: Quantization,
+) -> Result<(), String> {
+    if quantization.bits() == 16 {
+        let grey: image::ImageBuffer<image::Luma<u16>, Vec<u16>> =
+            image::ImageBuffer::from_raw(width, height, levels).ok_or("the grey image's size")?;
+        outputs.stage(path, "PNG", |out| grey.write_to(out, image::ImageFormat::Png))?;
+    } else {
+        let bytes = levels.iter().map(|&l| u8::try_from(l).unwrap_or(u8::MAX)).collect();
+        let grey: image::GrayImage =
+            image::ImageBuffer::from_raw(width, height, bytes).ok_or("the grey image's size")?;
+        outputs.stage_png(path, &grey)?;
+    }
+    Ok(())
+}
+
+/// What `render --coverage area` gathers from the streamed rows.
+struct AreaTally {
+    /// Pixels with area.
+    count: usize,
+    /// Pixels wholly covered.
+    whole: usize,
+    /// The total area.
+    total: BigRational,
+    /// The canvas's width.
+    width: u32,
+    /// The grey levels, row by row, when a grey image is written.
+    levels: Option<Vec<u16>>,
+    /// How a value becomes a level.
+    quantization: Quantization,
+    /// The whole image, for the text grid of a small canvas.
+    kept: Option<AreaImage>,
+}
+
+impl AreaTally {
+    /// Takes the area `v` of pixel (`x`, `y`).
+    fn take(&mut self, x: u32, y: u32, v: BigRational) {
+        self.count += 1;
+        self.whole += usize::from(v.is_one());
+        self.total += &v;
+        if let Some(levels) = self.levels.as_mut() {
+            levels[y as usize * self.width as usize + x as usize] = self.quantization.level(&v);
+        }
+        if let Some(kept) = self.kept.as_mut() {
+            kept.pixels.push((x, y, v));
+        }
+    }
 }
 
 /// The area image as text, row 0 first: `.` no area, `1`-`9` the tenths (rounded down,

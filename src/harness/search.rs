@@ -119,7 +119,7 @@ where
     let mut scene = Scene::new(target.width, target.height, vec![shrunk.to_exact()]);
     scene.preset = config.preset;
     let mut keeps = |s: &Scene| match (s.target(), on_the_grid(s)) {
-        (Some(target), Some(t)) => disagreement(&rasterizer, &t, &target).is_some(),
+        (Ok(target), Some(t)) => disagreement(&rasterizer, &t, &target).is_some(),
         _ => false,
     };
     let step = BigRational::new(BigInt::one(), BigInt::one() << conv.subpixel_bits);

@@ -214,92 +214,206 @@ pub fn shrink_batched(
     // drop or a crop).
     let mut away = true;
     loop {
-        let mut changed = false;
-        let mut structural = false;
-        // Drop primitives, last first; after a drop, on with the one before it.
-        for kind in 0..3 {
-            let mut below = match kind {
-                0 => best.triangles.len(),
-                1 => best.lines.len(),
-                _ => best.polygons.len(),
-            };
-            while let Some((m, c)) = tries.first(below, |m| {
-                let i = below - 1 - m;
-                let mut c = best.clone();
-                match kind {
-                    0 => drop(c.triangles.remove(i)),
-                    1 => drop(c.lines.remove(i)),
-                    _ => drop(c.polygons.remove(i)),
-                }
-                (primitive_count(&c) > 0).then_some(c)
-            }) {
-                best = c;
-                changed = true;
-                structural = true;
-                below -= m + 1;
-            }
-        }
-        if best.clip.is_some() {
-            let mut c = best.clone();
-            c.clip = None;
-            if let Some((_, c)) = tries.first(1, |_| Some(c.clone())) {
-                best = c;
-                changed = true;
-                structural = true;
-            }
-        }
-        // Crop: halves, then a pixel from each side (moving the scene for left and top).
-        if best.clip.is_none() {
-            let (w, h) = (best.width, best.height);
-            let crops = [
-                (0, 0, w.div_ceil(2), h),
-                (i64::from(w / 2), 0, w - w / 2, h),
-                (0, 0, w, h.div_ceil(2)),
-                (0, i64::from(h / 2), w, h - h / 2),
-                (0, 0, w - 1, h),
-                (1, 0, w - 1, h),
-                (0, 0, w, h - 1),
-                (0, 1, w, h - 1),
-            ];
-            let crop = |m: usize| {
-                let (dx, dy, cw, ch) = crops[m];
-                (cw != 0 && ch != 0 && (cw, ch) != (w, h)).then(|| moved(&best, dx, dy, cw, ch))
-            };
-            if let Some((_, c)) = tries.first(crops.len(), crop) {
-                best = c;
-                changed = true;
-                structural = true;
-            }
-        }
-        // All coordinates at once on the coarsest grid that keeps the failure.
+        // Drops and crops change the scene's structure; then the coordinates.
+        let structural = drop_primitives(&mut best, &mut tries)
+            | drop_polygon_parts(&mut best, &mut tries)
+            | drop_clip(&mut best, &mut tries)
+            | crop(&mut best, &mut tries);
+        let mut changed = structural;
         if away || structural {
-            let grids: Vec<u32> = GRID_BITS.collect();
-            if let Some((_, c)) = tries.first(grids.len(), |m| rounded(&best, grids[m])) {
-                best = c;
-                changed = true;
-            }
+            changed |= coarsen(&mut best, &mut tries);
         }
-        // Simpler coordinates, one at a time.
-        // A move changes one coordinate only: the others' values, read once, stay true.
-        let values: Vec<BigRational> = best.coordinates();
-        for (k, value) in values.iter().enumerate() {
-            let vs = simpler(value, step, away || structural);
-            let moved_to = |m: usize| {
-                let mut c = best.clone();
-                c.map_coordinates(|j, x| if j == k { vs[m].clone() } else { x.clone() });
-                Some(c)
-            };
-            if let Some((_, c)) = tries.first(vs.len(), moved_to) {
-                best = c;
-                changed = true;
-            }
-        }
+        changed |= simplify_coordinates(&mut best, &mut tries, step, away || structural);
         let runs = tries.runs;
         if !changed || runs >= budget {
             return (best, runs);
         }
         away = structural;
     }
+}
+
+/// Drops primitives, last first; after a drop, on with the one before it. Whether any
+/// was dropped.
+fn drop_primitives(best: &mut Scene, tries: &mut Tries) -> bool {
+    let mut changed = false;
+    for kind in 0..3 {
+        let mut below = match kind {
+            0 => best.triangles.len(),
+            1 => best.lines.len(),
+            _ => best.polygons.len(),
+        };
+        while let Some((m, c)) = tries.first(below, |m| {
+            let i = below - 1 - m;
+            let mut c = best.clone();
+            match kind {
+                0 => drop(c.triangles.remove(i)),
+                1 => drop(c.lines.remove(i)),
+                _ => drop(c.polygons.remove(i)),
+            }
+            (primitive_count(&c) > 0).then_some(c)
+        }) {
+            *best = c;
+            changed = true;
+            below -= m + 1;
+        }
+    }
+    changed
+}
+
+/// A part of a polygon the shrinker may drop: a hole, or a vertex of a contour (the
+/// outline, contour 0, or hole `h`, contour `h + 1`).
+#[derive(Debug, Clone, Copy)]
+enum Part {
+    Hole {
+        polygon: usize,
+        hole: usize,
+    },
+    Vertex {
+        polygon: usize,
+        contour: usize,
+        vertex: usize,
+    },
+}
+
+/// The parts of `scene`'s polygons in the order they are tried: last polygon first; in
+/// each, its holes last first, each hole whole and then its vertices last first; then the
+/// outline's vertices last first. Dropping one leaves the parts after it where they were.
+fn parts(scene: &Scene) -> Vec<Part> {
+    let mut out = Vec::new();
+    for (polygon, p) in scene.polygons.iter().enumerate().rev() {
+        for (hole, points) in p.holes.iter().enumerate().rev() {
+            out.push(Part::Hole { polygon, hole });
+            out.extend((0..points.len()).rev().map(|vertex| Part::Vertex {
+                polygon,
+                contour: hole + 1,
+                vertex,
+            }));
+        }
+        out.extend((0..p.outline.len()).rev().map(|vertex| Part::Vertex {
+            polygon,
+            contour: 0,
+            vertex,
+        }));
+    }
+    out
+}
+
+/// `scene` without `part`; `None` where that would leave a contour of fewer than three
+/// vertices (a hole that small is dropped whole).
+fn without(scene: &Scene, part: Part) -> Option<Scene> {
+    let mut c = scene.clone();
+    match part {
+        Part::Hole { polygon, hole } => drop(c.polygons[polygon].holes.remove(hole)),
+        Part::Vertex {
+            polygon,
+            contour,
+            vertex,
+        } => {
+            let p = &mut c.polygons[polygon];
+            let points = if contour == 0 {
+                &mut p.outline
+            } else {
+                &mut p.holes[contour - 1]
+            };
+            if points.len() <= 3 {
+                return None;
+            }
+            drop(points.remove(vertex));
+        }
+    }
+    Some(c)
+}
+
+/// Drops polygons' holes and vertices (a repeated point, an empty hole, a vertex on a
+/// straight run), in [`parts`]' order; after a drop, on with the part after it. Whether
+/// any was dropped.
+fn drop_polygon_parts(best: &mut Scene, tries: &mut Tries) -> bool {
+    let mut changed = false;
+    let mut at = 0;
+    loop {
+        let all = parts(best);
+        let rest = all.get(at..).unwrap_or_default();
+        let Some((m, c)) = tries.first(rest.len(), |k| without(best, rest[k])) else {
+            return changed;
+        };
+        *best = c;
+        changed = true;
+        at += m;
+    }
+}
+
+/// Drops the clip window. Whether it was dropped.
+fn drop_clip(best: &mut Scene, tries: &mut Tries) -> bool {
+    if best.clip.is_none() {
+        return false;
+    }
+    let mut c = best.clone();
+    c.clip = None;
+    let Some((_, c)) = tries.first(1, |_| Some(c.clone())) else {
+        return false;
+    };
+    *best = c;
+    true
+}
+
+/// Crops an unclipped scene: halves, then a pixel from each side (moving the scene for
+/// left and top). Whether it was cropped.
+fn crop(best: &mut Scene, tries: &mut Tries) -> bool {
+    if best.clip.is_some() {
+        return false;
+    }
+    let (w, h) = (best.width, best.height);
+    let crops = [
+        (0, 0, w.div_ceil(2), h),
+        (i64::from(w / 2), 0, w - w / 2, h),
+        (0, 0, w, h.div_ceil(2)),
+        (0, i64::from(h / 2), w, h - h / 2),
+        (0, 0, w - 1, h),
+        (1, 0, w - 1, h),
+        (0, 0, w, h - 1),
+        (0, 1, w, h - 1),
+    ];
+    let candidate = |m: usize| {
+        let (dx, dy, cw, ch) = crops[m];
+        (cw != 0 && ch != 0 && (cw, ch) != (w, h)).then(|| moved(best, dx, dy, cw, ch))
+    };
+    let Some((_, c)) = tries.first(crops.len(), candidate) else {
+        return false;
+    };
+    *best = c;
+    true
+}
+
+/// All coordinates at once on the coarsest grid that keeps the failure. Whether they
+/// moved.
+fn coarsen(best: &mut Scene, tries: &mut Tries) -> bool {
+    let grids: Vec<u32> = GRID_BITS.collect();
+    let Some((_, c)) = tries.first(grids.len(), |m| rounded(best, grids[m])) else {
+        return false;
+    };
+    *best = c;
+    true
+}
+
+/// Simpler coordinates, one at a time (moving away from zero only when `away`). Whether
+/// any moved.
+fn simplify_coordinates(best: &mut Scene, tries: &mut Tries, step: Option<&BigRational>, away: bool) -> bool {
+    let mut changed = false;
+    // A move changes one coordinate only: the others' values, read once, stay true.
+    let values: Vec<BigRational> = best.coordinates();
+    for (k, value) in values.iter().enumerate() {
+        let vs = simpler(value, step, away);
+        let moved_to = |m: usize| {
+            let mut c = best.clone();
+            c.map_coordinates(|j, x| if j == k { vs[m].clone() } else { x.clone() });
+            Some(c)
+        };
+        if let Some((_, c)) = tries.first(vs.len(), moved_to) {
+            *best = c;
+            changed = true;
+        }
+    }
+    changed
 }
 
 /// The shrinker's runs of the failure test: candidates tried up to `width` at a time,

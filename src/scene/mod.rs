@@ -137,9 +137,36 @@ impl Scene {
     }
 
     /// The canvas and convention. Parsing validated both, so this cannot fail for a parsed
-    /// scene; a hand-built one with a bad size gets `None`.
-    pub fn target(&self) -> Option<Target> {
-        Target::new(self.width, self.height, self.convention())
+    /// scene; a hand-built one (or one whose overrides were changed) with a side outside
+    /// `1..=MAX_CANVAS` or subpixel bits outside `1..=MAX_SUBPIXEL_BITS` gets an error
+    /// naming the field and its value.
+    ///
+    /// # Errors
+    /// The canvas or the subpixel bits are out of range.
+    pub fn target(&self) -> Result<Target, SceneError> {
+        let convention = self.convention();
+        Target::new(self.width, self.height, convention).ok_or_else(|| {
+            let max = crate::convention::MAX_CANVAS;
+            let (field, message) = if !(1..=max).contains(&self.width) {
+                ("width", format!("{} is outside 1..={max}", self.width))
+            } else if !(1..=max).contains(&self.height) {
+                ("height", format!("{} is outside 1..={max}", self.height))
+            } else {
+                (
+                    "subpixel_bits",
+                    format!(
+                        "{} is outside 1..={}",
+                        convention.subpixel_bits,
+                        crate::num::MAX_SUBPIXEL_BITS
+                    ),
+                )
+            };
+            SceneError {
+                source: "<scene>".into(),
+                field: field.into(),
+                message,
+            }
+        })
     }
 
     /// The exact triangles, in id order.
@@ -282,6 +309,50 @@ impl Scene {
     /// The scene as a scene file, every coordinate an exact string (`"7/3"`), so that
     /// parsing it again gives the same scene.
     pub fn to_json(&self) -> String {
+        let mut s = self.header_json();
+        let _ = write!(
+            s,
+            "  \"triangles\": {}",
+            json_lines(self.triangles.iter().map(triangle_json))
+        );
+        if !self.lines.is_empty() {
+            let _ = write!(s, ",\n  \"lines\": {}", json_lines(self.lines.iter().map(line_json)));
+        }
+        if !self.polygons.is_empty() {
+            let _ = write!(
+                s,
+                ",\n  \"polygons\": {}",
+                json_lines(self.polygons.iter().map(polygon_json))
+            );
+        }
+        if !self.clip_space_triangles.is_empty() {
+            let items = self.clip_space_triangles.iter().map(clip_space_json);
+            let _ = write!(s, ",\n  \"clip_space_triangles\": {}", json_lines(items));
+        }
+        if let Some(vp) = &self.viewport {
+            let _ = write!(
+                s,
+                ",\n  \"viewport\": {{\"x\": \"{}\", \"y\": \"{}\", \"width\": \"{}\", \"height\": \"{}\", \"ndc_y\": \"{}\", \"depth\": \"{}\"}}",
+                exact_text(&vp.x),
+                exact_text(&vp.y),
+                exact_text(&vp.width),
+                exact_text(&vp.height),
+                if vp.y_axis == NdcY::Down { "down" } else { "up" },
+                if vp.depth == DepthRange::ZeroToOne { "zero-to-one" } else { "minus-one-to-one" }
+            );
+        }
+        if let Some(clip) = &self.clip {
+            let _ = write!(s, ",\n  \"clip\": {}", window_json(clip));
+        }
+        if let Some(pattern) = &self.samples {
+            let _ = write!(s, ",\n  \"samples\": {}", pattern.to_json());
+        }
+        s.push_str("\n}\n");
+        s
+    }
+
+    /// The scene file's first lines: the canvas, the preset and its overrides.
+    fn header_json(&self) -> String {
         let mut s = format!(
             "{{\n  \"width\": {},\n  \"height\": {},\n  \"preset\": \"{}\",\n",
             self.width,
@@ -301,99 +372,90 @@ impl Scene {
         if let Some(c) = o.pixel_centre {
             let _ = writeln!(s, "  \"pixel_centre\": {},", c.name());
         }
-        s.push_str("  \"triangles\": [");
-        for (k, t) in self.triangles.iter().enumerate() {
-            s.push_str(if k == 0 { "\n    " } else { ",\n    " });
-            let v: Vec<String> = t.triangle.to_triangle().v.iter().map(pt).collect();
-            let _ = write!(s, "{{\"v\": [{}]", v.join(", "));
-            if let Some(c) = t.colours {
-                let c: Vec<String> = c.iter().map(|c| format!("[{}, {}, {}]", c[0], c[1], c[2])).collect();
-                let _ = write!(s, ", \"colors\": [{}]", c.join(", "));
-            }
-            s.push('}');
-        }
-        s.push_str("\n  ]");
-        if !self.lines.is_empty() {
-            s.push_str(",\n  \"lines\": [");
-            for (k, l) in self.lines.iter().enumerate() {
-                s.push_str(if k == 0 { "\n    " } else { ",\n    " });
-                let rule = match l.rule {
-                    LineRule::Bresenham(tie) => format!("\"rule\": \"bresenham\", \"tie\": \"{}\"", tie.name()),
-                    LineRule::Diamond => "\"rule\": \"diamond\"".to_string(),
-                };
-                let _ = write!(s, "{{\"from\": {}, \"to\": {}, {rule}}}", pt(&l.from), pt(&l.to));
-            }
-            s.push_str("\n  ]");
-        }
-        if !self.polygons.is_empty() {
-            s.push_str(",\n  \"polygons\": [");
-            let contour = |c: &[Point]| format!("[{}]", c.iter().map(pt).collect::<Vec<_>>().join(", "));
-            for (k, p) in self.polygons.iter().enumerate() {
-                s.push_str(if k == 0 { "\n    " } else { ",\n    " });
-                let _ = write!(s, "{{\"v\": {}", contour(&p.outline));
-                if !p.holes.is_empty() {
-                    let holes: Vec<String> = p.holes.iter().map(|h| contour(h)).collect();
-                    let _ = write!(s, ", \"holes\": [{}]", holes.join(", "));
-                }
-                let _ = write!(s, ", \"fill_rule\": \"{}\"}}", p.fill_rule.name());
-            }
-            s.push_str("\n  ]");
-        }
-        if !self.clip_space_triangles.is_empty() {
-            s.push_str(",\n  \"clip_space_triangles\": [");
-            for (k, t) in self.clip_space_triangles.iter().enumerate() {
-                s.push_str(if k == 0 { "\n    " } else { ",\n    " });
-                let v: Vec<String> = t
-                    .iter()
-                    .map(|v| {
-                        format!(
-                            "[{}]",
-                            v.pos
-                                .iter()
-                                .map(|c| format!("\"{}\"", exact_text(c)))
-                                .collect::<Vec<_>>()
-                                .join(", ")
-                        )
-                    })
-                    .collect();
-                let _ = write!(s, "{{\"v\": [{}]}}", v.join(", "));
-            }
-            s.push_str("\n  ]");
-        }
-        if let Some(vp) = &self.viewport {
-            let _ = write!(
-                s,
-                ",\n  \"viewport\": {{\"x\": \"{}\", \"y\": \"{}\", \"width\": \"{}\", \"height\": \"{}\", \"ndc_y\": \"{}\", \"depth\": \"{}\"}}",
-                exact_text(&vp.x),
-                exact_text(&vp.y),
-                exact_text(&vp.width),
-                exact_text(&vp.height),
-                if vp.y_axis == NdcY::Down { "down" } else { "up" },
-                if vp.depth == DepthRange::ZeroToOne { "zero-to-one" } else { "minus-one-to-one" }
-            );
-        }
-        match &self.clip {
-            None => {}
-            Some(Window::Rect(r)) => {
-                let _ = write!(
-                    s,
-                    ",\n  \"clip\": {{\"rect\": [\"{}\", \"{}\", \"{}\", \"{}\"]}}",
-                    exact_text(&r.xmin),
-                    exact_text(&r.ymin),
-                    exact_text(&r.xmax),
-                    exact_text(&r.ymax)
-                );
-            }
-            Some(Window::Convex(pts)) => {
-                let pts: Vec<String> = pts.iter().map(pt).collect();
-                let _ = write!(s, ",\n  \"clip\": {{\"convex\": [{}]}}", pts.join(", "));
-            }
-        }
-        if let Some(pattern) = &self.samples {
-            let _ = write!(s, ",\n  \"samples\": {}", pattern.to_json());
-        }
-        s.push_str("\n}\n");
         s
+    }
+}
+
+/// `items` as a scene file's array, one item a line.
+fn json_lines(items: impl Iterator<Item = String>) -> String {
+    let mut s = String::from("[");
+    for (k, item) in items.enumerate() {
+        s.push_str(if k == 0 { "\n    " } else { ",\n    " });
+        s.push_str(&item);
+    }
+    s.push_str("\n  ]");
+    s
+}
+
+/// A triangle of a scene file: its vertices, and its colours where it has them.
+fn triangle_json(t: &SceneTriangle) -> String {
+    let v: Vec<String> = t.triangle.to_triangle().v.iter().map(pt).collect();
+    let mut s = format!("{{\"v\": [{}]", v.join(", "));
+    if let Some(c) = t.colours {
+        let c: Vec<String> = c.iter().map(|c| format!("[{}, {}, {}]", c[0], c[1], c[2])).collect();
+        let _ = write!(s, ", \"colors\": [{}]", c.join(", "));
+    }
+    s.push('}');
+    s
+}
+
+/// A line of a scene file: its ends and its rule.
+fn line_json(l: &Line) -> String {
+    let rule = match l.rule {
+        LineRule::Bresenham(tie) => format!("\"rule\": \"bresenham\", \"tie\": \"{}\"", tie.name()),
+        LineRule::Diamond => "\"rule\": \"diamond\"".to_string(),
+    };
+    format!("{{\"from\": {}, \"to\": {}, {rule}}}", pt(&l.from), pt(&l.to))
+}
+
+/// A contour of a scene file: its points.
+fn contour_json(c: &[Point]) -> String {
+    format!("[{}]", c.iter().map(pt).collect::<Vec<_>>().join(", "))
+}
+
+/// A polygon of a scene file: its outline, its holes where it has them, its fill rule.
+fn polygon_json(p: &Polygon) -> String {
+    let mut s = format!("{{\"v\": {}", contour_json(&p.outline));
+    if !p.holes.is_empty() {
+        let holes: Vec<String> = p.holes.iter().map(|h| contour_json(h)).collect();
+        let _ = write!(s, ", \"holes\": [{}]", holes.join(", "));
+    }
+    let _ = write!(s, ", \"fill_rule\": \"{}\"}}", p.fill_rule.name());
+    s
+}
+
+/// A clip-space triangle of a scene file: each vertex's four exact coordinates.
+fn clip_space_json(t: &[ClipVertex; 3]) -> String {
+    let v: Vec<String> = t
+        .iter()
+        .map(|v| {
+            format!(
+                "[{}]",
+                v.pos
+                    .iter()
+                    .map(|c| format!("\"{}\"", exact_text(c)))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        })
+        .collect();
+    format!("{{\"v\": [{}]}}", v.join(", "))
+}
+
+/// A clip window of a scene file: a rectangle's four sides or a convex window's points.
+fn window_json(w: &Window) -> String {
+    match w {
+        Window::Rect(r) => format!(
+            "{{\"rect\": [\"{}\", \"{}\", \"{}\", \"{}\"]}}",
+            exact_text(&r.xmin),
+            exact_text(&r.ymin),
+            exact_text(&r.xmax),
+            exact_text(&r.ymax)
+        ),
+        Window::Convex(pts) => {
+            let pts: Vec<String> = pts.iter().map(pt).collect();
+            format!("{{\"convex\": [{}]}}", pts.join(", "))
+        }
     }
 }
 

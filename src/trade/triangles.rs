@@ -21,7 +21,7 @@ use super::measure::{
     BARYCENTRIC_ULPS, GOURAUD,
 };
 use super::metric::Metric;
-use super::report::{Cell, Outcome, Placement, PlanSummary, WorkloadReport};
+use super::report::{Cell, Outcome, Placement, PlanSummary, SpeedEntry, WorkloadReport};
 use super::speed::{entries, model_jobs, refusal, Contender};
 use super::workloads::{colours, draw_n, mesh, place_triangles, runner};
 use super::{Config, Family, Sizes};
@@ -177,127 +177,65 @@ fn subset(w: &Workload, corner: &Target, pixels: u64) -> (Vec<Triangle>, Vec<[Rg
     )
 }
 
-fn measure(w: &Workload, config: &Config, sizes: &Sizes) -> WorkloadReport {
-    let conv = Preset::D3d11.convention();
-    let target = Target::new(sizes.canvas, sizes.canvas, conv).expect("a valid canvas");
-    let corner = Target::new(SUBSET_SIDE, SUBSET_SIDE, conv).expect("a valid canvas");
-    let (sub, sub_colours) = subset(w, &corner, sizes.plain_pixels);
-    let full_refs = [
-        Reference::new(Model::Exact, &w.triangles, &target, w.mesh),
-        Reference::new(Model::ExactSnapped, &w.triangles, &target, w.mesh),
-    ];
-    let sub_refs = [
-        Reference::new(Model::Exact, &sub, &corner, w.mesh),
-        Reference::new(Model::ExactSnapped, &sub, &corner, w.mesh),
-    ];
-    let plain = Model::is_plain;
-    let pick = |m: Model| {
-        let k = usize::from(reference(m) == Model::ExactSnapped);
-        if plain(m) {
-            (&sub[..], &corner, &sub_refs[k], &sub_colours[..])
-        } else {
-            (&w.triangles[..], &target, &full_refs[k], &w.colours[..])
-        }
-    };
+/// A workload with the exact answers its models are measured against: the whole
+/// canvas's, and the corner subset's (for the plain oracles, slow by design).
+struct Stage<'a> {
+    w: &'a Workload,
+    target: Target,
+    corner: Target,
+    sub: Vec<Triangle>,
+    sub_colours: Vec<[Rgb; 3]>,
+    /// The unsnapped and snapped planned engines' answers on the whole workload.
+    full_refs: [Reference; 2],
+    /// The same on the corner subset.
+    sub_refs: [Reference; 2],
+}
 
-    // Speed at the origin, round-robin: the draw of the prepared workload, and prepare
-    // and draw.
-    let models = models();
-    let prims: Vec<Primitives> = models.iter().map(|&m| Primitives::from_triangles(pick(m).0)).collect();
-    let contenders = models
-        .iter()
-        .zip(&prims)
-        .map(|(&m, p)| {
-            let (_, t, r, _) = pick(m);
-            Contender {
-                name: m.name().into(),
-                exact: m.is_exact(),
-                reference: reference(m).name(),
-                elements: r.pairs.0.len() as u64,
-                subset: plain(m),
-                jobs: model_jobs(m, p, t),
-            }
-        })
-        .collect();
-    let speed = entries(contenders, sizes.repetitions, sizes.min_pass_seconds);
-
-    // The plan.
-    let prims = Primitives::from_triangles(&w.triangles);
-    let plans = [Model::Exact, Model::ExactSnapped]
-        .into_iter()
-        .filter_map(|m| {
-            let p = plan_scene(&prims, &target, m).ok()?;
-            Some(PlanSummary {
-                model: m.name(),
-                by_width: p.by_width().into_iter().map(|(w, n)| (w.name(), n)).collect(),
-                summary: p.summary(),
-            })
-        })
-        .collect();
-
-    // Errors at the origin, for every model (the exact and integer ones keep them).
-    let origin: Vec<(Model, Outcome)> = models
-        .iter()
-        .map(|&m| {
-            let (tris, t, r, colours) = pick(m);
-            let outcome = match origin_metrics(m, tris, colours, t, r, sizes.samples) {
-                Ok(metrics) => Outcome::Measured {
-                    placement: Placement::OnCanvas,
-                    metrics,
-                },
-                Err(e) => Outcome::Refused(e),
-            };
-            (m, outcome)
-        })
-        .collect();
-
-    // The exact colours at the float models' samples, once.
-    let exact_colours: Vec<Option<Rgb>> = samples(&full_refs[0], sizes.samples)
-        .iter()
-        .map(|&(x, y, k)| {
-            gouraud_exact(
-                &w.triangles[index(k)],
-                &w.colours[index(k)],
-                &sample_exact(x, y, &target),
-            )
-            .map(|v| v.each_ref().map(to_channel))
-        })
-        .collect();
-    let mut cells = Vec::new();
-    for &mag in &config.magnitudes {
-        let placed = place_triangles(&w.triangles, mag.px_i64());
-        let placed_prims = Primitives::from_triangles(&placed);
-        for (m, at_origin) in &origin {
-            let outcome = if mag.px() == 0 {
-                at_origin.clone()
-            } else if let Err(e) = refusal(*m, &placed_prims, &target) {
-                Outcome::Refused(e)
-            } else if m.is_exact() {
-                match at_origin {
-                    Outcome::Measured { metrics, .. } => Outcome::Measured {
-                        placement: Placement::Translated,
-                        metrics: metrics.clone(),
-                    },
-                    refused => refused.clone(),
-                }
-            } else {
-                let (_, _, r, _) = pick(*m);
-                let window = FarWindow {
-                    origin: mag.px_i64(),
-                    side: sizes.canvas,
-                };
-                Outcome::Measured {
-                    placement: Placement::AtMagnitude,
-                    metrics: far_metrics(*m, w, &placed, &window, &target, r, (sizes.samples, &exact_colours)),
-                }
-            };
-            cells.push(Cell {
-                magnitude: mag,
-                contender: m.name().into(),
-                outcome,
-            });
+impl<'a> Stage<'a> {
+    fn new(w: &'a Workload, sizes: &Sizes) -> Stage<'a> {
+        let conv = Preset::D3d11.convention();
+        let target = Target::new(sizes.canvas, sizes.canvas, conv).expect("a valid canvas");
+        let corner = Target::new(SUBSET_SIDE, SUBSET_SIDE, conv).expect("a valid canvas");
+        let (sub, sub_colours) = subset(w, &corner, sizes.plain_pixels);
+        let full_refs = [
+            Reference::new(Model::Exact, &w.triangles, &target, w.mesh),
+            Reference::new(Model::ExactSnapped, &w.triangles, &target, w.mesh),
+        ];
+        let sub_refs = [
+            Reference::new(Model::Exact, &sub, &corner, w.mesh),
+            Reference::new(Model::ExactSnapped, &sub, &corner, w.mesh),
+        ];
+        Stage {
+            w,
+            target,
+            corner,
+            sub,
+            sub_colours,
+            full_refs,
+            sub_refs,
         }
     }
+
+    /// What `model` is measured on: the triangles, the target, the reference and the
+    /// colours (the corner subset for the plain oracles, the whole workload otherwise).
+    fn pick(&self, m: Model) -> (&[Triangle], &Target, &Reference, &[[Rgb; 3]]) {
+        let k = usize::from(reference(m) == Model::ExactSnapped);
+        if m.is_plain() {
+            (&self.sub, &self.corner, &self.sub_refs[k], &self.sub_colours)
+        } else {
+            (&self.w.triangles, &self.target, &self.full_refs[k], &self.w.colours)
+        }
+    }
+}
+
+fn measure(w: &Workload, config: &Config, sizes: &Sizes) -> WorkloadReport {
+    let stage = Stage::new(w, sizes);
+    let models = models();
+    let speed = speed_at_origin(&stage, &models, sizes);
+    let plans = plans(&stage);
+    let origin = errors_at_origin(&stage, &models, sizes.samples);
+    let cells = errors_by_magnitude(&stage, &origin, config, sizes);
+    let conv = stage.target.convention;
     let on_grid = w.triangles.iter().all(|t| t.snapped(&conv).to_exact() == *t);
     WorkloadReport {
         name: w.name.into(),
@@ -311,6 +249,121 @@ fn measure(w: &Workload, config: &Config, sizes: &Sizes) -> WorkloadReport {
         speed,
         cells,
     }
+}
+
+/// Speed at the origin, round-robin: the draw of the prepared workload, and prepare and
+/// draw.
+fn speed_at_origin(stage: &Stage<'_>, models: &[Model], sizes: &Sizes) -> Vec<SpeedEntry> {
+    let prims: Vec<Primitives> = models
+        .iter()
+        .map(|&m| Primitives::from_triangles(stage.pick(m).0))
+        .collect();
+    let contenders = models
+        .iter()
+        .zip(&prims)
+        .map(|(&m, p)| {
+            let (_, t, r, _) = stage.pick(m);
+            Contender {
+                name: m.name().into(),
+                exact: m.is_exact(),
+                reference: reference(m).name(),
+                elements: r.pairs.0.len() as u64,
+                subset: m.is_plain(),
+                jobs: model_jobs(m, p, t),
+            }
+        })
+        .collect();
+    entries(contenders, sizes.repetitions, sizes.min_pass_seconds)
+}
+
+/// The exact engines' plans of the whole workload.
+fn plans(stage: &Stage<'_>) -> Vec<PlanSummary> {
+    let prims = Primitives::from_triangles(&stage.w.triangles);
+    [Model::Exact, Model::ExactSnapped]
+        .into_iter()
+        .filter_map(|m| {
+            let p = plan_scene(&prims, &stage.target, m).ok()?;
+            Some(PlanSummary {
+                model: m.name(),
+                by_width: p.by_width().into_iter().map(|(w, n)| (w.name(), n)).collect(),
+                summary: p.summary(),
+            })
+        })
+        .collect()
+}
+
+/// Errors at the origin, for every model (the exact and integer ones keep them at every
+/// magnitude).
+fn errors_at_origin(stage: &Stage<'_>, models: &[Model], samples: usize) -> Vec<(Model, Outcome)> {
+    models
+        .iter()
+        .map(|&m| {
+            let (tris, t, r, colours) = stage.pick(m);
+            let outcome = match origin_metrics(m, tris, colours, t, r, samples) {
+                Ok(metrics) => Outcome::Measured {
+                    placement: Placement::OnCanvas,
+                    metrics,
+                },
+                Err(e) => Outcome::Refused(e),
+            };
+            (m, outcome)
+        })
+        .collect()
+}
+
+/// Every model's errors at every magnitude: the origin's where the model keeps them
+/// (exact models translate, refusals stay), measured far away for the others.
+fn errors_by_magnitude(stage: &Stage<'_>, origin: &[(Model, Outcome)], config: &Config, sizes: &Sizes) -> Vec<Cell> {
+    let w = stage.w;
+    // The exact colours at the float models' samples, once.
+    let exact_colours: Vec<Option<Rgb>> = samples(&stage.full_refs[0], sizes.samples)
+        .iter()
+        .map(|&(x, y, k)| {
+            gouraud_exact(
+                &w.triangles[index(k)],
+                &w.colours[index(k)],
+                &sample_exact(x, y, &stage.target),
+            )
+            .map(|v| v.each_ref().map(to_channel))
+        })
+        .collect();
+    let mut cells = Vec::new();
+    for &mag in &config.magnitudes {
+        let placed = place_triangles(&w.triangles, mag.px_i64());
+        let placed_prims = Primitives::from_triangles(&placed);
+        for (m, at_origin) in origin {
+            let outcome = if mag.px() == 0 {
+                at_origin.clone()
+            } else if let Err(e) = refusal(*m, &placed_prims, &stage.target) {
+                Outcome::Refused(e)
+            } else if m.is_exact() {
+                match at_origin {
+                    Outcome::Measured { metrics, .. } => Outcome::Measured {
+                        placement: Placement::Translated,
+                        metrics: metrics.clone(),
+                    },
+                    refused => refused.clone(),
+                }
+            } else {
+                let (_, _, r, _) = stage.pick(*m);
+                let window = FarWindow {
+                    origin: mag.px_i64(),
+                    side: sizes.canvas,
+                };
+                let samples = (sizes.samples, exact_colours.as_slice());
+                Outcome::Measured {
+                    placement: Placement::AtMagnitude,
+                    metrics: far_metrics(*m, w, &placed, &window, &stage.target, r, samples),
+                }
+            };
+            cells.push(Cell {
+                magnitude: mag,
+                contender: m.name().into(),
+                outcome,
+            });
+        }
+    }
+    cells
 }
 
 /// The barycentric and Gouraud samples: spread over the reference's covered pairs.

@@ -45,61 +45,118 @@ fn scene(c: &Case, side: u32, triangles: &[Triangle]) -> Scene {
 /// assert!(run.outcomes.iter().all(|o| !o.is_fatal()));
 /// ```
 pub fn run_case(c: &Case) -> CaseRun {
-    let mut out = Vec::new();
-    let mut skipped = Vec::new();
-    let (float32_sum_ulps, float32_sum_skipped) = triangle_checks(c, &mut out, &mut skipped);
-    line_checks(c, &mut out);
-    polygon_checks(c, &mut out, &mut skipped);
-    clip_checks(c, &mut out, &mut skipped);
+    let mut record = Record {
+        case: c,
+        outcomes: Vec::new(),
+        skipped: Vec::new(),
+    };
+    let (float32_sum_ulps, float32_sum_skipped) = barycentric_checks(&mut record);
+    mesh_checks(&mut record);
+    triangle_checks(&mut record);
+    line_checks(&mut record);
+    polygon_checks(&mut record);
+    clip_polygon_checks(&mut record);
+    segment_clip_check(&mut record);
+    float_clip_checks(&mut record);
     CaseRun {
         mesh_family: c.mesh_family,
-        outcomes: out,
-        skipped,
+        outcomes: record.outcomes,
+        skipped: record.skipped,
         float32_sum_ulps,
         float32_sum_skipped,
     }
 }
 
-/// A check of `model` (named by the model) that could not run.
-fn skip(invariant: &'static str, model: Model, reason: &'static str) -> Skip {
-    Skip {
-        invariant,
-        model,
-        label: model.name(),
-        reason,
+/// What the checkers found on one case, in the order they ran.
+struct Record<'a> {
+    case: &'a Case,
+    outcomes: Vec<CheckOutcome>,
+    skipped: Vec<Skip>,
+}
+
+impl Record<'_> {
+    /// An outcome of `model` (labelled by the algorithm) on `scene`.
+    fn push(
+        &mut self,
+        invariant: &'static str,
+        model: Model,
+        label: &'static str,
+        result: Result<(), Violation>,
+        scene: Scene,
+    ) {
+        self.outcomes.push(CheckOutcome {
+            invariant,
+            model,
+            label,
+            result,
+            scene,
+        });
+    }
+
+    /// An outcome of `model` (labelled by the model) on a `canvas` x `canvas` scene of
+    /// `triangles`.
+    fn push_triangles(
+        &mut self,
+        invariant: &'static str,
+        model: Model,
+        result: Result<(), Violation>,
+        triangles: &[Triangle],
+        canvas: u32,
+    ) {
+        let scene = scene(self.case, canvas, triangles);
+        self.push(invariant, model, model.name(), result, scene);
+    }
+
+    /// A check of `model` (labelled by the algorithm) that could not run.
+    fn skip_labelled(&mut self, invariant: &'static str, model: Model, label: &'static str, reason: &'static str) {
+        self.skipped.push(Skip {
+            invariant,
+            model,
+            label,
+            reason,
+        });
+    }
+
+    /// A check of `model` (labelled by the model) that could not run.
+    fn skip(&mut self, invariant: &'static str, model: Model, reason: &'static str) {
+        self.skip_labelled(invariant, model, model.name(), reason);
+    }
+
+    /// The case's scene of its one triangle.
+    fn triangle_scene(&self) -> Scene {
+        scene(self.case, CANVAS, std::slice::from_ref(&self.case.triangle))
+    }
+
+    /// A `CANVAS`-sized scene of no primitive, in the case's preset.
+    fn empty_scene(&self) -> Scene {
+        scene(self.case, CANVAS, &[])
     }
 }
 
-/// The barycentric invariant, the watertightness invariant, the agreement invariant and
-/// the invariance invariant on the case's triangle and meshes; returns the float32
-/// barycentric sum errors (ulps of 1) and the number of samples where none could be
-/// measured.
-fn triangle_checks(c: &Case, out: &mut Vec<CheckOutcome>, skipped: &mut Vec<Skip>) -> (Vec<f64>, u64) {
+/// The barycentric invariant on the case's triangle: exact sums at a few samples (a
+/// zero-area triangle has none: the checker would pass it vacuously), integer sums where
+/// the envelope allows. Returns the float32 barycentric sum errors (ulps of 1) and the
+/// number of samples where none could be measured.
+fn barycentric_checks(r: &mut Record) -> (Vec<f64>, u64) {
+    let c = r.case;
     let tri_target = target(CANVAS, c.preset);
-    let tri = std::slice::from_ref(&c.triangle);
-    let mut push = |invariant, model: Model, result, triangles: &[Triangle], canvas| {
-        out.push(CheckOutcome {
-            invariant,
-            model,
-            label: model.name(),
-            result,
-            scene: scene(c, canvas, triangles),
-        });
-    };
-
-    // The barycentric invariant: exact sums at a few samples (a zero-area triangle has
-    // none: the checker would pass it vacuously), integer sums where the envelope allows.
     let samples = [(0u32, 0u32), (CANVAS / 2, CANVAS / 3), (CANVAS - 1, CANVAS - 1)];
     let points: Vec<Point> = samples.iter().map(|&(x, y)| sample_exact(x, y, &tri_target)).collect();
     if barycentric_exact(&c.triangle, &points[0]).is_none() {
-        skipped.push(skip(
+        r.skip(
             "barycentric sum",
             Model::Exact,
             "the triangle has zero area (no barycentrics)",
-        ));
+        );
     } else {
         let exact_sum = points.iter().try_for_each(|p| check_barycentric_exact(&c.triangle, p));
-        push("barycentric sum", Model::Exact, exact_sum, tri, CANVAS);
+        r.push(
+            "barycentric sum",
+            Model::Exact,
+            Model::Exact.name(),
+            exact_sum,
+            r.triangle_scene(),
+        );
     }
     let measured: Vec<Option<f64>> = points.iter().map(|p| float_sum_error_ulps(&c.triangle, p)).collect();
     let ulps_skipped = measured.iter().filter(|u| u.is_none()).count() as u64;
@@ -109,18 +166,30 @@ fn triangle_checks(c: &Case, out: &mut Vec<CheckOutcome>, skipped: &mut Vec<Skip
             let sum = samples
                 .iter()
                 .try_for_each(|&(x, y)| check_barycentric_fixed(&f, x, y, &tri_target));
-            push("integer edge sum", Model::Fixed, sum, tri, CANVAS);
+            r.push(
+                "integer edge sum",
+                Model::Fixed,
+                Model::Fixed.name(),
+                sum,
+                r.triangle_scene(),
+            );
         }
-        Err(_) => skipped.push(skip(
+        Err(_) => r.skip(
             "integer edge sum",
             Model::Fixed,
             "the snapped triangle is outside the integer envelope",
-        )),
+        ),
     }
+    (ulps, ulps_skipped)
+}
 
-    // The watertightness invariant on the meshes, and the agreement invariant on them:
-    // every model against its plain oracle (exact-snapped-plain for the models that snap,
-    // exact-plain for the others).
+/// The watertightness invariant on the meshes, and the agreement invariant on them: every
+/// model against its plain oracle (exact-snapped-plain for the models that snap,
+/// exact-plain for the others); then watertightness per sample: the case's mesh at the
+/// standard 4x positions, every sample inside its outline owned once, in each model that
+/// must hold.
+fn mesh_checks(r: &mut Record) {
+    let c = r.case;
     let meshes = [
         (
             &c.mesh,
@@ -162,13 +231,11 @@ fn triangle_checks(c: &Case, out: &mut Vec<CheckOutcome>, skipped: &mut Vec<Skip
                     )
                 }
             };
-            push(w_name, model, watertight, &mesh.triangles, side);
-            push(a_name, model, agreement, &mesh.triangles, side);
+            r.push_triangles(w_name, model, watertight, &mesh.triangles, side);
+            r.push_triangles(a_name, model, agreement, &mesh.triangles, side);
         }
     }
 
-    // The watertightness invariant per sample: the case's mesh at the standard 4x
-    // positions, every sample inside its outline owned once, in each model that must hold.
     let four = SamplePattern::standard(4).expect("the standard 4x pattern");
     let mesh_target = target(c.mesh_canvas, c.preset);
     let mesh_scene = Primitives::from_triangles(&c.mesh.triangles);
@@ -176,11 +243,17 @@ fn triangle_checks(c: &Case, out: &mut Vec<CheckOutcome>, skipped: &mut Vec<Skip
         let result = render_samples(&mesh_scene, &mesh_target, &four, model)
             .map_err(|e| Violation::new("watertight", e.to_string()))
             .and_then(|cov| check_watertight_samples(&c.mesh.triangles, &c.mesh.outline, &cov, &four, &mesh_target));
-        push("watertight (4x)", model, result, &c.mesh.triangles, c.mesh_canvas);
+        r.push_triangles("watertight (4x)", model, result, &c.mesh.triangles, c.mesh_canvas);
     }
+}
 
-    // The agreement invariant on a single random triangle (every family), against the
-    // plain oracle.
+/// The agreement invariant on the case's single random triangle (every family), against
+/// the plain oracle; then the invariance invariant: rotation and winding, whole-pixel
+/// translation.
+fn triangle_checks(r: &mut Record) {
+    let c = r.case;
+    let tri_target = target(CANVAS, c.preset);
+    let tri = std::slice::from_ref(&c.triangle);
     for model in models::must_hold() {
         let reference = model.reference();
         match render_triangles(tri, &tri_target, reference) {
@@ -188,81 +261,52 @@ fn triangle_checks(c: &Case, out: &mut Vec<CheckOutcome>, skipped: &mut Vec<Skip
                 let result = render_triangles(tri, &tri_target, model)
                     .map_err(|e| Violation::new("agreement", e.to_string()))
                     .and_then(|cov| check_agreement(reference.name(), &expected, model.name(), &cov, tri, &tri_target));
-                push("agreement (triangle)", model, result, tri, CANVAS);
+                r.push_triangles("agreement (triangle)", model, result, tri, CANVAS);
             }
-            Err(_) => skipped.push(skip(
+            Err(_) => r.skip(
                 "agreement (triangle)",
                 model,
                 "the plain oracle refused the triangle (no reference)",
-            )),
+            ),
         }
     }
-
-    // The invariance invariant: rotation and winding, whole-pixel translation.
     for model in models::rotation() {
-        push(
-            "rotation/winding",
-            model,
-            check_rotation_and_winding(&c.triangle, &tri_target, model),
-            tri,
-            CANVAS,
-        );
+        let result = check_rotation_and_winding(&c.triangle, &tri_target, model);
+        r.push_triangles("rotation/winding", model, result, tri, CANVAS);
     }
     for model in models::translation() {
         let (dx, dy) = c.shift;
-        push(
-            "translation",
-            model,
-            check_translation(&c.triangle, &tri_target, dx, dy, model),
-            tri,
-            CANVAS,
-        );
+        let result = check_translation(&c.triangle, &tri_target, dx, dy, model);
+        r.push_triangles("translation", model, result, tri, CANVAS);
     }
-    (ulps, ulps_skipped)
 }
 
-/// The clipping invariant: exact Sutherland-Hodgman output inside the window and
-/// rasterizing to raster(P) ∩ raster(W); exact Cohen-Sutherland keeping exactly the part
-/// inside; the float forms' outputs outside the window counted (the measured trade).
-fn clip_checks(c: &Case, out: &mut Vec<CheckOutcome>, skipped: &mut Vec<Skip>) {
+/// The case's polygon clipped by its window, as a scene.
+fn clipped_polygon_scene(r: &Record) -> Scene {
+    Scene {
+        polygons: vec![r.case.polygon.clone()],
+        clip: Some(r.case.window.clone()),
+        ..r.empty_scene()
+    }
+}
+
+/// The clipping invariant on polygons: exact Sutherland-Hodgman output inside the window
+/// and rasterizing to raster(P) ∩ raster(W); the planned engines on the clipped polygon
+/// (rational vertices out of exact clipping) equal to the plain oracle.
+fn clip_polygon_checks(r: &mut Record) {
+    let c = r.case;
     let target = target(CANVAS, c.preset);
-    let polygon_case = || Scene {
-        polygons: vec![c.polygon.clone()],
-        clip: Some(c.window.clone()),
-        ..scene(c, CANVAS, &[])
-    };
-    let mut push = |invariant, model: Model, label, result, scene| {
-        out.push(CheckOutcome {
-            invariant,
-            model,
-            label,
-            result,
-            scene,
-        });
-    };
     let cut = clip_polygon(&c.polygon, &c.window);
     let all_inside = std::iter::once(&cut.outline)
         .chain(&cut.holes)
         .try_for_each(|contour| check_inside(contour, &c.window));
-    push(
-        "clip inside",
-        Model::Exact,
-        "sutherland-hodgman",
-        all_inside,
-        polygon_case(),
-    );
-    push(
-        "clip raster",
-        Model::Exact,
-        "sutherland-hodgman",
-        check_clip_raster(&c.polygon, &cut, &c.window, &target),
-        polygon_case(),
-    );
-    // The planned engines on the clipped polygon (rational vertices out of exact
-    // clipping) equal the plain oracle.
+    let sh = "sutherland-hodgman";
+    r.push("clip inside", Model::Exact, sh, all_inside, clipped_polygon_scene(r));
+    let raster = check_clip_raster(&c.polygon, &cut, &c.window, &target);
+    r.push("clip raster", Model::Exact, sh, raster, clipped_polygon_scene(r));
     for model in models::clip_agreement() {
         let reference = model.reference();
-        let scene = polygon_case();
+        let scene = clipped_polygon_scene(r);
         let drawn =
             |m| render(&scene.primitives(), &target, m).map_err(|e| Violation::new("clip agreement", e.to_string()));
         let result = drawn(reference)
@@ -270,36 +314,43 @@ fn clip_checks(c: &Case, out: &mut Vec<CheckOutcome>, skipped: &mut Vec<Skip>) {
             .and_then(|(expected, theirs)| {
                 check_agreement(reference.name(), &expected, model.name(), &theirs, &[], &target)
             });
-        push("clip agreement", model, model.name(), result, scene);
+        r.push("clip agreement", model, model.name(), result, scene);
     }
+}
+
+/// The clipping invariant on segments: exact Cohen-Sutherland keeps exactly the part
+/// inside the case's rectangle.
+fn segment_clip_check(r: &mut Record) {
+    let c = r.case;
     let (a, b) = &c.segment;
-    if let Window::Rect(r) = &c.rect {
-        let kept = cohen_sutherland::clip_exact(a, b, r);
-        push(
+    let Window::Rect(rect) = &c.rect else {
+        r.skip_labelled(
             "segment clip",
             Model::Exact,
             "cohen-sutherland",
-            check_segment_clip(a, b, r, kept.as_ref()),
-            Scene {
-                lines: vec![Line {
-                    from: a.clone(),
-                    to: b.clone(),
-                    rule: LineRule::Diamond,
-                }],
-                clip: Some(c.rect.clone()),
-                ..scene(c, CANVAS, &[])
-            },
+            "the case's rect window is not a rectangle",
         );
-    } else {
-        skipped.push(Skip {
-            invariant: "segment clip",
-            model: Model::Exact,
-            label: "cohen-sutherland",
-            reason: "the case's rect window is not a rectangle",
-        });
-    }
-    // Float Sutherland-Hodgman: every output vertex read back exactly and checked exactly;
-    // a non-finite one is a violation in itself.
+        return;
+    };
+    let kept = cohen_sutherland::clip_exact(a, b, rect);
+    let scene = Scene {
+        lines: vec![Line {
+            from: a.clone(),
+            to: b.clone(),
+            rule: LineRule::Diamond,
+        }],
+        clip: Some(c.rect.clone()),
+        ..r.empty_scene()
+    };
+    let result = check_segment_clip(a, b, rect, kept.as_ref());
+    r.push("segment clip", Model::Exact, "cohen-sutherland", result, scene);
+}
+
+/// The float forms of Sutherland-Hodgman (the measured trade): every output vertex read
+/// back exactly and checked inside the window exactly; a non-finite one is a violation in
+/// itself.
+fn float_clip_checks(r: &mut Record) {
+    let c = r.case;
     let inside = |pts: Vec<glam::DVec2>| -> Result<(), Violation> {
         let exact = pts
             .iter()
@@ -313,57 +364,52 @@ fn clip_checks(c: &Case, out: &mut Vec<CheckOutcome>, skipped: &mut Vec<Skip>) {
     let p64 = planes.iter().map(HalfPlane::to_f64).collect::<Option<Vec<_>>>();
     let s64 = subject.iter().map(Point::to_f64).collect::<Option<Vec<_>>>();
     if let (Some(p64), Some(s64)) = (p64, s64) {
-        push(
+        let result = inside(sutherland_hodgman::clip_f64(&s64, &p64));
+        r.push(
             "clip inside",
             Model::Float64,
             "sh-f64",
-            inside(sutherland_hodgman::clip_f64(&s64, &p64)),
-            polygon_case(),
+            result,
+            clipped_polygon_scene(r),
         );
     } else {
-        skipped.push(Skip {
-            invariant: "clip inside",
-            model: Model::Float64,
-            label: "sh-f64",
-            reason: "a vertex or window line does not fit f64",
-        });
+        r.skip_labelled(
+            "clip inside",
+            Model::Float64,
+            "sh-f64",
+            "a vertex or window line does not fit f64",
+        );
     }
     let p32 = planes.iter().map(HalfPlane::to_f32).collect::<Option<Vec<_>>>();
     let s32 = subject.iter().map(Point::to_f32).collect::<Option<Vec<_>>>();
     if let (Some(p32), Some(s32)) = (p32, s32) {
         let pts = sutherland_hodgman::clip_f32(&s32, &p32);
-        push(
+        let result = inside(pts.into_iter().map(|p| p.as_dvec2()).collect());
+        r.push(
             "clip inside",
             Model::Float32,
             "sh-f32",
-            inside(pts.into_iter().map(|p| p.as_dvec2()).collect()),
-            polygon_case(),
+            result,
+            clipped_polygon_scene(r),
         );
     } else {
-        skipped.push(Skip {
-            invariant: "clip inside",
-            model: Model::Float32,
-            label: "sh-f32",
-            reason: "a vertex or window line does not fit f32",
-        });
+        r.skip_labelled(
+            "clip inside",
+            Model::Float32,
+            "sh-f32",
+            "a vertex or window line does not fit f32",
+        );
     }
 }
 
 /// The polygon invariant: the scanline filler equals the oracle on any polygon; a simple
 /// polygon's triangulation covers exactly its fill, once (the `fixed` model's route).
-fn polygon_checks(c: &Case, out: &mut Vec<CheckOutcome>, skipped: &mut Vec<Skip>) {
+fn polygon_checks(r: &mut Record) {
+    let c = r.case;
     let target = target(CANVAS, c.preset);
-    let mut push = |invariant, model: Model, result, polygon: &Polygon| {
-        out.push(CheckOutcome {
-            invariant,
-            model,
-            label: model.name(),
-            result,
-            scene: Scene {
-                polygons: vec![polygon.clone()],
-                ..scene(c, CANVAS, &[])
-            },
-        });
+    let polygon_scene = |r: &Record, polygon: &Polygon| Scene {
+        polygons: vec![polygon.clone()],
+        ..r.empty_scene()
     };
     let fill = |model, p: &Polygon| {
         render(
@@ -382,23 +428,29 @@ fn polygon_checks(c: &Case, out: &mut Vec<CheckOutcome>, skipped: &mut Vec<Skip>
             let theirs = fill(model, &c.polygon)?;
             check_agreement(reference.name(), &expected, model.name(), &theirs, &[], &target)
         });
-        push("polygon agreement", model, agreement, &c.polygon);
+        r.push(
+            "polygon agreement",
+            model,
+            model.name(),
+            agreement,
+            polygon_scene(r, &c.polygon),
+        );
     }
     // Grid rounding can fold a tiny star: only simple polygons are triangulated.
     let Ok(fixed) = c.simple.to_fixed(&target.convention) else {
-        skipped.push(skip(
+        r.skip(
             "triangulation",
             Model::Fixed,
             "a snapped vertex is outside the integer envelope",
-        ));
+        );
         return;
     };
     if validate(&fixed).is_err() {
-        skipped.push(skip(
+        r.skip(
             "triangulation",
             Model::Fixed,
             "snapping folded the polygon (not simple on the subpixel grid)",
-        ));
+        );
         return;
     }
     let result = triangulate(&fixed)
@@ -407,28 +459,28 @@ fn polygon_checks(c: &Case, out: &mut Vec<CheckOutcome>, skipped: &mut Vec<Skip>
             let tris: Vec<Triangle> = tris.iter().map(FixedTriangle::to_exact).collect();
             check_triangulation(&fixed.to_exact(), &tris, &target)
         });
-    push("triangulation", Model::Fixed, result, &c.simple);
+    let fixed_name = Model::Fixed.name();
+    r.push(
+        "triangulation",
+        Model::Fixed,
+        fixed_name,
+        result,
+        polygon_scene(r, &c.simple),
+    );
 }
 
 /// The line invariant: Bresenham (both ties), its reversal, diamond-exit agreement, and
 /// the DDA's departures (the float trade for lines).
-fn line_checks(c: &Case, out: &mut Vec<CheckOutcome>) {
+fn line_checks(r: &mut Record) {
+    let c = r.case;
     let as_line = |(a, b): ([i64; 2], [i64; 2]), tie| Line {
         from: Point::from_ints(a[0], a[1]),
         to: Point::from_ints(b[0], b[1]),
         rule: LineRule::Bresenham(tie),
     };
-    let mut push = |invariant, model: Model, label, result, line: Line| {
-        out.push(CheckOutcome {
-            invariant,
-            model,
-            label,
-            result,
-            scene: Scene {
-                lines: vec![line],
-                ..scene(c, CANVAS, &[])
-            },
-        });
+    let line_scene = |r: &Record, line: Line| Scene {
+        lines: vec![line],
+        ..r.empty_scene()
     };
     for tie in [BresenhamTie::Stay, BresenhamTie::Step] {
         let (a, b) = c.line;
@@ -438,33 +490,31 @@ fn line_checks(c: &Case, out: &mut Vec<CheckOutcome>) {
         } else {
             "bresenham/step"
         };
-        push(
-            "line pixels",
-            Model::Fixed,
-            label,
-            check_line_pixels(a, b, &pixels),
-            as_line(c.line, tie),
-        );
-        push(
+        let line = as_line(c.line, tie);
+        let found = check_line_pixels(a, b, &pixels);
+        r.push("line pixels", Model::Fixed, label, found, line_scene(r, line.clone()));
+        let reference = check_line_reference(a, b, tie, &pixels);
+        r.push(
             "line reference",
             Model::Fixed,
             label,
-            check_line_reference(a, b, tie, &pixels),
-            as_line(c.line, tie),
+            reference,
+            line_scene(r, line.clone()),
         );
         let symmetry = check_line_symmetry(a, b, tie).map(|_| ());
-        push("line symmetry", Model::Fixed, label, symmetry, as_line(c.line, tie));
+        r.push("line symmetry", Model::Fixed, label, symmetry, line_scene(r, line));
     }
     let target = target(CANVAS, c.preset);
     for model in models::diamond() {
         // The integer models share one diamond-exit walk, named by the algorithm.
         let label = if model.is_integer() { "diamond" } else { model.name() };
-        push(
+        let result = check_diamond_agreement(&c.diamond, model, &target);
+        r.push(
             "diamond agreement",
             model,
             label,
-            check_diamond_agreement(&c.diamond, model, &target),
-            c.diamond.clone(),
+            result,
+            line_scene(r, c.diamond.clone()),
         );
     }
     let (a, b) = c.long_line;
@@ -472,12 +522,8 @@ fn line_checks(c: &Case, out: &mut Vec<CheckOutcome>) {
         (Model::Float32, "dda32", dda::pixels_f32(a, b)),
         (Model::Float64, "dda64", dda::pixels_f64(a, b)),
     ] {
-        push(
-            "line pixels (long)",
-            model,
-            label,
-            check_line_pixels(a, b, &pixels),
-            as_line(c.long_line, BresenhamTie::Stay),
-        );
+        let result = check_line_pixels(a, b, &pixels);
+        let line = as_line(c.long_line, BresenhamTie::Stay);
+        r.push("line pixels (long)", model, label, result, line_scene(r, line));
     }
 }

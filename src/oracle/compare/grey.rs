@@ -30,13 +30,17 @@ pub enum GreyClass {
     /// added in one buffer, where shapes of opposite orientations cancel), further from
     /// the stated one's than precision reaches (see [`GreyClass::Precision`]): they
     /// integrate the winding number where the stated semantics is true coverage, or the
-    /// other way round, or accumulate the scene in one buffer.
+    /// other way round, or accumulate the scene in one buffer. Also, where no class below
+    /// explains the level, their level within precision's reach of such a value (and
+    /// beyond it from the stated one's): they accumulate, and their arithmetic rounds too.
     Accumulation,
     /// The pixel meets several shapes and their level is a rounding of the shapes blended
     /// one by one, source-over ([`crate::area::conflate`]: `1 - (1 - a)(1 - b)` where the
     /// exact union is `a + b`), each shape's own value exact or supersampled, further from
     /// the union than precision reaches and nearer to their level than the union is: they
-    /// composite each shape on its own (a seam between abutting shapes).
+    /// composite each shape on its own (a seam between abutting shapes). Also, where no
+    /// class below explains the level, their level within precision's reach of the exact
+    /// values blended (and beyond it from the exact value).
     Conflation,
     /// Fixed- or floating-point error (and none of the above): within its reach of the
     /// exact value, the larger of two quanta and `1/256 + 2/256` of coverage per edge
@@ -129,13 +133,13 @@ fn rounds(level: u16, v: &BigRational, s: i64, top: u16) -> bool {
 
 /// Pixel `(x, y)`'s accumulated value with every shape in one path (one accumulation
 /// buffer, as ab_glyph_rasterizer and zeno are fed a whole scene): the signed integrals
-/// of all the shapes added, then folded by the first shape's fill rule (a shape of the
-/// opposite orientation cancels another there).
-fn one_path(shapes: &[AreaShape], x: u32, y: u32) -> BigRational {
+/// of all the shapes added (`accumulated`, each shape's, as [`exact::explain`] gives them),
+/// then folded by the first shape's fill rule (a shape of the opposite orientation cancels
+/// another there).
+fn one_path(shapes: &[AreaShape], accumulated: &[BigRational]) -> BigRational {
     let Some(first) = shapes.first() else {
         return BigRational::zero();
     };
-    let (_, accumulated) = exact::pixel(shapes, i64::from(x), i64::from(y));
     let sum: BigRational = accumulated.iter().sum();
     crate::area::fold(first.fill_rule, &sum, Semantics::Accumulated)
 }
@@ -148,10 +152,20 @@ fn beyond(a: &BigRational, b: &BigRational, s: i64, reach: &BigRational) -> bool
     (clamp(a) - clamp(b)).abs() * BigRational::from_integer(s.into()) > *reach
 }
 
-/// How many shape edges meet pixel `(x, y)`'s square.
-fn edges_meeting(shapes: &[AreaShape], x: u32, y: u32) -> u32 {
-    let edges = exact::explain(shapes, i64::from(x), i64::from(y)).edges.len();
-    u32::try_from(edges).unwrap_or(u32::MAX / 4).min(u32::MAX / 4)
+/// Whether a `k x k` supersampled value could round to `level`, judged from `exact`, the
+/// exact value that supersampling approximates (within `[0, 1]`), and the `edges` that
+/// meet the pixel: of the `k x k` cells whose centres are the samples, only one whose
+/// interior an edge crosses can have a sample decision (0 or 1) other than its exact
+/// share of area, and a segment inside the pixel crosses the interiors of at most
+/// `2k - 1` cells (it crosses at most `k - 1` vertical and `k - 1` horizontal grid lines).
+/// So the supersampled value lies within `edges (2k - 1) / k^2` of the exact one, and a
+/// rounding of it within that many quanta, plus one, of `exact` in quanta. The cheap test
+/// that spares a gross pixel `k^2` exact sample tests per shape and `k`.
+fn sampling_reaches(level: u16, exact: &BigRational, edges: u32, k: u32, s: i64) -> bool {
+    let (k, edges) = (i64::from(k), i64::from(edges));
+    let scale = BigRational::from_integer(s.into());
+    let bound = BigRational::new((edges * (2 * k - 1) * s).into(), (k * k).into()) + BigRational::one();
+    (BigRational::from_integer(level.into()) - exact * scale).abs() <= bound
 }
 
 /// Whether `level` lies between the sums of the floors and of the ceilings of each shape's
@@ -193,25 +207,45 @@ fn rounds_per_shape(
 /// what the same values give unblended
 /// (the exact value `v`; the `k x k` share of the union under true coverage, the shares
 /// summed under the accumulated semantics), which lies further from `level`.
+///
+/// The supersampled values are drawn only for a `k` whose blend can reach `level`: the
+/// blend moves by at most the sum of its inputs' moves (each factor of `1 - (1 - a_1)...`
+/// lies in `[0, 1]`), and each shape's `k x k` value lies within its edges' reach of its
+/// exact true-coverage value ([`sampling_reaches`]), so the blend of the supersampled
+/// values lies within `edges` samples' reach of the blend of the exact ones.
 fn conflated(
-    (shapes, boxes): (&[AreaShape], &conflate::Boxes),
+    c: &Classifier<'_>,
     (x, y): (u32, u32),
-    semantics: Semantics,
-    (level, top): (u16, u16),
-    v: &BigRational,
-    (s, reach): (i64, &BigRational),
+    level: u16,
+    (v, edges): (&BigRational, u32),
+    reach: &BigRational,
 ) -> bool {
+    let (shapes, boxes, semantics, s, top) = (c.shapes, &c.boxes, c.semantics, c.s, c.top);
     if shapes.len() < 2 {
         return false;
     }
     let scale = BigRational::from_integer(s.into());
     let theirs = BigRational::from_integer(level.into());
     let off = |value: &BigRational| (&theirs - value * &scale).abs();
+    let exact_blend = std::cell::OnceCell::new();
     std::iter::once(conflate::Own::Exact(semantics))
         .chain(SUPERSAMPLE_SIDES.into_iter().map(conflate::Own::Supersampled))
         .any(|own| {
+            if let conflate::Own::Supersampled(k) = own {
+                let exact = exact_blend.get_or_init(|| {
+                    let own = conflate::own_values(shapes, boxes, x, y, conflate::Own::Exact(Semantics::True));
+                    conflate::blend(&own)
+                });
+                if !sampling_reaches(level, exact, edges, k, s) {
+                    return false;
+                }
+            }
             let values = conflate::own_values(shapes, boxes, x, y, own);
             if values.len() < 2 {
+                return false;
+            }
+            let blended = conflate::blend(&values);
+            if !rounds(level, &blended, s, top) {
                 return false;
             }
             // What the same values give without blending: the exact value, or the `k x k`
@@ -221,12 +255,101 @@ fn conflated(
                 conflate::Own::Supersampled(k) if semantics == Semantics::True => supersample::pixel(shapes, x, y, k),
                 conflate::Own::Supersampled(_) => values.iter().sum(),
             };
-            let blended = conflate::blend(&values);
-            rounds(level, &blended, s, top)
-                && off(&blended) < off(&union)
-                && beyond(&blended, &union, s, reach)
-                && beyond(&blended, v, s, reach)
+            off(&blended) < off(&union) && beyond(&blended, &union, s, reach) && beyond(&blended, v, s, reach)
         })
+}
+
+/// How the differing pixels of one comparison are classed: the shapes and their pixel
+/// boxes (found once: the per-shape classes ask at every differing pixel), the stated
+/// semantics, and the quantization's levels per unit of coverage (`s`) and top level.
+struct Classifier<'a> {
+    shapes: &'a [AreaShape],
+    boxes: conflate::Boxes,
+    semantics: Semantics,
+    s: i64,
+    top: u16,
+}
+
+impl Classifier<'_> {
+    /// The class of pixel `(x, y)`, whose level `level` is not the exact value `v`'s under
+    /// the named quantization; `error` is their level less `v` clamped to `[0, 1]`, in
+    /// quanta. The classes are tried in [`GreyClass`] order, the cheap ones first.
+    fn class(&self, (x, y): (u32, u32), level: u16, v: &BigRational, error: &BigRational) -> GreyClass {
+        let (shapes, s, top) = (self.shapes, self.s, self.top);
+        if rounds(level, v, s, top)
+            || rounds_per_shape((shapes, &self.boxes), (x, y), (self.semantics, v), level, s, top)
+        {
+            return GreyClass::Quantization;
+        }
+        let (px, py) = (i64::from(x), i64::from(y));
+        let edges = exact::crossing_edges(shapes, px, py).len();
+        let edges = u32::try_from(edges).unwrap_or(u32::MAX / 4).min(u32::MAX / 4);
+        // How far fixed-point arithmetic may stray here, in quanta: two, or 1/256 of
+        // coverage and 2/256 per edge meeting the pixel (a level and two per edge at 8
+        // bits). Another value explains their level only where it lies further than that
+        // from the exact one.
+        let cells = BigRational::new((1 + 2 * edges).into(), 256.into());
+        let reach = (cells * BigRational::from_integer(s.into())).max(BigRational::from_integer(2.into()));
+        if error.abs() + BigRational::one() <= reach {
+            // Another value explains a level only as one of its roundings (within a
+            // quantum) and only beyond the reach from the exact value, so a level within
+            // the reach less a quantum is precision: the costly checks below could not
+            // name it (the same answer, sooner).
+            return GreyClass::Precision;
+        }
+        let (values, accumulated) = exact::values(shapes, px, py);
+        // The values another semantics gives, and the scene's as one path.
+        let others: Vec<BigRational> = values
+            .iter()
+            .filter(|(semantics, _)| *semantics != self.semantics)
+            .map(|(_, other)| other.clone())
+            .chain(std::iter::once(one_path(shapes, &accumulated)))
+            .collect();
+        if others
+            .iter()
+            .any(|o| rounds(level, o, s, top) && beyond(o, v, s, &reach))
+        {
+            return GreyClass::Accumulation;
+        }
+        if conflated(self, (x, y), level, (v, edges), &reach) {
+            return GreyClass::Conflation;
+        }
+        if error.abs() <= reach {
+            return GreyClass::Precision;
+        }
+        // Supersampling approximates the union's area: the true-coverage value.
+        let union = values
+            .iter()
+            .find(|(semantics, _)| *semantics == Semantics::True)
+            .map_or_else(BigRational::zero, |(_, u)| u.clone());
+        let union = union.max(BigRational::zero()).min(BigRational::one());
+        let sampled = SUPERSAMPLE_SIDES.into_iter().find(|&k| {
+            sampling_reaches(level, &union, edges, k, s)
+                && supersample::pixel_under_each_rule(shapes, x, y, k)
+                    .iter()
+                    .any(|v| rounds(level, v, s, top))
+        });
+        if let Some(k) = sampled {
+            return GreyClass::Supersampling(k);
+        }
+        // The classes composed with precision: another semantics' value (or the blend of
+        // the shapes' own values) that lies beyond the reach of the exact value, their
+        // level within the reach of it: a renderer that accumulates (or blends) and whose
+        // arithmetic rounds too (FreeType's divisions on a self-overlapping outline).
+        let near = |value: &BigRational| {
+            let shown = value.clone().max(BigRational::zero()).min(BigRational::one());
+            (BigRational::from_integer(level.into()) - shown * BigRational::from_integer(s.into())).abs() <= reach
+        };
+        if others.iter().any(|o| near(o) && beyond(o, v, s, &reach)) {
+            return GreyClass::Accumulation;
+        }
+        let own = conflate::own_values(shapes, &self.boxes, x, y, conflate::Own::Exact(self.semantics));
+        let blended = conflate::blend(&own);
+        if own.len() >= 2 && near(&blended) && beyond(&blended, v, s, &reach) {
+            return GreyClass::Conflation;
+        }
+        GreyClass::Gross
+    }
 }
 
 /// How grey levels are judged: the exact model the scene's shapes come from (what the
@@ -284,15 +407,18 @@ pub fn compare_grey(
         });
     }
     let s = scale(quantization);
-    let top = u16::try_from((1u32 << theirs.bits) - 1).unwrap_or(u16::MAX);
-    let others: Vec<Semantics> = Semantics::ALL.into_iter().filter(|o| *o != semantics).collect();
+    let classifier = Classifier {
+        shapes,
+        boxes: conflate::Boxes::of(shapes),
+        semantics,
+        s,
+        top: u16::try_from((1u32 << theirs.bits) - 1).unwrap_or(u16::MAX),
+    };
     let mut pixels = Vec::new();
     let (mut max_error, mut total_error) = (BigRational::zero(), BigRational::zero());
     let mut histogram = BTreeMap::new();
     // Every pixel's exact value at once (the planned engine, equal to the plain oracle).
     let values = planned::rasterize(shapes, width, height, semantics);
-    // The shapes' pixel boxes, once: the per-shape classes ask at every differing pixel.
-    let boxes = conflate::Boxes::of(shapes);
     for y in 0..height {
         for x in 0..width {
             let level = theirs.levels[(y * width + x) as usize];
@@ -308,42 +434,7 @@ pub fn compare_grey(
             if level == ours {
                 continue;
             }
-            // How far fixed-point arithmetic may stray here, in quanta: two, or 1/256 of
-            // coverage and 2/256 per edge meeting the pixel (a level and two per edge at 8
-            // bits). Another value explains their level only where it lies further than
-            // that from the exact one.
-            let cells = BigRational::new((1 + 2 * edges_meeting(shapes, x, y)).into(), 256.into());
-            let reach = (cells * BigRational::from_integer(s.into())).max(BigRational::from_integer(2.into()));
-            let class = if rounds(level, &v, s, top)
-                || rounds_per_shape((shapes, &boxes), (x, y), (semantics, &v), level, s, top)
-            {
-                GreyClass::Quantization
-            } else if error.abs() + BigRational::one() <= reach {
-                // Another value explains a level only as one of its roundings (within a
-                // quantum) and only beyond the reach from the exact value, so a level
-                // within the reach less a quantum is precision: the costly checks below
-                // could not name it (the same answer, sooner).
-                GreyClass::Precision
-            } else if others
-                .iter()
-                .map(|o| exact::value(shapes, i64::from(x), i64::from(y), *o))
-                .chain(std::iter::once(one_path(shapes, x, y)))
-                .any(|other| rounds(level, &other, s, top) && beyond(&other, &v, s, &reach))
-            {
-                GreyClass::Accumulation
-            } else if conflated((shapes, &boxes), (x, y), semantics, (level, top), &v, (s, &reach)) {
-                GreyClass::Conflation
-            } else if error.abs() <= reach {
-                GreyClass::Precision
-            } else if let Some(k) = SUPERSAMPLE_SIDES.into_iter().find(|&k| {
-                supersample::pixel_under_each_rule(shapes, x, y, k)
-                    .iter()
-                    .any(|v| rounds(level, v, s, top))
-            }) {
-                GreyClass::Supersampling(k)
-            } else {
-                GreyClass::Gross
-            };
+            let class = classifier.class((x, y), level, &v, &error);
             pixels.push(GreyPixel {
                 x,
                 y,
@@ -414,7 +505,8 @@ impl GreyReport {
                 p.class.name()
             ));
         }
-        if self.pixels.len() > limit {
+        // `--limit 0` asks for the counts alone: no pixel, and no "more" of them.
+        if limit > 0 && self.pixels.len() > limit {
             s.push_str(&format!("  ... and {} more\n", self.pixels.len() - limit));
         }
         s

@@ -200,12 +200,24 @@ impl fmt::Display for CompareError {
             CompareError::Samples(e) => write!(f, "{e}"),
             CompareError::Area(e) => write!(f, "{e}"),
             CompareError::Conservative(e) => write!(f, "{e}"),
-            CompareError::Levels { bits, quantization } => write!(
-                f,
-                "their image has {bits}-bit levels; the quantization {} makes {}-bit ones",
-                quantization.name(),
-                quantization.bits()
-            ),
+            CompareError::Levels { bits, quantization } => {
+                write!(
+                    f,
+                    "their image has {bits}-bit levels; the quantization {} makes {}-bit ones",
+                    quantization.name(),
+                    quantization.bits()
+                )?;
+                let fitting: Vec<&str> = Quantization::ALL
+                    .into_iter()
+                    .filter(|q| q.bits() == *bits)
+                    .map(Quantization::name)
+                    .collect();
+                match fitting.as_slice() {
+                    [] => Ok(()),
+                    [one] => write!(f, " (the quantization of {bits}-bit levels is {one})"),
+                    many => write!(f, " (the quantizations of {bits}-bit levels: {})", many.join(", ")),
+                }
+            }
             CompareError::Format(format) => write!(
                 f,
                 "their output was read as {}, which this comparison does not take (grey levels are compared with \

@@ -50,7 +50,9 @@ pub fn fit_convention(renderer: &dyn Renderer, config: &HuntConfig) -> Result<Fi
     let mut last = None;
     for k in 0..FIT_PROBES {
         let scene = generate_scene(&probe, u64::MAX - k)?;
-        let target = scene.target().ok_or("--fit-first: invalid probe scene")?;
+        let target = scene
+            .target()
+            .map_err(|e| format!("--fit-first: invalid probe scene: {e}"))?;
         let theirs = renderer
             .render(&scene)
             .map_err(|f| format!("--fit-first: the renderer failed on a probe scene: {f}"))?;

@@ -10,23 +10,21 @@
 //! case that showed it, the pixels it explained and the largest error in quanta: the
 //! table of what a renderer gets wrong, by class, with its size.
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Mutex;
-use std::time::Instant;
 
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 use serde_json::json;
 
-use super::{generate_scene, lock, HuntConfig, SceneFamily};
+use super::cases::{run_cases, shrink_budget, AskOnce, CaseCounts};
+use super::{HuntConfig, SceneFamily};
 use crate::area::{Quantization, Semantics};
-use crate::harness::runner::{RunError, Runner};
 use crate::harness::shrink::shrink_batched;
 use crate::model::Model;
 use crate::num::exact::{exact_text, nearest_f64, round_to_integer, Rounding};
 use crate::oracle::compare::grey::{compare_grey_scene, GreyClass, GreyOptions, GreyReport};
-use crate::oracle::renderer::program::{FailureKind, RenderFailure, Renderer};
+use crate::oracle::renderer::program::{FailureKind, RenderFailure, Renderer, RendererRuns};
 use crate::oracle::theirs::GreyImage;
 use crate::oracle::theirs::Theirs;
 use crate::scene::Scene;
@@ -85,7 +83,7 @@ pub fn judge_grey(
         Ok(t) => t,
         Err(f) => return GreyVerdict::Failed(f),
     };
-    let Some(target) = scene.target() else {
+    let Ok(target) = scene.target() else {
         return GreyVerdict::Refused("invalid canvas or convention".to_string());
     };
     let options = GreyOptions {
@@ -215,7 +213,18 @@ pub struct GreyHuntReport {
     pub findings: Vec<GreyFinding>,
     /// It was interrupted: the findings are as first seen, not shrunk.
     pub interrupted: bool,
+    /// What the hunt cost the renderer, when it is a program: scenes asked for and
+    /// programs started.
+    pub renderer_runs: Option<RendererRuns>,
 }
+
+/// The `format` of a grey hunt report ([`GreyHuntReport::to_json`]).
+pub const GREY_HUNT_REPORT_FORMAT: &str = "rasterproof grey hunt report";
+
+/// The schema version of a grey hunt report ([`GreyHuntReport::to_json`]): 2 added
+/// `format`, `version`, `rasterproof` and `renderer_runs`, and a failure's `failure` as
+/// its kind and message.
+pub const GREY_HUNT_REPORT_VERSION: u64 = 2;
 
 /// Runs the grey hunt: the cases of `config.hunt.shard` rendered by `renderer` on `jobs`
 /// threads and judged ([`judge_grey`]); each signature's first case shrunk (every
@@ -262,46 +271,49 @@ where
     R: Renderer + ?Sized,
 {
     let hunt = &config.hunt;
-    let judge = |s: &Scene| judge_grey(s, renderer.render(s), config.semantics, config.quantization);
-    let requested = hunt.shard.case_count(hunt.cases);
-    let deadline = hunt.budget.and_then(|b| Instant::now().checked_add(b));
-    let stop = || deadline.is_some_and(|d| Instant::now() >= d) || interrupted.load(Ordering::SeqCst);
-    type Case = (u64, Scene, GreyVerdict);
-    let case = |i: u64| -> Result<Case, String> {
-        let k = hunt
-            .shard
-            .case_at(i)
-            .ok_or_else(|| format!("the shard has no case at position {i}"))?;
-        let mut scene = generate_scene(hunt, k)?;
+    let case = |k: u64, mut scene: Scene| -> (u64, Scene, GreyVerdict) {
         if let Some(bits) = config.grid {
             on_grid(&mut scene, bits);
         }
-        let verdict = judge(&scene);
-        tick();
-        Ok((k, scene, verdict))
+        let verdict = judge_grey(&scene, renderer.render(&scene), config.semantics, config.quantization);
+        (k, scene, verdict)
     };
-    let runner = Runner {
-        threads: jobs.max(1),
-        name: "rasterproof-grey-hunt",
-        ..Runner::default()
-    };
-    let mut results: Vec<Case> = Vec::new();
-    runner
-        .run(requested, &stop, &case, &mut |_, r| r.map(|r| results.push(r)))
-        .map_err(|e| match e {
-            RunError::Spawn(e) => format!("cannot start {jobs} threads: {e}"),
-            RunError::Case(e) => e,
-        })?;
+    let (requested, results) = run_cases(hunt, jobs, "rasterproof-grey-hunt", tick, interrupted, &case)?;
     let cases = results.len() as u64;
-    let (mut same, mut differing, mut failed, mut refused) = (0u64, 0u64, 0u64, 0u64);
-    // Per signature: first case and scene, cases, pixels, largest error.
-    let mut first: BTreeMap<GreySignature, (u64, Scene, u64, u64, BigRational)> = BTreeMap::new();
+    let (tally, first) = first_seen(results);
+    let mut findings: Vec<GreyFinding> = first
+        .into_iter()
+        .map(|(signature, seen)| shrink_finding(renderer, config, signature, seen, jobs.max(1), interrupted))
+        .collect();
+    findings.sort_by_key(|f| (f.case, f.signature));
+    Ok(GreyHuntReport {
+        config: config.clone(),
+        requested,
+        cases,
+        same: tally.same,
+        differing: tally.differing,
+        failed: tally.failed,
+        refused: tally.refused,
+        findings,
+        interrupted: interrupted.load(Ordering::SeqCst),
+        renderer_runs: renderer.runs(),
+    })
+}
+
+/// A grey signature as the cases first showed it: the first case and its scene, the
+/// cases, the pixels and the largest error.
+type FirstSeen = (u64, Scene, u64, u64, BigRational);
+
+/// The cases counted by outcome, and each signature as first seen.
+fn first_seen(results: Vec<(u64, Scene, GreyVerdict)>) -> (CaseCounts, BTreeMap<GreySignature, FirstSeen>) {
+    let mut tally = CaseCounts::default();
+    let mut first: BTreeMap<GreySignature, FirstSeen> = BTreeMap::new();
     for (k, scene, verdict) in results {
         *match verdict {
-            GreyVerdict::Same => &mut same,
-            GreyVerdict::Differs(_) => &mut differing,
-            GreyVerdict::Failed(_) => &mut failed,
-            GreyVerdict::Refused(_) => &mut refused,
+            GreyVerdict::Same => &mut tally.same,
+            GreyVerdict::Differs(_) => &mut tally.differing,
+            GreyVerdict::Failed(_) => &mut tally.failed,
+            GreyVerdict::Refused(_) => &mut tally.refused,
         } += 1;
         for (sig, (pixels, max)) in grey_signatures(&verdict) {
             let entry = first
@@ -312,57 +324,42 @@ where
             entry.4 = entry.4.clone().max(max);
         }
     }
-    let mut findings = Vec::new();
-    for (signature, (case, original, cases, pixels, max_error)) in first {
-        // The renderer is asked once per distinct scene the shrinker tries.
-        let seen: Mutex<HashMap<String, bool>> = Mutex::new(HashMap::new());
-        let keeps = |s: &Scene| {
-            let key = s.to_json();
-            if let Some(&kept) = lock(&seen).get(&key) {
-                return kept;
-            }
-            let kept = grey_signatures(&judge(s)).contains_key(&signature);
-            lock(&seen).insert(key, kept);
-            kept
-        };
-        let mut first_kept = |batch: &[Scene]| -> Option<usize> {
-            let kept = crate::chunks::map_each(batch.iter().collect(), batch.len(), keeps);
-            kept.iter().position(|&k| k)
-        };
-        let budget = if interrupted.load(Ordering::SeqCst) {
-            0
-        } else {
-            hunt.shrink_runs
-        };
-        let (minimal, runs) = shrink_batched(&original, &mut first_kept, jobs.max(1), budget, None);
-        let drawn = renderer.render(&minimal);
-        let theirs = drawn.as_ref().ok().and_then(Theirs::grey).cloned();
-        let verdict = judge_grey(&minimal, drawn, config.semantics, config.quantization);
-        findings.push(GreyFinding {
-            signature,
-            case,
-            cases,
-            pixels,
-            max_error,
-            original,
-            minimal,
-            verdict,
-            theirs,
-            runs,
-        });
-    }
-    findings.sort_by_key(|f| (f.case, f.signature));
-    Ok(GreyHuntReport {
-        config: config.clone(),
-        requested,
+    (tally, first)
+}
+
+/// One grey finding: its first scene shrunk while it keeps `signature` (candidates tried
+/// `width` at a time; not shrunk once the hunt is `interrupted`), and the minimal scene's
+/// image and verdict.
+fn shrink_finding<R>(
+    renderer: &R,
+    config: &GreyHuntConfig,
+    signature: GreySignature,
+    (case, original, cases, pixels, max_error): FirstSeen,
+    width: usize,
+    interrupted: &AtomicBool,
+) -> GreyFinding
+where
+    R: Renderer + ?Sized,
+{
+    let judge = |s: &Scene| judge_grey(s, renderer.render(s), config.semantics, config.quantization);
+    let ask = AskOnce::new(|s: &Scene| grey_signatures(&judge(s)).contains_key(&signature));
+    let budget = shrink_budget(config.hunt.shrink_runs, interrupted);
+    let (minimal, runs) = shrink_batched(&original, &mut |batch| ask.first_kept(batch), width, budget, None);
+    let drawn = renderer.render(&minimal);
+    let theirs = drawn.as_ref().ok().and_then(Theirs::grey).cloned();
+    let verdict = judge_grey(&minimal, drawn, config.semantics, config.quantization);
+    GreyFinding {
+        signature,
+        case,
         cases,
-        same,
-        differing,
-        failed,
-        refused,
-        findings,
-        interrupted: interrupted.load(Ordering::SeqCst),
-    })
+        pixels,
+        max_error,
+        original,
+        minimal,
+        verdict,
+        theirs,
+        runs,
+    }
 }
 
 /// Rounds every coordinate of `scene` to the nearest multiple of `2^-bits` (ties to even).
@@ -378,6 +375,52 @@ pub fn on_grid(scene: &mut Scene, bits: u32) {
 /// not hold it.
 fn quanta(v: &BigRational) -> String {
     nearest_f64(v).map_or_else(|| exact_text(v), |f| format!("{f:.4}"))
+}
+
+impl GreyFinding {
+    /// Its first line, after its number: what it is, where it was first seen, its size (a
+    /// failure has no pixels) and how it was shrunk.
+    pub fn header(&self) -> String {
+        let size = match self.signature {
+            GreySignature::Failure(_) => String::new(),
+            GreySignature::Class { .. } => {
+                format!(", {} pixels, max error {} quanta", self.pixels, quanta(&self.max_error))
+            }
+        };
+        format!(
+            "{} (first in case {}; {} cases{size}); shrunk in {} runs to {} primitive(s)",
+            self.signature.describe(),
+            self.case,
+            self.cases,
+            self.runs,
+            super::primitive_count(&self.minimal)
+        )
+    }
+
+    /// What their renderer did with the minimal scene: its comparison (up to `pixels`
+    /// pixels), or its failure with the whole message (the exit status, the end of its
+    /// stderr, what it answered).
+    pub fn verdict_text(&self, pixels: usize) -> String {
+        match &self.verdict {
+            GreyVerdict::Differs(r) => r.levels_text(pixels),
+            GreyVerdict::Failed(e) => format!("their renderer failed ({}): {}\n", e.kind.name(), e.message),
+            GreyVerdict::Same => {
+                "(the minimal scene no longer differs: the renderer is not deterministic)\n".to_string()
+            }
+            GreyVerdict::Refused(e) => format!("(the oracle refused the minimal scene: {e})\n"),
+        }
+    }
+
+    /// The finding's `finding-NN.txt` (`n`: its number, from 1): its header, the minimal
+    /// scene's comparison (every pixel) or failure, and the first scene that showed it.
+    pub fn to_text(&self, n: usize) -> String {
+        format!(
+            "finding {n:02}: {}\n\n{}\nthe original scene:\n{}",
+            self.header(),
+            self.verdict_text(usize::MAX),
+            self.original.to_json()
+        )
+    }
 }
 
 impl GreyHuntReport {
@@ -396,36 +439,28 @@ impl GreyHuntReport {
             self.config.quantization.name()
         );
         for (n, f) in self.findings.iter().enumerate() {
-            s.push_str(&format!(
-                "\nfinding {}: {} (first in case {}; {} cases, {} pixels, max error {} quanta); shrunk in {} runs to {} primitive(s):\n",
-                n + 1,
-                f.signature.describe(),
-                f.case,
-                f.cases,
-                f.pixels,
-                quanta(&f.max_error),
-                f.runs,
-                super::primitive_count(&f.minimal)
-            ));
-            match &f.verdict {
-                GreyVerdict::Differs(r) => {
-                    for line in r.levels_text(pixels).lines() {
-                        s.push_str(&format!("  {line}\n"));
-                    }
-                }
-                GreyVerdict::Failed(e) => s.push_str(&format!("  their renderer failed: {e}\n")),
-                GreyVerdict::Same => s.push_str("  (the minimal scene no longer differs)\n"),
-                GreyVerdict::Refused(e) => s.push_str(&format!("  (the oracle refused the minimal scene: {e})\n")),
+            s.push_str(&format!("\nfinding {}: {}:\n", n + 1, f.header()));
+            for line in f.verdict_text(pixels).lines() {
+                s.push_str(&format!("  {line}\n"));
             }
+        }
+        if let Some(r) = self.renderer_runs {
+            s.push_str(&format!(
+                "\nthe renderer: {} scenes asked for, {} programs started\n",
+                r.calls, r.starts
+            ));
         }
         s
     }
 
-    /// As JSON: `{"renderer","semantics","quantization","seed","canvas","families",
-    /// "requested","cases","same","differing","failed","refused","findings":[{"signature",
-    /// "class","over","case","cases","pixels","max_error","runs","minimal","comparison"}]}`
-    /// (`max_error` an exact fraction of quanta; `minimal` the scene; `comparison` the
-    /// minimal scene's grey comparison, or `failure`).
+    /// As JSON: `{"format","version","rasterproof","renderer","renderer_runs","semantics",
+    /// "quantization","seed","canvas","families","requested","cases","same","differing",
+    /// "failed","refused","findings":[{"signature","class","over","case","cases","pixels",
+    /// "max_error","runs","minimal","comparison"}]}` (`format`
+    /// [`GREY_HUNT_REPORT_FORMAT`], `version` [`GREY_HUNT_REPORT_VERSION`];
+    /// `renderer_runs` `{"calls","starts"}` for a program, else null; `max_error` an exact
+    /// fraction of quanta; `minimal` the scene; `comparison` the minimal scene's grey
+    /// comparison, or `failure` `{"kind","message"}`).
     pub fn to_json(&self, renderer: &str) -> serde_json::Value {
         let findings: Vec<serde_json::Value> = self
             .findings
@@ -448,7 +483,9 @@ impl GreyHuntReport {
                 });
                 match &f.verdict {
                     GreyVerdict::Differs(r) => entry["comparison"] = r.levels_json(),
-                    GreyVerdict::Failed(e) => entry["failure"] = json!(e.to_string()),
+                    GreyVerdict::Failed(e) => {
+                        entry["failure"] = json!({"kind": e.kind.name(), "message": e.message});
+                    }
                     GreyVerdict::Refused(e) => entry["refused"] = json!(e),
                     GreyVerdict::Same => {}
                 }
@@ -456,7 +493,11 @@ impl GreyHuntReport {
             })
             .collect();
         json!({
+            "format": GREY_HUNT_REPORT_FORMAT,
+            "version": GREY_HUNT_REPORT_VERSION,
+            "rasterproof": env!("CARGO_PKG_VERSION"),
             "renderer": renderer,
+            "renderer_runs": self.renderer_runs.map(|r| json!({"calls": r.calls, "starts": r.starts})),
             "semantics": self.config.semantics.name(),
             "quantization": self.config.quantization.name(),
             "grid_bits": self.config.grid,

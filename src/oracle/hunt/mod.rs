@@ -19,6 +19,7 @@
 //! is the harness's ([`crate::harness::shrink`], re-exported here as [`shrink`]), run
 //! with no grid step.
 
+mod cases;
 mod convention;
 mod families;
 mod grey;
@@ -28,27 +29,26 @@ mod report;
 mod test_text;
 mod verdict;
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{Mutex, MutexGuard, PoisonError};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 pub use crate::harness::shrink::{primitive_count, shrink, shrink_batched};
 pub use convention::{fit_convention, hunt_convention, preferred, FitFirst, FIT_PROBES};
 pub use families::{float32_exact, generate_scene, SceneFamily};
 pub use grey::{
     grey_signatures, hunt_grey, judge_grey, on_grid, GreyFinding, GreyHuntConfig, GreyHuntReport, GreySignature,
-    GreyVerdict, AREA_FAMILIES,
+    GreyVerdict, AREA_FAMILIES, GREY_HUNT_REPORT_FORMAT, GREY_HUNT_REPORT_VERSION,
 };
 pub use merge::merge_reports;
 pub use report::{HuntFinding, HuntReport, HUNT_REPORT_FORMAT, HUNT_REPORT_VERSION};
 pub use test_text::rust_test;
 pub use verdict::{judge, pixel_kinds, signatures, HuntVerdict, Signature};
 
+use cases::{run_cases, shrink_budget, AskOnce, CaseCounts};
 use verdict::CaseOutcome;
 
 use crate::convention::Preset;
-use crate::harness::runner::{RunError, Runner};
 use crate::harness::suite::Shard;
 use crate::model::Model;
 use crate::oracle::compare::PixelKind;
@@ -170,17 +170,7 @@ where
     R: Renderer + ?Sized,
 {
     let render = |s: &Scene| renderer.render(s);
-    let requested = config.shard.case_count(config.cases);
-    let deadline = config.budget.and_then(|b| Instant::now().checked_add(b));
-    // The cases that ran are the first of the shard's, in order (the runner hands on an
-    // unbroken prefix), whatever the number of threads.
-    let stop = || deadline.is_some_and(|d| Instant::now() >= d) || interrupted.load(Ordering::SeqCst);
-    let case = |i: u64| -> Result<CaseResult, String> {
-        let k = config
-            .shard
-            .case_at(i)
-            .ok_or_else(|| format!("the shard has no case at position {i}"))?;
-        let scene = generate_scene(config, k)?;
+    let case = |k: u64, scene: Scene| -> CaseResult {
         let verdict = judge(&scene, render(&scene), config.model);
         let sigs = signatures(&verdict)
             .into_iter()
@@ -189,31 +179,49 @@ where
                 (s, kinds)
             })
             .collect();
-        let outcome = CaseOutcome::of(&verdict);
-        tick();
-        Ok((k, scene, sigs, outcome))
+        (k, scene, sigs, CaseOutcome::of(&verdict))
     };
-    let runner = Runner {
-        threads: jobs.max(1),
-        name: "rasterproof-hunt",
-        ..Runner::default()
-    };
-    let mut results: Vec<CaseResult> = Vec::new();
-    runner
-        .run(requested, &stop, &case, &mut |_, r| r.map(|r| results.push(r)))
-        .map_err(|e| match e {
-            RunError::Spawn(e) => format!("cannot start {jobs} threads: {e}"),
-            RunError::Case(e) => e,
-        })?;
+    let (requested, results) = run_cases(config, jobs, "rasterproof-hunt", tick, interrupted, &case)?;
     let cases = results.len() as u64;
-    let (mut same, mut differing, mut failed, mut refused) = (0u64, 0u64, 0u64, 0u64);
-    let mut first: BTreeMap<Signature, (u64, Scene, u64, Vec<PixelKind>)> = BTreeMap::new();
+    let (tally, first) = first_seen(results);
+    // Each finding's first case is shrunk on its own, `jobs` at a time (the results do not
+    // depend on it: each shrink sees only its own scene and renderer answers). Jobs left
+    // over (fewer findings than jobs) try each shrinking step's candidates side by side,
+    // `width` at a time: the same minimal scene, sooner, for a few renderer calls more.
+    let width = jobs.max(1) / first.len().clamp(1, jobs.max(1));
+    let mut findings = crate::chunks::map_each(first.into_iter().collect(), jobs, |(signature, seen)| {
+        shrink_finding(renderer, config, signature, seen, width, interrupted)
+    });
+    findings.sort_by_key(|f| (f.case, f.signature.clone()));
+    Ok(HuntReport {
+        config: config.clone(),
+        requested,
+        cases,
+        stopped_by_time: cases < requested && !interrupted.load(Ordering::SeqCst),
+        interrupted: interrupted.load(Ordering::SeqCst),
+        same: tally.same,
+        differing: tally.differing,
+        failed: tally.failed,
+        refused: tally.refused,
+        findings,
+        renderer_runs: renderer.runs(),
+    })
+}
+
+/// A signature as the cases first showed it: the first case and its scene, the number of
+/// cases that showed it, and the kinds of pixels it was seen on.
+type FirstSeen = (u64, Scene, u64, Vec<PixelKind>);
+
+/// The cases counted by outcome, and each signature as first seen.
+fn first_seen(results: Vec<CaseResult>) -> (CaseCounts, BTreeMap<Signature, FirstSeen>) {
+    let mut tally = CaseCounts::default();
+    let mut first: BTreeMap<Signature, FirstSeen> = BTreeMap::new();
     for (k, scene, sigs, outcome) in results {
         *match outcome {
-            CaseOutcome::Same => &mut same,
-            CaseOutcome::Differs => &mut differing,
-            CaseOutcome::Failed => &mut failed,
-            CaseOutcome::Refused => &mut refused,
+            CaseOutcome::Same => &mut tally.same,
+            CaseOutcome::Differs => &mut tally.differing,
+            CaseOutcome::Failed => &mut tally.failed,
+            CaseOutcome::Refused => &mut tally.refused,
         } += 1;
         for (sig, kinds) in sigs {
             let entry = first.entry(sig).or_insert_with(|| (k, scene.clone(), 0, Vec::new()));
@@ -225,72 +233,38 @@ where
             }
         }
     }
-    // Each finding's first case is shrunk on its own, `jobs` at a time (the results do not
-    // depend on it: each shrink sees only its own scene and renderer answers). Jobs left
-    // over (fewer findings than jobs) try each shrinking step's candidates side by side,
-    // `width` at a time: the same minimal scene, sooner, for a few renderer calls more.
-    let width = jobs.max(1) / first.len().clamp(1, jobs.max(1));
-    let shrink_one =
-        |(signature, (case, original, cases, mut kinds)): (Signature, (u64, Scene, u64, Vec<PixelKind>))| {
-            kinds.sort();
-            // The shrinker may try one scene twice (two steps reaching it): the renderer is
-            // asked once per distinct scene.
-            let seen: Mutex<HashMap<String, bool>> = Mutex::new(HashMap::new());
-            let keeps = |s: &Scene| {
-                let key = s.to_json();
-                if let Some(&kept) = lock(&seen).get(&key) {
-                    return kept;
-                }
-                let kept = signatures(&judge(s, render(s), config.model)).contains(&signature);
-                lock(&seen).insert(key, kept);
-                kept
-            };
-            let mut first_kept = |batch: &[Scene]| -> Option<usize> {
-                if batch.len() == 1 {
-                    return keeps(&batch[0]).then_some(0);
-                }
-                let kept = crate::chunks::map_each(batch.iter().collect(), batch.len(), keeps);
-                kept.iter().position(|&k| k)
-            };
-            let budget = if interrupted.load(Ordering::SeqCst) {
-                0
-            } else {
-                config.shrink_runs
-            };
-            let (minimal, runs) = shrink_batched(&original, &mut first_kept, width, budget, None);
-            let renderer_calls = lock(&seen).len();
-            let verdict = judge(&minimal, render(&minimal), config.model);
-            HuntFinding {
-                signature,
-                kinds,
-                case,
-                cases,
-                original,
-                minimal,
-                verdict,
-                runs,
-                renderer_calls,
-            }
-        };
-    let mut findings = crate::chunks::map_each(first.into_iter().collect(), jobs, shrink_one);
-    findings.sort_by_key(|f| (f.case, f.signature.clone()));
-    Ok(HuntReport {
-        config: config.clone(),
-        requested,
-        cases,
-        stopped_by_time: cases < requested && !interrupted.load(Ordering::SeqCst),
-        interrupted: interrupted.load(Ordering::SeqCst),
-        same,
-        differing,
-        failed,
-        refused,
-        findings,
-        renderer_runs: renderer.runs(),
-    })
+    (tally, first)
 }
 
-/// `m` locked, whether or not a thread panicked holding it (the data is a cache or a
-/// queue: every state it can be left in is valid).
-fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
-    m.lock().unwrap_or_else(PoisonError::into_inner)
+/// One finding: its first scene shrunk while it keeps `signature` (candidates tried
+/// `width` at a time; not shrunk once the hunt is `interrupted`), and the minimal scene's
+/// verdict.
+fn shrink_finding<R>(
+    renderer: &R,
+    config: &HuntConfig,
+    signature: Signature,
+    (case, original, cases, mut kinds): FirstSeen,
+    width: usize,
+    interrupted: &AtomicBool,
+) -> HuntFinding
+where
+    R: Renderer + ?Sized,
+{
+    kinds.sort();
+    let budget = shrink_budget(config.shrink_runs, interrupted);
+    let ask = AskOnce::new(|s: &Scene| signatures(&judge(s, renderer.render(s), config.model)).contains(&signature));
+    let (minimal, runs) = shrink_batched(&original, &mut |batch| ask.first_kept(batch), width, budget, None);
+    let renderer_calls = ask.asked();
+    let verdict = judge(&minimal, renderer.render(&minimal), config.model);
+    HuntFinding {
+        signature,
+        kinds,
+        case,
+        cases,
+        original,
+        minimal,
+        verdict,
+        runs,
+        renderer_calls,
+    }
 }

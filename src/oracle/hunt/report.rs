@@ -5,7 +5,7 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use super::verdict::{CaseOutcome, HuntVerdict, Signature};
+use super::verdict::{pixel_kinds, CaseOutcome, HuntVerdict, Signature};
 use super::HuntConfig;
 use crate::harness::junit::{JunitFailure, TestCase, TestSuite, TestSuites};
 use crate::harness::shrink::primitive_count;
@@ -77,14 +77,25 @@ pub const HUNT_REPORT_FORMAT: &str = "rasterproof hunt report";
 pub const HUNT_REPORT_VERSION: u64 = 2;
 
 impl HuntFinding {
-    /// Its pixel kinds in words, after the signature: ` (missing and extra pixels)`;
-    /// empty for a renderer failure.
+    /// Its pixel kinds in words, after the signature: the minimal scene's, and the kinds
+    /// its cases showed where they differ (a shrink keeps the cause, not always the kind):
+    /// ` (extra pixels; its cases showed missing and wrong owner pixels)`; empty for a
+    /// renderer failure.
     pub fn kinds_text(&self) -> String {
-        let names: Vec<&str> = self.kinds.iter().map(|k| k.name()).collect();
-        match names.as_slice() {
-            [] => String::new(),
-            [one] => format!(" ({one} pixels)"),
-            [rest @ .., last] => format!(" ({} and {last} pixels)", rest.join(", ")),
+        let words = |kinds: &[PixelKind]| {
+            let names: Vec<&str> = kinds.iter().map(|k| k.name()).collect();
+            match names.as_slice() {
+                [] => None,
+                [one] => Some(format!("{one} pixels")),
+                [rest @ .., last] => Some(format!("{} and {last} pixels", rest.join(", "))),
+            }
+        };
+        let minimal = pixel_kinds(&self.verdict, &self.signature);
+        match (words(&minimal), words(&self.kinds)) {
+            (Some(m), Some(c)) if minimal != self.kinds => format!(" ({m}; its cases showed {c})"),
+            (Some(m), _) => format!(" ({m})"),
+            (None, Some(c)) => format!(" (its cases showed {c})"),
+            (None, None) => String::new(),
         }
     }
 

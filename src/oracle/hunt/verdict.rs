@@ -33,7 +33,7 @@ pub fn judge(scene: &Scene, theirs: Result<Theirs, RenderFailure>, model: Model)
         Ok(t) => t,
         Err(f) => return HuntVerdict::Failed(f),
     };
-    let Some(target) = scene.target() else {
+    let Ok(target) = scene.target() else {
         return HuntVerdict::Refused("invalid canvas or convention".to_string());
     };
     if let Some(pattern) = scene.samples.as_ref().filter(|p| !p.is_single(&target.convention)) {

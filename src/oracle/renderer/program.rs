@@ -398,7 +398,7 @@ pub(super) fn read_output(
     let samples = scene
         .samples
         .as_ref()
-        .filter(|p| scene.target().is_some_and(|t| !p.is_single(&t.convention)))
+        .filter(|p| scene.target().is_ok_and(|t| !p.is_single(&t.convention)))
         .map_or(1, |p| u32::try_from(p.len()).unwrap_or(u32::MAX));
     let height = scene.height.saturating_mul(samples);
     if (theirs.width(), theirs.height()) != (scene.width, height) {

@@ -102,98 +102,7 @@ pub(super) fn speed_error<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport, 
     let (rows, cols) = grid_shape(n);
     let panels = grid.split_evenly((rows, cols));
     for (panel, w) in panels.iter().zip(workloads.iter().copied()) {
-        let points: Vec<(String, f64, f64, bool)> = w
-            .speed
-            .iter()
-            .filter_map(|s| match s.outcome {
-                SpeedOutcome::Measured { median, .. } if median > 0.0 => {
-                    Some((s.contender.clone(), median, headline(w, &s.contender, m)?, s.exact))
-                }
-                _ => None,
-            })
-            .collect();
-        let refused: Vec<&str> = w
-            .speed
-            .iter()
-            .filter(|s| headline(w, &s.contender, m).is_none())
-            .map(|s| s.contender.as_str())
-            .collect();
-        let lo = points.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
-        let hi = points.iter().map(|p| p.1).fold(0.0, f64::max);
-        let (lo, hi) = if lo.is_finite() && hi > 0.0 {
-            (lo / 3.0, hi * 3.0)
-        } else {
-            (1e-3, 1e3)
-        };
-        let caption = if refused.is_empty() {
-            w.name.clone()
-        } else {
-            format!("{} (refused: {})", w.name, refused.join(", "))
-        };
-        let mut chart = ChartBuilder::on(panel)
-            .caption(caption, (SANS, 16))
-            .margin(10)
-            .x_label_area_size(44)
-            .y_label_area_size(64)
-            .build_cartesian_2d((lo..hi).log_scale(), (BOTTOM..TOP).log_scale())
-            .map_err(err)?;
-        let x_desc = format!("speed, {} (log)", w.unit);
-        let first = w
-            .cells
-            .iter()
-            .find_map(|c| c.outcome.headline().map(|h| h.name()))
-            .unwrap_or("errors");
-        let y_desc = format!("{first} per million");
-        chart
-            .configure_mesh()
-            .x_desc(x_desc)
-            .y_desc(y_desc)
-            .x_labels(5)
-            .y_labels(8)
-            .x_label_formatter(&|v| speed_label(*v))
-            .y_label_formatter(&|v| rate_label(*v))
-            .axis_desc_style((SANS, 14))
-            .label_style((SANS, 12))
-            .draw()
-            .map_err(err)?;
-        // The Pareto front: fastest first, keeping each point with less error than every
-        // faster one.
-        let mut sorted = points.clone();
-        sorted.sort_by(|a, b| b.1.total_cmp(&a.1));
-        let mut front: Vec<(f64, f64)> = Vec::new();
-        for p in &sorted {
-            let better = match front.last() {
-                None => true,
-                Some(&(_, e)) => p.2 < e,
-            };
-            if better {
-                front.push((p.1, p.2));
-            }
-        }
-        let mut steps = Vec::new();
-        for (k, &(s, e)) in front.iter().enumerate() {
-            if k > 0 {
-                steps.push((s, front[k - 1].1));
-            }
-            steps.push((s, e));
-        }
-        chart
-            .draw_series(LineSeries::new(steps, BLACK.stroke_width(2)))
-            .map_err(err)?;
-        for &(s, e) in &front {
-            chart
-                .draw_series(std::iter::once(Circle::new((s, e), 11, BLACK.stroke_width(2))))
-                .map_err(err)?;
-        }
-        for (name, s, e, exact) in &points {
-            let c = colour(name);
-            if *exact {
-                chart.draw_series(std::iter::once(Circle::new((*s, *e), 6, c.filled())))
-            } else {
-                chart.draw_series(std::iter::once(TriangleMarker::new((*s, *e), 8, c.filled())))
-            }
-            .map_err(err)?;
-        }
+        speed_error_panel(panel, w, m)?;
     }
     let note = if area {
         "Circles: exact models; triangles: the contenders. Speed: each model's own function at the origin, median of \
@@ -205,6 +114,109 @@ pub(super) fn speed_error<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport, 
          line pixels; clipping: output vertices); 0 is exactly zero. A refused contender is not drawn."
     };
     legend(&bottom, &legend_entries(&workloads), 6, note)
+}
+
+/// One workload's panel of picture (a): each contender's speed against its headline error
+/// at magnitude `m`, the Pareto front ringed and joined.
+fn speed_error_panel<DB: DrawingBackend>(panel: &Area<DB>, w: &WorkloadReport, m: Magnitude) -> Result<(), String> {
+    let points: Vec<(String, f64, f64, bool)> = w
+        .speed
+        .iter()
+        .filter_map(|s| match s.outcome {
+            SpeedOutcome::Measured { median, .. } if median > 0.0 => {
+                Some((s.contender.clone(), median, headline(w, &s.contender, m)?, s.exact))
+            }
+            _ => None,
+        })
+        .collect();
+    let refused: Vec<&str> = w
+        .speed
+        .iter()
+        .filter(|s| headline(w, &s.contender, m).is_none())
+        .map(|s| s.contender.as_str())
+        .collect();
+    let lo = points.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+    let hi = points.iter().map(|p| p.1).fold(0.0, f64::max);
+    let (lo, hi) = if lo.is_finite() && hi > 0.0 {
+        (lo / 3.0, hi * 3.0)
+    } else {
+        (1e-3, 1e3)
+    };
+    let caption = if refused.is_empty() {
+        w.name.clone()
+    } else {
+        format!("{} (refused: {})", w.name, refused.join(", "))
+    };
+    let mut chart = ChartBuilder::on(panel)
+        .caption(caption, (SANS, 16))
+        .margin(10)
+        .x_label_area_size(44)
+        .y_label_area_size(64)
+        .build_cartesian_2d((lo..hi).log_scale(), (BOTTOM..TOP).log_scale())
+        .map_err(err)?;
+    let x_desc = format!("speed, {} (log)", w.unit);
+    let first = w
+        .cells
+        .iter()
+        .find_map(|c| c.outcome.headline().map(|h| h.name()))
+        .unwrap_or("errors");
+    let y_desc = format!("{first} per million");
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc(y_desc)
+        .x_labels(5)
+        .y_labels(8)
+        .x_label_formatter(&|v| speed_label(*v))
+        .y_label_formatter(&|v| rate_label(*v))
+        .axis_desc_style((SANS, 14))
+        .label_style((SANS, 12))
+        .draw()
+        .map_err(err)?;
+    let front = pareto_front(&points);
+    let mut steps = Vec::new();
+    for (k, &(s, e)) in front.iter().enumerate() {
+        if k > 0 {
+            steps.push((s, front[k - 1].1));
+        }
+        steps.push((s, e));
+    }
+    chart
+        .draw_series(LineSeries::new(steps, BLACK.stroke_width(2)))
+        .map_err(err)?;
+    for &(s, e) in &front {
+        chart
+            .draw_series(std::iter::once(Circle::new((s, e), 11, BLACK.stroke_width(2))))
+            .map_err(err)?;
+    }
+    for (name, s, e, exact) in &points {
+        let c = colour(name);
+        if *exact {
+            chart.draw_series(std::iter::once(Circle::new((*s, *e), 6, c.filled())))
+        } else {
+            chart.draw_series(std::iter::once(TriangleMarker::new((*s, *e), 8, c.filled())))
+        }
+        .map_err(err)?;
+    }
+    Ok(())
+}
+
+/// The Pareto front of (name, speed, error, exact) points as (speed, error): fastest
+/// first, keeping each point with less error than every faster one.
+fn pareto_front(points: &[(String, f64, f64, bool)]) -> Vec<(f64, f64)> {
+    let mut sorted = points.to_vec();
+    sorted.sort_by(|a, b| b.1.total_cmp(&a.1));
+    let mut front: Vec<(f64, f64)> = Vec::new();
+    for p in &sorted {
+        let better = match front.last() {
+            None => true,
+            Some(&(_, e)) => p.2 < e,
+        };
+        if better {
+            front.push((p.1, p.2));
+        }
+    }
+    front
 }
 
 /// A y axis of picture (b): what it shows and its log range.

@@ -97,7 +97,18 @@ impl CompareReport {
     /// at once and the headline says whether that gives their answer at every classified
     /// pixel. `None` when the findings name nothing in common (say near-edge float error
     /// beside ties), or nothing differs.
+    ///
+    /// Before all these: when their image covers no pixel where the oracle covers some,
+    /// the headline says that their renderer drew nothing (the per-pixel reasons, read
+    /// one pixel at a time, would call the scene's edge pixels ties).
     pub fn headline(&self) -> Option<String> {
+        if self.theirs_covered == 0 && self.ours_covered > 0 {
+            return Some(format!(
+                "their image covers no pixel: their renderer drew nothing here (the oracle covers {} {})",
+                self.ours_covered,
+                if self.ours_covered == 1 { "pixel" } else { "pixels" }
+            ));
+        }
         if let Some(one) = self.one_class_headline() {
             return Some(one);
         }
