@@ -198,7 +198,7 @@ fn check_merge_refuses_what_is_not_one_run() {
     let (code, stdout, _) = run(d, &["check-merge", "a.json"]);
     assert_eq!(code, Some(0));
     assert!(
-        stdout.contains("\nshard 1/2: the cases k of 0..2 with k mod 2 + 1 = 1 (1 cases)\n"),
+        stdout.contains("\nshard 1/2: the cases k of 0..2 with k mod 2 + 1 = 1 (1 case)\n"),
         "{stdout}"
     );
 }

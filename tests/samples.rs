@@ -428,7 +428,7 @@ fn render_writes_every_form_of_the_masks() {
     let text = String::from_utf8(text.stdout).unwrap();
     assert!(text.starts_with("#.\n"), "{text}");
     assert!(
-        text.contains("standard 16x samples: 16 samples covered, 1 pixels with some, 1 with all"),
+        text.contains("standard 16x samples: 16 samples covered, 1 pixel with some, 1 with all"),
         "{text}"
     );
 

@@ -271,7 +271,7 @@ fn tally_of_a_float_violation_counts_it_and_passes() {
         vec![3.0, 1.0, 2.0],
     ));
     let mut expected = vec![
-        "rasterproof check: 1 cases, seed 5, presets d3d11/gl",
+        "rasterproof check: 1 case, seed 5, presets d3d11/gl",
         "invariant                model                cases violations skipped",
         "watertight               fixed                    1          0       0",
         "watertight               float32-naive            1          1       0",

@@ -13,7 +13,7 @@ use rasterproof::coverage::Coverage;
 use rasterproof::coverage::{Scale, ASCII_GRID_MAX_SIDE};
 use rasterproof::model::plan;
 use rasterproof::model::{prepare_parallel, render_area_rows, Model, PreparedScene};
-use rasterproof::num::exact::{exact_text, terminating_decimal};
+use rasterproof::num::exact::{counted, exact_text, terminating_decimal};
 use std::time::{Duration, Instant};
 
 use super::{OutputFormat, Outputs};
@@ -230,8 +230,9 @@ fn summary(
     prepared: &PreparedScene,
 ) -> String {
     let mut summary = format!(
-        "{name}: model {model}, {}: {covered} pixels covered, {double} covered more than once",
+        "{name}: model {model}, {}: {} covered, {double} covered more than once",
         target.convention,
+        counted(covered as u64, "pixel"),
     );
     if model.plans() {
         summary.push_str(&format!("; plan: {}", plan::summary(&prepared.plans())));
@@ -280,9 +281,10 @@ fn run_samples(
     let samples: u64 = counts.iter().map(|c| u64::from(c.2)).sum();
     let full = counts.iter().filter(|c| c.2 == n).count();
     let mut summary = format!(
-        "{name}: model {model}, {}, {pattern} samples: {samples} samples covered, {} pixels with some, {full} with all",
+        "{name}: model {model}, {}, {pattern} samples: {} covered, {} with some, {full} with all",
         target.convention,
-        counts.len()
+        counted(samples, "sample"),
+        counted(counts.len() as u64, "pixel"),
     );
     if !wrote.is_empty() {
         summary.push_str(&format!("; wrote {}", wrote.join(", ")));
@@ -350,9 +352,9 @@ fn run_conservative(
     }
     outputs.commit()?;
     let summary = format!(
-        "{name}: conservative {rule}, {}: {} pixels must be covered, {} may{}",
+        "{name}: conservative {rule}, {}: {} must be covered, {} may{}",
         target.convention,
-        sets.must.covered_pixels(),
+        counted(sets.must.covered_pixels() as u64, "pixel"),
         sets.may.covered_pixels(),
         match &sets.inner {
             Some((must, may)) => format!(
@@ -453,9 +455,10 @@ fn run_area(o: &Options) -> Result<ExitCode, String> {
         count, whole, total, ..
     } = &tally;
     let summary = format!(
-        "{name}: area coverage ({} semantics), model {model}, {}: {count} pixels with area, {whole} of them whole; total {}{}{wrote}",
+        "{name}: area coverage ({} semantics), model {model}, {}: {} with area, {whole} of them whole; total {}{}{wrote}",
         semantics.name(),
         target.convention,
+        counted(*count as u64, "pixel"),
         exact_text(total),
         terminating_decimal(total).map_or(String::new(), |d| format!(" = {d}")),
     );

@@ -260,6 +260,22 @@ pub fn round_to_integer(x: &BigRational, rounding: Rounding) -> BigInt {
     }
 }
 
+/// `n` with its noun, singular for one: `1 pixel`, `0 pixels`, `3 cases`. `noun` is the
+/// singular; its plural adds an `s`.
+///
+/// ```
+/// use rasterproof::num::exact::counted;
+/// assert_eq!(counted(1, "pixel"), "1 pixel");
+/// assert_eq!(counted(0, "pixel"), "0 pixels");
+/// assert_eq!(counted(12, "case"), "12 cases");
+/// ```
+pub fn counted(n: u64, noun: &str) -> String {
+    match n {
+        1 => format!("1 {noun}"),
+        n => format!("{n} {noun}s"),
+    }
+}
+
 /// An exact rational as text: `3` or `-7/2` (what [`parse_rational`] reads back). The one
 /// text form of an exact number in every message, scene file and report.
 ///

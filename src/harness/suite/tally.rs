@@ -274,8 +274,9 @@ impl Tally {
     /// The first line: cases, seed and presets.
     pub fn header(&self) -> String {
         format!(
-            "rasterproof check: {} cases, seed {}, presets d3d11/gl",
-            self.cases, self.seed
+            "rasterproof check: {}, seed {}, presets d3d11/gl",
+            crate::num::exact::counted(self.cases, "case"),
+            self.seed
         )
     }
 

@@ -489,7 +489,11 @@ impl GreyReport {
             approx(&self.mean_error),
         );
         for (class, n) in self.classes() {
-            s.push_str(&format!("  {}: {n} pixels\n", class.name()));
+            s.push_str(&format!(
+                "  {}: {}\n",
+                class.name(),
+                crate::num::exact::counted(n as u64, "pixel")
+            ));
         }
         let histogram: Vec<String> = self.histogram.iter().map(|(d, n)| format!("{d}: {n}")).collect();
         s.push_str(&format!("  levels off (levels: pixels): {}\n", histogram.join(", ")));

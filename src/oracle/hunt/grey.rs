@@ -384,7 +384,11 @@ impl GreyFinding {
         let size = match self.signature {
             GreySignature::Failure(_) => String::new(),
             GreySignature::Class { .. } => {
-                format!(", {} pixels, max error {} quanta", self.pixels, quanta(&self.max_error))
+                format!(
+                    ", {}, max error {} quanta",
+                    crate::num::exact::counted(self.pixels, "pixel"),
+                    quanta(&self.max_error)
+                )
             }
         };
         format!(

@@ -254,7 +254,7 @@ impl SuiteReport {
         let mut lines = vec![self.tally.header()];
         if !self.shards.is_whole() {
             lines.push(format!(
-                "shard {}: the cases k of 0..{} with k mod {} + 1 = {} ({} cases)",
+                "shard {}: the cases k of 0..{} with k mod {} + 1 = {} ({})",
                 self.shards,
                 self.cases,
                 self.shards.count(),
@@ -263,7 +263,7 @@ impl SuiteReport {
                     .map(|k| k.to_string())
                     .collect::<Vec<_>>()
                     .join(" or "),
-                self.shards.case_count(self.cases)
+                crate::num::exact::counted(self.shards.case_count(self.cases), "case")
             ));
         }
         if !self.is_complete() {

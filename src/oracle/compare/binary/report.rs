@@ -230,10 +230,10 @@ impl CompareReport {
         );
         let _ = writeln!(
             s,
-            "canvas {}x{}: the oracle covers {} pixels, theirs {}; {} differ",
+            "canvas {}x{}: the oracle covers {}, theirs {}; {} differ",
             self.width,
             self.height,
-            self.ours_covered,
+            crate::num::exact::counted(self.ours_covered as u64, "pixel"),
             self.theirs_covered,
             self.pixels.len()
         );
