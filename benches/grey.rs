@@ -48,6 +48,7 @@ fn bench(c: &mut Criterion) {
         model: Model::Exact,
         semantics: Semantics::True,
         quantization: Quantization::Round8,
+        method: None,
     };
     for (name, theirs) in [("correct", &correct), ("gross", &gross)] {
         let start = std::time::Instant::now();

@@ -852,7 +852,7 @@ fn compare_grey_cli() {
     let (code, text, _) = rasterproof(&["compare", s, grey.to_str().unwrap(), "--as", "grey", "--fit"]);
     assert_eq!(code, Some(0), "{text}");
     assert!(
-        text.contains("exact true coverage, quantized by round: 0 pixels differ"),
+        text.contains("exact true coverage, quantized by round (--method exact-true-round): 0 pixels differ"),
         "{text}"
     );
     // Truncated instead of rounded: the half pixels are 127 where rounding gives 128.
@@ -1043,4 +1043,105 @@ fn f32_accumulation_of_a_shape_far_left_ends_and_is_right() {
         float::rasterize_at(&placed, 1 << 20, 2, 2, Semantics::Accumulated),
         vec![1.0, 1.0, 0.0, 0.0]
     );
+}
+
+/// `poly` with every coordinate rounded down to a multiple of `1/d` and moved by
+/// `(dx, dy)` px: vertices on the sample rows and columns of a `k x k` pattern when `2k`
+/// divides `d`, the ties the supersampling sweep must decide as the plain test does.
+fn snapped(poly: &Polygon, d: i64, shift: (i64, i64)) -> AreaShape {
+    let snap = |v: &BigRational, s: i64| (v * int(d)).floor() / int(d) + int(s);
+    let contour =
+        |c: &[Point]| -> Vec<Point> { c.iter().map(|q| p(snap(&q.x, shift.0), snap(&q.y, shift.1))).collect() };
+    Polygon {
+        outline: contour(&poly.outline),
+        holes: poly.holes.iter().map(|h| contour(h)).collect(),
+        fill_rule: poly.fill_rule,
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..config("proptest-regressions/area.txt") })]
+
+    /// The supersampling sweep (`supersample::for_each_row_counts`, a pass over each sample
+    /// row's edge crossings, and `pixel_row_counts`, the sweep of one pixel) counts what the plain test of every sample
+    /// (`supersample::row_counts_with`, each sample against every edge) counts: every
+    /// pixel, sample row, side `k` and tie rule, polygons (tangled, with holes) with
+    /// vertices on the samples' grid or off it, reaching off the canvas on every side.
+    #[test]
+    fn the_supersampling_sweep_is_the_plain_test(
+        poly in any_polygon(5, 7),
+        t in small_triangle(),
+        k in 1u32..=4,
+        d in prop::sample::select(vec![8i64, 24, 1 << 10]),
+        shift in (-2i64..=2, -2i64..=2),
+    ) {
+        let shapes = [snapped(&poly, d, shift), snapped(&triangle_shape(&t), d, (0, 0))];
+        let (width, height) = (5u32, 4u32);
+        for rule in AnyTieRule::ALL {
+            let mut rows_seen = 0;
+            supersample::for_each_row_counts(&shapes, width, height, k, rule, |y, counts| {
+                rows_seen += 1;
+                for x in 0..width {
+                    let plain = supersample::row_counts_with(&shapes, x, y, k, rule);
+                    let swept = &counts[(x * k) as usize..((x + 1) * k) as usize];
+                    assert_eq!(swept, &plain[..], "{rule:?} {k}x{k} pixel ({x}, {y}): {shapes:?}");
+                    let alone = supersample::pixel_row_counts(&shapes, x, y, k, rule);
+                    assert_eq!(alone, plain, "{rule:?} {k}x{k} pixel ({x}, {y}) alone: {shapes:?}");
+                }
+            });
+            prop_assert_eq!(rows_seen, height);
+        }
+        // Each pixel's values under the six rules, each once: the sweep's (which sweeps once
+        // where no sample lies on an edge) and the plain test's.
+        let of = i64::from(k * k);
+        for (x, y) in (0..height).flat_map(|y| (0..width).map(move |x| (x, y))) {
+            let mut plain: Vec<BigRational> = AnyTieRule::ALL
+                .iter()
+                .map(|&rule| r(supersample::row_counts_with(&shapes, x, y, k, rule).iter().sum::<u32>().into(), of))
+                .collect();
+            plain.sort();
+            plain.dedup();
+            let mut swept = supersample::pixel_under_each_rule(&shapes, x, y, k);
+            swept.sort();
+            prop_assert_eq!(swept, plain, "pixel ({}, {})", x, y);
+        }
+    }
+}
+
+/// The sweep's tie decisions, by hand: the square [1/8, 5/8]^2 has 4 x 4 samples at
+/// 1/8, 3/8, 5/8, 7/8 on its edges and corners. Top-left takes its left and top edges
+/// (x, y in {1/8, 3/8}: 4 samples), bottom-right its bottom and right ones ({3/8, 5/8}:
+/// 4), all-inclusive the closed square (3 x 3 = 9), all-exclusive the open one (3/8
+/// alone: 1); bottom-left takes x in {1/8, 3/8}, y in {3/8, 5/8} (4).
+#[test]
+fn the_supersampling_sweep_decides_ties_by_hand() {
+    let square = Polygon::new(
+        vec![
+            p(r(1, 8), r(1, 8)),
+            p(r(5, 8), r(1, 8)),
+            p(r(5, 8), r(5, 8)),
+            p(r(1, 8), r(5, 8)),
+        ],
+        FillRule::NonZero,
+    );
+    for (rule, want, rows) in [
+        (AnyTieRule::TopLeft, 4, [2, 2, 0, 0]),
+        (AnyTieRule::BottomRight, 4, [0, 2, 2, 0]),
+        (AnyTieRule::BottomLeft, 4, [0, 2, 2, 0]),
+        (AnyTieRule::AllInclusive, 9, [3, 3, 3, 0]),
+        (AnyTieRule::AllExclusive, 1, [0, 1, 0, 0]),
+    ] {
+        assert_eq!(
+            supersample::counts(std::slice::from_ref(&square), 1, 1, 4, rule),
+            vec![want],
+            "{rule:?}"
+        );
+        supersample::for_each_row_counts(std::slice::from_ref(&square), 1, 1, 4, rule, |_, counts| {
+            assert_eq!(counts, &rows[..], "{rule:?}");
+        });
+    }
+    // Reversed (clockwise in the image) the square covers the same samples.
+    let mut reversed = square.clone();
+    reversed.outline.reverse();
+    assert_eq!(supersample::counts(&[reversed], 1, 1, 4, AnyTieRule::TopLeft), vec![4]);
 }

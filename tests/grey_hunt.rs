@@ -202,10 +202,10 @@ fn grey_verdicts() {
     };
     let q = Quantization::Round8;
     assert!(matches!(
-        judge_grey(&scene, grey(8, vec![255, 128]), Semantics::True, q),
+        judge_grey(&scene, grey(8, vec![255, 128]), Semantics::True, q, None),
         GreyVerdict::Same
     ));
-    let verdict = judge_grey(&scene, grey(8, vec![255, 127]), Semantics::True, q);
+    let verdict = judge_grey(&scene, grey(8, vec![255, 127]), Semantics::True, q, None);
     let sigs = rasterproof::oracle::hunt::grey_signatures(&verdict);
     let sig = GreySignature::Class {
         class: GreyClass::Quantization,
@@ -213,7 +213,7 @@ fn grey_verdicts() {
     };
     assert_eq!(sigs.get(&sig), Some(&(1, r(1, 2))), "{sigs:?}");
     assert_eq!(sig.slug(), "quantization-under");
-    let GreyVerdict::Failed(f) = judge_grey(&scene, grey(16, vec![65535, 32768]), Semantics::True, q) else {
+    let GreyVerdict::Failed(f) = judge_grey(&scene, grey(16, vec![65535, 32768]), Semantics::True, q, None) else {
         panic!("a 16-bit image read as 8-bit levels is a failure");
     };
     assert_eq!(f.kind, FailureKind::BadOutput);
@@ -222,7 +222,13 @@ fn grey_verdicts() {
     assert!(f.message.contains("16-bit levels is round16"), "{f}");
     let ids = rasterproof::coverage::Coverage::new(2, 1);
     assert!(matches!(
-        judge_grey(&scene, Ok(Theirs::from_coverage(&ids, Format::Ids)), Semantics::True, q),
+        judge_grey(
+            &scene,
+            Ok(Theirs::from_coverage(&ids, Format::Ids)),
+            Semantics::True,
+            q,
+            None
+        ),
         GreyVerdict::Failed(_)
     ));
 }
@@ -262,7 +268,7 @@ fn grey_fixtures_show_their_signatures() {
         let theirs = Theirs::read(&png, "fixture", Format::Grey, Background::default()).unwrap();
         let semantics = Semantics::from_name(f["semantics"].as_str().unwrap()).unwrap();
         let q = Quantization::from_name(f["quantization"].as_str().unwrap()).unwrap();
-        let verdict = judge_grey(&scene, Ok(theirs), semantics, q);
+        let verdict = judge_grey(&scene, Ok(theirs), semantics, q, None);
         let names: Vec<String> = rasterproof::oracle::hunt::grey_signatures(&verdict)
             .keys()
             .map(|s| s.describe())
@@ -434,8 +440,9 @@ fn short_hunt(name: &str, serve: &str, args: &[&str]) {
     }
 }
 
-/// The grey hunt's options are checked: `--semantics` without `--as grey`, `--fit-first`
-/// with it, and an unknown quantization are errors naming the option.
+/// The grey hunt's options are checked: `--semantics` or `--method` without `--as grey`,
+/// `--model` with it, an unknown method (the message lists the names), a method with a
+/// quantization, and an unknown quantization are errors naming the option.
 #[test]
 fn grey_hunt_options_are_checked() {
     let run = |args: &[&str]| {
@@ -449,7 +456,15 @@ fn grey_hunt_options_are_checked() {
         String::from_utf8_lossy(&output.stderr).to_string()
     };
     assert!(run(&["--semantics", "accumulated"]).contains("--semantics"));
-    assert!(run(&["--as", "grey", "--fit-first"]).contains("--fit-first"));
+    assert!(run(&["--as", "grey", "--model", "exact"]).contains("--model"));
+    assert!(run(&["--method", "ftgrays"]).contains("--method are for --as grey"));
+    let unknown = run(&["--as", "grey", "--method", "ss4"]);
+    assert!(
+        unknown.contains("--method: no grey method named \"ss4\"") && unknown.contains("supersample-4x4-round"),
+        "{unknown}"
+    );
+    // A method names its own quantization.
+    assert!(run(&["--as", "grey", "--method", "ftgrays", "--quantization", "round16"]).contains("--quantization"));
     assert!(run(&["--as", "grey", "--quantization", "half"]).contains("--quantization: unknown quantization \"half\""));
     assert!(run(&["--as", "grey", "--grid", "20"]).contains("--grid: 20"));
 }
@@ -479,6 +494,7 @@ fn a_failing_renderer_is_reported_with_its_answer() {
         semantics: Semantics::True,
         quantization: Quantization::Round8,
         grid: None,
+        method: None,
     };
     let report = hunt_grey(&garbage, &config, 1, &|| {}, &Default::default()).unwrap();
     assert_eq!(report.failed + report.refused, 3);
@@ -498,7 +514,7 @@ fn a_failing_renderer_is_reported_with_its_answer() {
     assert!(summary.contains("hello, world"), "{summary}");
     let json = report.to_json("garbage");
     assert_eq!(json["format"], "rasterproof grey hunt report");
-    assert_eq!(json["version"], 2);
+    assert_eq!(json["version"], 3);
     assert_eq!(json["rasterproof"], env!("CARGO_PKG_VERSION"));
     assert_eq!(json["renderer_runs"], Value::Null, "a closure is not a program");
     assert_eq!(json["findings"][0]["failure"]["kind"], "protocol error");
@@ -531,4 +547,243 @@ fn limit_zero_lists_no_pixels() {
     assert!(!none.contains("more") && !none.contains("theirs 250"), "{none}");
     let one = report.levels_text(1);
     assert!(one.contains("theirs 250") && one.contains("... and 1 more"), "{one}");
+}
+
+/// A plain 4 x 4 supersampler (each sample tested against every edge, top-left ties),
+/// rounded to 8 bits: the renderer the method tests judge.
+fn supersampled_4x4(scene: &Scene) -> Result<Theirs, rasterproof::oracle::renderer::program::RenderFailure> {
+    let target = scene.target().unwrap();
+    let shapes =
+        rasterproof::model::area_shapes(&scene.primitives(), &target, rasterproof::model::Model::Exact).unwrap();
+    let mut levels = Vec::new();
+    for y in 0..scene.height {
+        for x in 0..scene.width {
+            let n: u32 = rasterproof::area::supersample::row_counts_with(
+                &shapes,
+                x,
+                y,
+                4,
+                rasterproof::convention::AnyTieRule::TopLeft,
+            )
+            .iter()
+            .sum();
+            // round(255 n / 16), ties to even: the one tie is n = 8 (255 = -1 mod 16, so
+            // 255 n = 8 mod 16 only there), 127.5, to 128; elsewhere floor(255 n / 16 + 1/2).
+            let level = if n == 8 { 128 } else { (510 * n + 16) / 32 };
+            levels.push(u16::try_from(level).unwrap());
+        }
+    }
+    Ok(Theirs::from_grey(GreyImage {
+        width: scene.width,
+        height: scene.height,
+        bits: 8,
+        levels,
+    }))
+}
+
+/// Judging against a method (`GreyOptions::method`): a plain 4 x 4 supersampler's image of
+/// a triangle differs from the exact value's levels at its edge pixels, and from the
+/// 4 x 4 method at none; judged against the exact levels as a method
+/// (`exact-true-round`), the pixels listed are those where its level is not the exact
+/// value's (the exact value by the plain area oracle, pixel by pixel), each with the
+/// method's level. `judge` names the method in the headline (`explained_by`).
+#[test]
+fn judging_against_a_method_lists_the_pixels_it_misses() {
+    use rasterproof::oracle::compare::grey::GreyOptions;
+    let scene = parse_scene(
+        r#"{"width":4,"height":4,"triangles":[{"v":[["1/3","0"],["4","5/7"],["0","4"]]}]}"#,
+        "s",
+    )
+    .unwrap();
+    let theirs = supersampled_4x4(&scene).unwrap();
+    let grey = theirs.grey().unwrap().clone();
+    let target = scene.target().unwrap();
+    let shapes =
+        rasterproof::model::area_shapes(&scene.primitives(), &target, rasterproof::model::Model::Exact).unwrap();
+    let against = |name: &str| {
+        let method = GreyMethod::from_name(name, 8).unwrap();
+        let (semantics, quantization) = method.judged_as(8);
+        let options = GreyOptions {
+            model: rasterproof::model::Model::Exact,
+            semantics,
+            quantization,
+            method: Some(method),
+        };
+        compare_grey(&shapes, &target, &grey, &options).unwrap()
+    };
+    let same = against("supersample-4x4-round");
+    assert!(same.identical(), "{}", same.levels_text(10));
+    let exact = against("exact-true-round");
+    let mut expected = Vec::new();
+    for y in 0..4u32 {
+        for x in 0..4u32 {
+            let v = rasterproof::area::exact::value(&shapes, i64::from(x), i64::from(y), Semantics::True);
+            let level = Quantization::Round8.level(&v);
+            let theirs = grey.levels[(y * 4 + x) as usize];
+            if theirs != level {
+                expected.push((x, y, theirs, Some(level)));
+            }
+        }
+    }
+    assert!(
+        !expected.is_empty(),
+        "the triangle's edges cut samples unevenly somewhere"
+    );
+    let listed: Vec<_> = exact.pixels.iter().map(|p| (p.x, p.y, p.theirs, p.method)).collect();
+    assert_eq!(listed, expected);
+    assert!(
+        exact.levels_text(5).contains("(--method exact-true-round)"),
+        "{}",
+        exact.levels_text(5)
+    );
+    // The plain comparison finds the same pixels, and `judge` names the method that gives
+    // every level.
+    let question = rasterproof::oracle::Question::Grey(grey_options(Semantics::True, Quantization::Round8));
+    let judged = rasterproof::oracle::judge(&scene.primitives(), &target, &theirs, &question).unwrap();
+    let text = rasterproof::oracle::Comparison::to_text(&judged, "s", "t", 0);
+    assert!(
+        text.contains("one method gives every level of their image: 4x4 supersampling, quantized by round (--method supersample-4x4-round)"),
+        "{text}"
+    );
+}
+
+/// The grey hunt against a method: a plain 4 x 4 supersampler hunted against the exact
+/// levels has findings (its sampling is not the exact area), against the 4 x 4 method none;
+/// `--fit-first`'s search (`fit_grey_method`) finds the 4 x 4 method first.
+#[test]
+fn the_grey_hunt_judges_against_a_method() {
+    use rasterproof::oracle::hunt::{
+        fit_grey_method, hunt_grey, GreyFitFirst, GreyHuntConfig, HuntConfig, AREA_FAMILIES,
+    };
+    let config = |method: Option<&str>| GreyHuntConfig {
+        hunt: HuntConfig {
+            cases: 8,
+            canvas: 5,
+            families: AREA_FAMILIES.to_vec(),
+            shrink_runs: 30,
+            ..HuntConfig::default()
+        },
+        semantics: Semantics::True,
+        quantization: Quantization::Round8,
+        grid: None,
+        method: method.map(|m| GreyMethod::from_name(m, 8).unwrap()),
+    };
+    let plain = hunt_grey(&supersampled_4x4, &config(None), 1, &|| {}, &Default::default()).unwrap();
+    assert!(!plain.findings.is_empty() && plain.differing > 0);
+    let against = hunt_grey(
+        &supersampled_4x4,
+        &config(Some("supersample-4x4-round")),
+        1,
+        &|| {},
+        &Default::default(),
+    )
+    .unwrap();
+    assert!(against.findings.is_empty(), "{}", against.to_text(5));
+    assert_eq!(against.same, against.cases);
+    assert!(against
+        .to_text(0)
+        .contains("against 4x4 supersampling, quantized by round (--method supersample-4x4-round)"));
+    let GreyFitFirst::Found(methods) = fit_grey_method(&supersampled_4x4, &config(None)).unwrap() else {
+        panic!("the 4x4 method gives every level");
+    };
+    assert_eq!(methods[0].name(), "supersample-4x4-round");
+}
+
+/// `hunt --as grey --fit-first` and `--method` with a real renderer, rasterproof's own
+/// `render --coverage area` truncating its levels: the fit names the truncating method
+/// and the hunt against it finds nothing (exit 0); against rounding it finds the
+/// truncation (exit 1); `compare --method` likewise.
+#[test]
+fn hunt_and_compare_against_a_method_from_the_command_line() {
+    let bin = assert_cmd::cargo::cargo_bin("rasterproof");
+    let cmd = format!(
+        "{} render {{scene}} --coverage area --quantization truncate --grey-out {{out}}",
+        bin.display()
+    );
+    let hunt = |args: &[&str]| {
+        let output = Command::new(&bin)
+            .args([
+                "hunt",
+                "--as",
+                "grey",
+                "--cmd",
+                &cmd,
+                "--cases",
+                "6",
+                "--canvas",
+                "6",
+                "--shrink-runs",
+                "20",
+            ])
+            .args(args)
+            .output()
+            .unwrap();
+        let text = format!(
+            "{}{}",
+            String::from_utf8_lossy(&output.stdout),
+            String::from_utf8_lossy(&output.stderr)
+        );
+        (output.status.code(), text)
+    };
+    let (code, text) = hunt(&["--fit-first"]);
+    assert_eq!(code, Some(0), "{text}");
+    assert!(
+        text.contains("fit: hunting against exact true coverage, quantized by truncate (--method exact-true-truncate)"),
+        "{text}"
+    );
+    let (code, text) = hunt(&["--method", "exact-true-truncate"]);
+    assert_eq!(code, Some(0), "{text}");
+    let (code, text) = hunt(&["--method", "exact-true-round"]);
+    assert_eq!(code, Some(1), "{text}");
+    assert!(text.contains("quantization, under"), "{text}");
+    // compare: the headline names the truncating methods; judged against one, no pixel differs.
+    let dir = tempdir::Dir::new("method-compare");
+    let scene = root().join("adapters/scenes/glyph.json");
+    let png = dir.path().join("t.png");
+    let rendered = Command::new(&bin)
+        .args([
+            "render",
+            scene.to_str().unwrap(),
+            "--coverage",
+            "area",
+            "--quantization",
+            "truncate",
+            "--grey-out",
+            png.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(rendered.status.success());
+    let compare = |args: &[&str]| {
+        let output = Command::new(&bin)
+            .args([
+                "compare",
+                scene.to_str().unwrap(),
+                png.to_str().unwrap(),
+                "--as",
+                "grey",
+                "--limit",
+                "0",
+            ])
+            .args(args)
+            .output()
+            .unwrap();
+        (
+            output.status.code(),
+            String::from_utf8_lossy(&output.stdout).to_string(),
+        )
+    };
+    let (code, text) = compare(&[]);
+    assert_eq!(code, Some(1));
+    assert!(
+        text.contains("methods give every level of their image (the image cannot tell them apart)"),
+        "{text}"
+    );
+    assert!(text.contains("(--method exact-true-truncate)"), "{text}");
+    let (code, text) = compare(&["--method", "exact-true-truncate"]);
+    assert_eq!(code, Some(0), "{text}");
+    assert!(
+        text.contains("0 of 1024 pixels differ from exact true coverage, quantized by truncate"),
+        "{text}"
+    );
 }

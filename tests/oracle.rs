@@ -840,6 +840,44 @@ fn fit_names_the_convention_of_a_renderer_made_to_follow_it() {
     assert!(found.fit_text().contains("no convention explains their image exactly"));
 }
 
+/// When no convention is exact and the closest tie, the fit keeps every one at each of the
+/// closest counts and lists them together, part by part: a triangle whose edges pass
+/// through no sample (every tie rule draws it alike) with one stray pixel is one pixel off
+/// under every tie rule at each snapping, and the image cannot tell the rules apart.
+#[test]
+fn fit_closest_ties_are_listed_together() {
+    let s = parse_scene(
+        r#"{"width": 8, "height": 8, "triangles": [{"v": [[0.1, 0.2], [7.3, 0.4], [0.3, 6.9]]}]}"#,
+        "s.json",
+    )
+    .unwrap();
+    let target = s.target().unwrap();
+    let mut stray = render(&s.primitives(), &target, Model::ExactSnapped).unwrap();
+    stray.cover(7, 7, 0);
+    let found =
+        rasterproof::oracle::fit(&s.primitives(), &target, &Theirs::from_coverage(&stray, Format::Ids)).unwrap();
+    assert!(found.exact.is_empty());
+    let best: Vec<_> = found.closest.iter().filter(|f| f.total() == 1).collect();
+    // All six rules, at every snapping that leaves the image as it is: more than the five a
+    // list cut at five would keep.
+    assert!(
+        best.len() > rasterproof::oracle::compare::fit::CLOSEST,
+        "{}",
+        found.fit_text()
+    );
+    let rules: std::collections::BTreeSet<_> = best.iter().map(|f| f.candidate.tie_rule.name()).collect();
+    assert_eq!(rules.len(), 6);
+    let text = found.fit_text();
+    assert!(text.contains("1 differing pixel (1 extra), "), "{text}");
+    assert!(
+        text.contains("tie rule: not observable here (no sample lies on an edge: the six rules draw one image)"),
+        "{text}"
+    );
+    // The one-pixel answer is not repeated per rule: one entry where the rules draw one
+    // image, one where they do not.
+    assert!(text.matches("1 differing pixel").count() <= 2, "{text}");
+}
+
 #[test]
 fn fit_command() {
     let dir = tempdir::Dir::new("oracle-fit");

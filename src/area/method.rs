@@ -13,10 +13,11 @@
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{ToPrimitive, Zero};
+use num_traits::Zero;
 
 use super::{abglyph, cells, conflate, exact, float, ftgrays, planned, supersample, zeno};
 use super::{AreaImage, AreaShape, Quantization, Semantics};
+use crate::convention::AnyTieRule;
 
 /// The supersampling sides in the list: `k x k` samples per pixel.
 pub const SUPERSAMPLE_SIDES: [u32; 4] = [2, 4, 8, 16];
@@ -245,12 +246,10 @@ impl AreaMethod {
 fn supersample_counts(shapes: &[AreaShape], width: u32, height: u32, k: u32) -> AreaOutput {
     let k = k.max(1);
     let mut counts = vec![0u32; width as usize * height as usize];
-    let k2 = BigRational::from_integer(BigInt::from(k * k));
     for s in shapes {
-        let image = supersample::rasterize(std::slice::from_ref(s), width, height, k);
-        for (x, y, v) in image.pixels {
-            let n = (v * &k2).to_integer().to_u32().unwrap_or(0);
-            counts[y as usize * width as usize + x as usize] += n;
+        let one = supersample::counts(std::slice::from_ref(s), width, height, k, AnyTieRule::TopLeft);
+        for (c, n) in counts.iter_mut().zip(one) {
+            *c += n;
         }
     }
     AreaOutput::Counts { counts, of: k * k }

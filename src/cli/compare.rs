@@ -95,6 +95,14 @@ pub struct Options {
     /// `quantization`.
     #[arg(long, default_value = "round", value_name = "round|truncate|ftgrays|round16")]
     quantization: String,
+    /// With `--as grey`: judge against this method of the area family (a name `--fit`
+    /// prints, e.g. `supersample-4x4-round`, `exact-accumulated-truncate` or `ftgrays`)
+    /// instead of the exact value's levels: the pixels listed are those where their level
+    /// is not the method's, each still classed against the exact value. The method names
+    /// its semantics and quantization (leave out --semantics and --quantization). Exit 0
+    /// when it gives every level.
+    #[arg(long, value_name = "NAME", conflicts_with_all = ["fit", "semantics", "quantization"])]
+    method: Option<String>,
 }
 
 /// `--classify`: a bound, or none.
@@ -152,8 +160,8 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     if grey && (o.diff_out.is_some() || o.html.is_some()) {
         return Err(GREY_PRINTS.to_string());
     }
-    if !grey && (o.semantics != "true" || o.quantization != "round") {
-        return Err("--semantics and --quantization are for --as grey".to_string());
+    if !grey && (o.semantics != "true" || o.quantization != "round" || o.method.is_some()) {
+        return Err("--semantics, --quantization and --method are for --as grey".to_string());
     }
     let model = super::parse_model(
         o.model
@@ -172,10 +180,19 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         Some(g) if quantization == Quantization::Round8 => quantization.at_depth(g.bits).unwrap_or(quantization),
         _ => quantization,
     };
+    let method = match (&o.method, theirs.grey()) {
+        (Some(name), Some(g)) => Some(super::parse_grey_method(name, Some(g.bits))?),
+        _ => None,
+    };
+    let (semantics, quantization) = match (method, theirs.grey()) {
+        (Some(m), Some(g)) => m.judged_as(g.bits),
+        _ => (semantics, quantization),
+    };
     let grey_options = grey.then_some(GreyOptions {
         model,
         semantics,
         quantization,
+        method,
     });
     let pattern = match o.samples {
         Some(n) => Some(super::parse_samples(n)?),

@@ -10,9 +10,10 @@ use std::time::Duration;
 
 use rasterproof::area::{Quantization, Semantics};
 use rasterproof::convention::Preset;
+use rasterproof::oracle::compare::fit::grey::GreyMethod;
 use rasterproof::oracle::hunt::{
-    fit_convention, hunt_grey, hunt_interruptible, rust_test, FitFirst, GreyHuntConfig, HuntConfig, HuntReport,
-    SceneFamily, AREA_FAMILIES, FIT_PROBES,
+    fit_convention, fit_grey_method, hunt_grey, hunt_interruptible, rust_test, FitFirst, GreyFitFirst, GreyHuntConfig,
+    HuntConfig, HuntReport, SceneFamily, AREA_FAMILIES, FIT_PROBES,
 };
 use rasterproof::oracle::renderer::{Program, Renderer, StayAlive};
 use rasterproof::oracle::GreyImage;
@@ -58,6 +59,12 @@ pub struct Options {
     /// (0..=16), for a renderer whose input is fixed point (FreeType's 26.6: 6).
     #[arg(long, value_name = "BITS")]
     grid: Option<u32>,
+    /// With --as grey: judge against this method of the area family (a name `compare --as
+    /// grey --fit` prints, e.g. supersample-4x4-round or ftgrays) instead of the exact
+    /// value's levels: a pixel differs where their level is not the method's. The method
+    /// names its semantics and quantization (leave out --semantics and --quantization).
+    #[arg(long, value_name = "NAME", conflicts_with_all = ["semantics", "quantization"])]
+    method: Option<String>,
     /// How many scenes.
     #[arg(long, default_value_t = 200)]
     cases: u64,
@@ -79,7 +86,9 @@ pub struct Options {
     /// Fit the renderer's convention first (compare --fit on tie-heavy probe scenes) and
     /// hunt under it (its oracle model too). When no convention explains the probes, or
     /// only ones a scene file cannot state (say top-right ties), it says so and exits 1.
-    #[arg(long, conflicts_with_all = ["preset", "tie_rule", "subpixel_bits", "rounding", "pixel_centre", "model"])]
+    /// With --as grey: fit its method (compare --as grey --fit on probe scenes of the
+    /// hunt's families) and hunt against it, as --method does.
+    #[arg(long, conflicts_with_all = ["preset", "tie_rule", "subpixel_bits", "rounding", "pixel_centre", "model", "method"])]
     fit_first: bool,
     /// Canvas side of every scene, pixels.
     #[arg(long, default_value_t = 16)]
@@ -118,13 +127,19 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let (cmd, program) = renderer(o, format)?;
     stop_cleanly_when_interrupted(program.as_ref());
     let mut config = hunt_config(o, families, samples)?;
-    if let Some((semantics, quantization)) = grey {
-        let config = GreyHuntConfig {
+    if let Some((semantics, quantization, method)) = grey {
+        let mut config = GreyHuntConfig {
             hunt: config,
             semantics,
             quantization,
             grid: o.grid,
+            method,
         };
+        if o.fit_first {
+            if let Some(exit) = fit_grey_first(program.as_ref(), &mut config)? {
+                return Ok(exit);
+            }
+        }
         return run_grey(o, &config, program.as_ref(), cmd);
     }
     config.model = match super::parse_model(&o.model)? {
@@ -163,7 +178,7 @@ fn exit_code(interrupted: bool, nothing_found: bool) -> ExitCode {
 /// The kind of hunt the options ask for, checked: how their output is read, the grey
 /// options of a grey hunt, the pattern of a multisample hunt.
 #[allow(clippy::type_complexity)]
-fn mode(o: &Options) -> Result<(Format, Option<(Semantics, Quantization)>, Option<SamplePattern>), String> {
+fn mode(o: &Options) -> Result<(Format, Option<GreyJudged>, Option<SamplePattern>), String> {
     let format = Format::from_name(&o.theirs_as).ok_or_else(|| {
         format!(
             "--as: unknown format {:?} (expected ids, mask, json or grey)",
@@ -171,10 +186,10 @@ fn mode(o: &Options) -> Result<(Format, Option<(Semantics, Quantization)>, Optio
         )
     })?;
     let grey = if format == Format::Grey {
-        if o.fit_first || o.model != "exact-snapped" {
+        if o.model != "exact-snapped" {
             return Err(
-                "--fit-first and --model are for the binary hunt; --as grey is judged against exact area \
-                        coverage (--semantics, --quantization)"
+                "--model is for the binary hunt; --as grey is judged against exact area coverage (--semantics, \
+                        --quantization) or a method (--method)"
                     .to_string(),
             );
         }
@@ -183,8 +198,8 @@ fn mode(o: &Options) -> Result<(Format, Option<(Semantics, Quantization)>, Optio
         }
         Some(grey_options(o)?)
     } else {
-        if o.semantics != "true" || o.quantization != "round" || o.grid.is_some() {
-            return Err("--semantics, --quantization and --grid are for --as grey".to_string());
+        if o.semantics != "true" || o.quantization != "round" || o.grid.is_some() || o.method.is_some() {
+            return Err("--semantics, --quantization, --grid and --method are for --as grey".to_string());
         }
         None
     };
@@ -358,14 +373,56 @@ fn write_outputs(o: &Options, report: &HuntReport, cmd: &str, config: &HuntConfi
     outputs.commit()
 }
 
-/// `--semantics` and `--quantization` of a grey hunt.
-fn grey_options(o: &Options) -> Result<(Semantics, Quantization), String> {
-    let semantics = super::parse_semantics(&o.semantics)?;
-    let quantization = super::parse_quantization(&o.quantization)?;
+/// What a grey hunt judges against: the semantics and quantization, and the method when
+/// one is named.
+type GreyJudged = (Semantics, Quantization, Option<GreyMethod>);
+
+/// `--semantics` and `--quantization` of a grey hunt, or those of its `--method`.
+fn grey_options(o: &Options) -> Result<GreyJudged, String> {
     if let Some(bits) = o.grid.filter(|b| *b > 16) {
         return Err(format!("--grid: {bits} bits is outside 0..=16"));
     }
-    Ok((semantics, quantization))
+    if let Some(name) = &o.method {
+        let method = super::parse_grey_method(name, None)?;
+        let (semantics, quantization) = method.judged_as(method.bits());
+        return Ok((semantics, quantization, Some(method)));
+    }
+    let semantics = super::parse_semantics(&o.semantics)?;
+    let quantization = super::parse_quantization(&o.quantization)?;
+    Ok((semantics, quantization, None))
+}
+
+/// `--as grey --fit-first`: the method the renderer follows, judged against in `config`;
+/// or, when none explains its images of the probes, the exit after saying so.
+fn fit_grey_first(renderer: &dyn Renderer, config: &mut GreyHuntConfig) -> Result<Option<ExitCode>, String> {
+    match fit_grey_method(renderer, config)? {
+        GreyFitFirst::Found(methods) => {
+            let method = methods[0];
+            let others: Vec<String> = methods[1..].iter().map(|m| m.name()).collect();
+            let also = if others.is_empty() {
+                String::new()
+            } else {
+                format!(" (these give the same levels too: {})", others.join(", "))
+            };
+            eprintln!(
+                "fit: hunting against {} (--method {}){also}",
+                method.describe(),
+                method.name()
+            );
+            let (semantics, quantization) = method.judged_as(method.bits());
+            config.semantics = semantics;
+            config.quantization = quantization;
+            config.method = Some(method);
+            Ok(None)
+        }
+        GreyFitFirst::NoneExplains(last) => {
+            super::print_stdout(&format!(
+                "fit: no method of the area family gives every level of the renderer's images of the {FIT_PROBES} \
+                 probe scenes; nothing else was run or written. The last probe's fit:\n{last}"
+            ))?;
+            Ok(Some(ExitCode::from(1)))
+        }
+    }
 }
 
 /// The grey hunt (`--as grey`): runs it, writes `--out` (each finding's minimal scene,

@@ -352,6 +352,33 @@ pub fn parse_semantics(name: &str) -> Result<rasterproof::area::Semantics, Strin
         .ok_or_else(|| format!("--semantics: unknown semantics {name:?} (expected true, accumulated or unclamped)"))
 }
 
+/// `--method NAME`: the grey method of that name among those of `bits`-bit levels, or,
+/// with no depth given, of 8-bit levels, then 16-bit ones.
+pub fn parse_grey_method(
+    name: &str,
+    bits: Option<u32>,
+) -> Result<rasterproof::oracle::compare::fit::grey::GreyMethod, String> {
+    use rasterproof::oracle::compare::fit::grey::GreyMethod;
+    let found = match bits {
+        Some(bits) => GreyMethod::from_name(name, bits),
+        None => GreyMethod::from_name(name, 8).or_else(|e8| {
+            GreyMethod::from_name(name, 16).map_err(|e16| {
+                let list = |e: &str| {
+                    e.split_once("expected one of: ")
+                        .map(|(_, l)| l.to_string())
+                        .unwrap_or_default()
+                };
+                format!(
+                    "no grey method named {name:?} (8-bit levels: {}; 16-bit levels: {}",
+                    list(&e8).trim_end_matches(')'),
+                    list(&e16)
+                )
+            })
+        }),
+    };
+    found.map_err(|e| format!("--method: {e}"))
+}
+
 /// `--samples N`: the standard pattern of N samples.
 pub fn parse_samples(n: usize) -> Result<rasterproof::pattern::SamplePattern, String> {
     rasterproof::pattern::SamplePattern::standard(n).ok_or_else(|| {

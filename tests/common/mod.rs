@@ -160,5 +160,6 @@ pub fn grey_options(
         model: rasterproof::model::Model::Exact,
         semantics,
         quantization,
+        method: None,
     }
 }

@@ -15,6 +15,7 @@ use crate::area::{conflate, exact, planned, supersample, AreaShape, Quantization
 use crate::convention::Target;
 use crate::model::{Model, Primitives};
 use crate::num::exact::{exact_text, nearest_f64};
+use crate::oracle::compare::fit::grey::GreyMethod;
 use crate::oracle::theirs::{GreyImage, Theirs};
 
 /// Why their level differs from the exact value's, the most plausible first.
@@ -81,6 +82,8 @@ pub struct GreyPixel {
     pub theirs: u16,
     /// The exact value's level under the named quantization.
     pub ours: u16,
+    /// The level of the method judged against ([`GreyOptions::method`]), when one is.
+    pub method: Option<u16>,
     /// The exact value.
     pub exact: BigRational,
     /// Their level less the exact value clamped to `[0, 1]`, in quanta (exact).
@@ -102,15 +105,22 @@ pub struct GreyReport {
     pub semantics: Semantics,
     /// Their named quantization.
     pub quantization: Quantization,
-    /// The pixels that differ, row by row.
+    /// The method judged against ([`GreyOptions::method`]), when one is: then a pixel
+    /// differs where their level is not its level.
+    pub method: Option<GreyMethod>,
+    /// The pixels that differ (from the exact value's level under the named quantization,
+    /// or from the method's level when one is judged against), row by row.
     pub pixels: Vec<GreyPixel>,
+    /// The methods of the area family that give every level of their image (found by
+    /// [`crate::oracle::judge`] when pixels differ; empty otherwise, and when none does).
+    pub explained_by: Vec<GreyMethod>,
     /// The largest `|their level - exact value|` over the canvas, in quanta (the exact value
     /// clamped to `[0, 1]`, as every quantization clamps it).
     pub max_error: BigRational,
     /// The mean of `|their level - exact value|` over the canvas, in quanta.
     pub mean_error: BigRational,
-    /// How many pixels are off from the named quantization's level by each number of
-    /// levels (0 included).
+    /// How many pixels are off from the level they are judged against (the named
+    /// quantization's, or the method's) by each number of levels (0 included).
     pub histogram: BTreeMap<u32, u64>,
 }
 
@@ -363,6 +373,10 @@ pub struct GreyOptions {
     pub semantics: Semantics,
     /// How their levels quantize a value.
     pub quantization: Quantization,
+    /// A method to judge against: a pixel differs where their level is not this
+    /// method's (each such pixel still classed against the exact value). `None`: against
+    /// the exact value's level under `quantization`.
+    pub method: Option<GreyMethod>,
 }
 
 /// [`compare_grey`] of a scene: their output (read as grey levels) against the area
@@ -397,6 +411,7 @@ pub fn compare_grey(
         model,
         semantics,
         quantization,
+        method,
     } = *options;
     let (width, height) = (target.width, target.height);
     SizeMismatch::check_size((theirs.width, theirs.height), target).map_err(CompareError::GreySize)?;
@@ -406,6 +421,25 @@ pub fn compare_grey(
             quantization,
         });
     }
+    let judged = match method {
+        Some(m) if m.bits() != theirs.bits => {
+            return Err(CompareError::Method(format!(
+                "the method {} makes {}-bit levels; their image has {}-bit ones",
+                m.name(),
+                m.bits(),
+                theirs.bits
+            )))
+        }
+        Some(m) => Some(m.levels(shapes, width, height).ok_or_else(|| {
+            let why = m
+                .area
+                .draw(shapes, width, height, m.semantics)
+                .err()
+                .unwrap_or_else(|| "a value that is not finite".to_string());
+            CompareError::Method(format!("the method {} cannot draw the scene: {why}", m.name()))
+        })?),
+        None => None,
+    };
     let s = scale(quantization);
     let classifier = Classifier {
         shapes,
@@ -430,8 +464,9 @@ pub fn compare_grey(
             let error = BigRational::from_integer(level.into()) - shown * BigRational::from_integer(s.into());
             max_error = max_error.max(error.abs());
             total_error += error.abs();
-            *histogram.entry(u32::from(level.abs_diff(ours))).or_insert(0) += 1;
-            if level == ours {
+            let judged_level = judged.as_ref().map_or(ours, |j| j[(y * width + x) as usize]);
+            *histogram.entry(u32::from(level.abs_diff(judged_level))).or_insert(0) += 1;
+            if level == judged_level {
                 continue;
             }
             let class = classifier.class((x, y), level, &v, &error);
@@ -440,6 +475,7 @@ pub fn compare_grey(
                 y,
                 theirs: level,
                 ours,
+                method: judged.as_ref().map(|_| judged_level),
                 exact: v,
                 error,
                 class,
@@ -453,7 +489,9 @@ pub fn compare_grey(
         height,
         semantics,
         quantization,
+        method,
         pixels,
+        explained_by: Vec::new(),
         max_error,
         mean_error: total_error / BigRational::from_integer(count.max(1).into()),
         histogram,
@@ -479,15 +517,44 @@ impl GreyReport {
     /// `limit` pixels.
     pub fn levels_text(&self, limit: usize) -> String {
         let approx = |v: &BigRational| nearest_f64(v).map_or_else(|| exact_text(v), |f| format!("{f:.4}"));
+        let exact = format!(
+            "the exact {} coverage quantized by {}",
+            self.semantics.name(),
+            self.quantization.name()
+        );
+        let judged = match self.method {
+            Some(m) => format!(
+                "{} (--method {}); error against the exact {} coverage",
+                m.describe(),
+                m.name(),
+                self.semantics.name()
+            ),
+            None => format!("{exact}; error"),
+        };
         let mut s = format!(
-            "{} of {} pixels differ from the exact {} coverage quantized by {}; error in quanta: max {}, mean {}\n",
+            "{} of {} pixels differ from {judged} in quanta: max {}, mean {}\n",
             self.pixels.len(),
             u64::from(self.width) * u64::from(self.height),
-            self.semantics.name(),
-            self.quantization.name(),
             approx(&self.max_error),
             approx(&self.mean_error),
         );
+        match self.explained_by.as_slice() {
+            [] => {}
+            [one] => s.push_str(&format!(
+                "  one method gives every level of their image: {} (--method {})\n",
+                one.describe(),
+                one.name()
+            )),
+            many => {
+                s.push_str(&format!(
+                    "  {} methods give every level of their image (the image cannot tell them apart):\n",
+                    many.len()
+                ));
+                for m in many {
+                    s.push_str(&format!("    {} (--method {})\n", m.describe(), m.name()));
+                }
+            }
+        }
         for (class, n) in self.classes() {
             s.push_str(&format!(
                 "  {}: {}\n",
@@ -498,8 +565,9 @@ impl GreyReport {
         let histogram: Vec<String> = self.histogram.iter().map(|(d, n)| format!("{d}: {n}")).collect();
         s.push_str(&format!("  levels off (levels: pixels): {}\n", histogram.join(", ")));
         for p in self.pixels.iter().take(limit) {
+            let method = p.method.map(|m| format!(" the method's {m},")).unwrap_or_default();
             s.push_str(&format!(
-                "  ({}, {}): theirs {}, exact {} (level {}), off by {} quanta: {}\n",
+                "  ({}, {}): theirs {},{method} exact {} (level {}), off by {} quanta: {}\n",
                 p.x,
                 p.y,
                 p.theirs,
@@ -516,15 +584,19 @@ impl GreyReport {
         s
     }
 
-    /// As JSON: `{"width","height","semantics","quantization","differing","classes",
-    /// "max_error","mean_error","histogram","pixels":[{"x","y","theirs","ours","exact",
-    /// "error","class"}]}` (exact values as fraction strings).
+    /// As JSON: `{"width","height","semantics","quantization","method","explained_by",
+    /// "differing","classes","max_error","mean_error","histogram","pixels":[{"x","y",
+    /// "theirs","ours","method","exact","error","class"}]}` (exact values as fraction
+    /// strings; `method` the name of the method judged against and a pixel's level under
+    /// it, or null; `explained_by` the names of the methods that give every level).
     pub fn levels_json(&self) -> serde_json::Value {
         json!({
             "width": self.width,
             "height": self.height,
             "semantics": self.semantics.name(),
             "quantization": self.quantization.name(),
+            "method": self.method.map(GreyMethod::name),
+            "explained_by": self.explained_by.iter().map(|m| m.name()).collect::<Vec<_>>(),
             "differing": self.pixels.len(),
             "classes": self.classes().into_iter().map(|(c, n)| (c.name(), n)).collect::<BTreeMap<_, _>>(),
             "max_error": exact_text(&self.max_error),
@@ -535,6 +607,7 @@ impl GreyReport {
                 "y": p.y,
                 "theirs": p.theirs,
                 "ours": p.ours,
+                "method": p.method,
                 "exact": exact_text(&p.exact),
                 "error": exact_text(&p.error),
                 "class": p.class.name(),

@@ -155,6 +155,9 @@ pub enum CompareError {
     Format(Format),
     /// A fit does not search scenes with clip-space triangles.
     ClipSpace,
+    /// The grey method judged against cannot draw the scene, or makes levels of another
+    /// depth than theirs.
+    Method(String),
 }
 
 impl CompareError {
@@ -224,6 +227,7 @@ impl fmt::Display for CompareError {
                  --as grey, coverage with --as mask, ids or json)",
                 format.name()
             ),
+            CompareError::Method(e) => write!(f, "{e}"),
             CompareError::ClipSpace => f.write_str(
                 "--fit does not search scenes with clip_space_triangles (their window-space vertices exist only \
                  after clipping); compare them under a stated convention",
@@ -353,7 +357,16 @@ pub fn judge(
     Ok(match question {
         Question::Binary(o) => Judgement::Binary(Box::new(compare(primitives, target, theirs, o)?)),
         Question::Samples(o) => Judgement::Samples(samples::compare_samples(primitives, target, theirs, o)?),
-        Question::Grey(o) => Judgement::Grey(grey::compare_grey_scene(primitives, target, theirs, o)?),
+        Question::Grey(o) => {
+            let mut report = grey::compare_grey_scene(primitives, target, theirs, o)?;
+            // Pixels differ from the exact value's levels: the headline names the methods
+            // that give every level, when some do (a correct supersampler, FreeType).
+            if !report.identical() && o.method.is_none() {
+                let shapes = area_shapes(primitives, target, o.model)?;
+                report.explained_by = fit::grey::fit_grey(&shapes, target, grey_of(theirs)?, o.model)?.exact();
+            }
+            Judgement::Grey(report)
+        }
         Question::Conservative(rule) => {
             Judgement::Conservative(conservative::compare_conservative(primitives, target, theirs, rule)?)
         }

@@ -23,6 +23,7 @@ use crate::area::{Quantization, Semantics};
 use crate::harness::shrink::shrink_batched;
 use crate::model::Model;
 use crate::num::exact::{exact_text, nearest_f64, round_to_integer, Rounding};
+use crate::oracle::compare::fit::grey::GreyMethod;
 use crate::oracle::compare::grey::{compare_grey_scene, GreyClass, GreyOptions, GreyReport};
 use crate::oracle::renderer::program::{FailureKind, RenderFailure, Renderer, RendererRuns};
 use crate::oracle::theirs::GreyImage;
@@ -57,6 +58,10 @@ pub struct GreyHuntConfig {
     /// for a renderer whose input is fixed point (FreeType's 26.6 outlines: 6), so that
     /// what it is judged on is its arithmetic, not its input's precision. `None`: as drawn.
     pub grid: Option<u32>,
+    /// A method of the area family to judge against (`hunt --method`, or the method
+    /// `--fit-first` found): a pixel differs where their level is not its level. `None`:
+    /// against the exact value's level under `quantization`.
+    pub method: Option<GreyMethod>,
 }
 
 /// What their renderer did with one scene.
@@ -72,12 +77,15 @@ pub enum GreyVerdict {
     Refused(String),
 }
 
-/// Judges their output (or failure) on `scene` against exact area coverage.
+/// Judges their output (or failure) on `scene` against exact area coverage under
+/// `semantics` and `quantization`, or against `method`'s levels when one is given (each
+/// pixel that differs from them classed against the exact value).
 pub fn judge_grey(
     scene: &Scene,
     theirs: Result<Theirs, RenderFailure>,
     semantics: Semantics,
     quantization: Quantization,
+    method: Option<GreyMethod>,
 ) -> GreyVerdict {
     let theirs = match theirs {
         Ok(t) => t,
@@ -90,6 +98,7 @@ pub fn judge_grey(
         model: Model::Exact,
         semantics,
         quantization,
+        method,
     };
     // Their output at fault (not grey, another size or depth) is their failure; the scene
     // refused (no shape with area) is the oracle's.
@@ -223,8 +232,9 @@ pub const GREY_HUNT_REPORT_FORMAT: &str = "rasterproof grey hunt report";
 
 /// The schema version of a grey hunt report ([`GreyHuntReport::to_json`]): 2 added
 /// `format`, `version`, `rasterproof` and `renderer_runs`, and a failure's `failure` as
-/// its kind and message.
-pub const GREY_HUNT_REPORT_VERSION: u64 = 2;
+/// its kind and message; 3 added `method` (the method judged against, or null) and each
+/// comparison's `method` and `explained_by`.
+pub const GREY_HUNT_REPORT_VERSION: u64 = 3;
 
 /// Runs the grey hunt: the cases of `config.hunt.shard` rendered by `renderer` on `jobs`
 /// threads and judged ([`judge_grey`]); each signature's first case shrunk (every
@@ -251,6 +261,7 @@ pub const GREY_HUNT_REPORT_VERSION: u64 = 2;
 ///     semantics: Semantics::Accumulated,
 ///     quantization: Quantization::Round8,
 ///     grid: None,
+///     method: None,
 /// };
 /// let report = hunt_grey(&truncating, &config, 1, &|| {}, &Default::default()).unwrap();
 /// // Truncation is a legal rounding: a quantization class, always under the exact value.
@@ -275,7 +286,13 @@ where
         if let Some(bits) = config.grid {
             on_grid(&mut scene, bits);
         }
-        let verdict = judge_grey(&scene, renderer.render(&scene), config.semantics, config.quantization);
+        let verdict = judge_grey(
+            &scene,
+            renderer.render(&scene),
+            config.semantics,
+            config.quantization,
+            config.method,
+        );
         (k, scene, verdict)
     };
     let (requested, results) = run_cases(hunt, jobs, "rasterproof-grey-hunt", tick, interrupted, &case)?;
@@ -341,13 +358,21 @@ fn shrink_finding<R>(
 where
     R: Renderer + ?Sized,
 {
-    let judge = |s: &Scene| judge_grey(s, renderer.render(s), config.semantics, config.quantization);
+    let judge = |s: &Scene| {
+        judge_grey(
+            s,
+            renderer.render(s),
+            config.semantics,
+            config.quantization,
+            config.method,
+        )
+    };
     let ask = AskOnce::new(|s: &Scene| grey_signatures(&judge(s)).contains_key(&signature));
     let budget = shrink_budget(config.hunt.shrink_runs, interrupted);
     let (minimal, runs) = shrink_batched(&original, &mut |batch| ask.first_kept(batch), width, budget, None);
     let drawn = renderer.render(&minimal);
     let theirs = drawn.as_ref().ok().and_then(Theirs::grey).cloned();
-    let verdict = judge_grey(&minimal, drawn, config.semantics, config.quantization);
+    let verdict = judge_grey(&minimal, drawn, config.semantics, config.quantization, config.method);
     GreyFinding {
         signature,
         case,
@@ -360,6 +385,61 @@ where
         theirs,
         runs,
     }
+}
+
+/// What `hunt --as grey --fit-first` found: the method to hunt under, or that none
+/// explains the probes.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum GreyFitFirst {
+    /// These methods give every level of every probe, in the order of
+    /// [`GreyMethod::all`]: the hunt judges against the first.
+    Found(Vec<GreyMethod>),
+    /// No method gives every level of every probe: the last probe's fit, as text.
+    NoneExplains(String),
+}
+
+/// `hunt --as grey --fit-first`: the methods of the area family
+/// ([`crate::oracle::compare::fit::grey::fit_grey`]) that give every level of the
+/// renderer's images of [`super::FIT_PROBES`] probe scenes, drawn from `config`'s
+/// families and seed (on its grid when it has one).
+///
+/// # Errors
+/// A probe scene cannot be made, the renderer fails on one or answers with no grey
+/// image, or the fit refuses one.
+pub fn fit_grey_method<R>(renderer: &R, config: &GreyHuntConfig) -> Result<GreyFitFirst, String>
+where
+    R: Renderer + ?Sized,
+{
+    let mut exact: Option<Vec<GreyMethod>> = None;
+    let mut last = String::new();
+    for k in 0..super::FIT_PROBES {
+        let mut scene = super::generate_scene(&config.hunt, u64::MAX - k)?;
+        if let Some(bits) = config.grid {
+            on_grid(&mut scene, bits);
+        }
+        let target = scene
+            .target()
+            .map_err(|e| format!("--fit-first: invalid probe scene: {e}"))?;
+        let theirs = renderer
+            .render(&scene)
+            .map_err(|f| format!("--fit-first: the renderer failed on a probe scene: {f}"))?;
+        let grey = theirs
+            .grey()
+            .ok_or("--fit-first: the renderer's answer to a probe scene is not a grey image")?;
+        let shapes = crate::model::area_shapes(&scene.primitives(), &target, Model::Exact)
+            .map_err(|e| format!("--fit-first: {e}"))?;
+        let found = crate::oracle::compare::fit::grey::fit_grey(&shapes, &target, grey, Model::Exact)
+            .map_err(|e| format!("--fit-first: {e}"))?;
+        exact = Some(match exact {
+            None => found.exact(),
+            Some(kept) => kept.into_iter().filter(|m| found.exact().contains(m)).collect(),
+        });
+        last = crate::oracle::Comparison::to_text(&found, "the probe scene", "their image", 0);
+    }
+    Ok(match exact {
+        Some(methods) if !methods.is_empty() => GreyFitFirst::Found(methods),
+        _ => GreyFitFirst::NoneExplains(last),
+    })
 }
 
 /// Rounds every coordinate of `scene` to the nearest multiple of `2^-bits` (ties to even).
@@ -431,16 +511,17 @@ impl GreyHuntReport {
     /// As text: the counts, then each finding with its size and its minimal scene's
     /// comparison (up to `pixels` pixels each).
     pub fn to_text(&self, pixels: usize) -> String {
+        let against = match self.config.method {
+            Some(m) => format!("{} (--method {})", m.describe(), m.name()),
+            None => format!(
+                "exact {} coverage quantized by {}",
+                self.config.semantics.name(),
+                self.config.quantization.name()
+            ),
+        };
         let mut s = format!(
-            "grey hunt: {} of {} cases ({} same, {} differing, {} failed, {} refused) against exact {} coverage quantized by {}\n",
-            self.cases,
-            self.requested,
-            self.same,
-            self.differing,
-            self.failed,
-            self.refused,
-            self.config.semantics.name(),
-            self.config.quantization.name()
+            "grey hunt: {} of {} cases ({} same, {} differing, {} failed, {} refused) against {against}\n",
+            self.cases, self.requested, self.same, self.differing, self.failed, self.refused,
         );
         for (n, f) in self.findings.iter().enumerate() {
             s.push_str(&format!("\nfinding {}: {}:\n", n + 1, f.header()));
@@ -458,7 +539,7 @@ impl GreyHuntReport {
     }
 
     /// As JSON: `{"format","version","rasterproof","renderer","renderer_runs","semantics",
-    /// "quantization","seed","canvas","families","requested","cases","same","differing",
+    /// "quantization","method","seed","canvas","families","requested","cases","same","differing",
     /// "failed","refused","findings":[{"signature","class","over","case","cases","pixels",
     /// "max_error","runs","minimal","comparison"}]}` (`format`
     /// [`GREY_HUNT_REPORT_FORMAT`], `version` [`GREY_HUNT_REPORT_VERSION`];
@@ -504,6 +585,7 @@ impl GreyHuntReport {
             "renderer_runs": self.renderer_runs.map(|r| json!({"calls": r.calls, "starts": r.starts})),
             "semantics": self.config.semantics.name(),
             "quantization": self.config.quantization.name(),
+            "method": self.config.method.map(GreyMethod::name),
             "grid_bits": self.config.grid,
             "seed": self.config.hunt.seed,
             "canvas": self.config.hunt.canvas,

@@ -37,8 +37,8 @@ pub use crate::harness::shrink::{primitive_count, shrink, shrink_batched};
 pub use convention::{fit_convention, hunt_convention, preferred, FitFirst, FIT_PROBES};
 pub use families::{float32_exact, generate_scene, SceneFamily};
 pub use grey::{
-    grey_signatures, hunt_grey, judge_grey, on_grid, GreyFinding, GreyHuntConfig, GreyHuntReport, GreySignature,
-    GreyVerdict, AREA_FAMILIES, GREY_HUNT_REPORT_FORMAT, GREY_HUNT_REPORT_VERSION,
+    fit_grey_method, grey_signatures, hunt_grey, judge_grey, on_grid, GreyFinding, GreyFitFirst, GreyHuntConfig,
+    GreyHuntReport, GreySignature, GreyVerdict, AREA_FAMILIES, GREY_HUNT_REPORT_FORMAT, GREY_HUNT_REPORT_VERSION,
 };
 pub use merge::merge_reports;
 pub use report::{HuntFinding, HuntReport, HUNT_REPORT_FORMAT, HUNT_REPORT_VERSION};

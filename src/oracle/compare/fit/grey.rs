@@ -43,6 +43,68 @@ impl GreyMethod {
         }
     }
 
+    /// Its name, as `--method` takes it: the area method's name (`exact-SEMANTICS` for the
+    /// exact value), then the quantization's, e.g. `supersample-4x4-round`,
+    /// `exact-accumulated-truncate`, `f32-accum-round16`; a method that makes its own
+    /// levels is its area method's name alone (`ftgrays`, `tiny-skia-4x4`).
+    pub fn name(self) -> String {
+        let area = if self.area.is_exact() {
+            format!("exact-{}", self.semantics.name())
+        } else {
+            self.area.name().to_string()
+        };
+        match self.quantization {
+            Some(q) => format!("{area}-{}", q.name()),
+            None => area,
+        }
+    }
+
+    /// The method of [`GreyMethod::all`]`(bits)` named `name` (see [`GreyMethod::name`]).
+    ///
+    /// # Errors
+    /// No method of `bits`-bit levels has that name: the message lists those that do.
+    pub fn from_name(name: &str, bits: u32) -> Result<GreyMethod, String> {
+        let all = GreyMethod::all(bits);
+        all.iter().copied().find(|m| m.name() == name).ok_or_else(|| {
+            let names: Vec<String> = all.iter().map(|m| m.name()).collect();
+            format!(
+                "no grey method named {name:?} for {bits}-bit levels (expected one of: {})",
+                names.join(", ")
+            )
+        })
+    }
+
+    /// The semantics and quantization its levels are judged under against the exact value
+    /// at `bits` bits: its own, or for a method that makes its own levels its native
+    /// semantics and the quantization nearest its levels (FreeType's for `ftgrays`, else
+    /// rounding at `bits` bits).
+    pub fn judged_as(self, bits: u32) -> (Semantics, Quantization) {
+        let q = self.quantization.unwrap_or(match self.area {
+            AreaMethod::FtGrays => Quantization::FtGrays,
+            _ => Quantization::Round8.at_depth(bits).unwrap_or(Quantization::Round8),
+        });
+        (self.semantics, q)
+    }
+
+    /// Its levels for `shapes` on a `width` x `height` canvas (`None` where it cannot
+    /// draw them, or an f32 value is not finite).
+    pub fn levels(self, shapes: &[AreaShape], width: u32, height: u32) -> Option<Vec<u16>> {
+        let out = self.area.draw(shapes, width, height, self.semantics).ok()?;
+        out.quantized(
+            width,
+            height,
+            self.semantics,
+            self.quantization.unwrap_or(Quantization::Round8),
+        )
+    }
+
+    /// The bits of its levels.
+    pub fn bits(self) -> u32 {
+        self.area
+            .own_bits()
+            .unwrap_or_else(|| self.quantization.map_or(8, Quantization::bits))
+    }
+
     /// In words.
     pub fn describe(self) -> String {
         let what = self.area.describe(self.semantics);
@@ -120,16 +182,26 @@ impl Comparison for GreyFitReport {
         );
         let shown = if exact == 0 { 5 } else { exact };
         for (m, n) in self.methods.iter().take(shown) {
-            s.push_str(&format!("  {}: {n} pixels differ\n", m.describe()));
+            s.push_str(&format!(
+                "  {} (--method {}): {}\n",
+                m.describe(),
+                m.name(),
+                if *n == 1 {
+                    "1 pixel differs".to_string()
+                } else {
+                    format!("{n} pixels differ")
+                }
+            ));
         }
         s
     }
 
-    /// `{"tried", "methods": [{"method", "differing"}]}`, fewest differing first.
+    /// `{"tried", "methods": [{"method", "name", "differing"}]}`, fewest differing first
+    /// (`name` as `--method` takes it).
     fn to_json(&self, _scene: &str, _theirs: &str) -> Value {
         json!({
             "tried": self.methods.len(),
-            "methods": self.methods.iter().map(|(m, n)| json!({"method": m.describe(), "differing": n})).collect::<Vec<_>>(),
+            "methods": self.methods.iter().map(|(m, n)| json!({"method": m.describe(), "name": m.name(), "differing": n})).collect::<Vec<_>>(),
         })
     }
 }

@@ -45,7 +45,8 @@ use crate::oracle::theirs::{Format, Theirs};
 
 pub use crate::oracle::candidate::{Candidate, MAX_FIT_BITS};
 
-/// How many of the closest conventions a fit keeps when none is exact.
+/// How many distinct counts of differing pixels the closest conventions of a fit span
+/// when none is exact (every convention at each of those counts is kept).
 pub const CLOSEST: usize = 5;
 
 /// A convention and how far its image is from theirs.
@@ -55,6 +56,9 @@ pub struct Fit {
     pub candidate: Candidate,
     /// Differing pixels by kind (empty: it explains their image exactly).
     pub differing: BTreeMap<PixelKind, usize>,
+    /// At its snapping and pixel centre no sample lies on an edge, so all six tie rules
+    /// draw the same image: the image cannot tell them apart.
+    pub rules_alike: bool,
 }
 
 impl Fit {
@@ -71,7 +75,9 @@ pub struct FitReport {
     pub format: Format,
     /// Every convention whose image equals theirs, in search order.
     pub exact: Vec<Candidate>,
-    /// When none does: the closest few, fewest differing pixels first.
+    /// When none does: the closest, fewest differing pixels first: every convention
+    /// whose count is among the [`CLOSEST`] smallest counts found (so conventions that tie
+    /// are all kept, in search order).
     pub closest: Vec<Fit>,
     /// How many conventions were rendered.
     pub searched: usize,
@@ -146,7 +152,7 @@ pub fn fit(primitives: &Primitives, target: &Target, theirs: &Theirs) -> Result<
                         // snapping reuses it keeps it out as well: the bound only tightens.)
                         let stop = if !exact.is_empty() {
                             Some(1)
-                        } else if closest.len() == CLOSEST {
+                        } else if distinct_totals(&closest) == CLOSEST {
                             closest.last().map(|f| f.total() + 1)
                         } else {
                             None
@@ -163,7 +169,7 @@ pub fn fit(primitives: &Primitives, target: &Target, theirs: &Theirs) -> Result<
                 }
             }
         };
-        for (pixel_centre, by_rule) in [PixelCentre::Half, PixelCentre::Corner].into_iter().zip(counts) {
+        for (pixel_centre, (by_rule, rules_alike)) in [PixelCentre::Half, PixelCentre::Corner].into_iter().zip(counts) {
             for (tie_rule, differing) in by_rule {
                 let Some(differing) = differing else {
                     skipped += 1;
@@ -175,13 +181,21 @@ pub fn fit(primitives: &Primitives, target: &Target, theirs: &Theirs) -> Result<
                     snapping: s,
                     pixel_centre,
                 };
-                let fit = Fit { candidate, differing };
+                let fit = Fit {
+                    candidate,
+                    differing,
+                    rules_alike,
+                };
                 if fit.total() == 0 {
                     exact.push(candidate);
                 } else if exact.is_empty() {
                     closest.push(fit);
+                    // Stable: conventions that tie stay in search order.
                     closest.sort_by_key(Fit::total);
-                    closest.truncate(CLOSEST);
+                    while distinct_totals(&closest) > CLOSEST {
+                        let worst = closest.last().map(Fit::total);
+                        closest.retain(|f| Some(f.total()) != worst);
+                    }
                 }
             }
         }
@@ -206,8 +220,22 @@ pub fn fit(primitives: &Primitives, target: &Target, theirs: &Theirs) -> Result<
 }
 
 /// The differing pixels of each tie rule's image at one snapping and pixel centre, by
-/// kind (`None`: the rule is not searched for this scene).
-type Counts = Vec<(AnyTieRule, Option<BTreeMap<PixelKind, usize>>)>;
+/// kind (`None`: the rule is not searched for this scene), and whether the six rules draw
+/// one image there (no sample on an edge).
+type Counts = (Vec<(AnyTieRule, Option<BTreeMap<PixelKind, usize>>)>, bool);
+
+/// How many distinct counts of differing pixels `fits` (sorted by count) hold.
+fn distinct_totals(fits: &[Fit]) -> usize {
+    let mut n = 0;
+    let mut last = None;
+    for f in fits {
+        if last != Some(f.total()) {
+            n += 1;
+            last = Some(f.total());
+        }
+    }
+    n
+}
 
 /// The images of `scene` (snapped already) under the six tie rules with the sample at
 /// `pixel_centre`, counted against theirs (up to `stop` differing pixels each).
@@ -239,7 +267,10 @@ fn counts_of(
     let (inclusive, exclusive) = match (&inclusive, &exclusive) {
         (Some(i), Some(e)) if i == e => {
             let same = count(i);
-            return Ok(AnyTieRule::ALL.into_iter().map(|r| (r, Some(same.clone()))).collect());
+            return Ok((
+                AnyTieRule::ALL.into_iter().map(|r| (r, Some(same.clone()))).collect(),
+                true,
+            ));
         }
         (i, e) => (i.as_ref().map(count), e.as_ref().map(count)),
     };
@@ -252,7 +283,7 @@ fn counts_of(
         };
         out.push((tie_rule, differing));
     }
-    Ok(out)
+    Ok((out, false))
 }
 
 /// The least `k <= MAX_FIT_BITS` such that every vertex the fit snaps is on the `2^-k`
@@ -364,16 +395,32 @@ impl FitReport {
         }
         s.push('\n');
         if self.exact.is_empty() {
-            s.push_str("no convention explains their image exactly; the closest:\n");
-            for f in &self.closest {
+            s.push_str(
+                "no convention explains their image exactly; the closest, the conventions that differ by the same \
+                 counts together:\n",
+            );
+            for group in self.closest_groups() {
+                let f = group[0];
                 let kinds: Vec<String> = f.differing.iter().map(|(k, n)| format!("{n} {}", k.name())).collect();
+                let noun = if f.total() == 1 {
+                    "differing pixel"
+                } else {
+                    "differing pixels"
+                };
+                if let [one] = group.as_slice() {
+                    let _ = writeln!(s, "  {}: {} {noun} ({})", one.candidate, f.total(), kinds.join(", "));
+                    continue;
+                }
                 let _ = writeln!(
                     s,
-                    "  {}: {} differing pixels ({})",
-                    f.candidate,
+                    "  {} {noun} ({}), {} conventions, of these parts:",
                     f.total(),
-                    kinds.join(", ")
+                    kinds.join(", "),
+                    group.len()
                 );
+                for line in group_lines(&group) {
+                    let _ = writeln!(s, "    {line}");
+                }
             }
             return s;
         }
@@ -387,6 +434,23 @@ impl FitReport {
             let _ = writeln!(s, "  tie rule {}, pixel centre {}: {snaps}", t.name(), p.name());
         }
         s
+    }
+
+    /// The closest conventions grouped by their counts of differing pixels by kind and
+    /// whether all six tie rules draw one image there ([`Fit::rules_alike`]), in order
+    /// (fewest first; a group in search order).
+    pub fn closest_groups(&self) -> Vec<Vec<&Fit>> {
+        let mut groups: Vec<Vec<&Fit>> = Vec::new();
+        for f in &self.closest {
+            match groups
+                .iter_mut()
+                .find(|g| g[0].differing == f.differing && g[0].rules_alike == f.rules_alike)
+            {
+                Some(g) => g.push(f),
+                None => groups.push(vec![f]),
+            }
+        }
+        groups
     }
 
     /// For programs: `{"searched", "not_searched": {count, why} or null, "exact":
@@ -420,6 +484,43 @@ impl FitReport {
             "closest": closest,
         })
     }
+}
+
+/// What a group of closest conventions (the same counts of differing pixels) holds, part
+/// by part: the tie rules (all six where the image cannot tell them apart: no sample on an
+/// edge), the pixel centres and the snappings.
+fn group_lines(group: &[&Fit]) -> Vec<String> {
+    let mut rules: Vec<AnyTieRule> = Vec::new();
+    let mut centres: Vec<PixelCentre> = Vec::new();
+    let mut snaps: Vec<Snapping> = Vec::new();
+    for f in group {
+        let c = f.candidate;
+        if !rules.contains(&c.tie_rule) {
+            rules.push(c.tie_rule);
+        }
+        if !centres.contains(&c.pixel_centre) {
+            centres.push(c.pixel_centre);
+        }
+        if !snaps.contains(&c.snapping) {
+            snaps.push(c.snapping);
+        }
+    }
+    let tie = if rules.len() == AnyTieRule::ALL.len() && group.iter().all(|f| f.rules_alike) {
+        "tie rule: not observable here (no sample lies on an edge: the six rules draw one image)".to_string()
+    } else if rules.len() == AnyTieRule::ALL.len() {
+        "tie rule: any of the six (each differs by these counts)".to_string()
+    } else {
+        format!(
+            "tie rule: {}",
+            rules.iter().map(|r| r.name()).collect::<Vec<_>>().join(", ")
+        )
+    };
+    let centre = match centres.as_slice() {
+        [one] => format!("pixel centre: {}", one.name()),
+        _ => "pixel centre: 0.5 or 0".to_string(),
+    };
+    let all = snappings();
+    vec![tie, centre, format!("snapping: {}", snappings_text(&snaps, &all))]
 }
 
 /// A set of snappings in words: `any snapping`, or per rounding set the bits it holds.
