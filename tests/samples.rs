@@ -737,3 +737,111 @@ fn fit_names_a_moved_sample_position() {
         "{listed:?}"
     );
 }
+
+/// A 4x MSAA renderer with sample 2 moved from the standard (1/8, 5/8) to (1/8, 1/2): the
+/// oracle's own per-sample rendering under the moved pattern, stacked into one ids PNG.
+fn moved_sample_renderer(
+    scene: &rasterproof::scene::Scene,
+) -> Result<rasterproof::oracle::Theirs, rasterproof::oracle::renderer::program::RenderFailure> {
+    let moved = SamplePattern::custom(vec![
+        [q(3, 8), q(1, 8)],
+        [q(7, 8), q(3, 8)],
+        [q(1, 8), q(1, 2)],
+        [q(5, 8), q(7, 8)],
+    ])
+    .unwrap();
+    let target = scene.target().unwrap();
+    let drawn = render_samples(&scene.primitives(), &target, &moved, Model::ExactSnapped).unwrap();
+    let mut png = Vec::new();
+    image::DynamicImage::ImageRgba8(drawn.to_stacked_ids_image().unwrap())
+        .write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
+        .unwrap();
+    let theirs = rasterproof::oracle::Theirs::read(&png, "moved", rasterproof::oracle::Format::Ids, Default::default());
+    Ok(theirs.unwrap())
+}
+
+/// `hunt --samples 4` against a renderer with one moved sample: its findings may be of
+/// several signatures, but the summary names the sample by index, says the three others
+/// drew the oracle's image in every case, and lists (1/8, 1/2), not the standard
+/// (1/8, 5/8), among the 1/16 px positions that give sample 2's image on every finding.
+#[test]
+fn a_multisample_hunt_names_the_moved_sample() {
+    use rasterproof::oracle::hunt::{hunt, HuntConfig, SceneFamily};
+    let config = HuntConfig {
+        cases: 24,
+        canvas: 8,
+        families: vec![SceneFamily::Mesh, SceneFamily::Triangles],
+        samples: SamplePattern::standard(4),
+        shrink_runs: 40,
+        ..HuntConfig::default()
+    };
+    let report = hunt(&moved_sample_renderer, &config, 1, &|| {}).unwrap();
+    assert!(!report.findings.is_empty());
+    let by_index: Vec<u64> = report.per_sample.iter().map(|p| p.cases).collect();
+    assert_eq!(by_index.len(), 4);
+    assert!(
+        by_index[2] > 0 && by_index[0] == 0 && by_index[1] == 0 && by_index[3] == 0,
+        "{by_index:?}"
+    );
+    let fits = report.per_sample[2].fits.clone().expect("positions fitted");
+    assert!(fits.contains(&[q(1, 8), q(1, 2)]), "{fits:?}");
+    assert!(!fits.contains(&[q(1, 8), q(5, 8)]), "{fits:?}");
+    let text = report.to_text(None);
+    assert!(text.contains("by sample index:"), "{text}");
+    assert!(text.contains("sample 2 at (1/8, 5/8): differs in"), "{text}");
+    assert!(
+        text.contains("sample 0 at (3/8, 1/8): the oracle's image in every case"),
+        "{text}"
+    );
+    assert!(
+        text.contains("(1/8, 1/2)") && text.contains("not its own position"),
+        "{text}"
+    );
+    let json: serde_json::Value = serde_json::from_str(&report.to_json("moved")).unwrap();
+    assert_eq!(json["per_sample"][2]["position"], serde_json::json!(["1/8", "5/8"]));
+    assert!(json["per_sample"][2]["fits"]
+        .as_array()
+        .unwrap()
+        .contains(&serde_json::json!(["1/8", "1/2"])));
+
+    // The same hunt in two shards, merged: each index's cases and pixels add up to the
+    // whole run's, and sample 2's fits still hold its moved position.
+    let shards: Vec<(String, serde_json::Value)> = (1..=2)
+        .map(|k| {
+            let shard = rasterproof::harness::suite::Shard::new(k, 2).unwrap();
+            let part = hunt(
+                &moved_sample_renderer,
+                &HuntConfig {
+                    shard,
+                    ..config.clone()
+                },
+                1,
+                &|| {},
+            )
+            .unwrap();
+            (
+                format!("shard-{k}.json"),
+                serde_json::from_str(&part.to_json("moved")).unwrap(),
+            )
+        })
+        .collect();
+    let merged = rasterproof::oracle::hunt::merge_reports(&shards).unwrap();
+    for (i, whole) in report.per_sample.iter().enumerate() {
+        assert_eq!(
+            merged["per_sample"][i]["cases"],
+            serde_json::json!(whole.cases),
+            "{merged}"
+        );
+        assert_eq!(
+            merged["per_sample"][i]["pixels"],
+            serde_json::json!(whole.pixels),
+            "{merged}"
+        );
+    }
+    let back = rasterproof::oracle::hunt::per_sample_summaries(&merged).unwrap();
+    let fits = back[2].fits.clone().expect("merged positions");
+    assert!(
+        fits.contains(&[q(1, 8), q(1, 2)]) && !fits.contains(&[q(1, 8), q(5, 8)]),
+        "{fits:?}"
+    );
+}

@@ -522,6 +522,13 @@ pub fn merge(o: &MergeOptions) -> Result<ExitCode, String> {
         counts["failed"],
         counts["refused"]
     );
+    let per_sample = rasterproof::oracle::hunt::per_sample_summaries(&merged)?;
+    if per_sample.iter().any(|p| p.cases > 0) {
+        text.push_str("by sample index:\n");
+        for p in &per_sample {
+            text.push_str(&format!("  {}\n", p.to_text()));
+        }
+    }
     for (k, f) in findings.iter().enumerate() {
         text.push_str(&format!(
             "{:02}   {:<44} {:>6} {:>6}\n",

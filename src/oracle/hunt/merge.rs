@@ -34,7 +34,10 @@ const SHARED: [&str; 12] = [
 /// Merges the hunt reports of the shards of one run, each `(name, report)` as
 /// [`super::HuntReport::to_json`] wrote it. The result has the same fields; `shard` is
 /// `{"k": 1, "n": 1}` when every shard is there, else `{"merged": [K, ...], "n": N}`;
-/// `renderer_runs` adds up (`null` when some shard has none).
+/// `renderer_runs` adds up (`null` when some shard has none); `per_sample` adds up each
+/// sample index's cases and pixels and keeps the positions every shard's `fits` holds (the
+/// intersection over all the shards' findings' scenes, where the unsharded run fits on
+/// the merged findings' scenes only: never fewer constraints, so never more positions).
 ///
 /// # Errors
 /// A report that is not a hunt report of this version; shards of different runs (a
@@ -113,6 +116,7 @@ pub fn merge_reports(reports: &[(String, Value)]) -> Result<Value, String> {
             json!({"calls": calls, "starts": starts})
         });
     let findings = merge_findings(reports)?;
+    let per_sample = merge_per_sample(reports)?;
     let whole = shards.len() as u64 == n;
     let mut out = Map::new();
     for (key, value) in first.as_object().expect("checked: it has a format") {
@@ -133,11 +137,98 @@ pub fn merge_reports(reports: &[(String, Value)]) -> Result<Value, String> {
             }),
             "renderer_runs" => runs.clone().unwrap_or(Value::Null),
             "findings" => Value::Array(findings.clone()),
+            "per_sample" => per_sample.clone(),
             _ => value.clone(),
         };
         out.insert(key.clone(), merged);
     }
     Ok(Value::Object(out))
+}
+
+/// The shards' `per_sample` lists merged index by index: cases and pixels summed, `fits`
+/// intersected over the shards that have them (`null` when none has). `null` when the
+/// hunt had one sample per pixel.
+fn merge_per_sample(reports: &[(String, Value)]) -> Result<Value, String> {
+    let mut merged: Option<Vec<Value>> = None;
+    for (name, r) in reports {
+        let list = match r.get("per_sample") {
+            None | Some(Value::Null) => continue,
+            Some(Value::Array(list)) => list,
+            Some(other) => return Err(format!("{name}: per_sample is not a list: {other}")),
+        };
+        let Some(kept) = merged.as_mut() else {
+            merged = Some(list.clone());
+            continue;
+        };
+        if kept.len() != list.len() {
+            return Err(format!(
+                "{name}: per_sample has {} sample indices, the first shard {}",
+                list.len(),
+                kept.len()
+            ));
+        }
+        for (i, (m, s)) in kept.iter_mut().zip(list).enumerate() {
+            for key in ["cases", "pixels"] {
+                let add = s
+                    .get(key)
+                    .and_then(Value::as_u64)
+                    .ok_or_else(|| format!("{name}: per_sample[{i}].{key} is not a whole number"))?;
+                let had = m.get(key).and_then(Value::as_u64).unwrap_or(0);
+                m[key] = json!(had + add);
+            }
+            m["fits"] = match (m.get("fits").cloned(), s.get("fits")) {
+                (Some(Value::Array(a)), Some(Value::Array(b))) => {
+                    Value::Array(a.into_iter().filter(|p| b.contains(p)).collect())
+                }
+                (Some(Value::Array(a)), _) => Value::Array(a),
+                (_, Some(Value::Array(b))) => Value::Array(b.clone()),
+                _ => Value::Null,
+            };
+        }
+    }
+    Ok(merged.map_or(Value::Null, Value::Array))
+}
+
+/// A (merged) report's `per_sample` read back as summaries, for printing
+/// ([`super::SampleIndexSummary::to_text`]); empty when it is `null`.
+///
+/// # Errors
+/// An entry missing a field or with one of the wrong type, named by index.
+pub fn per_sample_summaries(report: &Value) -> Result<Vec<super::SampleIndexSummary>, String> {
+    let Some(list) = report.get("per_sample").and_then(Value::as_array) else {
+        return Ok(Vec::new());
+    };
+    let point = |v: &Value, i: usize| -> Result<[num_rational::BigRational; 2], String> {
+        let bad = || format!("per_sample[{i}]: a position is not [\"x\", \"y\"] fractions: {v}");
+        let coords: Vec<num_rational::BigRational> = v
+            .as_array()
+            .ok_or_else(bad)?
+            .iter()
+            .map(|c| c.as_str().and_then(|t| t.parse().ok()).ok_or_else(bad))
+            .collect::<Result<_, _>>()?;
+        <[num_rational::BigRational; 2]>::try_from(coords).map_err(|_| bad())
+    };
+    list.iter()
+        .enumerate()
+        .map(|(i, e)| {
+            let whole = |key: &str| {
+                e.get(key)
+                    .and_then(Value::as_u64)
+                    .ok_or_else(|| format!("per_sample[{i}].{key} is not a whole number"))
+            };
+            let fits = match e.get("fits") {
+                Some(Value::Array(a)) => Some(a.iter().map(|p| point(p, i)).collect::<Result<Vec<_>, _>>()?),
+                _ => None,
+            };
+            Ok(super::SampleIndexSummary {
+                index: usize::try_from(whole("index")?).map_err(|_| format!("per_sample[{i}].index is too large"))?,
+                position: point(e.get("position").unwrap_or(&Value::Null), i)?,
+                cases: whole("cases")?,
+                pixels: whole("pixels")?,
+                fits,
+            })
+        })
+        .collect()
 }
 
 /// Every signature once: the finding of the shard with its lowest first case, its cases

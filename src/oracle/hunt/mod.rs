@@ -40,8 +40,8 @@ pub use grey::{
     fit_grey_method, grey_signatures, hunt_grey, judge_grey, on_grid, GreyFinding, GreyFitFirst, GreyHuntConfig,
     GreyHuntReport, GreySignature, GreyVerdict, AREA_FAMILIES, GREY_HUNT_REPORT_FORMAT, GREY_HUNT_REPORT_VERSION,
 };
-pub use merge::merge_reports;
-pub use report::{HuntFinding, HuntReport, HUNT_REPORT_FORMAT, HUNT_REPORT_VERSION};
+pub use merge::{merge_reports, per_sample_summaries};
+pub use report::{HuntFinding, HuntReport, SampleIndexSummary, HUNT_REPORT_FORMAT, HUNT_REPORT_VERSION};
 pub use test_text::rust_test;
 pub use verdict::{judge, pixel_kinds, signatures, HuntVerdict, Signature};
 
@@ -107,8 +107,9 @@ impl Default for HuntConfig {
     }
 }
 
-/// One case's scene, signatures and outcome.
-type CaseResult = (u64, Scene, Vec<(Signature, Vec<PixelKind>)>, CaseOutcome);
+/// One case's scene, signatures and outcome, and under a pattern of several samples each
+/// sample index's differing pixels (empty otherwise).
+type CaseResult = (u64, Scene, Vec<(Signature, Vec<PixelKind>)>, CaseOutcome, Vec<u64>);
 
 /// Runs the hunt: the scenes of `config.shard`'s cases among `0..config.cases` rendered by
 /// `render` on `jobs` threads, each compared with the oracle; every distinct signature's
@@ -179,10 +180,15 @@ where
                 (s, kinds)
             })
             .collect();
-        (k, scene, sigs, CaseOutcome::of(&verdict))
+        let per_sample = match &verdict {
+            HuntVerdict::DiffersPerSample(r) => r.samples.iter().map(|c| c.pixels.len() as u64).collect(),
+            _ => Vec::new(),
+        };
+        (k, scene, sigs, CaseOutcome::of(&verdict), per_sample)
     };
     let (requested, results) = run_cases(config, jobs, "rasterproof-hunt", tick, interrupted, &case)?;
     let cases = results.len() as u64;
+    let per_sample_tally = per_sample_tally(&results);
     let (tally, first) = first_seen(results);
     // Each finding's first case is shrunk on its own, `jobs` at a time (the results do not
     // depend on it: each shrink sees only its own scene and renderer answers). Jobs left
@@ -193,6 +199,12 @@ where
         shrink_finding(renderer, config, signature, seen, width, interrupted)
     });
     findings.sort_by_key(|f| (f.case, f.signature.clone()));
+    let per_sample = match &config.samples {
+        Some(pattern) if pattern.len() > 1 => {
+            sample_summaries(renderer, config.model, pattern, &per_sample_tally, &findings)
+        }
+        _ => Vec::new(),
+    };
     Ok(HuntReport {
         config: config.clone(),
         requested,
@@ -205,7 +217,92 @@ where
         refused: tally.refused,
         findings,
         renderer_runs: renderer.runs(),
+        per_sample,
     })
+}
+
+/// Per sample index, the cases where it differed and its differing pixels over them.
+fn per_sample_tally(results: &[CaseResult]) -> Vec<(u64, u64)> {
+    let mut out: Vec<(u64, u64)> = Vec::new();
+    for (.., per_sample) in results {
+        if out.len() < per_sample.len() {
+            out.resize(per_sample.len(), (0, 0));
+        }
+        for (slot, &pixels) in out.iter_mut().zip(per_sample) {
+            slot.0 += u64::from(pixels > 0);
+            slot.1 += pixels;
+        }
+    }
+    out
+}
+
+/// Each sample index of `pattern` over the cases (`tally`), with the grid positions that
+/// give its image on every finding's first and minimal scene where it differs: their
+/// renderer asked again for each such scene, judged under `model`, its per-sample images
+/// fitted
+/// ([`crate::oracle::compare::fit::samples::fit_positions`], under the scene's convention
+/// and oracle model).
+fn sample_summaries<R>(
+    renderer: &R,
+    model: Model,
+    pattern: &crate::pattern::SamplePattern,
+    tally: &[(u64, u64)],
+    findings: &[HuntFinding],
+) -> Vec<SampleIndexSummary>
+where
+    R: Renderer + ?Sized,
+{
+    use crate::oracle::compare::fit::samples::{fit_positions, POSITION_GRID};
+    let mut fits: Vec<Option<Vec<[num_rational::BigRational; 2]>>> = vec![None; pattern.len()];
+    let mut failed = false;
+    // Each finding's first scene and its minimal one: the first constrains the positions
+    // more (more edges), the minimal one is what the finding shows.
+    let scenes = findings.iter().flat_map(|f| [&f.original, &f.minimal]);
+    for scene in scenes {
+        let fitted = (|| {
+            let target = scene.target().ok()?;
+            let theirs = renderer.render(scene).ok()?;
+            let per_sample = theirs.unstack(pattern.len(), target.height).ok()?;
+            let HuntVerdict::DiffersPerSample(r) = judge(scene, Ok(theirs.clone()), model) else {
+                return Some(None);
+            };
+            let fitted =
+                fit_positions(&scene.primitives(), &target, pattern, &per_sample, model, POSITION_GRID).ok()?;
+            Some(Some((r, fitted)))
+        })();
+        let Some(fitted) = fitted else {
+            failed = true;
+            continue;
+        };
+        let Some((r, fitted)) = fitted else { continue };
+        for (s, report) in r.samples.iter().enumerate() {
+            if report.pixels.is_empty() {
+                continue;
+            }
+            let Some(found) = fitted.iter().find(|p| p.index == s) else {
+                continue;
+            };
+            fits[s] = Some(match fits[s].take() {
+                None => found.fits.clone(),
+                Some(kept) => kept.into_iter().filter(|p| found.fits.contains(p)).collect(),
+            });
+        }
+    }
+    pattern
+        .positions()
+        .iter()
+        .enumerate()
+        .map(|(index, position)| {
+            let (cases, pixels) = tally.get(index).copied().unwrap_or((0, 0));
+            SampleIndexSummary {
+                index,
+                position: position.clone(),
+                cases,
+                pixels,
+                fits: if failed { None } else { fits[index].clone() },
+            }
+        })
+        .collect()
 }
 
 /// A signature as the cases first showed it: the first case and its scene, the number of
@@ -216,7 +313,7 @@ type FirstSeen = (u64, Scene, u64, Vec<PixelKind>);
 fn first_seen(results: Vec<CaseResult>) -> (CaseCounts, BTreeMap<Signature, FirstSeen>) {
     let mut tally = CaseCounts::default();
     let mut first: BTreeMap<Signature, FirstSeen> = BTreeMap::new();
-    for (k, scene, sigs, outcome) in results {
+    for (k, scene, sigs, outcome, _) in results {
         *match outcome {
             CaseOutcome::Same => &mut tally.same,
             CaseOutcome::Differs => &mut tally.differing,

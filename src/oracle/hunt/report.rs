@@ -11,6 +11,9 @@ use crate::harness::junit::{JunitFailure, TestCase, TestSuite, TestSuites};
 use crate::harness::shrink::primitive_count;
 use crate::harness::suite::report::{json_object as object, json_value as j};
 use crate::harness::suite::Shard;
+use num_rational::BigRational;
+
+use crate::num::exact::exact_text;
 use crate::oracle::compare::PixelKind;
 use crate::oracle::renderer::program::RendererRuns;
 use crate::scene::Scene;
@@ -38,6 +41,68 @@ pub struct HuntFinding {
     /// Of those, the distinct ones, each rendered once (a scene tried again is answered
     /// from the first try).
     pub renderer_calls: usize,
+}
+
+/// One sample index of a multisample hunt (`hunt --samples N`), over the cases run.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SampleIndexSummary {
+    /// The sample index.
+    pub index: usize,
+    /// The position the scenes state for it (within the pixel, from its top-left corner).
+    pub position: [BigRational; 2],
+    /// The cases where its image differed from the oracle's.
+    pub cases: u64,
+    /// Its differing pixels over those cases.
+    pub pixels: u64,
+    /// The positions on the 1/16 px grid that give its image on every finding's first and
+    /// minimal scene where it differs
+    /// ([`crate::oracle::compare::fit::samples::fit_positions`]), in grid order; `None`
+    /// when no such scene shows it differing, or their renderer failed on one when asked
+    /// again.
+    pub fits: Option<Vec<[BigRational; 2]>>,
+}
+
+impl SampleIndexSummary {
+    /// One line: `sample 2 at (1/8, 5/8): differs in 13 cases (32 pixels); on the findings'
+    /// scenes where it differs, 1 position of the 1/16 px grid give its image: (1/8, 1/2)
+    /// (not its own position)`.
+    pub fn to_text(&self) -> String {
+        let point = |p: &[BigRational; 2]| format!("({}, {})", exact_text(&p[0]), exact_text(&p[1]));
+        let head = format!("sample {} at {}", self.index, point(&self.position));
+        if self.cases == 0 {
+            return format!("{head}: the oracle's image in every case");
+        }
+        let fits = match &self.fits {
+            None => String::new(),
+            Some(f) if f.is_empty() => {
+                "; on the findings' scenes no position of the 1/16 px grid gives its image (not a moved sample)"
+                    .to_string()
+            }
+            Some(f) => {
+                let own = if f.contains(&self.position) {
+                    "its own position among them"
+                } else {
+                    "not its own position"
+                };
+                let shown: Vec<String> = f.iter().take(8).map(point).collect();
+                let more = if f.len() > 8 {
+                    format!(" and {} more", f.len() - 8)
+                } else {
+                    String::new()
+                };
+                format!(
+                    "; on the findings' scenes where it differs, {} of the 1/16 px grid give its image: {}{more} ({own})",
+                    crate::num::exact::counted(f.len() as u64, "position"),
+                    shown.join(", ")
+                )
+            }
+        };
+        format!(
+            "{head}: differs in {} ({}){fits}",
+            crate::num::exact::counted(self.cases, "case"),
+            crate::num::exact::counted(self.pixels, "pixel")
+        )
+    }
 }
 
 /// What a hunt found.
@@ -68,6 +133,9 @@ pub struct HuntReport {
     /// What the hunt cost the renderer, when it is a program: scenes asked for and
     /// programs started.
     pub renderer_runs: Option<RendererRuns>,
+    /// Under a pattern of several samples (`config.samples`), each sample index over the
+    /// cases run, in index order; empty for one sample per pixel.
+    pub per_sample: Vec<SampleIndexSummary>,
 }
 
 /// The `format` of a hunt report ([`HuntReport::to_json`]).
@@ -175,6 +243,10 @@ impl HuntReport {
                 self.requested
             ));
         }
+        if self.per_sample.iter().any(|p| p.cases > 0) {
+            lines.push("by sample index:".to_string());
+            lines.extend(self.per_sample.iter().map(|p| format!("  {}", p.to_text())));
+        }
         if !self.findings.is_empty() {
             lines.push(format!(
                 "{:<4} {:<44} {:>6} {:>6} {:>10} {:>7}",
@@ -199,6 +271,29 @@ impl HuntReport {
             ));
         }
         lines.iter().map(|l| format!("{l}\n")).collect()
+    }
+
+    /// `per_sample`: `[{"index", "position", "cases", "pixels", "fits"}]` (positions as
+    /// `[x, y]` fraction strings; `fits` null when not found), `null` for one sample.
+    fn per_sample_json(&self) -> String {
+        if self.per_sample.is_empty() {
+            return "null".to_string();
+        }
+        let point = |p: &[BigRational; 2]| serde_json::json!([exact_text(&p[0]), exact_text(&p[1])]);
+        let entries: Vec<serde_json::Value> = self
+            .per_sample
+            .iter()
+            .map(|p| {
+                serde_json::json!({
+                    "index": p.index,
+                    "position": point(&p.position),
+                    "cases": p.cases,
+                    "pixels": p.pixels,
+                    "fits": p.fits.as_ref().map(|f| f.iter().map(point).collect::<Vec<_>>()),
+                })
+            })
+            .collect();
+        serde_json::Value::Array(entries).to_string()
     }
 
     /// The convention every scene stated, as a JSON object: `{"preset", "tie_rule",
@@ -232,6 +327,10 @@ impl HuntReport {
     ///   "tie_rule", "pixel_centre", "subpixel_bits", "rounding"}`), `model` (the oracle:
     ///   `exact-snapped` or `exact`);
     /// - `counts`: `{"same", "differ", "failed", "refused"}` over the cases run;
+    /// - `renderer_runs`: `{"calls", "starts"}` for a program, else `null`;
+    /// - `per_sample`: under a pattern of several samples, each sample index
+    ///   ([`SampleIndexSummary`]): `{"index", "position", "cases", "pixels", "fits"}`;
+    ///   `null` for one sample;
     /// - `findings`, by first case: `{"signature"` ([`Signature::describe`]), `"slug"`
     ///   ([`Signature::slug`]), `"kinds"` (the pixel kinds its cases showed: `["missing",
     ///   "extra"]`; `[]` for a renderer failure), `"first_case"`, `"cases"` (how many showed it),
@@ -287,7 +386,7 @@ impl HuntReport {
         let runs = self
             .renderer_runs
             .map(|r| object(&[("calls", j(&r.calls)), ("starts", j(&r.starts))]));
-        let fields: [(&str, String); 22] = [
+        let fields: [(&str, String); 23] = [
             ("format", j(HUNT_REPORT_FORMAT)),
             ("version", j(&HUNT_REPORT_VERSION)),
             ("rasterproof", j(env!("CARGO_PKG_VERSION"))),
@@ -325,6 +424,7 @@ impl HuntReport {
                 ]),
             ),
             ("renderer_runs", runs.unwrap_or_else(|| "null".to_string())),
+            ("per_sample", self.per_sample_json()),
             ("findings", findings),
         ];
         let body: Vec<String> = fields
