@@ -750,14 +750,19 @@ fn moved_sample_renderer(
         [q(5, 8), q(7, 8)],
     ])
     .unwrap();
+    Ok(stacked_at(scene, &moved))
+}
+
+/// The oracle's per-sample rendering of `scene` under `pattern`, stacked into one ids PNG
+/// and read back as a renderer's answer.
+fn stacked_at(scene: &rasterproof::scene::Scene, pattern: &SamplePattern) -> rasterproof::oracle::Theirs {
     let target = scene.target().unwrap();
-    let drawn = render_samples(&scene.primitives(), &target, &moved, Model::ExactSnapped).unwrap();
+    let drawn = render_samples(&scene.primitives(), &target, pattern, Model::ExactSnapped).unwrap();
     let mut png = Vec::new();
     image::DynamicImage::ImageRgba8(drawn.to_stacked_ids_image().unwrap())
         .write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
         .unwrap();
-    let theirs = rasterproof::oracle::Theirs::read(&png, "moved", rasterproof::oracle::Format::Ids, Default::default());
-    Ok(theirs.unwrap())
+    rasterproof::oracle::Theirs::read(&png, "stacked", rasterproof::oracle::Format::Ids, Default::default()).unwrap()
 }
 
 /// `hunt --samples 4` against a renderer with one moved sample: its findings may be of
@@ -843,5 +848,119 @@ fn a_multisample_hunt_names_the_moved_sample() {
     assert!(
         fits.contains(&[q(1, 8), q(1, 2)]) && !fits.contains(&[q(1, 8), q(5, 8)]),
         "{fits:?}"
+    );
+}
+
+/// The fit before a multisample hunt (`hunt --samples 4 --fit-first`) on the renderer with
+/// sample 2 moved to (1/8, 1/2): the three other samples are explained at the standard
+/// positions by the scenes' own convention (top-left, 8 bits, nearest-even, centre 1/2),
+/// sample 2 is moved to (1/8, 1/2), and a hunt under the fitted pattern finds nothing.
+#[test]
+fn the_fit_before_a_multisample_hunt_moves_the_sample() {
+    use rasterproof::oracle::hunt::{fit_sample_convention, hunt, FitFirst, HuntConfig, SceneFamily};
+    let config = HuntConfig {
+        cases: 24,
+        canvas: 8,
+        families: vec![SceneFamily::Mesh, SceneFamily::Triangles],
+        samples: SamplePattern::standard(4),
+        shrink_runs: 40,
+        ..HuntConfig::default()
+    };
+    let found = fit_sample_convention(&moved_sample_renderer, &config).unwrap();
+    let FitFirst::Statable { fit, overrides, model } = found.convention else {
+        panic!("{:?}", found.convention);
+    };
+    assert_eq!(
+        fit.to_string(),
+        "tie rule top-left, 8 subpixel bits, nearest-even, pixel centre 0.5"
+    );
+    assert_eq!(found.moved.len(), 1, "{:?}", found.moved);
+    let moved = &found.moved[0];
+    assert_eq!(
+        (moved.index, &moved.from, &moved.to),
+        (2, &[q(1, 8), q(5, 8)], &[q(1, 8), q(1, 2)])
+    );
+    assert!(moved.fitting >= 1);
+    assert_eq!(found.pattern.positions()[2], [q(1, 8), q(1, 2)]);
+    assert_eq!(found.pattern.positions()[0], [q(3, 8), q(1, 8)]);
+    let under = HuntConfig {
+        overrides,
+        model,
+        samples: Some(found.pattern),
+        ..config.clone()
+    };
+    let report = hunt(&moved_sample_renderer, &under, 1, &|| {}).unwrap();
+    assert!(report.findings.is_empty(), "{}", report.to_text(None));
+    assert_eq!(report.same, 24);
+
+    // A renderer at the standard positions: the pattern stands, under the same convention.
+    let standard = |scene: &rasterproof::scene::Scene| Ok(stacked_at(scene, &SamplePattern::standard(4).unwrap()));
+    let found = fit_sample_convention(&standard, &config).unwrap();
+    assert!(found.moved.is_empty(), "{:?}", found.moved);
+    assert_eq!(found.pattern, SamplePattern::standard(4).unwrap());
+    let FitFirst::Statable { fit, .. } = found.convention else {
+        panic!("{:?}", found.convention);
+    };
+    assert_eq!(
+        fit.to_string(),
+        "tie rule top-left, 8 subpixel bits, nearest-even, pixel centre 0.5"
+    );
+}
+
+/// `hunt --samples 4` with a real program: a shell script that draws every scene with
+/// sample 2 at (1/8, 1/2) (`rasterproof render` of the scene with its `samples` replaced).
+/// The plain hunt finds it and names sample 2 in its summary; `--fit-first` moves sample 2
+/// there, says so, and the hunt under that pattern finds nothing.
+#[test]
+fn hunt_samples_fit_first_from_the_command_line() {
+    let dir = crate::tempdir::Dir::new("samples-hunt-fit-first");
+    let script = dir.path().join("moved.sh");
+    std::fs::write(
+        &script,
+        format!(
+            "#!/bin/sh\nset -e\nsed 's|\"samples\": .*|\"samples\": [[\"3/8\", \"1/8\"], [\"7/8\", \"3/8\"], [\"1/8\", \"1/2\"], [\"5/8\", \"7/8\"]]|' \"$1\" > \"$2.scene.json\"\nexec {} render \"$2.scene.json\" --ids-out \"$2\"\n",
+            assert_cmd::cargo::cargo_bin("rasterproof").display()
+        ),
+    )
+    .unwrap();
+    let cmd = format!("sh {} {{scene}} {{out}}", script.display());
+    let hunt = |extra: &[&str]| {
+        let out = Command::cargo_bin("rasterproof")
+            .unwrap()
+            .args([
+                "hunt",
+                "--samples",
+                "4",
+                "--cmd",
+                &cmd,
+                "--cases",
+                "12",
+                "--canvas",
+                "8",
+            ])
+            .args(["--shrink-runs", "10", "--quiet"])
+            .args(extra)
+            .output()
+            .unwrap();
+        let text = format!(
+            "{}{}",
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        );
+        (out.status.code(), text)
+    };
+    let (code, text) = hunt(&[]);
+    assert_eq!(code, Some(1), "{text}");
+    assert!(text.contains("by sample index:"), "{text}");
+    assert!(text.contains("sample 2 at (1/8, 5/8): differs in"), "{text}");
+    assert!(
+        text.contains("sample 1 at (7/8, 3/8): the oracle's image in every case"),
+        "{text}"
+    );
+    let (code, text) = hunt(&["--fit-first"]);
+    assert_eq!(code, Some(0), "{text}");
+    assert!(
+        text.contains("fit: hunting under tie rule top-left, 8 subpixel bits, nearest-even, pixel centre 0.5 (oracle exact-snapped), sample 2 at (1/8, 1/2), not the pattern's (1/8, 5/8)"),
+        "{text}"
     );
 }

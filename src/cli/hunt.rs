@@ -8,12 +8,14 @@ use std::process::ExitCode;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 
+use num_rational::BigRational;
 use rasterproof::area::{Quantization, Semantics};
 use rasterproof::convention::Preset;
+use rasterproof::num::exact::{counted, exact_text};
 use rasterproof::oracle::compare::fit::grey::GreyMethod;
 use rasterproof::oracle::hunt::{
-    fit_convention, fit_grey_method, hunt_grey, hunt_interruptible, rust_test, FitFirst, GreyFitFirst, GreyHuntConfig,
-    HuntConfig, HuntReport, SceneFamily, AREA_FAMILIES, FIT_PROBES,
+    fit_convention, fit_grey_method, fit_sample_convention, hunt_grey, hunt_interruptible, rust_test, FitFirst,
+    GreyFitFirst, GreyHuntConfig, HuntConfig, HuntReport, SceneFamily, AREA_FAMILIES, FIT_PROBES,
 };
 use rasterproof::oracle::renderer::{Program, Renderer, StayAlive};
 use rasterproof::oracle::GreyImage;
@@ -87,7 +89,9 @@ pub struct Options {
     /// hunt under it (its oracle model too). When no convention explains the probes, or
     /// only ones a scene file cannot state (say top-right ties), it says so and exits 1.
     /// With --as grey: fit its method (compare --as grey --fit on probe scenes of the
-    /// hunt's families) and hunt against it, as --method does.
+    /// hunt's families) and hunt against it, as --method does. With --samples N: fit each
+    /// sample index too, and hunt under the pattern with any sample that sits elsewhere
+    /// moved to where its images put it.
     #[arg(long, conflicts_with_all = ["preset", "tie_rule", "subpixel_bits", "rounding", "pixel_centre", "model", "method"])]
     fit_first: bool,
     /// Canvas side of every scene, pixels.
@@ -214,11 +218,8 @@ fn mode(o: &Options) -> Result<(Format, Option<GreyJudged>, Option<SamplePattern
         ));
     }
     let samples = o.samples.map(super::parse_samples).transpose()?.filter(|p| p.len() > 1);
-    if samples.is_some() && (grey.is_some() || o.fit_first) {
-        return Err(
-            "--samples: a multisample hunt judges ids or masks per sample; leave out --as grey and --fit-first"
-                .to_string(),
-        );
+    if samples.is_some() && grey.is_some() {
+        return Err("--samples: a multisample hunt judges ids or masks per sample; leave out --as grey".to_string());
     }
     Ok((format, grey, samples))
 }
@@ -316,12 +317,37 @@ fn hunt_config(o: &Options, families: Vec<SceneFamily>, samples: Option<SamplePa
     Ok(config)
 }
 
-/// `--fit-first`: the convention the renderer follows, stated in `config`; or, when no
-/// scene file can state it or none explains its images, the exit after saying so.
+/// `--fit-first`: the convention the renderer follows, stated in `config` (under a
+/// pattern of several samples, with the sample positions that explain its images); or,
+/// when no scene file can state it or none explains its images, the exit after saying so.
 fn fit_first(render_with: &dyn Renderer, config: &mut HuntConfig) -> Result<Option<ExitCode>, String> {
-    match fit_convention(render_with, config)? {
+    let (found, moved) = match config.samples.as_ref().filter(|p| p.len() > 1) {
+        None => (fit_convention(render_with, config)?, String::new()),
+        Some(_) => {
+            let found = fit_sample_convention(render_with, config)?;
+            let moved: Vec<String> = found
+                .moved
+                .iter()
+                .map(|m| {
+                    let point = |p: &[BigRational; 2]| format!("({}, {})", exact_text(&p[0]), exact_text(&p[1]));
+                    format!(
+                        ", sample {} at {}, not the pattern's {} (the nearest of {} on the 1/16 px grid that {} its \
+                         image on every probe)",
+                        m.index,
+                        point(&m.to),
+                        point(&m.from),
+                        counted(m.fitting as u64, "position"),
+                        if m.fitting == 1 { "gives" } else { "give" }
+                    )
+                })
+                .collect();
+            config.samples = Some(found.pattern);
+            (found.convention, moved.concat())
+        }
+    };
+    match found {
         FitFirst::Statable { fit, overrides, model } => {
-            eprintln!("fit: hunting under {fit} (oracle {})", model.name());
+            eprintln!("fit: hunting under {fit} (oracle {}){moved}", model.name());
             config.overrides = overrides;
             config.model = model;
         }

@@ -34,7 +34,10 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 
 pub use crate::harness::shrink::{primitive_count, shrink, shrink_batched};
-pub use convention::{fit_convention, hunt_convention, preferred, FitFirst, FIT_PROBES};
+pub use convention::{
+    fit_convention, fit_sample_convention, hunt_convention, preferred, FitFirst, MovedSample, SampleFitFirst,
+    FIT_PROBES,
+};
 pub use families::{float32_exact, generate_scene, SceneFamily};
 pub use grey::{
     fit_grey_method, grey_signatures, hunt_grey, judge_grey, on_grid, GreyFinding, GreyFitFirst, GreyHuntConfig,

@@ -64,7 +64,7 @@ pub struct SampleIndexSummary {
 
 impl SampleIndexSummary {
     /// One line: `sample 2 at (1/8, 5/8): differs in 13 cases (32 pixels); on the findings'
-    /// scenes where it differs, 1 position of the 1/16 px grid give its image: (1/8, 1/2)
+    /// scenes where it differs, 1 position of the 1/16 px grid gives its image: (1/8, 1/2)
     /// (not its own position)`.
     pub fn to_text(&self) -> String {
         let point = |p: &[BigRational; 2]| format!("({}, {})", exact_text(&p[0]), exact_text(&p[1]));
@@ -91,8 +91,9 @@ impl SampleIndexSummary {
                     String::new()
                 };
                 format!(
-                    "; on the findings' scenes where it differs, {} of the 1/16 px grid give its image: {}{more} ({own})",
+                    "; on the findings' scenes where it differs, {} of the 1/16 px grid {} its image: {}{more} ({own})",
                     crate::num::exact::counted(f.len() as u64, "position"),
+                    if f.len() == 1 { "gives" } else { "give" },
                     shown.join(", ")
                 )
             }
@@ -210,9 +211,13 @@ impl HuntReport {
             format!("shard {} of {} cases, ", config.shard, config.cases)
         };
         let mut lines = vec![format!(
-            "hunt: {} scenes ({shard}{} px canvas, {}, oracle {}): {} identical, {} differ, {} failed, {} refused by the oracle",
+            "hunt: {} scenes ({shard}{} px canvas, {}{}, oracle {}): {} identical, {} differ, {} failed, {} refused by the oracle",
             self.cases,
             config.canvas,
+            match config.samples.as_ref().filter(|p| p.len() > 1) {
+                Some(p) => format!("samples {p}, "),
+                None => String::new(),
+            },
             convention,
             config.model.name(),
             self.same,
