@@ -1145,3 +1145,90 @@ fn the_supersampling_sweep_decides_ties_by_hand() {
     reversed.outline.reverse();
     assert_eq!(supersample::counts(&[reversed], 1, 1, 4, AnyTieRule::TopLeft), vec![4]);
 }
+
+/// The tangled polygon a fresh clone's seed of the property test below found (issue 46,
+/// point 3), on FreeType's 1/64 px grid: its hole crosses its outline, so at pixel (0, 3)
+/// the winding numbers +1 and -1 meet. True coverage is 0.1884 (level 48 of 256), the
+/// accumulated integral of the winding number 0.1594 (40.8); FreeType's method draws 39,
+/// 1.8 levels from the accumulated value (its divisions, over the 4 edges meeting the
+/// pixel) and 9.2 from the true one: past precision's reach of the true value (1 + 2 x 4
+/// levels), and the accumulated value itself lies within that reach of the true one, so
+/// neither class alone names it. Composed, `accumulation`; never `gross`.
+#[test]
+fn freetype_on_a_tangled_polygon_is_accumulation_and_precision() {
+    use rasterproof::area::exact;
+    use rasterproof::oracle::compare::grey::{compare_grey, GreyClass};
+    let shapes = [Polygon {
+        outline: vec![
+            p(r(0, 1), r(263, 64)),
+            p(r(119, 32), r(237, 64)),
+            p(r(59, 8), r(171, 64)),
+            p(r(-25, 32), r(127, 32)),
+        ],
+        holes: vec![vec![
+            p(r(9, 32), r(125, 32)),
+            p(r(35, 16), r(13, 16)),
+            p(r(9, 8), r(33, 32)),
+            p(r(1, 2), r(65, 16)),
+        ]],
+        fill_rule: FillRule::NonZero,
+    }];
+    let levels = ftgrays::rasterize(&shapes, 6, 6).unwrap();
+    assert_eq!(levels[3 * 6], 39, "FreeType's method at (0, 3)");
+    let (values, _) = exact::values(&shapes, 0, 3);
+    let of = |s: Semantics| values.iter().find(|(k, _)| *k == s).unwrap().1.clone();
+    let (truth, accumulated) = (of(Semantics::True), of(Semantics::Accumulated));
+    assert_eq!(exact::crossing_edges(&shapes, 0, 3).len(), 4);
+    let levels_of = |v: &BigRational| v * int(256);
+    assert!(levels_of(&truth) > r(48, 1) && levels_of(&truth) < r(49, 1), "{truth}");
+    assert!(
+        levels_of(&accumulated) > r(40, 1) && levels_of(&accumulated) < r(41, 1),
+        "{accumulated}"
+    );
+    let report = compare_grey(
+        &shapes,
+        &canvas(6, 6),
+        &grey8(6, 6, &levels),
+        &grey_options(Semantics::True, Quantization::FtGrays),
+    )
+    .unwrap();
+    let at = report
+        .pixels
+        .iter()
+        .find(|px| (px.x, px.y) == (0, 3))
+        .expect("pixel (0, 3) differs");
+    assert_eq!(at.class, GreyClass::Accumulation, "{at:?}");
+    let gross: Vec<_> = report.pixels.iter().filter(|p| p.class == GreyClass::Gross).collect();
+    assert!(gross.is_empty(), "{gross:?}");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, ..config("proptest-regressions/area.txt") })]
+
+    /// FreeType's method (`area::ftgrays`, bit for bit FreeType's smooth rasterizer in the
+    /// adapter tests) on any polygon, tangled and self-overlapping ones included, judged
+    /// under true coverage: it accumulates the winding number (another semantics) and its
+    /// divisions round (precision), and where both meet at one pixel the two compose; a
+    /// correct renderer is never called `gross`.
+    #[test]
+    fn freetype_is_never_gross_under_true_coverage(poly in any_polygon(6, 7)) {
+        use rasterproof::oracle::compare::grey::{compare_grey, GreyClass};
+        // FreeType reads 26.6 fixed point: the shape on its 1/64 px grid (as `hunt --as
+        // grey --grid 6` puts it), so that its arithmetic is judged, not its input.
+        let mut scene = rasterproof::scene::Scene { polygons: vec![poly], ..rasterproof::scene::Scene::new(6, 6, vec![]) };
+        rasterproof::oracle::hunt::on_grid(&mut scene, 6);
+        let shapes = [shape_of(&scene.polygons[0])];
+        let Ok(levels) = ftgrays::rasterize(&shapes, 6, 6) else {
+            return Ok(());
+        };
+        let report = compare_grey(
+            &shapes,
+            &canvas(6, 6),
+            &grey8(6, 6, &levels),
+            &grey_options(Semantics::True, Quantization::FtGrays),
+        )
+        .unwrap();
+        let gross: Vec<_> = report.pixels.iter().filter(|p| p.class == GreyClass::Gross).collect();
+        prop_assert!(gross.is_empty(), "{gross:?}");
+    }
+}

@@ -3,7 +3,8 @@
 //! oracle's signed integral at every pixel, and the planned engine's images equal the
 //! oracle's under the accumulated semantics; the integrals add up to the path's signed area; true and folded values lie
 //! in [0, 1]; FreeType's integer method (within a level and two per edge meeting the
-//! pixel) and f32 accumulation stay near the exact values;
+//! pixel) and f32 accumulation stay near the exact values; the supersampling sweep
+//! counts each sample row as the plain test of every sample does, under every tie rule;
 //! and a spade triangulation of the outline's points adds up, pixel by pixel, to its hull.
 
 #![no_main]
@@ -14,8 +15,10 @@ use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
 use rasterproof::area::{
-    cells, exact, float, ftgrays, path_signed_area, planned, triangle_shape, AreaImage, Quantization, Semantics,
+    cells, exact, float, ftgrays, path_signed_area, planned, supersample, triangle_shape, AreaImage, Quantization,
+    Semantics,
 };
+use rasterproof::convention::AnyTieRule;
 use rasterproof::check::{check_area_additivity, check_area_bounds, check_area_conservation};
 use rasterproof::geom::{FillRule, Point, Polygon};
 use rasterproof::strategy::triangulate;
@@ -30,6 +33,9 @@ struct Input {
     /// Canvas sides, read as `1 + w % 6`.
     width: u8,
     height: u8,
+    /// Supersampling `k x k`, read as `1 + k % 4` (the vertices' 1/1..1/4 px grid puts
+    /// many of them, and so edges, on the samples of k = 2 and 4).
+    k: u8,
 }
 
 fuzz_target!(|input: Input| {
@@ -89,6 +95,21 @@ fuzz_target!(|input: Input| {
         if let Err(v) = check_area_bounds(&image) {
             panic!("{v}: {poly:?}");
         }
+    }
+
+    // The supersampling sweep against the plain test of every sample against every edge.
+    let k = 1 + u32::from(input.k % 4);
+    for rule in AnyTieRule::ALL {
+        let mut rows = 0;
+        supersample::for_each_row_counts(one, w, h, k, rule, |y, counts| {
+            rows += 1;
+            for x in 0..w {
+                let plain = supersample::row_counts_with(one, x, y, k, rule);
+                let swept = &counts[(x * k) as usize..((x + 1) * k) as usize];
+                assert_eq!(swept, &plain[..], "{rule:?} {k}x{k} pixel ({x}, {y}): {poly:?}");
+            }
+        });
+        assert_eq!(rows, h, "{rule:?} {k}x{k}: {poly:?}");
     }
 
     // The contenders never panic; on points on FreeType's 1/64 px grid (exact in f32: the

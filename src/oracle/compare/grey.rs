@@ -342,20 +342,22 @@ impl Classifier<'_> {
         if let Some(k) = sampled {
             return GreyClass::Supersampling(k);
         }
-        // The classes composed with precision: another semantics' value (or the blend of
-        // the shapes' own values) that lies beyond the reach of the exact value, their
-        // level within the reach of it: a renderer that accumulates (or blends) and whose
-        // arithmetic rounds too (FreeType's divisions on a self-overlapping outline).
+        // The classes composed with precision: their level within the reach of another
+        // semantics' value (or of the blend of the shapes' own values), where it lies
+        // beyond the reach of the exact value (known here: precision alone was ruled out
+        // above): a renderer that accumulates (or blends) and whose arithmetic rounds too
+        // (FreeType's divisions on a self-overlapping outline). The other value itself may
+        // lie within the reach of the exact one: the two errors add up.
         let near = |value: &BigRational| {
             let shown = value.clone().max(BigRational::zero()).min(BigRational::one());
             (BigRational::from_integer(level.into()) - shown * BigRational::from_integer(s.into())).abs() <= reach
         };
-        if others.iter().any(|o| near(o) && beyond(o, v, s, &reach)) {
+        if others.iter().any(|o| o != v && near(o)) {
             return GreyClass::Accumulation;
         }
         let own = conflate::own_values(shapes, &self.boxes, x, y, conflate::Own::Exact(self.semantics));
         let blended = conflate::blend(&own);
-        if own.len() >= 2 && near(&blended) && beyond(&blended, v, s, &reach) {
+        if own.len() >= 2 && &blended != v && near(&blended) {
             return GreyClass::Conflation;
         }
         GreyClass::Gross
