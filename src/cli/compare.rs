@@ -46,7 +46,8 @@ pub struct Options {
     #[arg(long = "diff-out", value_name = "DIFF.png")]
     diff_out: Option<PathBuf>,
     /// Write the comparison as one self-contained HTML page: the three images side by
-    /// side, zoom and pan, each pixel's explanation on click.
+    /// side, zoom and pan, each pixel's explanation on click (grey levels by class, each
+    /// sample index of a pattern, a conservative set's must-pixels and band alike).
     #[arg(long, value_name = "REPORT.html")]
     html: Option<PathBuf>,
     /// Output format on stdout.
@@ -83,7 +84,7 @@ pub struct Options {
     /// rasterization under RULE (`d3d12-tier1`, `d3d12-tier2`, `d3d12-tier3`, `vulkan`;
     /// see `render --conservative`): right when every pixel it must cover is covered and
     /// none beyond those it may cover is. Exit 0 when right, 1 otherwise.
-    #[arg(long, value_name = "RULE", conflicts_with_all = ["fit", "diff_out", "html", "samples"])]
+    #[arg(long, value_name = "RULE", conflicts_with_all = ["fit", "diff_out", "samples"])]
     conservative: Option<String>,
     /// With `--as grey`: the exact area semantics their levels approximate (`true`,
     /// `accumulated` or `unclamped`; see `render --coverage area`).
@@ -157,7 +158,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let format = their_format(o)?;
     let background = background(o, format)?;
     let grey = format == Format::Grey;
-    if grey && (o.diff_out.is_some() || o.html.is_some()) {
+    if grey && o.diff_out.is_some() {
         return Err(GREY_PRINTS.to_string());
     }
     if !grey && (o.semantics != "true" || o.quantization != "round" || o.method.is_some()) {
@@ -203,9 +204,9 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         (Some(g), ..) if o.fit => Question::FitGrey(g.model),
         (Some(g), ..) => Question::Grey(g),
         (None, Some(rule), _) => Question::Conservative(super::parse_conservative(rule)?),
-        (None, None, Some(pattern)) if o.diff_out.is_some() || o.html.is_some() => {
+        (None, None, Some(pattern)) if o.diff_out.is_some() => {
             return Err(format!(
-                "{name}: under the {pattern} sample pattern compare prints its comparison per sample (text or JSON); --diff-out and --html are for one sample per pixel"
+                "{name}: under the {pattern} sample pattern compare prints its comparison per sample (text, JSON or --html); --diff-out is for one sample per pixel"
             ))
         }
         (None, None, Some(pattern)) if o.fit => Question::FitSamples(SampleFitOptions {
@@ -261,7 +262,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
 
 /// Why `--as grey` refuses the picture and page options.
 const GREY_PRINTS: &str =
-    "--as grey prints its comparison (text or JSON); --diff-out, --html and --background are for the one-sample formats";
+    "--as grey prints its comparison (text, JSON or --html); --diff-out and --background are for the one-sample formats";
 
 /// `--as`, or the default: json for a `.json` file, ids otherwise.
 fn their_format(o: &Options) -> Result<Format, String> {

@@ -14,8 +14,8 @@ use rasterproof::convention::Preset;
 use rasterproof::num::exact::{counted, exact_text};
 use rasterproof::oracle::compare::fit::grey::GreyMethod;
 use rasterproof::oracle::hunt::{
-    fit_convention, fit_grey_method, fit_sample_convention, hunt_grey, hunt_interruptible, rust_test, FitFirst,
-    GreyFitFirst, GreyHuntConfig, HuntConfig, HuntReport, SceneFamily, AREA_FAMILIES, FIT_PROBES,
+    fit_convention, fit_grey_method, fit_sample_convention, grey_rust_test, hunt_grey, hunt_interruptible, rust_test,
+    FitFirst, GreyFitFirst, GreyHuntConfig, HuntConfig, HuntReport, SceneFamily, AREA_FAMILIES, FIT_PROBES,
 };
 use rasterproof::oracle::renderer::{Program, Renderer, StayAlive};
 use rasterproof::oracle::GreyImage;
@@ -469,6 +469,7 @@ fn run_grey(o: &Options, config: &GreyHuntConfig, renderer: &dyn Renderer, cmd: 
             let path = |ext: &str| dir.join(format!("finding-{n:02}.{ext}"));
             outputs.stage_text(&path("json"), &f.minimal.to_json())?;
             outputs.stage_text(&path("txt"), &f.to_text(n))?;
+            outputs.stage_text(&path("rs"), &grey_rust_test(f, n, &report))?;
             if let Some(theirs) = &f.theirs {
                 let image = grey_png(theirs)?;
                 outputs.stage(&path("png"), "PNG", |w| {
@@ -476,6 +477,7 @@ fn run_grey(o: &Options, config: &GreyHuntConfig, renderer: &dyn Renderer, cmd: 
                 })?;
             }
         }
+        outputs.stage_text(&dir.join("index.html"), &report.to_html(cmd))?;
     }
     if let Some(path) = &o.run.outputs.report {
         outputs.stage_text(path, &report.to_json(cmd).to_string())?;

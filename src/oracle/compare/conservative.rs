@@ -34,6 +34,15 @@ pub struct ConservativeReport {
     /// Degenerate triangles that must not vanish of which they cover none of the pixels
     /// touched.
     pub vanished: Vec<u32>,
+    /// The canvas width.
+    pub width: u32,
+    /// The canvas height.
+    pub height: u32,
+    /// What the rule says of each pixel, row by row: 2 must be covered, 1 may be (the
+    /// band), 0 must not.
+    pub oracle: Vec<u8>,
+    /// Whether they cover each pixel, row by row.
+    pub covered: Vec<bool>,
 }
 
 impl ConservativeReport {
@@ -123,12 +132,20 @@ pub fn compare_conservative(
         band_covered: Vec::new(),
         band_uncovered: 0,
         vanished: Vec::new(),
+        width: w,
+        height: h,
+        oracle: Vec::new(),
+        covered: Vec::new(),
     };
     for y in 0..h {
         for x in 0..w {
             let covered = theirs.pixel(x, y).covered;
             let must = sets.must.owners(x, y);
             let may = sets.may.owners(x, y);
+            report
+                .oracle
+                .push(if !must.is_empty() { 2 } else { u8::from(!may.is_empty()) });
+            report.covered.push(covered);
             match (covered, !must.is_empty(), !may.is_empty()) {
                 (false, true, _) => report.missing.push((x, y, must.to_vec())),
                 (true, _, false) => report.beyond.push((x, y)),
@@ -147,6 +164,10 @@ pub fn compare_conservative(
 }
 
 impl super::Comparison for ConservativeReport {
+    fn to_html(&self, page: &super::HtmlInputs<'_>) -> Option<String> {
+        Some(ConservativeReport::to_html(self, page))
+    }
+
     fn identical(&self) -> bool {
         ConservativeReport::identical(self)
     }

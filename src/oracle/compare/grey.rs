@@ -122,6 +122,11 @@ pub struct GreyReport {
     /// How many pixels are off from the level they are judged against (the named
     /// quantization's, or the method's) by each number of levels (0 included).
     pub histogram: BTreeMap<u32, u64>,
+    /// Every pixel's level judged against (the method's, or the exact value's under the
+    /// named quantization), row by row: the oracle's image.
+    pub judged_levels: Vec<u16>,
+    /// Their levels, row by row.
+    pub their_levels: Vec<u16>,
 }
 
 /// Levels per unit of coverage: 256 for FreeType's quantization, else the largest level.
@@ -455,6 +460,7 @@ pub fn compare_grey(
     let mut histogram = BTreeMap::new();
     // Every pixel's exact value at once (the planned engine, equal to the plain oracle).
     let values = planned::rasterize(shapes, width, height, semantics);
+    let mut judged_levels = Vec::with_capacity(theirs.levels.len());
     for y in 0..height {
         for x in 0..width {
             let level = theirs.levels[(y * width + x) as usize];
@@ -467,6 +473,7 @@ pub fn compare_grey(
             max_error = max_error.max(error.abs());
             total_error += error.abs();
             let judged_level = judged.as_ref().map_or(ours, |j| j[(y * width + x) as usize]);
+            judged_levels.push(judged_level);
             *histogram.entry(u32::from(level.abs_diff(judged_level))).or_insert(0) += 1;
             if level == judged_level {
                 continue;
@@ -497,6 +504,8 @@ pub fn compare_grey(
         max_error,
         mean_error: total_error / BigRational::from_integer(count.max(1).into()),
         histogram,
+        judged_levels,
+        their_levels: theirs.levels.clone(),
     })
 }
 
@@ -619,6 +628,10 @@ impl GreyReport {
 }
 
 impl super::Comparison for GreyReport {
+    fn to_html(&self, page: &super::HtmlInputs<'_>) -> Option<String> {
+        Some(GreyReport::to_html(self, page))
+    }
+
     fn identical(&self) -> bool {
         GreyReport::identical(self)
     }

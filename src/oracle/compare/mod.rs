@@ -3,7 +3,8 @@
 //! Each kind of answer a renderer gives has its comparison here, one file each, and each
 //! takes the same four things, `(primitives, target, theirs, options)`, and returns a
 //! report with the same surface, the [`Comparison`] trait: [`Comparison::identical`], its
-//! counts by class, text, JSON and, where one exists, the HTML page. Every failure to
+//! counts by class, text, JSON and the HTML page (every comparison has one; the fits
+//! print text and JSON). Every failure to
 //! compare is a [`CompareError`].
 //!
 //! | answer | function | options | report |
@@ -27,6 +28,7 @@ pub mod binary;
 pub mod conservative;
 pub mod fit;
 pub mod grey;
+mod pages;
 pub mod samples;
 
 use std::fmt;
@@ -34,9 +36,9 @@ use std::fmt;
 use serde_json::Value;
 
 pub use binary::{
-    compare, count_differences, html_escape, html_page, pick_classified, reason_text, CompareOptions, CompareReport,
-    DiffPixel, PixelFinding, PixelKind, Relation, CLASSIFY_AT_MOST, COMPARE_REPORT_VERSION, EMPTY_COLOUR,
-    HTML_EXPLAINED_AT_MOST, MATCHED_COLOUR,
+    compare, count_differences, html_escape, html_page, pick_classified, reason_text, view_block, CompareOptions,
+    CompareReport, DiffPixel, PixelFinding, PixelKind, Relation, CLASSIFY_AT_MOST, COMPARE_REPORT_VERSION,
+    EMPTY_COLOUR, HTML_EXPLAINED_AT_MOST, MATCHED_COLOUR,
 };
 pub(crate) use binary::{evidence, evidence_at, pixel_box_holds};
 

@@ -183,6 +183,10 @@ pub fn compare_samples(
 }
 
 impl super::Comparison for SampleCompareReport {
+    fn to_html(&self, page: &super::HtmlInputs<'_>) -> Option<String> {
+        Some(SampleCompareReport::to_html(self, page))
+    }
+
     fn identical(&self) -> bool {
         SampleCompareReport::identical(self)
     }

@@ -23,6 +23,7 @@ mod cases;
 mod convention;
 mod families;
 mod grey;
+mod grey_page;
 mod html;
 mod merge;
 mod report;
@@ -43,6 +44,7 @@ pub use grey::{
     fit_grey_method, grey_signatures, hunt_grey, judge_grey, on_grid, GreyFinding, GreyFitFirst, GreyHuntConfig,
     GreyHuntReport, GreySignature, GreyVerdict, AREA_FAMILIES, GREY_HUNT_REPORT_FORMAT, GREY_HUNT_REPORT_VERSION,
 };
+pub use grey_page::grey_rust_test;
 pub use merge::{merge_reports, per_sample_summaries};
 pub use report::{HuntFinding, HuntReport, SampleIndexSummary, HUNT_REPORT_FORMAT, HUNT_REPORT_VERSION};
 pub use test_text::rust_test;

@@ -50,43 +50,13 @@ impl CompareReport {
     /// they draw from; element ids end in `suffix` (several on one page: a hunt's
     /// findings).
     pub fn html_views(&self, suffix: &str) -> String {
-        let data = self.html_data().to_string().replace("</", "<\\/"); // "</" would end the <script>
         let headline = if self.identical() {
             "identical".to_string()
         } else {
             self.headline()
                 .unwrap_or_else(|| format!("{} pixels differ", self.pixels.len()))
         };
-        let mut out = format!("<div class=\"compare\" data-suffix=\"{suffix}\">\n");
-        let _ = writeln!(
-            out,
-            "<p class=\"headline\" id=\"headline{suffix}\">{}</p>",
-            escape(&headline)
-        );
-        out.push_str(
-            "<div class=\"controls\">zoom <button data-role=\"zoom-out\" title=\"zoom out (-)\">&minus;</button> \
-             <span data-role=\"zoom\"></span> <button data-role=\"zoom-in\" title=\"zoom in (+)\">+</button> \
-             <span class=\"hint\">scroll to pan (the three views move together); hover a pixel for both answers, \
-             click it for its explanation</span></div>\n<div class=\"views\">\n",
-        );
-        for (role, caption) in [
-            ("ours", "the oracle (exact)"),
-            ("theirs", "theirs"),
-            ("diff", "the difference"),
-        ] {
-            let _ = writeln!(
-                out,
-                "<figure><figcaption>{caption}</figcaption><div class=\"pane\"><canvas data-role=\"{role}\" id=\"{role}{suffix}\"></canvas></div></figure>"
-            );
-        }
-        let _ = writeln!(
-            out,
-            "</div>\n<div class=\"legend\" data-role=\"legend\"></div>\n<p data-role=\"hover\">&nbsp;</p>\n\
-             <section class=\"pixel\"><h2 data-role=\"pixel-title\" id=\"pixel-title{suffix}\">No pixel chosen</h2>\
-             <pre data-role=\"explanation\" id=\"explanation{suffix}\">Click a differing pixel.</pre></section>\n\
-             <script type=\"application/json\" data-role=\"data\">{data}</script>\n</div>"
-        );
-        out
+        view_block(suffix, &headline, &self.html_data())
     }
 
     /// What the views draw: per pixel the oracle's first owner + 1 (0: none) and
@@ -161,6 +131,48 @@ impl CompareReport {
     }
 }
 
+/// The interactive part of a page ([`CompareReport::html_views`]): the headline, the zoom
+/// controls, the three views (the oracle, theirs, the difference), the legend, the hovered
+/// pixel and the chosen pixel's explanation, drawn from `data`; element ids end in
+/// `suffix`. `data` holds `width`, `height`, `ours` and `theirs` (a value per pixel, row
+/// by row), `diff` (an index into `palette` and `kinds` per pixel) and `explain` (`"X,Y"`
+/// to its text); and, to read the values: `ours_several`/`theirs_several` (pixels with
+/// several owners) for owner ids + 1, or `levels` (the top level) for grey levels, or
+/// `ours_labels`/`theirs_labels` (a word per value).
+pub fn view_block(suffix: &str, headline: &str, data: &Value) -> String {
+    let data = data.to_string().replace("</", "<\\/"); // "</" would end the <script>
+    let mut out = format!("<div class=\"compare\" data-suffix=\"{suffix}\">\n");
+    let _ = writeln!(
+        out,
+        "<p class=\"headline\" id=\"headline{suffix}\">{}</p>",
+        escape(headline)
+    );
+    out.push_str(
+        "<div class=\"controls\">zoom <button data-role=\"zoom-out\" title=\"zoom out (-)\">&minus;</button> \
+         <span data-role=\"zoom\"></span> <button data-role=\"zoom-in\" title=\"zoom in (+)\">+</button> \
+         <span class=\"hint\">scroll to pan (the three views move together); hover a pixel for both answers, \
+         click it for its explanation</span></div>\n<div class=\"views\">\n",
+    );
+    for (role, caption) in [
+        ("ours", "the oracle (exact)"),
+        ("theirs", "theirs"),
+        ("diff", "the difference"),
+    ] {
+        let _ = writeln!(
+            out,
+            "<figure><figcaption>{caption}</figcaption><div class=\"pane\"><canvas data-role=\"{role}\" id=\"{role}{suffix}\"></canvas></div></figure>"
+        );
+    }
+    let _ = writeln!(
+        out,
+        "</div>\n<div class=\"legend\" data-role=\"legend\"></div>\n<p data-role=\"hover\">&nbsp;</p>\n\
+         <section class=\"pixel\"><h2 data-role=\"pixel-title\" id=\"pixel-title{suffix}\">No pixel chosen</h2>\
+         <pre data-role=\"explanation\" id=\"explanation{suffix}\">Click a differing pixel.</pre></section>\n\
+         <script type=\"application/json\" data-role=\"data\">{data}</script>\n</div>"
+    );
+    out
+}
+
 /// A whole page: `title`, the style, `body` (with its views' data) and the script that
 /// brings every view block of it to life.
 pub fn html_page(title: &str, body: &str) -> String {
@@ -221,8 +233,11 @@ function setup(block) {
     ctx.putImageData(img, 0, 0);
   }
   const palette = D.palette.map(hex);
-  paint(views[0], i => idColour(D.ours[i]), D.ours_several);
-  paint(views[1], i => idColour(D.theirs[i]), D.theirs_several);
+  const top = D.levels;
+  const colourOf = top ? (v => { const g = Math.round(v * 255 / top); return [g, g, g]; }) : idColour;
+  const oursSeveral = D.ours_several || [], theirsSeveral = D.theirs_several || [];
+  paint(views[0], i => colourOf(D.ours[i]), oursSeveral);
+  paint(views[1], i => colourOf(D.theirs[i]), theirsSeveral);
   paint(views[2], i => palette[D.diff[i]]);
   D.kinds.forEach((k, j) => {
     const span = document.createElement("span");
@@ -231,9 +246,11 @@ function setup(block) {
     span.append(swatch, k);
     role("legend").append(span);
   });
-  const several = document.createElement("span");
-  several.textContent = "(white in the first two views: two or more owners)";
-  role("legend").append(several);
+  if (!top && !D.ours_labels) {
+    const several = document.createElement("span");
+    several.textContent = "(white in the first two views: two or more owners)";
+    role("legend").append(several);
+  }
   let zoom = Math.max(1, Math.min(32, Math.floor(400 / Math.max(W, H))));
   let chosen = null;
   const markers = views.map(c => { const m = document.createElement("div"); m.className = "marker"; c.parentElement.append(m); return m; });
@@ -276,10 +293,11 @@ function setup(block) {
     return (x >= 0 && y >= 0 && x < W && y < H) ? [x, y] : null;
   }
   function owners(v, several) { return v === 0 ? "none" : v === 4294967295 ? "covered" : "id " + (v - 1) + (several ? " and more" : ""); }
+  function value(v, several, labels) { return labels ? labels[v] : top ? "level " + v : owners(v, several); }
   function describe(x, y) {
     const i = y * W + x;
-    return "(" + x + ", " + y + ") " + D.kinds[D.diff[i]] + ": oracle " + owners(D.ours[i], D.ours_several.includes(i)) +
-      ", theirs " + owners(D.theirs[i], D.theirs_several.includes(i));
+    return "(" + x + ", " + y + ") " + D.kinds[D.diff[i]] + ": oracle " + value(D.ours[i], oursSeveral.includes(i), D.ours_labels) +
+      ", theirs " + value(D.theirs[i], theirsSeveral.includes(i), D.theirs_labels);
   }
   function choose(x, y) {
     chosen = [x, y];
@@ -301,10 +319,16 @@ function setup(block) {
 }
 const blocks = Array.from(document.querySelectorAll(".compare"));
 blocks.forEach(setup);
-// #pixel=X,Y clicks pixel (X, Y) of the first block; #finding=NN&pixel=X,Y of finding NN's.
-const m = /^#(?:finding=(\d+)&)?pixel=(\d+),(\d+)$/.exec(location.hash);
+// #pixel=X,Y clicks pixel (X, Y) of the first block; #finding=NN&pixel=X,Y of finding NN's,
+// #sample=S&pixel=X,Y of sample index S's.
+const m = /^#(?:(?:finding|sample)=(\d+)&)?pixel=(\d+),(\d+)$/.exec(location.hash);
 if (m) {
   const block = m[1] ? document.querySelector('.compare[data-suffix="-' + m[1] + '"]') : blocks[0];
-  if (block) { (block.closest("section") || block).scrollIntoView(); block.clickPixel(+m[2], +m[3]); }
+  if (block) {
+    const folded = block.closest("details");
+    if (folded) folded.open = true;
+    (block.closest("section") || folded || block).scrollIntoView();
+    block.clickPixel(+m[2], +m[3]);
+  }
 }
 "#;

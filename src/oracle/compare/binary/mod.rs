@@ -14,7 +14,7 @@ mod report;
 
 use std::collections::BTreeMap;
 
-pub use html::{escape as html_escape, html_page, HTML_EXPLAINED_AT_MOST};
+pub use html::{escape as html_escape, html_page, view_block, HTML_EXPLAINED_AT_MOST};
 pub(crate) use pixel::{evidence, evidence_at, pixel_box_holds};
 pub use pixel::{DiffPixel, PixelFinding};
 pub use report::{reason_text, CompareReport, COMPARE_REPORT_VERSION, EMPTY_COLOUR, MATCHED_COLOUR};
