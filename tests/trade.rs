@@ -504,3 +504,91 @@ fn ftgrays_is_refused_beyond_its_envelope_by_hand() {
     let err = rasterproof::area::ftgrays::rasterize_at(&square, (1 << 23) - 1, 2, 2).unwrap_err();
     assert!(err.contains("24.8 envelope") && err.contains("8388608"), "{err}");
 }
+
+/// The committed tables (`docs/trade/trade.json`, a full run) are the code's: a `--quick`
+/// run of the area family, whose glyph workloads are the full run's (the same scenes and
+/// canvases, the same subset window), gives every error figure the committed tables give
+/// where both measured the same pixels (the same `of` or `pixels`; the abutting mesh and
+/// slivers are smaller in a quick run). Stale tables (a model changed, the tables not
+/// regenerated: `rasterproof trade --out docs/trade`) fail here.
+#[test]
+fn the_committed_tables_match_a_quick_run_where_they_overlap() {
+    let committed: Value = serde_json::from_str(
+        &std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/trade/trade.json"))
+            .unwrap(),
+    )
+    .unwrap();
+    let out = bin()
+        .args([
+            "trade",
+            "--quick",
+            "--quiet",
+            "--family",
+            "area",
+            "--magnitudes",
+            "0,2^16,2^30",
+            "--format",
+            "json",
+        ])
+        .assert()
+        .success();
+    let quick: Value = serde_json::from_slice(&out.get_output().stdout).unwrap();
+    let mut compared = 0;
+    for w in quick["workloads"].as_array().unwrap() {
+        let Some(full) = committed["workloads"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|f| f["name"] == w["name"] && f["description"] == w["description"])
+        else {
+            continue;
+        };
+        for e in w["errors"].as_array().unwrap() {
+            let Some(f) = full["errors"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .find(|f| f["contender"] == e["contender"] && f["magnitude"] == e["magnitude"])
+            else {
+                continue;
+            };
+            assert_eq!(e["status"], f["status"], "{} {}", w["name"], e);
+            let (ours, theirs) = (e["metrics"].as_array(), f["metrics"].as_array());
+            let (Some(ours), Some(theirs)) = (ours, theirs) else {
+                continue;
+            };
+            for m in ours {
+                let Some(c) = theirs
+                    .iter()
+                    .find(|c| c["metric"] == m["metric"] && c["kind"] == m["kind"])
+                else {
+                    continue;
+                };
+                if m["of"] != c["of"] || m["pixels"] != c["pixels"] {
+                    continue;
+                }
+                let near = |a: &Value, b: &Value| match (a.as_f64(), b.as_f64()) {
+                    (Some(a), Some(b)) => (a - b).abs() <= 1e-9 * a.abs().max(b.abs()).max(1.0),
+                    _ => a == b,
+                };
+                for key in ["count", "max", "mean"] {
+                    assert!(
+                        near(&m[key], &c[key]),
+                        "docs/trade is stale: {} {} at {}: {} {key} {} now, {} committed",
+                        w["name"],
+                        e["contender"],
+                        e["magnitude"],
+                        m["metric"],
+                        m[key],
+                        c[key]
+                    );
+                }
+                compared += 1;
+            }
+        }
+    }
+    assert!(
+        compared >= 100,
+        "only {compared} figures overlap: the test no longer tests"
+    );
+}

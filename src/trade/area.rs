@@ -24,8 +24,9 @@
 //!   every contender answers the same accumulated question.
 //! - **The subset**: the models that are slow by design (the exact ones in big rationals
 //!   and the sample counters, which decide every sample exactly: 10 to 1000 pixels a
-//!   second on glyph outlines of hundreds of edges) run on a 12 x 12 px window (4 x 4 with
-//!   `--quick`) centred on the middle partly covered pixel, with the shapes that have a non-zero
+//!   second on glyph outlines of hundreds of edges) run on a 12 x 12 px window (`--quick`
+//!   too: its glyph workloads are the full run's, figure for figure) centred on the middle
+//!   partly covered pixel, with the shapes that have a non-zero
 //!   exact value in it, against the planned engine's answer there (as the binary trade runs its
 //!   plain oracles on a corner).
 //! - **Speed**: each model's own function from the shapes to its output (exact values,

@@ -257,7 +257,7 @@ impl Config {
                 min_pass_seconds: 0.002,
                 plain_pixels: 150,
                 samples: 400,
-                area_subset: 4,
+                area_subset: 12,
             }
         } else {
             Sizes {
