@@ -6,7 +6,9 @@
 //! the sample classes by a bound before any sample is drawn, so the two should cost about
 //! the same. Then `fit_grey` of the correct image (every method of the area family drawn
 //! on the whole canvas), timed once: it takes seconds, criterion's ten runs would take
-//! minutes.
+//! minutes. Last, a grey hunt (`hunt_grey`, 24 scenes of the area families on 8 px
+//! canvases, each finding shrunk), timed once against each of the two renderers: the
+//! correct 4x4 supersampler, and the same 3/8 px to the right.
 //!
 //! `cargo bench --bench grey`
 
@@ -83,5 +85,76 @@ fn bench(c: &mut Criterion) {
     );
 }
 
-criterion_group!(benches, bench);
+/// A 4x4 supersampler as a renderer closure (round to 8 bits, top-left ties), its
+/// shapes first moved right by `shift` px (0: a correct one).
+fn supersampler(
+    shift: BigRational,
+) -> impl Fn(
+    &rasterproof::scene::Scene,
+) -> Result<rasterproof::oracle::Theirs, rasterproof::oracle::renderer::program::RenderFailure>
+       + Sync {
+    move |scene| {
+        let target = scene.target().expect("a hunt's scene has a canvas");
+        let shapes = rasterproof::model::area_shapes(&scene.primitives(), &target, Model::Exact).unwrap_or_default();
+        let moved: Vec<_> = shapes
+            .into_iter()
+            .map(|mut g| {
+                for p in g.outline.iter_mut().chain(g.holes.iter_mut().flatten()) {
+                    *p = Point::new(&p.x + &shift, p.y.clone());
+                }
+                g
+            })
+            .collect();
+        Ok(rasterproof::oracle::Theirs::from_grey(GreyImage {
+            width: target.width,
+            height: target.height,
+            bits: 8,
+            levels: supersample::rasterize(&moved, target.width, target.height, 4).levels(Quantization::Round8),
+        }))
+    }
+}
+
+/// One grey hunt against each supersampler, timed once each (seconds to a minute).
+fn hunts() {
+    use rasterproof::oracle::hunt::{hunt_grey, GreyHuntConfig, HuntConfig, AREA_FAMILIES};
+    let config = GreyHuntConfig {
+        hunt: HuntConfig {
+            cases: 24,
+            canvas: 8,
+            families: AREA_FAMILIES.to_vec(),
+            shrink_runs: 40,
+            ..HuntConfig::default()
+        },
+        semantics: Semantics::True,
+        quantization: Quantization::Round8,
+        grid: None,
+        method: None,
+    };
+    let never = std::sync::atomic::AtomicBool::new(false);
+    let mut seconds = Vec::new();
+    for (name, shift) in [("correct", 0), ("3/8 px off (gross)", 3)] {
+        let renderer = supersampler(BigRational::new(shift.into(), 8.into()));
+        let start = std::time::Instant::now();
+        let report = hunt_grey(&renderer, &config, 1, &|| {}, &never).expect("a hunt");
+        let took = start.elapsed().as_secs_f64();
+        seconds.push(took);
+        println!(
+            "hunt_grey, a 4x4 supersampler {name}: {:.1} s (one run, 24 scenes, {} findings shrunk)",
+            took,
+            report.findings.len()
+        );
+    }
+    println!(
+        "hunt_grey: the gross renderer's hunt takes {:.2}x the correct one's",
+        seconds[1] / seconds[0]
+    );
+}
+
+/// The criterion groups, then the hunts.
+fn all(c: &mut Criterion) {
+    bench(c);
+    hunts();
+}
+
+criterion_group!(benches, all);
 criterion_main!(benches);
