@@ -187,9 +187,9 @@ fn sampling_reaches(level: u16, exact: &BigRational, edges: u32, k: u32, s: i64)
 /// own value times `s` (each clamped to `[0, top]`, the sum too): a renderer that
 /// quantizes every shape on its own and adds the levels (a glyph at a time).
 fn rounds_per_shape(
-    (shapes, boxes): (&[AreaShape], &conflate::Boxes),
-    (x, y): (u32, u32),
-    (semantics, v): (Semantics, &BigRational),
+    shapes: &[AreaShape],
+    own: &dyn Fn() -> Vec<BigRational>,
+    v: &BigRational,
     level: u16,
     s: i64,
     top: u16,
@@ -197,7 +197,7 @@ fn rounds_per_shape(
     if shapes.len() < 2 {
         return false;
     }
-    let values = conflate::own_values(shapes, boxes, x, y, conflate::Own::Exact(semantics));
+    let values = own();
     // Only where the shapes' own values add up to the pixel's (no overlap under true
     // coverage): then the levels added are a rounding of each part of it.
     if values.len() < 2 || values.iter().sum::<BigRational>() != *v {
@@ -232,7 +232,7 @@ fn conflated(
     c: &Classifier<'_>,
     (x, y): (u32, u32),
     level: u16,
-    (v, edges): (&BigRational, u32),
+    (v, edges, own_exact): (&BigRational, u32, &dyn Fn() -> Vec<BigRational>),
     reach: &BigRational,
 ) -> bool {
     let (shapes, boxes, semantics, s, top) = (c.shapes, &c.boxes, c.semantics, c.s, c.top);
@@ -255,7 +255,10 @@ fn conflated(
                     return false;
                 }
             }
-            let values = conflate::own_values(shapes, boxes, x, y, own);
+            let values = match own {
+                conflate::Own::Exact(_) => own_exact(),
+                conflate::Own::Supersampled(_) => conflate::own_values(shapes, boxes, x, y, own),
+            };
             if values.len() < 2 {
                 return false;
             }
@@ -291,9 +294,15 @@ impl Classifier<'_> {
     /// quanta. The classes are tried in [`GreyClass`] order, the cheap ones first.
     fn class(&self, (x, y): (u32, u32), level: u16, v: &BigRational, error: &BigRational) -> GreyClass {
         let (shapes, s, top) = (self.shapes, self.s, self.top);
-        if rounds(level, v, s, top)
-            || rounds_per_shape((shapes, &self.boxes), (x, y), (self.semantics, v), level, s, top)
-        {
+        // Each shape's own exact value under the stated semantics, found once for the
+        // classes that ask for it (per-shape quantization, conflation, composed).
+        let own_cell = std::cell::OnceCell::new();
+        let own = || {
+            own_cell
+                .get_or_init(|| conflate::own_values(shapes, &self.boxes, x, y, conflate::Own::Exact(self.semantics)))
+                .clone()
+        };
+        if rounds(level, v, s, top) || rounds_per_shape(shapes, &own, v, level, s, top) {
             return GreyClass::Quantization;
         }
         let (px, py) = (i64::from(x), i64::from(y));
@@ -326,7 +335,7 @@ impl Classifier<'_> {
         {
             return GreyClass::Accumulation;
         }
-        if conflated(self, (x, y), level, (v, edges), &reach) {
+        if conflated(self, (x, y), level, (v, edges, &own), &reach) {
             return GreyClass::Conflation;
         }
         if error.abs() <= reach {
@@ -360,7 +369,7 @@ impl Classifier<'_> {
         if others.iter().any(|o| o != v && near(o)) {
             return GreyClass::Accumulation;
         }
-        let own = conflate::own_values(shapes, &self.boxes, x, y, conflate::Own::Exact(self.semantics));
+        let own = own();
         let blended = conflate::blend(&own);
         if own.len() >= 2 && &blended != v && near(&blended) {
             return GreyClass::Conflation;
