@@ -141,3 +141,55 @@ fn fuzz_case_05_grey_png_with_a_13_byte_palette() {
     let e = rasterproof::oracle::GreyImage::read_png(&bytes, "theirs.png").unwrap_err();
     assert!(e.starts_with("theirs.png: not a PNG this reader takes"), "{e}");
 }
+
+/// Found by planned_exact's campaign: a triangle whose leftmost vertex lies 2^-44 px right
+/// of the last sample column (x = 3.5 + 2^-44 on a 4-pixel canvas), so it covers no
+/// sample, and the plan skipped it ("covers nothing") and called float32 exact. But f32
+/// holds 24 significant bits: 3.5 + 2^-44 rounds to 3.5, onto the column, and the float32
+/// model covers a pixel there. The float analysis now takes the range of the vertices and
+/// of their rounded floats together; f64 holds the vertex exactly and still covers nothing.
+#[test]
+fn fuzz_case_06_a_vertex_that_rounds_onto_a_sample_in_f32() {
+    let scene = parse_scene(
+        r#"{
+  "width": 4,
+  "height": 3,
+  "preset": "cts",
+  "tie_rule": "top-left",
+  "triangles": [
+    {"v": [["49/13","6"], ["61572651155457/17592186044416","5/2"], ["6","-4"]]}
+  ]
+}"#,
+        "fuzz_case_06.json",
+    )
+    .unwrap();
+    assert_eq!(61_572_651_155_457_i64, 7 * (1_i64 << 43) + 1, "3.5 + 2^-44 over 2^44");
+    let (primitives, target) = (scene.primitives(), scene.target().unwrap());
+    let exact = render(&primitives, &target, Model::Exact).unwrap();
+    assert_eq!(exact.iter().count(), 0, "every vertex right of x = 3.5");
+    let float32 = render(&primitives, &target, Model::Float32).unwrap();
+    assert_ne!(float32, exact, "the vertex rounded to 3.5 puts a sample on the edge");
+    let plan = plan_scene(&primitives, &target, Model::Exact).unwrap();
+    let snapped = render(&primitives, &target, Model::ExactSnapped).unwrap();
+    for v in plan.fixed_width.iter().filter(|v| v.exact) {
+        let want = if v.model.snaps() { &snapped } else { &exact };
+        assert_eq!(
+            &render(&primitives, &target, v.model).unwrap(),
+            want,
+            "{} called exact",
+            v.model
+        );
+    }
+    let verdict = |m: Model| plan.fixed_width.iter().find(|v| v.model == m).unwrap();
+    assert!(!verdict(Model::Float32).exact);
+    assert!(
+        verdict(Model::Float32)
+            .broken_by
+            .as_deref()
+            .unwrap()
+            .starts_with("triangles[0]: "),
+        "{:?}",
+        verdict(Model::Float32).broken_by
+    );
+    assert!(verdict(Model::Float64).exact, "{:?}", verdict(Model::Float64).broken_by);
+}

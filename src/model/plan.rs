@@ -10,7 +10,8 @@
 //! - `float32`, `float64` (with the tie rule): proven exact (equal to `exact`) for a
 //!   triangle or polygon when every vertex and sample is a multiple of one `2^-k`, and
 //!   every value the float edge function `(p.x - a.x)(b.y - a.y) - (p.y - a.y)(b.x - a.x)`
-//!   computes over the pixel range (the differences, both products, the result), scaled by
+//!   computes over the pixel range (of the vertices and of the vertices rounded to the
+//!   float type, whose box the float model loops over; the differences, both products, the result), scaled by
 //!   `2^k` or `2^2k` to an integer, is at most `2^24` (f32) or `2^53` (f64): then each
 //!   operation's exact result is a float, so IEEE arithmetic returns it unchanged. Lines
 //!   and clipping in floats are not analysed: "not proven".
@@ -277,6 +278,19 @@ fn float_breaker(p: &Primitives, target: &Target, bits: u32) -> Option<String> {
     None
 }
 
+/// `v` rounded to the nearest float of a `bits`-bit significand (24: f32, 53: f64), as the
+/// float models round a vertex; `None` when it does not fit the type.
+fn nearest_float(v: &Point, bits: u32) -> Option<Point> {
+    let [x, y] = if bits == 24 {
+        let p = v.to_f32()?;
+        [f64::from(p.x), f64::from(p.y)]
+    } else {
+        let p = v.to_f64()?;
+        [p.x, p.y]
+    };
+    Some(Point::new(BigRational::from_float(x)?, BigRational::from_float(y)?))
+}
+
 /// Whether the float edge function is exact over a triangle's range (every ordered pair
 /// of vertices as an edge, so the orientation swap cannot matter).
 fn float_exact(v: &[Point; 3], target: &Target, bits: u32) -> Result<(), String> {
@@ -295,8 +309,12 @@ fn float_exact(v: &[Point; 3], target: &Target, bits: u32) -> Result<(), String>
 /// over the samples of the range (and at the vertices, for the area) scaled to integers
 /// at most `2^bits`.
 fn float_exact_edges(vertices: &[Point], edges: &[[Point; 2]], target: &Target, bits: u32) -> Result<(), String> {
-    let Some(range) = exact_sample_range(vertices.iter(), target) else {
-        return Ok(()); // covers nothing: nothing computed per sample
+    // The float model rounds each vertex to its type first and loops over the samples of
+    // the rounded vertices' box, so the range is over both: a vertex just past a sample
+    // can round onto it (fuzz case 02).
+    let rounded: Vec<Point> = vertices.iter().filter_map(|v| nearest_float(v, bits)).collect();
+    let Some(range) = exact_sample_range(vertices.iter().chain(&rounded), target) else {
+        return Ok(()); // neither covers anything: nothing computed per sample
     };
     let centre = target.convention.pixel_centre.offset();
     let l = scale_of(vertices.iter().flat_map(|p| [&p.x, &p.y]).chain([&centre]));

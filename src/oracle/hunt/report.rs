@@ -589,12 +589,14 @@ mod tests {
             "model",
             "counts",
             "renderer_runs",
+            "per_sample",
             "findings",
         ] {
             assert!(keys.contains(&key), "{key}: {keys:?}");
         }
-        assert_eq!(keys.len(), 22);
+        assert_eq!(keys.len(), 23);
         assert_eq!(v["samples"], serde_json::Value::Null, "one sample per pixel");
+        assert_eq!(v["per_sample"], serde_json::Value::Null, "one sample per pixel");
         assert_eq!(
             v["renderer_runs"],
             serde_json::Value::Null,
