@@ -111,6 +111,10 @@ pub fn example(name: &str) -> PathBuf {
             "--message-format=json-render-diagnostics",
         ])
         .current_dir(env!("CARGO_MANIFEST_DIR"))
+        // A test binary run with RUSTC_BOOTSTRAP=1 (for `-Z unstable-options
+        // --report-time`) would otherwise rebuild the example and its dependencies under
+        // another fingerprint, a 3-minute "slow test" that is cargo's.
+        .env_remove("RUSTC_BOOTSTRAP")
         .output()
         .expect("cargo runs");
     // Diagnostics are rendered on stderr; stdout holds the JSON artifact messages.

@@ -654,6 +654,48 @@ proptest! {
         let gross: Vec<_> = report.pixels.iter().filter(|p| p.class == GreyClass::Gross).collect();
         prop_assert!(gross.is_empty(), "{k}x{k}: {gross:?}");
     }
+
+    /// The shrinker's question, `compare_grey_shows` (does a pixel of this class and sign
+    /// exist? stopping at the first), answers what the whole comparison's pixels say, for
+    /// every class and sign, on a supersampler's image with levels moved by up to 3 and
+    /// some by up to 60 (every class, gross ones too).
+    #[test]
+    fn the_shrinkers_question_is_the_comparisons_answer(
+        poly in any_polygon(5, 7),
+        t in small_triangle(),
+        k in prop::sample::select(vec![1u32, 2, 4]),
+        moves in prop::collection::vec(prop_oneof![4 => -3i32..=3, 1 => -60i32..=60], 36),
+    ) {
+        use rasterproof::oracle::compare::grey::{compare_grey, compare_grey_shows, GreyClass};
+        let shapes = [shape_of(&poly), triangle_shape(&t)];
+        let levels: Vec<u8> = supersample::rasterize(&shapes, 6, 6, k)
+            .levels(Quantization::Round8)
+            .into_iter()
+            .zip(&moves)
+            .map(|(l, m)| u8::try_from((i32::from(l) + m).clamp(0, 255)).unwrap())
+            .collect();
+        let (target, theirs) = (canvas(6, 6), grey8(6, 6, &levels));
+        let options = grey_options(Semantics::True, Quantization::Round8);
+        let report = compare_grey(&shapes, &target, &theirs, &options).unwrap();
+        let classes = [
+            GreyClass::Quantization,
+            GreyClass::Accumulation,
+            GreyClass::Conflation,
+            GreyClass::Precision,
+            GreyClass::Supersampling(2),
+            GreyClass::Supersampling(4),
+            GreyClass::Supersampling(8),
+            GreyClass::Supersampling(16),
+            GreyClass::Gross,
+        ];
+        for class in classes {
+            for over in [false, true] {
+                let whole = report.pixels.iter().any(|p| p.class == class && p.error.is_positive() == over);
+                let shows = compare_grey_shows(&shapes, &target, &theirs, &options, (class, over)).unwrap();
+                prop_assert_eq!(shows, whole, "{:?} over {}", class, over);
+            }
+        }
+    }
 }
 
 /// FreeType's method (`area::ftgrays`, bit for bit FreeType's smooth rasterizer in the

@@ -208,7 +208,9 @@ fn dyadic(canvas: i64) -> impl Strategy<Value = BigRational> {
 }
 
 proptest! {
-    #![proptest_config(Config { cases: 96, ..config("proptest-regressions/planned.txt") })]
+    // 48 cases of up to 3 triangles on the wide canvas, each drawn by four models through
+    // two sinks and by the plain oracles.
+    #![proptest_config(Config { cases: 48, ..config("proptest-regressions/planned.txt") })]
 
     /// The traversal depends on the sink (masks for a sink that prefers them; pixels,
     /// spans per row and the scanline walk for a sink of spans) and on the triangle (the

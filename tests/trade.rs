@@ -505,8 +505,8 @@ fn ftgrays_is_refused_beyond_its_envelope_by_hand() {
     assert!(err.contains("24.8 envelope") && err.contains("8388608"), "{err}");
 }
 
-/// The committed tables (`docs/trade/trade.json`, a full run) are the code's: a `--quick`
-/// run of the area family, whose glyph workloads are the full run's (the same scenes and
+/// The committed tables (`docs/trade/trade.json`, a full run) are the code's: the `--quick`
+/// run shared by this file's tests (`trade --quick --format json`'s document), whose glyph workloads are the full run's (the same scenes and
 /// canvases, the same subset window), gives every error figure the committed tables give
 /// where both measured the same pixels (the same `of` or `pixels`; the abutting mesh and
 /// slivers are smaller in a quick run). Stale tables (a model changed, the tables not
@@ -518,21 +518,7 @@ fn the_committed_tables_match_a_quick_run_where_they_overlap() {
             .unwrap(),
     )
     .unwrap();
-    let out = bin()
-        .args([
-            "trade",
-            "--quick",
-            "--quiet",
-            "--family",
-            "area",
-            "--magnitudes",
-            "0,2^16,2^30",
-            "--format",
-            "json",
-        ])
-        .assert()
-        .success();
-    let quick: Value = serde_json::from_slice(&out.get_output().stdout).unwrap();
+    let quick = quick().to_json();
     let mut compared = 0;
     for w in quick["workloads"].as_array().unwrap() {
         let Some(full) = committed["workloads"]

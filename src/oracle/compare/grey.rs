@@ -412,6 +412,22 @@ pub fn compare_grey_scene(
     compare_grey(&shapes, target, grey, options)
 }
 
+/// [`compare_grey_shows`] of a scene, as [`compare_grey_scene`] reads it.
+///
+/// # Errors
+/// As [`compare_grey_scene`].
+pub fn compare_grey_scene_shows(
+    primitives: &Primitives,
+    target: &Target,
+    theirs: &Theirs,
+    options: &GreyOptions,
+    wanted: (GreyClass, bool),
+) -> Result<bool, CompareError> {
+    let grey = super::grey_of(theirs)?;
+    let shapes = super::area_shapes(primitives, target, options.model)?;
+    compare_grey_shows(&shapes, target, grey, options, wanted)
+}
+
 /// Compares `theirs` with the exact area coverage of `shapes` on `target`'s canvas under
 /// `options.semantics`, their levels read under `options.quantization`.
 ///
@@ -422,6 +438,37 @@ pub fn compare_grey(
     target: &Target,
     theirs: &GreyImage,
     options: &GreyOptions,
+) -> Result<GreyReport, CompareError> {
+    compare_grey_until(shapes, target, theirs, options, None)
+}
+
+/// Whether [`compare_grey`] would class at least one pixel `class`, their level above
+/// the exact value (`over`) or not: the question a hunt's shrinker asks of each candidate
+/// scene. The same classes, sooner: a pixel whose error has the other sign is not classed,
+/// and the first pixel of the class ends the search.
+///
+/// # Errors
+/// As [`compare_grey`].
+pub fn compare_grey_shows(
+    shapes: &[AreaShape],
+    target: &Target,
+    theirs: &GreyImage,
+    options: &GreyOptions,
+    (class, over): (GreyClass, bool),
+) -> Result<bool, CompareError> {
+    let report = compare_grey_until(shapes, target, theirs, options, Some((class, over)))?;
+    Ok(report.pixels.iter().any(|p| p.class == class))
+}
+
+/// [`compare_grey`], or with `wanted = Some((class, over))` only the pixels whose error
+/// is of that sign, stopping at the first of that class (the report then holds the pixels
+/// classed so far; its error figures are partial).
+fn compare_grey_until(
+    shapes: &[AreaShape],
+    target: &Target,
+    theirs: &GreyImage,
+    options: &GreyOptions,
+    wanted: Option<(GreyClass, bool)>,
 ) -> Result<GreyReport, CompareError> {
     let GreyOptions {
         model,
@@ -470,7 +517,7 @@ pub fn compare_grey(
     // Every pixel's exact value at once (the planned engine, equal to the plain oracle).
     let values = planned::rasterize(shapes, width, height, semantics);
     let mut judged_levels = Vec::with_capacity(theirs.levels.len());
-    for y in 0..height {
+    'rows: for y in 0..height {
         for x in 0..width {
             let level = theirs.levels[(y * width + x) as usize];
             let v = values.value(x, y);
@@ -484,10 +531,11 @@ pub fn compare_grey(
             let judged_level = judged.as_ref().map_or(ours, |j| j[(y * width + x) as usize]);
             judged_levels.push(judged_level);
             *histogram.entry(u32::from(level.abs_diff(judged_level))).or_insert(0) += 1;
-            if level == judged_level {
+            if level == judged_level || wanted.is_some_and(|(_, over)| error.is_positive() != over) {
                 continue;
             }
             let class = classifier.class((x, y), level, &v, &error);
+            let found = wanted.is_some_and(|(c, _)| c == class);
             pixels.push(GreyPixel {
                 x,
                 y,
@@ -498,6 +546,9 @@ pub fn compare_grey(
                 error,
                 class,
             });
+            if found {
+                break 'rows;
+            }
         }
     }
     let count = u64::from(width) * u64::from(height);

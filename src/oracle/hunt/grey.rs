@@ -24,7 +24,7 @@ use crate::harness::shrink::shrink_batched;
 use crate::model::Model;
 use crate::num::exact::{exact_text, nearest_f64, round_to_integer, Rounding};
 use crate::oracle::compare::fit::grey::GreyMethod;
-use crate::oracle::compare::grey::{compare_grey_scene, GreyClass, GreyOptions, GreyReport};
+use crate::oracle::compare::grey::{compare_grey_scene, compare_grey_scene_shows, GreyClass, GreyOptions, GreyReport};
 use crate::oracle::renderer::program::{FailureKind, RenderFailure, Renderer, RendererRuns};
 use crate::oracle::theirs::GreyImage;
 use crate::oracle::theirs::Theirs;
@@ -367,7 +367,27 @@ where
             config.method,
         )
     };
-    let ask = AskOnce::new(|s: &Scene| grey_signatures(&judge(s)).contains_key(&signature));
+    // Whether a candidate still shows the signature: for a class, the first pixel of it
+    // (of its sign) ends the comparison ([`compare_grey_scene_shows`]).
+    let shows = |s: &Scene| match signature {
+        GreySignature::Class { class, over } => {
+            let (Ok(theirs), Ok(target)) = (renderer.render(s), s.target()) else {
+                return false;
+            };
+            let options = GreyOptions {
+                model: Model::Exact,
+                semantics: config.semantics,
+                quantization: config.quantization,
+                method: config.method,
+            };
+            matches!(
+                compare_grey_scene_shows(&s.primitives(), &target, &theirs, &options, (class, over)),
+                Ok(true)
+            )
+        }
+        GreySignature::Failure(_) => grey_signatures(&judge(s)).contains_key(&signature),
+    };
+    let ask = AskOnce::new(shows);
     let budget = shrink_budget(config.hunt.shrink_runs, interrupted);
     let (minimal, runs) = shrink_batched(&original, &mut |batch| ask.first_kept(batch), width, budget, None);
     let drawn = renderer.render(&minimal);
