@@ -5,7 +5,8 @@
 #   TARGET                    the libFuzzer binary
 #   TARGET.options            its libFuzzer options (max_len; dict = TARGET.dict)
 #   TARGET.dict               its dictionary, when fuzz/options/TARGET.options names one
-#   TARGET_seed_corpus.zip    its committed seed corpus, fuzz/corpus/TARGET/seed-*
+#   TARGET_seed_corpus.zip    its committed corpus, fuzz/corpus/TARGET/ (the seed-* files and
+#                             what the measured campaign kept)
 #
 # In the builder image $SRC, $OUT and $WORK are set and cargo fuzz builds with the
 # sanitizer the job asks for (SANITIZER, address for Rust). Run outside it (fuzz/check-layout
@@ -39,7 +40,7 @@ for source in fuzz/fuzz_targets/*.rs; do
     if [ -n "$dict" ]; then cp "fuzz/$dict" "$OUT/$target.dict"; fi
     rm -f "$OUT/${target}_seed_corpus.zip"
     if compgen -G "fuzz/corpus/$target/seed-*" > /dev/null; then
-        (cd "fuzz/corpus/$target" && zip -q -j "$OUT/${target}_seed_corpus.zip" seed-*)
+        (cd "fuzz/corpus/$target" && zip -q -j "$OUT/${target}_seed_corpus.zip" -- *)
     else
         echo "build.sh: $target has no committed seeds (fuzz/corpus/$target/seed-*)" >&2
     fi
