@@ -311,7 +311,7 @@ fn float_exact(v: &[Point; 3], target: &Target, bits: u32) -> Result<(), String>
 fn float_exact_edges(vertices: &[Point], edges: &[[Point; 2]], target: &Target, bits: u32) -> Result<(), String> {
     // The float model rounds each vertex to its type first and loops over the samples of
     // the rounded vertices' box, so the range is over both: a vertex just past a sample
-    // can round onto it (fuzz case 02).
+    // can round onto it (tests/fuzz_cases.rs, fuzz case 06).
     let rounded: Vec<Point> = vertices.iter().filter_map(|v| nearest_float(v, bits)).collect();
     let Some(range) = exact_sample_range(vertices.iter().chain(&rounded), target) else {
         return Ok(()); // neither covers anything: nothing computed per sample

@@ -186,9 +186,9 @@ fn sampling_reaches(level: u16, exact: &BigRational, edges: u32, k: u32, s: i64)
 /// Whether `level` lies between the sums of the floors and of the ceilings of each shape's
 /// own value times `s` (each clamped to `[0, top]`, the sum too): a renderer that
 /// quantizes every shape on its own and adds the levels (a glyph at a time).
-fn rounds_per_shape(
+fn rounds_per_shape<'o>(
     shapes: &[AreaShape],
-    own: &dyn Fn() -> Vec<BigRational>,
+    own: &dyn Fn() -> &'o [BigRational],
     v: &BigRational,
     level: u16,
     s: i64,
@@ -206,7 +206,7 @@ fn rounds_per_shape(
     let scale = BigRational::from_integer(s.into());
     let clamp = |b: num_bigint::BigInt| b.to_i64().unwrap_or(i64::MAX).clamp(0, i64::from(top));
     let (mut lo, mut hi) = (0i64, 0i64);
-    for v in &values {
+    for v in values {
         let scaled = v * &scale;
         lo += clamp(scaled.floor().to_integer());
         hi += clamp(scaled.ceil().to_integer());
@@ -228,11 +228,11 @@ fn rounds_per_shape(
 /// lies in `[0, 1]`), and each shape's `k x k` value lies within its edges' reach of its
 /// exact true-coverage value ([`sampling_reaches`]), so the blend of the supersampled
 /// values lies within `edges` samples' reach of the blend of the exact ones.
-fn conflated(
+fn conflated<'o>(
     c: &Classifier<'_>,
     (x, y): (u32, u32),
     level: u16,
-    (v, edges, own_exact): (&BigRational, u32, &dyn Fn() -> Vec<BigRational>),
+    (v, edges, own_exact): (&BigRational, u32, &dyn Fn() -> &'o [BigRational]),
     reach: &BigRational,
 ) -> bool {
     let (shapes, boxes, semantics, s, top) = (c.shapes, &c.boxes, c.semantics, c.s, c.top);
@@ -255,14 +255,18 @@ fn conflated(
                     return false;
                 }
             }
-            let values = match own {
+            let drawn;
+            let values: &[BigRational] = match own {
                 conflate::Own::Exact(_) => own_exact(),
-                conflate::Own::Supersampled(_) => conflate::own_values(shapes, boxes, x, y, own),
+                conflate::Own::Supersampled(_) => {
+                    drawn = conflate::own_values(shapes, boxes, x, y, own);
+                    &drawn
+                }
             };
             if values.len() < 2 {
                 return false;
             }
-            let blended = conflate::blend(&values);
+            let blended = conflate::blend(values);
             if !rounds(level, &blended, s, top) {
                 return false;
             }
@@ -300,7 +304,7 @@ impl Classifier<'_> {
         let own = || {
             own_cell
                 .get_or_init(|| conflate::own_values(shapes, &self.boxes, x, y, conflate::Own::Exact(self.semantics)))
-                .clone()
+                .as_slice()
         };
         if rounds(level, v, s, top) || rounds_per_shape(shapes, &own, v, level, s, top) {
             return GreyClass::Quantization;
@@ -370,7 +374,7 @@ impl Classifier<'_> {
             return GreyClass::Accumulation;
         }
         let own = own();
-        let blended = conflate::blend(&own);
+        let blended = conflate::blend(own);
         if own.len() >= 2 && &blended != v && near(&blended) {
             return GreyClass::Conflation;
         }

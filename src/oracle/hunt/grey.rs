@@ -94,12 +94,7 @@ pub fn judge_grey(
     let Ok(target) = scene.target() else {
         return GreyVerdict::Refused("invalid canvas or convention".to_string());
     };
-    let options = GreyOptions {
-        model: Model::Exact,
-        semantics,
-        quantization,
-        method,
-    };
+    let options = hunt_options(semantics, quantization, method);
     // Their output at fault (not grey, another size or depth) is their failure; the scene
     // refused (no shape with area) is the oracle's.
     match compare_grey_scene(&scene.primitives(), &target, &theirs, &options) {
@@ -110,6 +105,17 @@ pub fn judge_grey(
             message: e.to_string(),
         }),
         Err(e) => GreyVerdict::Refused(e.to_string()),
+    }
+}
+
+/// How a grey hunt compares: their levels against the shapes as written (`exact`, what
+/// anti-aliasing renderers draw) under the hunt's semantics, quantization and method.
+fn hunt_options(semantics: Semantics, quantization: Quantization, method: Option<GreyMethod>) -> GreyOptions {
+    GreyOptions {
+        model: Model::Exact,
+        semantics,
+        quantization,
+        method,
     }
 }
 
@@ -374,12 +380,7 @@ where
             let (Ok(theirs), Ok(target)) = (renderer.render(s), s.target()) else {
                 return false;
             };
-            let options = GreyOptions {
-                model: Model::Exact,
-                semantics: config.semantics,
-                quantization: config.quantization,
-                method: config.method,
-            };
+            let options = hunt_options(config.semantics, config.quantization, config.method);
             matches!(
                 compare_grey_scene_shows(&s.primitives(), &target, &theirs, &options, (class, over)),
                 Ok(true)
