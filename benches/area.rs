@@ -9,7 +9,7 @@
 //! (`adapters/scenes/dejavu.json`, made by the `glyph-scene` example: 14 polygons, curves
 //! flattened at dyadic parameters) on its 123x32 canvas.
 //!
-//! `cargo bench --bench area`
+//! `cargo bench --features bench --bench area`
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use num_rational::BigRational;

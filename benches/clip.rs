@@ -4,7 +4,7 @@
 //! Melem/s = million primitives per second). The exact forms run on the first 10k of the
 //! 100k primitives: their cost per primitive does not depend on how many there are.
 //!
-//! `cargo bench --bench clip`
+//! `cargo bench --features bench --bench clip`
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use glam::DVec2;

@@ -8,7 +8,7 @@
 //! everywhere. Each is filled 4- and 8-connected. `flood_fill` (region and recolouring)
 //! is measured on (a) too, on a fresh copy of the image each time (the copy is not timed).
 //!
-//! `cargo bench --bench flood -- --warm-up-time 1 --measurement-time 4`
+//! `cargo bench --features bench --bench flood -- --warm-up-time 1 --measurement-time 4`
 
 use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion, Throughput};
 use image::{Rgba, RgbaImage};

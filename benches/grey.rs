@@ -10,7 +10,7 @@
 //! canvases, each finding shrunk), timed once against each of the two renderers: the
 //! correct 4x4 supersampler, and the same 3/8 px to the right.
 //!
-//! `cargo bench --bench grey`
+//! `cargo bench --features bench --bench grey`
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use num_rational::BigRational;

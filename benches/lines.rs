@@ -14,7 +14,7 @@
 //! - `exact bresenham`: the exact reference `exact::resolve(&exact::ideal(..))` on the
 //!   first 1000 lines only (its cost per pixel does not depend on the workload size).
 //!
-//! `cargo bench --bench lines`
+//! `cargo bench --features bench --bench lines`
 
 use std::hint::black_box;
 

@@ -45,7 +45,7 @@ measure "half-16384-ids" "$half" --ids-out "$dir/half-ids.png"
 
 # Whole frames of small triangles (issue 31): N triangles of 3-decimal coordinates, each
 # within 4 px of a random point of a 1024 x 1024 canvas, rendered by `fixed` to
-# `--ids-out` (the figures of `cargo bench --bench pipeline`, with the peak memory).
+# `--ids-out` (the figures of `cargo bench --features bench --bench pipeline`, with the peak memory).
 # SMALL (default "100000 1000000") picks the sizes.
 for n in ${SMALL:-100000 1000000}; do
     small=$dir/small-$n.json
@@ -66,7 +66,7 @@ for n in ${SMALL:-100000 1000000}; do
 done
 
 # The whole frame (issue 31): a 16384 x 16384 mesh of 2 x 708^2 triangles (a grid of cells
-# cut along a diagonal, 1/1000 px vertices, the mesh of `cargo bench --bench pipeline`),
+# cut along a diagonal, 1/1000 px vertices, the mesh of `cargo bench --features bench --bench pipeline`),
 # `render --model fixed` writing only its summary, on 1 and 2 threads (the frame counted
 # band by band: a few bands of coverage held at a time, not the 1 GiB canvas). FRAME=0
 # skips it.

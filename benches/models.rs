@@ -9,7 +9,7 @@
 //! (b) and on a 512x512 version of (c) — per pixel their cost does not depend on the
 //! workload size, and the full workloads would take minutes per sample.
 //!
-//! `cargo bench --bench models`
+//! `cargo bench --features bench --bench models`
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use rasterproof::convention::{Preset, Target};

@@ -4,12 +4,12 @@
 //! pixel into a `width x height` buffer of `u8` (the "u8 target"), cleared before each
 //! repetition outside the timer; Mpix/s is covered pixels (the +1 writes) per second.
 //!
-//! `cargo bench --bench peers` (about a minute). To profile one contender alone:
-//! `PEERS_WORKLOADS=b PEERS_ONLY="crate fixed" PEERS_REPS=50 cargo bench --bench peers`
+//! `cargo bench --features bench --bench peers` (about a minute). To profile one contender alone:
+//! `PEERS_WORKLOADS=b PEERS_ONLY="crate fixed" PEERS_REPS=50 cargo bench --features bench --bench peers`
 //! (workload letters; the contenders whose name contains the text are timed, the
 //! reference is still drawn once, untimed, to check them). The bench profile inherits the crate's
 //! `[profile.release] overflow-checks = true`, and the header says whether checks are on;
-//! `CARGO_PROFILE_BENCH_OVERFLOW_CHECKS=false cargo bench --bench peers` measures without.
+//! `CARGO_PROFILE_BENCH_OVERFLOW_CHECKS=false cargo bench --features bench --bench peers` measures without.
 //!
 //! Workloads (the generators of `benches/models.rs` and `benches/lines.rs`, the 1/256 grid):
 //! (a) 10k medium triangles (spread 24 px) at 1024x1024; (b) 100k small triangles (spread

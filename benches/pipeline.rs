@@ -10,7 +10,7 @@
 //! Then the whole frame on threads: a 16384 x 16384 mesh of about 1M triangles, `fixed`,
 //! drawn on one and two threads (`PreparedScene::coverage_parallel`), and `render --jobs`.
 //!
-//! `cargo bench --bench pipeline` (N = 100k and 1M; `PIPELINE_SIZES=100000` for one,
+//! `cargo bench --features bench --bench pipeline` (N = 100k and 1M; `PIPELINE_SIZES=100000` for one,
 //! `PIPELINE_SIZES=` for none, `PIPELINE_FRAME=0` without the frame).
 //! Peak memory: `benches/memory.sh`.
 

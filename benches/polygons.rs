@@ -4,7 +4,7 @@
 //! exact oracle on the first 5. Mpix/s is criterion's element throughput (elements =
 //! covered pixels).
 //!
-//! `cargo bench --bench polygons`
+//! `cargo bench --features bench --bench polygons`
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use proptest::strategy::{Strategy, ValueTree};

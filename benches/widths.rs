@@ -4,7 +4,7 @@
 //! all six widths can run it: 10k medium triangles with integer vertices (scale 2) at
 //! 1024x1024.
 //!
-//! `cargo bench --bench widths`; the figures are in `rasterproof::num::plan::CHEAPEST_FIRST`.
+//! `cargo bench --features bench --bench widths`; the figures are in `rasterproof::num::plan::CHEAPEST_FIRST`.
 
 use std::time::Instant;
 

@@ -53,7 +53,7 @@ where
         Ok(u) => u,
         Err(e) => {
             let mut first = first_error.lock().unwrap_or_else(PoisonError::into_inner);
-            if !first.as_ref().is_some_and(|&(j, _)| j < k) {
+            if first.as_ref().is_none_or(|&(j, _)| j >= k) {
                 *first = Some((k, e));
             }
             U::default()

@@ -42,9 +42,9 @@ fn rows(text: &str) -> Vec<&str> {
         .collect()
 }
 
-/// Seed 7's 9 cases: the unsharded run on two threads, the same on one, and shards 1/3,
+/// Seed 7's 3 cases: the unsharded run on two threads, the same on one, and shards 1/3,
 /// 2/3, 3/3 merged (given in another order) give the same report, byte for byte, the same
-/// printed table and the same JUnit XML; each shard ran its 3 cases and says which; the
+/// printed table and the same JUnit XML; each shard ran its one case and says which; the
 /// JUnit file has one test case per row of the table.
 #[test]
 fn shards_merged_and_threads_give_the_unsharded_report() {
@@ -52,20 +52,20 @@ fn shards_merged_and_threads_give_the_unsharded_report() {
     let d = dir.path();
     let two = check(
         d,
-        "9",
+        "3",
         "7",
         &["--jobs", "2", "--report", "two.json", "--junit", "two.xml"],
     );
-    let one = check(d, "9", "7", &["--jobs", "1", "--report", "one.json"]);
+    let one = check(d, "3", "7", &["--jobs", "1", "--report", "one.json"]);
     assert_eq!(one, two);
     assert_eq!(read(d, "one.json"), read(d, "two.json"));
     for k in 1..=3 {
         let shard = format!("{k}/3");
-        let text = check(d, "9", "7", &["--shard", &shard, "--report", &format!("s{k}.json")]);
-        assert!(text.starts_with("rasterproof check: 3 cases, seed 7"), "{text}");
+        let text = check(d, "3", "7", &["--shard", &shard, "--report", &format!("s{k}.json")]);
+        assert!(text.starts_with("rasterproof check: 1 case, seed 7"), "{text}");
         assert!(
             text.contains(&format!(
-                "\nshard {shard}: the cases k of 0..9 with k mod 3 + 1 = {k} (3 cases)\n"
+                "\nshard {shard}: the cases k of 0..3 with k mod 3 + 1 = {k} (1 case)\n"
             )),
             "{text}"
         );
@@ -99,15 +99,15 @@ fn shards_merged_and_threads_give_the_unsharded_report() {
     let report = read(d, "two.json");
     for field in [
         "\"seed\": 7",
-        "\"cases\": 9",
-        "\"cases_run\": 9",
+        "\"cases\": 3",
+        "\"cases_run\": 3",
         "\"complete\": true",
         "\"shard\": {\"count\": 1",
     ] {
         assert!(report.contains(field), "{field}");
     }
     let s2 = read(d, "s2.json");
-    assert!(s2.contains("\"shard\": {\"count\": 3, \"indices\": [2]}") && s2.contains("\"cases_run\": 3"));
+    assert!(s2.contains("\"shard\": {\"count\": 3, \"indices\": [2]}") && s2.contains("\"cases_run\": 1"));
 }
 
 /// A time budget far below the run's length stops it cleanly: exit 0, the cases that ran

@@ -266,7 +266,7 @@ pub(super) fn level(v: i64, rule: FillRule) -> u8 {
 /// closed path's covers add up to zero across a row).
 pub(super) fn sweep(cells: &Cells, w: i64, mut emit: impl FnMut(i64, i64, i64)) {
     let mut rows = cells.iter().peekable();
-    while let Some((&(row, _), _)) = rows.peek() {
+    while let Some(&(&(row, _), _)) = rows.peek() {
         let mut cover = 0i64;
         let mut x = i64::MIN;
         while let Some(((_, column), &(c, a))) = rows.next_if(|((r, _), _)| *r == row) {

@@ -509,7 +509,7 @@ fn exits<T: Lane>(w: &Walk, s: &Seg<T>, sx: &T, sy: &T) -> bool {
                 if !n.non_negative() {
                     return false;
                 }
-                if n.less(m) && t1.as_ref().map_or(true, |(n1, p1)| before((&n, m), (n1, &s.m[*p1]))) {
+                if n.less(m) && t1.as_ref().is_none_or(|(n1, p1)| before((&n, m), (n1, &s.m[*p1]))) {
                     t1 = Some((n, p));
                 }
             }
@@ -522,7 +522,7 @@ fn exits<T: Lane>(w: &Walk, s: &Seg<T>, sx: &T, sy: &T) -> bool {
                 if m.less(&n) {
                     return false;
                 }
-                if t0.as_ref().map_or(true, |(n0, p0)| before((n0, &s.m[*p0]), (&n, m))) {
+                if t0.as_ref().is_none_or(|(n0, p0)| before((n0, &s.m[*p0]), (&n, m))) {
                     t0 = Some((n, p));
                 }
             }

@@ -93,7 +93,7 @@ impl Width {
 
     /// Whether every value of magnitude up to `bound` is exact in this width.
     pub fn holds(self, bound: &BigInt) -> bool {
-        self.limit().map_or(true, |m| bound.abs() <= m)
+        self.limit().is_none_or(|m| bound.abs() <= m)
     }
 }
 
@@ -104,7 +104,7 @@ impl fmt::Display for Width {
 }
 
 /// The order the planner tries the widths in: cheapest first, as measured by
-/// `cargo bench --bench widths` (the planned triangle traversal forced into each width on
+/// `cargo bench --features bench --bench widths` (the planned triangle traversal forced into each width on
 /// 10k medium triangles with integer vertices at 1024x1024, every value below 2^24 so
 /// that every width runs it; round-robin in one process, median of 21 repetitions; two
 /// runs on the 2-core development machine, 2026-12-01):

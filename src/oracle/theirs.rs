@@ -356,11 +356,11 @@ impl Theirs {
             (u32::try_from(x).expect("fits"), u32::try_from(y).expect("fits"))
         };
         match &self.data {
-            Data::Mask(m) => m.iter().enumerate().filter(|(_, &c)| c).map(|(k, _)| at(k)).collect(),
+            Data::Mask(m) => m.iter().enumerate().filter(|&(_, &c)| c).map(|(k, _)| at(k)).collect(),
             Data::Ids { values, .. } => values
                 .iter()
                 .enumerate()
-                .filter(|(_, &v)| v != 0)
+                .filter(|&(_, &v)| v != 0)
                 .map(|(k, _)| at(k))
                 .collect(),
             Data::Json(c) => c.iter().map(|(x, y, _)| (x, y)).collect(),
@@ -368,7 +368,7 @@ impl Theirs {
                 .levels
                 .iter()
                 .enumerate()
-                .filter(|(_, &v)| v != 0)
+                .filter(|&(_, &v)| v != 0)
                 .map(|(k, _)| at(k))
                 .collect(),
         }

@@ -11,7 +11,7 @@
 //!   `M`: every coordinate plus `(M, M)` exactly, so that its canvas-sized window is
 //!   `[M, M + side)^2`.
 //! - **Speed**: drawing the prepared workload at the origin into a
-//!   [`crate::coverage::CountBuffer`] (as `cargo bench --bench models` times it), every
+//!   [`crate::coverage::CountBuffer`] (as `cargo bench --features bench --bench models` times it), every
 //!   contender in turn, round-robin over the repetitions in one process (so machine noise
 //!   hits all alike); median, min and max of Mpix/s (covered pixels of the exact answer
 //!   per second; clipping: primitives per second), the ratio to the family's baseline

@@ -90,7 +90,7 @@ pub(crate) fn bound_of<N: SetupInt>(edges: &Edges<N>, range: &PixelRange) -> Opt
     let mut best: Option<(N, What)> = None;
     let mut consider = |v: N, what: What| -> Option<()> {
         let v = v.abs_exact()?;
-        if best.as_ref().map_or(true, |(b, _)| v > *b) {
+        if best.as_ref().is_none_or(|(b, _)| v > *b) {
             best = Some((v, what));
         }
         Some(())

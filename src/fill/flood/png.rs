@@ -289,7 +289,7 @@ mod tests {
         for (kind, len) in list {
             out.extend_from_slice(&len.to_be_bytes());
             out.extend_from_slice(*kind);
-            out.extend(std::iter::repeat(7u8).take(usize::try_from(*len).unwrap()));
+            out.extend(std::iter::repeat_n(7u8, usize::try_from(*len).unwrap()));
             out.extend_from_slice(&[0, 0, 0, 0]);
         }
         out

@@ -322,7 +322,7 @@ impl<'a> Classifier<'a> {
     fn covers(&mut self, id: usize, shape: &Shape, x: u32, y: u32, target: &Target, clipped: bool) -> bool {
         let p = sample_exact(x, y, target);
         let rule = target.convention.tie_rule;
-        let kept = !clipped || self.primitives.clip.as_ref().map_or(true, |w| in_closed_window(w, &p));
+        let kept = !clipped || self.primitives.clip.as_ref().is_none_or(|w| in_closed_window(w, &p));
         match shape {
             Shape::Triangle(t) => triangle_covers(t, &p, rule.into()),
             Shape::Polygon(poly) => polygon_inside(poly, &p, rule),
@@ -362,7 +362,7 @@ impl<'a> Classifier<'a> {
     /// Line conventions and fill rules.
     fn rule(&mut self, id: usize, x: u32, y: u32, theirs_covers: bool) -> Option<Reason> {
         let p = sample_exact(x, y, self.target);
-        let kept = self.primitives.clip.as_ref().map_or(true, |w| in_closed_window(w, &p));
+        let kept = self.primitives.clip.as_ref().is_none_or(|w| in_closed_window(w, &p));
         let shapes = self.shapes;
         match &shapes[id] {
             Shape::Polygon(poly) => {

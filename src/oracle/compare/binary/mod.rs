@@ -322,7 +322,7 @@ pub fn count_differences(ours: &Coverage, theirs: &Theirs, stop: Option<usize>) 
 
 /// The pixels either side covers, `(y, x)` in row order, each once: the two row-ordered
 /// lists merged (no sort: a fit counts the differences of a thousand images).
-fn covered_by_either<'a>(ours: &'a Coverage, theirs: &Theirs) -> impl Iterator<Item = (u32, u32)> + 'a {
+fn covered_by_either<'a>(ours: &'a Coverage, theirs: &Theirs) -> impl Iterator<Item = (u32, u32)> + 'a + use<'a> {
     let mut a = ours.iter().map(|(x, y, _)| (y, x)).peekable();
     let mut b = theirs.covered().into_iter().map(|(x, y)| (y, x)).peekable();
     std::iter::from_fn(move || match (a.peek().copied(), b.peek().copied()) {
