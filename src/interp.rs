@@ -5,7 +5,11 @@
 //!   the signed area (an algebraic identity the i64 arithmetic keeps inside the envelope);
 //! - float: the same ratios in f32 / f64 (the sum misses 1 by a few ulps);
 //! - Gouraud colour `c = λ0 c0 + λ1 c1 + λ2 c2`, and the plane equation of Luebke's slides
-//!   `c = A x + B y + C` from a 3x3 solve, equal to it in exact arithmetic.
+//!   `c = A x + B y + C` from a 3x3 solve, equal to it in exact arithmetic;
+//! - [`values`]: a scene's declared varyings, exactly, at any point of a triangle
+//!   (`smooth`, `noperspective`, `flat`; window-space or clip-space vertices).
+
+pub mod values;
 
 use glam::{DVec2, Vec2};
 use num_bigint::BigInt;

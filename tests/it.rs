@@ -114,6 +114,8 @@ mod stay_alive;
 mod suite;
 #[path = "trade.rs"]
 mod trade;
+#[path = "values.rs"]
+mod values;
 
 /// Every `tests/*.rs` file is a module of this binary: with `autotests = false` in
 /// Cargo.toml, a file left out of the list above would never compile or run.

@@ -12,7 +12,9 @@ use rasterproof::coverage::picture::{legend_path, upscale};
 use rasterproof::coverage::Coverage;
 use rasterproof::coverage::{Scale, ASCII_GRID_MAX_SIDE};
 use rasterproof::model::plan;
-use rasterproof::model::{prepare_parallel, render_area_rows, Model, PreparedScene};
+use rasterproof::model::{
+    exact_pixel_values, exact_values, prepare_parallel, render_area_rows, values_json, Model, PreparedScene,
+};
 use rasterproof::num::exact::{counted, exact_text, terminating_decimal};
 use std::time::{Duration, Instant};
 
@@ -118,7 +120,7 @@ const FORMATS: [(OutputFormat, &str); 2] = [
     ),
     (
         OutputFormat::Json,
-        r#"`{"width":W,"height":H,"pixels":[[x,y,[ids...]],...]}`"#,
+        r#"`{"width":W,"height":H,"pixels":[[x,y,[ids...]],...]}`; a scene that declares varyings adds `"values":{"varyings":[...],"provoking_vertex","samples":[[x,y,sample,id,[value per varying]],...]}`, each value its channels as exact strings, or why there is none (`not-carried`, `horizon`), computed exactly at the scene's vertices for the samples the model covers"#,
     ),
 ];
 
@@ -200,6 +202,11 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         summary.push_str(&format!("; wrote {} (scale {k})", wrote.join(", ")));
     }
     match o.format {
+        OutputFormat::Json if !scene.varyings.list.is_empty() => {
+            let values = exact_pixel_values(&coverage, &scene.value_triangles(), &scene.varyings, &target);
+            crate::cli::print_stdout(&values_json(coverage.to_json(), &scene.varyings, &values))?;
+            eprintln!("{summary}");
+        }
         OutputFormat::Json => {
             crate::cli::write_stdout(|out| {
                 coverage.write_json(out)?;
@@ -291,7 +298,13 @@ fn run_samples(
     }
     match o.format {
         OutputFormat::Json => {
-            crate::cli::print_stdout(&coverage.to_json())?;
+            let json = if scene.varyings.list.is_empty() {
+                coverage.to_json()
+            } else {
+                let values = exact_values(&coverage, pattern, &scene.value_triangles(), &scene.varyings, target);
+                values_json(coverage.to_json(), &scene.varyings, &values)
+            };
+            crate::cli::print_stdout(&json)?;
             eprintln!("{summary}");
         }
         OutputFormat::Text => {

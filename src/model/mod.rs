@@ -33,6 +33,7 @@ mod polygons;
 mod prepared;
 mod samples;
 mod triangles;
+mod values;
 
 use std::fmt;
 
@@ -47,6 +48,7 @@ pub use conservative::{render_conservative, ConservativeCoverage, ConservativeEr
 pub use error::ModelError;
 pub use prepared::{prepare, prepare_parallel, render, render_triangles, PreparedScene, Primitives, Shape};
 pub use samples::{render_samples, SampleFrames};
+pub use values::{exact_pixel_values, exact_values, values_json, SampleValues};
 
 /// A model: one arithmetic for every primitive of a scene (the CLI's `--model`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

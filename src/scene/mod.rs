@@ -15,6 +15,7 @@ use crate::clip::Window;
 use crate::convention::{Convention, PixelCentre, Preset, Rounding, Target, TieRule};
 use crate::geom::Rgb;
 use crate::geom::{CompactTriangle, Point, Polygon, Triangle};
+use crate::interp::values::{ValueTriangle, Varyings};
 use crate::line::{Line, LineRule};
 use crate::model::Primitives;
 use crate::num::compact::Compact;
@@ -51,14 +52,28 @@ impl Overrides {
     }
 }
 
-/// A triangle of a scene, with optional vertex colours (the default: every vertex at the
-/// origin, no colours).
+/// A triangle of a scene, with optional vertex colours and values (the default: every
+/// vertex at the origin, no colours, no values).
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct SceneTriangle {
     /// The exact triangle, in compact form ([`CompactTriangle::to_triangle`] reads it).
     pub triangle: CompactTriangle,
     /// `colors`: one RGB per vertex.
     pub colours: Option<[Rgb; 3]>,
+    /// `varyings` and `w`: the values of the scene's varyings at each vertex (present
+    /// exactly when the scene declares varyings).
+    pub values: Option<Box<VertexValues>>,
+}
+
+/// A window-space triangle's per-vertex values: the scene's varyings, and optionally each
+/// vertex's clip-space `w` for perspective correction.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct VertexValues {
+    /// `w`: each vertex's clip-space w, `> 0`; `None` is 1 at every vertex (then `smooth`
+    /// and `noperspective` agree).
+    pub w: Option<[BigRational; 3]>,
+    /// `varyings`: per vertex, every declared varying's channels in declaration order.
+    pub values: [Vec<BigRational>; 3],
 }
 
 /// A parsed, validated scene.
@@ -88,6 +103,10 @@ pub struct Scene {
     /// `samples`: the pixel's sample pattern (multisampling); `None` is the convention's
     /// one sample per pixel.
     pub samples: Option<SamplePattern>,
+    /// `varyings` and `provoking_vertex`: the attributes every triangle and clip-space
+    /// triangle carries per vertex (clip-space ones in [`ClipVertex::attrs`]); none
+    /// declared by default.
+    pub varyings: Varyings,
 }
 
 impl Scene {
@@ -103,6 +122,7 @@ impl Scene {
                 .map(|triangle| SceneTriangle {
                     triangle: triangle.into(),
                     colours: None,
+                    values: None,
                 })
                 .collect(),
             lines: Vec::new(),
@@ -111,7 +131,35 @@ impl Scene {
             viewport: None,
             clip: None,
             samples: None,
+            varyings: Varyings::default(),
         }
+    }
+
+    /// Each primitive's interpolation setup ([`crate::interp::values`]), by id (triangles,
+    /// lines, polygons, clip-space triangles): a triangle's window vertices with its `w` (1
+    /// where it gives none) and values; a clip-space triangle's homogeneous window vertices
+    /// under [`Scene::viewport`] with its values; `None` for a line or a polygon, and for
+    /// every primitive when the scene declares no varyings.
+    pub fn value_triangles(&self) -> Vec<Option<ValueTriangle>> {
+        let others = self.lines.len() + self.polygons.len();
+        let mut out = Vec::with_capacity(self.triangles.len() + others + self.clip_space_triangles.len());
+        let one = BigRational::from_integer(1.into());
+        for t in &self.triangles {
+            out.push(t.values.as_ref().map(|v| {
+                let tri = t.triangle.to_triangle();
+                let w = v.w.as_ref().map_or([&one, &one, &one], |w| [&w[0], &w[1], &w[2]]);
+                ValueTriangle::window([&tri.v[0], &tri.v[1], &tri.v[2]], w, v.values.clone())
+            }));
+        }
+        out.resize(out.len() + others, None);
+        let viewport = self.viewport();
+        for t in &self.clip_space_triangles {
+            out.push((!self.varyings.list.is_empty()).then(|| ValueTriangle {
+                h: [0, 1, 2].map(|i| viewport.homogeneous(&t[i].pos)),
+                values: [0, 1, 2].map(|i| t[i].attrs.clone()),
+            }));
+        }
+        out
     }
 
     /// The viewport: the file's, or the whole canvas with the preset's conventions (NDC y
@@ -310,10 +358,32 @@ impl Scene {
     /// parsing it again gives the same scene.
     pub fn to_json(&self) -> String {
         let mut s = self.header_json();
+        let varyings = &self.varyings;
+        if !varyings.list.is_empty() {
+            let list: Vec<String> = varyings
+                .list
+                .iter()
+                .map(|v| {
+                    format!(
+                        "{{\"name\": {}, \"channels\": {}, \"interpolation\": \"{}\", \"sampling\": \"{}\"}}",
+                        serde_json::Value::from(v.name.as_str()),
+                        v.channels,
+                        v.interpolation.name(),
+                        v.sampling.name()
+                    )
+                })
+                .collect();
+            let _ = write!(
+                s,
+                "  \"varyings\": [{}],\n  \"provoking_vertex\": \"{}\",\n",
+                list.join(", "),
+                varyings.provoking.name()
+            );
+        }
         let _ = write!(
             s,
             "  \"triangles\": {}",
-            json_lines(self.triangles.iter().map(triangle_json))
+            json_lines(self.triangles.iter().map(|t| triangle_json(t, varyings)))
         );
         if !self.lines.is_empty() {
             let _ = write!(s, ",\n  \"lines\": {}", json_lines(self.lines.iter().map(line_json)));
@@ -326,7 +396,7 @@ impl Scene {
             );
         }
         if !self.clip_space_triangles.is_empty() {
-            let items = self.clip_space_triangles.iter().map(clip_space_json);
+            let items = self.clip_space_triangles.iter().map(|t| clip_space_json(t, varyings));
             let _ = write!(s, ",\n  \"clip_space_triangles\": {}", json_lines(items));
         }
         if let Some(vp) = &self.viewport {
@@ -387,16 +457,48 @@ fn json_lines(items: impl Iterator<Item = String>) -> String {
     s
 }
 
-/// A triangle of a scene file: its vertices, and its colours where it has them.
-fn triangle_json(t: &SceneTriangle) -> String {
+/// A triangle of a scene file: its vertices, and its colours and values where it has them.
+fn triangle_json(t: &SceneTriangle, varyings: &Varyings) -> String {
     let v: Vec<String> = t.triangle.to_triangle().v.iter().map(pt).collect();
     let mut s = format!("{{\"v\": [{}]", v.join(", "));
     if let Some(c) = t.colours {
         let c: Vec<String> = c.iter().map(|c| format!("[{}, {}, {}]", c[0], c[1], c[2])).collect();
         let _ = write!(s, ", \"colors\": [{}]", c.join(", "));
     }
+    if let Some(values) = &t.values {
+        if let Some(w) = &values.w {
+            let w: Vec<String> = w.iter().map(|w| format!("\"{}\"", exact_text(w))).collect();
+            let _ = write!(s, ", \"w\": [{}]", w.join(", "));
+        }
+        let _ = write!(s, ", \"varyings\": {}", values_json(&values.values, varyings));
+    }
     s.push('}');
     s
+}
+
+/// A primitive's `varyings` object: each varying's channels at each vertex.
+fn values_json(values: &[Vec<BigRational>; 3], varyings: &Varyings) -> String {
+    let fields: Vec<String> = varyings
+        .ranges()
+        .map(|(v, range)| {
+            let vertices: Vec<String> = values
+                .iter()
+                .map(|vertex| {
+                    let channels: Vec<String> = vertex[range.clone()]
+                        .iter()
+                        .map(|c| format!("\"{}\"", exact_text(c)))
+                        .collect();
+                    format!("[{}]", channels.join(", "))
+                })
+                .collect();
+            format!(
+                "{}: [{}]",
+                serde_json::Value::from(v.name.as_str()),
+                vertices.join(", ")
+            )
+        })
+        .collect();
+    format!("{{{}}}", fields.join(", "))
 }
 
 /// A line of a scene file: its ends and its rule.
@@ -424,8 +526,9 @@ fn polygon_json(p: &Polygon) -> String {
     s
 }
 
-/// A clip-space triangle of a scene file: each vertex's four exact coordinates.
-fn clip_space_json(t: &[ClipVertex; 3]) -> String {
+/// A clip-space triangle of a scene file: each vertex's four exact coordinates, and its
+/// values where the scene declares varyings.
+fn clip_space_json(t: &[ClipVertex; 3], varyings: &Varyings) -> String {
     let v: Vec<String> = t
         .iter()
         .map(|v| {
@@ -439,7 +542,15 @@ fn clip_space_json(t: &[ClipVertex; 3]) -> String {
             )
         })
         .collect();
-    format!("{{\"v\": [{}]}}", v.join(", "))
+    if varyings.list.is_empty() {
+        return format!("{{\"v\": [{}]}}", v.join(", "));
+    }
+    let values = [0, 1, 2].map(|i| t[i].attrs.clone());
+    format!(
+        "{{\"v\": [{}], \"varyings\": {}}}",
+        v.join(", "),
+        values_json(&values, varyings)
+    )
 }
 
 /// A clip window of a scene file: a rectangle's four sides or a convex window's points.

@@ -234,6 +234,7 @@ fn structured(u: &mut Unstructured<'_>) -> Result<Scene> {
         .map(|t| SceneTriangle {
             triangle: Triangle::new(t[0].point(w, h), t[1].point(w, h), t[2].point(w, h)).into(),
             colours: None,
+            values: None,
         })
         .collect();
     scene.lines = s

@@ -84,6 +84,31 @@ impl Viewport {
         (Point::new(wx, wy), depth)
     }
 
+    /// The 2D homogeneous window position `[x_win w, y_win w, w]` of the clip-space
+    /// position `[x, y, z, w]`: [`Viewport::map_ndc`]'s window map multiplied through by
+    /// `w`, defined for every `w` (a vertex behind the eye too). What
+    /// [`crate::interp::values::ValueTriangle`] interpolates with.
+    ///
+    /// ```
+    /// use rasterproof::clip::homogeneous::{DepthRange, NdcY, Viewport};
+    /// let q = |n: i64| num_rational::BigRational::from_integer(n.into());
+    /// let vp = Viewport::new(q(10), q(20), q(8), q(4), NdcY::Up, DepthRange::ZeroToOne).unwrap();
+    /// // Clip (2, 2, 0, 2) is NDC (1, 1): window (18, 20), times w = 2.
+    /// assert_eq!(vp.homogeneous(&[q(2), q(2), q(0), q(2)]), [q(36), q(40), q(2)]);
+    /// // Behind the eye, w = -1: NDC (0, 0) is the window centre (14, 22), times -1.
+    /// assert_eq!(vp.homogeneous(&[q(0), q(0), q(0), q(-1)]), [q(-14), q(-22), q(-1)]);
+    /// ```
+    pub fn homogeneous(&self, pos: &[BigRational; 4]) -> [BigRational; 3] {
+        let [x, y, _, w] = pos;
+        let two = rational(2);
+        let xw = &self.x * w + (x + w) * &self.width / &two;
+        let yw = match self.y_axis {
+            NdcY::Down => &self.y * w + (y + w) * &self.height / &two,
+            NdcY::Up => &self.y * w + (w - y) * &self.height / &two,
+        };
+        [xw, yw, w.clone()]
+    }
+
     /// The window rectangle's four half-planes in the order of the first four
     /// [`clip_planes`] (NDC `x >= -1`, `x <= 1`, `y >= -1`, `y <= 1`).
     fn half_planes(&self) -> [HalfPlane; 4] {

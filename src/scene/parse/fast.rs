@@ -371,6 +371,7 @@ impl<'de> Visitor<'de> for TriangleSeed {
         Ok(SceneTriangle {
             triangle: CompactTriangle { v },
             colours,
+            values: None,
         })
     }
 }

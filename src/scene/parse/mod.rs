@@ -40,6 +40,7 @@ mod json;
 mod keys;
 mod reader;
 mod shapes;
+mod values;
 
 use super::{Overrides, Scene, SceneError, SceneTriangle};
 use crate::convention::{PixelCentre, Preset, Rounding, TieRule, MAX_CANVAS};
@@ -229,6 +230,8 @@ impl Reader<'_> {
                 "viewport",
                 "clip",
                 "samples",
+                "varyings",
+                "provoking_vertex",
             ],
         )?;
         let width = p.canvas_side(root, "width")?;
@@ -246,11 +249,26 @@ impl Reader<'_> {
             }
         };
         let overrides = p.overrides(root)?;
+        let varyings = p.varyings(root)?;
         let triangles = match (triangles, root.get("triangles")) {
             (Some(read), _) => read,
             (None, None) => Vec::new(),
-            (None, Some(v)) => p.triangles(v)?,
+            (None, Some(v)) => p.triangles(v, &varyings)?,
         };
+        if let (false, Some(k)) = (
+            varyings.list.is_empty(),
+            triangles.iter().position(|t| t.values.is_none()),
+        ) {
+            // The fast path reads triangles without values; the slow one asks for them.
+            let names: Vec<&str> = varyings.list.iter().map(|v| v.name.as_str()).collect();
+            return Err(p.err(
+                &format!("triangles[{k}].varyings"),
+                format!(
+                    "missing: the scene declares varyings ({}), so every triangle gives their values per vertex",
+                    names.join(", ")
+                ),
+            ));
+        }
         let lines = match root.get("lines") {
             None => Vec::new(),
             Some(v) => p.lines(v)?,
@@ -261,7 +279,7 @@ impl Reader<'_> {
         };
         let clip_space_triangles = match root.get("clip_space_triangles") {
             None => Vec::new(),
-            Some(v) => p.clip_space_triangles(v)?,
+            Some(v) => p.clip_space_triangles(v, &varyings)?,
         };
         let viewport = match root.get("viewport") {
             None => None,
@@ -290,6 +308,7 @@ impl Reader<'_> {
             viewport,
             clip,
             samples,
+            varyings,
         })
     }
 }

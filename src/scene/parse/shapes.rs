@@ -13,23 +13,24 @@ use crate::convention::Preset;
 use crate::fill::polygon::{locate_exact, Location};
 use crate::geom::Rgb;
 use crate::geom::{FillRule, Point, Polygon, Triangle};
+use crate::interp::values::Varyings;
 use crate::line::{BresenhamTie, Line, LineRule, MAX_BRESENHAM_COORD};
 use crate::pattern::{PatternError, SamplePattern, MAX_SAMPLES, STANDARD_COUNTS};
-use crate::scene::{SceneError, SceneTriangle};
+use crate::scene::{SceneError, SceneTriangle, VertexValues};
 
 impl Reader<'_> {
-    pub(super) fn triangles(&self, v: &Value) -> Result<Vec<SceneTriangle>, SceneError> {
-        self.each(v, "triangles", MAX_TRIANGLES, |t, at| self.triangle(t, at))
+    pub(super) fn triangles(&self, v: &Value, varyings: &Varyings) -> Result<Vec<SceneTriangle>, SceneError> {
+        self.each(v, "triangles", MAX_TRIANGLES, |t, at| self.triangle(t, at, varyings))
     }
 
-    fn triangle(&self, v: &Value, at: &str) -> Result<SceneTriangle, SceneError> {
+    fn triangle(&self, v: &Value, at: &str, varyings: &Varyings) -> Result<SceneTriangle, SceneError> {
         let Value::Object(obj) = v else {
             return Err(self.err(
                 at,
                 format!("expected an object with \"v\", found {} {}", kind(v), show(v)),
             ));
         };
-        self.known_fields(obj, at, &["v", "colors"])?;
+        self.known_fields(obj, at, &["v", "colors", "varyings", "w"])?;
         let [a, b, c] = self
             .triangle_vertices(obj, at, "a vertex is [x, y]")?
             .map(|[x, y]| Point::new(x, y));
@@ -37,9 +38,14 @@ impl Reader<'_> {
             None => None,
             Some(cv) => Some(self.colours(cv, &format!("{at}.colors"))?),
         };
+        let w = self.window_w(obj, at, varyings)?;
+        let values = self
+            .vertex_values(obj, at, varyings)?
+            .map(|values| Box::new(VertexValues { w, values }));
         Ok(SceneTriangle {
             triangle: Triangle::new(a, b, c).into(),
             colours,
+            values,
         })
     }
 
@@ -265,7 +271,11 @@ impl Reader<'_> {
         })
     }
 
-    pub(super) fn clip_space_triangles(&self, v: &Value) -> Result<Vec<[ClipVertex; 3]>, SceneError> {
+    pub(super) fn clip_space_triangles(
+        &self,
+        v: &Value,
+        varyings: &Varyings,
+    ) -> Result<Vec<[ClipVertex; 3]>, SceneError> {
         self.each(v, "clip_space_triangles", MAX_TRIANGLES, |t, at| {
             let Value::Object(obj) = t else {
                 return Err(self.err(
@@ -273,9 +283,11 @@ impl Reader<'_> {
                     format!("expected an object with \"v\", found {} {}", kind(t), show(t)),
                 ));
             };
-            self.known_fields(obj, at, &["v"])?;
+            self.known_fields(obj, at, &["v", "varyings"])?;
             let v = self.triangle_vertices(obj, at, "a clip-space vertex is [x, y, z, w]")?;
-            Ok(v.map(|pos| ClipVertex { pos, attrs: Vec::new() }))
+            let [a0, a1, a2] = self.vertex_values(obj, at, varyings)?.unwrap_or_default();
+            let [p0, p1, p2] = v;
+            Ok([(p0, a0), (p1, a1), (p2, a2)].map(|(pos, attrs)| ClipVertex { pos, attrs }))
         })
     }
 

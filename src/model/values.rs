@@ -1,0 +1,219 @@
+//! Exact values at covered samples: for each covered sample, which primitive it shows and
+//! what each of the scene's varyings holds there ([`exact_values`]).
+//!
+//! Coverage decides which samples hold a value (any model's, per sample of a pattern);
+//! the value is the readable definition of [`crate::interp::values`], evaluated at the
+//! scene's exact vertices. A sample covered by several primitives shows the last drawn
+//! (the highest id), as a renderer without a depth test writes it. Where a varying is
+//! evaluated:
+//!
+//! - `centre`: the pixel's sample point under the convention (its centre, or its corner
+//!   with `pixel_centre: 0`), covered or not: the plane is extrapolated there;
+//! - `centroid`: Direct3D's rule, exact: the centre when the primitive covers every
+//!   sample of the pixel, otherwise its first covered sample in index order (with one
+//!   sample per pixel, the sample). Vulkan allows any point of the pixel inside the
+//!   primitive, a range this module does not give yet;
+//! - `sample`: each covered sample's own position.
+//!
+//! `centre` and `centroid` give every covered sample of a pixel the same value (the
+//! fragment's); `sample` gives each its own.
+
+use std::fmt::Write as _;
+
+use num_rational::BigRational;
+
+use crate::convention::Target;
+use crate::coverage::samples::SampleCoverage;
+use crate::coverage::Coverage;
+use crate::geom::Point;
+use crate::interp::values::{NoValue, Sampling, ValueTriangle, Varyings};
+use crate::num::exact::exact_text;
+use crate::pattern::SamplePattern;
+use crate::raster::sample_exact;
+
+/// One covered sample's values.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SampleValues {
+    /// The pixel's column.
+    pub x: u32,
+    /// The pixel's row.
+    pub y: u32,
+    /// The sample's index in the pattern (0 with one sample per pixel).
+    pub sample: usize,
+    /// The primitive shown: the highest id of the sample's owners.
+    pub id: u32,
+    /// Per varying, in declaration order: its channels, or why there is no value.
+    pub values: Vec<Result<Vec<BigRational>, NoValue>>,
+}
+
+/// The exact values of every covered sample of `coverage` (one [`crate::coverage::Coverage`]
+/// per sample of `pattern`), sorted by row, column and sample. `setups[id]` is primitive
+/// `id`'s interpolation setup, `None` for a primitive that carries no values (a line or a
+/// polygon): its samples get [`NoValue::NotCarried`].
+///
+/// ```
+/// use rasterproof::convention::{Convention, Target};
+/// use rasterproof::coverage::samples::SampleCoverage;
+/// use rasterproof::geom::{Point, Triangle};
+/// use rasterproof::interp::values::{Interpolation, Sampling, ValueTriangle, Varying, Varyings};
+/// use rasterproof::model::{exact_values, render_triangles, Model};
+/// use rasterproof::pattern::SamplePattern;
+/// let q = |n: i64, d: i64| num_rational::BigRational::new(n.into(), d.into());
+/// let (a, b, c) = (Point::from_ints(0, 0), Point::from_ints(4, 0), Point::from_ints(0, 4));
+/// let target = Target::new(4, 4, Convention::default()).unwrap();
+/// let coverage = render_triangles(&[Triangle::new(a.clone(), b.clone(), c.clone())], &target, Model::Exact).unwrap();
+/// // One channel, 0 at (0, 0), 4 at (4, 0), 0 at (0, 4): the value is x.
+/// let one = q(1, 1);
+/// let setup = ValueTriangle::window([&a, &b, &c], [&one, &one, &one], [vec![q(0, 1)], vec![q(4, 1)], vec![q(0, 1)]]);
+/// let varyings = Varyings {
+///     list: vec![Varying { name: "x".into(), channels: 1, interpolation: Interpolation::Smooth, sampling: Sampling::Centre }],
+///     ..Varyings::default()
+/// };
+/// let pattern = SamplePattern::single(&target.convention);
+/// let all = exact_values(&SampleCoverage::from_samples(vec![coverage]), &pattern, &[Some(setup)], &varyings, &target);
+/// // Pixel (1, 1)'s centre is (3/2, 3/2), inside (x + y = 3 < 4): the value is 3/2.
+/// let v = all.iter().find(|v| (v.x, v.y) == (1, 1)).unwrap();
+/// assert_eq!(v.values, [Ok(vec![q(3, 2)])]);
+/// ```
+pub fn exact_values(
+    coverage: &SampleCoverage,
+    pattern: &SamplePattern,
+    setups: &[Option<ValueTriangle>],
+    varyings: &Varyings,
+    target: &Target,
+) -> Vec<SampleValues> {
+    let count = coverage.sample_count();
+    let mut out = Vec::new();
+    for (x, y) in coverage.covered_pixels() {
+        let centre = sample_exact(x, y, target);
+        for s in 0..count {
+            let Some(&id) = coverage.owners(x, y, s).last() else {
+                continue;
+            };
+            let setup = setups.get(id as usize).and_then(Option::as_ref);
+            let values = varyings
+                .ranges()
+                .map(|(varying, channels)| {
+                    let setup = setup.ok_or(NoValue::NotCarried)?;
+                    let at = match varying.sampling {
+                        Sampling::Centre => centre.clone(),
+                        Sampling::Sample => pattern.sample(x, y, s),
+                        Sampling::Centroid => centroid(coverage, pattern, x, y, id, &centre),
+                    };
+                    setup.value(varying.interpolation, varyings.provoking, channels, &at)
+                })
+                .collect();
+            out.push(SampleValues {
+                x,
+                y,
+                sample: s,
+                id,
+                values,
+            });
+        }
+    }
+    out
+}
+
+/// [`exact_values`] with one sample per pixel, the convention's: every covered pixel of
+/// `coverage` with its values.
+pub fn exact_pixel_values(
+    coverage: &Coverage,
+    setups: &[Option<ValueTriangle>],
+    varyings: &Varyings,
+    target: &Target,
+) -> Vec<SampleValues> {
+    let one = SampleCoverage::from_samples(vec![coverage.clone()]);
+    exact_values(
+        &one,
+        &SamplePattern::single(&target.convention),
+        setups,
+        varyings,
+        target,
+    )
+}
+
+/// Direct3D's centroid of primitive `id` in pixel `(x, y)`: the centre when it covers
+/// every sample, otherwise its first covered sample.
+fn centroid(coverage: &SampleCoverage, pattern: &SamplePattern, x: u32, y: u32, id: u32, centre: &Point) -> Point {
+    let count = coverage.sample_count();
+    let mask = coverage.mask_of(x, y, id);
+    let all = if count >= 64 { u64::MAX } else { (1u64 << count) - 1 };
+    if mask & all == all {
+        return centre.clone();
+    }
+    let first = mask.trailing_zeros() as usize;
+    pattern.sample(x, y, first)
+}
+
+/// `coverage_json` (a `render --format json` object) with the field `"values"` added:
+/// `{"varyings":[{"name","channels","interpolation","sampling"}...],"provoking_vertex",
+/// "samples":[[x,y,sample,id,[value per varying]]...]}`, where a value is its channels as
+/// exact strings (`["1/3","2"]`) or, when there is none, the reason: `"not-carried"` (a
+/// line or polygon), `"horizon"` (a smooth value where 1/w = 0) or `"degenerate"`.
+///
+/// ```
+/// use rasterproof::interp::values::Varyings;
+/// use rasterproof::model::values_json;
+/// assert_eq!(
+///     values_json(r#"{"width":1,"height":1,"pixels":[]}"#.to_string(), &Varyings::default(), &[]),
+///     r#"{"width":1,"height":1,"pixels":[],"values":{"varyings":[],"provoking_vertex":"first","samples":[]}}"#
+/// );
+/// ```
+///
+/// # Panics
+/// When `coverage_json` does not end with `}` (it is not a JSON object).
+pub fn values_json(mut coverage_json: String, varyings: &Varyings, values: &[SampleValues]) -> String {
+    let end = coverage_json.trim_end().len();
+    coverage_json.truncate(end);
+    assert_eq!(coverage_json.pop(), Some('}'), "a JSON object");
+    let s = &mut coverage_json;
+    s.push_str(",\"values\":{\"varyings\":[");
+    for (k, v) in varyings.list.iter().enumerate() {
+        let _ = write!(
+            s,
+            "{}{{\"name\":{},\"channels\":{},\"interpolation\":\"{}\",\"sampling\":\"{}\"}}",
+            if k == 0 { "" } else { "," },
+            serde_json::Value::from(v.name.as_str()),
+            v.channels,
+            v.interpolation.name(),
+            v.sampling.name()
+        );
+    }
+    let _ = write!(
+        s,
+        "],\"provoking_vertex\":\"{}\",\"samples\":[",
+        varyings.provoking.name()
+    );
+    for (k, v) in values.iter().enumerate() {
+        let _ = write!(
+            s,
+            "{}[{},{},{},{},[",
+            if k == 0 { "" } else { "," },
+            v.x,
+            v.y,
+            v.sample,
+            v.id
+        );
+        for (j, value) in v.values.iter().enumerate() {
+            if j > 0 {
+                s.push(',');
+            }
+            match value {
+                Ok(channels) => {
+                    s.push('[');
+                    for (c, channel) in channels.iter().enumerate() {
+                        let _ = write!(s, "{}\"{}\"", if c == 0 { "" } else { "," }, exact_text(channel));
+                    }
+                    s.push(']');
+                }
+                Err(e) => {
+                    let _ = write!(s, "\"{}\"", e.name());
+                }
+            }
+        }
+        s.push_str("]]");
+    }
+    s.push_str("]}}");
+    coverage_json
+}
