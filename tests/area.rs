@@ -408,7 +408,7 @@ fn render_area_cli_by_hand() {
         ),
         (
             &["--coverage", "area", "-o", "x.png"][..],
-            "-o, --colors-out, --ids-out and --scale are for --coverage sample",
+            "-o, --colors-out, --values-out, --ids-out and --scale are for --coverage sample",
         ),
         (&["--semantics", "accumulated"][..], "need --coverage area"),
         (&["--coverage", "areas"][..], "--coverage: unknown kind \"areas\""),

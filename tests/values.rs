@@ -564,3 +564,77 @@ fn centre_centroid_and_sample_by_hand() {
         ]
     );
 }
+
+/// `--values-out`: one varying as a UNORM PNG, by hand. The triangle (0,0) (4,0) (0,4)
+/// covers pixels 0 to 2 of a 4x1 canvas (pixel 3's centre (7/2, 1/2) is on its
+/// hypotenuse, a right edge). `s` is 0, 1, 0 at the vertices: x / 4, so 1/8, 3/8, 5/8 at
+/// the centres; times 255: 31.875, 95.625, 159.375, levels 32, 96, 159; times 65535:
+/// 8191.875, 24575.625, 40959.375, levels 8192, 24576, 40959. `c` is flat (1/2, 1, 0):
+/// 127.5 is a tie, to the even 128.
+#[test]
+fn values_out_writes_unorm_levels_by_hand() {
+    let dir = crate::tempdir::Dir::new("values-out");
+    let scene = dir.path().join("s.json");
+    std::fs::write(
+        &scene,
+        r#"{"width": 4, "height": 1,
+            "varyings": [{"name": "s", "channels": 1}, {"name": "c", "channels": 3, "interpolation": "flat"},
+                         {"name": "wide", "channels": 5, "interpolation": "flat"}],
+            "triangles": [{"v": [[0, 0], [4, 0], [0, 4]],
+                "varyings": {"s": [[0], [1], [0]], "c": [["1/2", 1, 0], [0, 0, 0], [0, 0, 0]],
+                             "wide": [[0, 0, 0, 0, 0], [0, 0, 0, 0, 0], [0, 0, 0, 0, 0]]}}]}"#,
+    )
+    .unwrap();
+    let render = |args: &[&str]| {
+        Command::cargo_bin("rasterproof")
+            .unwrap()
+            .args(["render", scene.to_str().unwrap(), "--model", "exact"])
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    let png = |name: &str| dir.path().join(name).to_str().unwrap().to_string();
+    for (args, file) in [
+        (vec!["--values-out", &png("s8.png")], "s8.png"),
+        (vec!["--values-out", &png("s16.png"), "--unorm", "16"], "s16.png"),
+        (vec!["--values-out", &png("c.png"), "--varying", "c"], "c.png"),
+    ] {
+        let out = render(&args);
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(dir.path().join(file).exists());
+    }
+    let s8 = image::open(dir.path().join("s8.png")).unwrap();
+    assert_eq!(s8.as_luma8().unwrap().as_raw(), &[32, 96, 159, 0]);
+    let s16 = image::open(dir.path().join("s16.png")).unwrap();
+    assert_eq!(s16.as_luma16().unwrap().as_raw(), &[8192, 24576, 40959, 0]);
+    let c = image::open(dir.path().join("c.png")).unwrap();
+    assert_eq!(
+        c.as_rgb8().unwrap().as_raw(),
+        &[128, 255, 0, 128, 255, 0, 128, 255, 0, 0, 0, 0]
+    );
+    for (args, want) in [
+        (
+            vec!["--values-out", "x.png", "--varying", "t"],
+            "s.json declares no varying \"t\" (it declares s, c, wide)",
+        ),
+        (
+            vec!["--values-out", "x.png", "--unorm", "12"],
+            "--values-out: 12 bits a channel: a UNORM PNG has 8 or 16",
+        ),
+        (
+            vec!["--values-out", "x.png", "--varying", "wide"],
+            "the varying \"wide\" has 5 channels, and a PNG pixel holds 1 to 4",
+        ),
+        (vec!["--unorm", "16"], "--varying and --unorm need --values-out"),
+    ] {
+        let out = render(&args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(stderr.contains(want), "{args:?}\nwant {want}\ngot {stderr}");
+        assert!(!std::path::Path::new("x.png").exists());
+    }
+}

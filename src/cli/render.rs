@@ -13,7 +13,8 @@ use rasterproof::coverage::Coverage;
 use rasterproof::coverage::{Scale, ASCII_GRID_MAX_SIDE};
 use rasterproof::model::plan;
 use rasterproof::model::{
-    exact_pixel_values, exact_values, prepare_parallel, render_area_rows, values_json, Model, PreparedScene,
+    exact_pixel_values, exact_values, prepare_parallel, render_area_rows, values_image, values_json, Model,
+    PreparedScene,
 };
 use rasterproof::num::exact::{counted, exact_text, terminating_decimal};
 use std::time::{Duration, Instant};
@@ -40,6 +41,19 @@ pub struct Options {
     /// Write the interpolated-colour (Gouraud) picture (PNG), at the same scale.
     #[arg(long = "colors-out", value_name = "COLOURS.png")]
     colors_out: Option<PathBuf>,
+    /// Write one varying's exact values as a UNORM PNG (the scene's `varyings`; one
+    /// sample per pixel): each channel the level nearest the exact value (ties to even,
+    /// clamped to [0, 1]); 1 channel grey, 2 grey and alpha, 3 RGB, 4 RGBA; 0 where no
+    /// value. Never scaled. `--varying` names the varying (default the first),
+    /// `--unorm` the bits a channel (8, default, or 16).
+    #[arg(long = "values-out", value_name = "VALUES.png")]
+    values_out: Option<PathBuf>,
+    /// With `--values-out`: the varying drawn (default the scene's first).
+    #[arg(long, value_name = "NAME")]
+    varying: Option<String>,
+    /// With `--values-out`: bits a channel, 8 or 16.
+    #[arg(long, default_value_t = 8, value_name = "BITS")]
+    unorm: u32,
     /// Write the ids PNG, for programs: 8-bit RGBA, each pixel id + 1 as a 24-bit number
     /// (R low byte, G, B high byte), alpha 255; 0 = uncovered; several owners: the highest
     /// id with alpha 254. Never scaled. Ids above 2^24 - 2 are refused.
@@ -132,6 +146,9 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         "area" => return run_area(o),
         other => return Err(format!("--coverage: unknown kind {other:?} (expected sample or area)")),
     }
+    if o.values_out.is_none() && (o.varying.is_some() || o.unorm != 8) {
+        return Err("--varying and --unorm need --values-out".to_string());
+    }
     if o.grey_out.is_some() || o.semantics != "true" || o.quantization != "round" {
         return Err("--grey-out, --semantics and --quantization need --coverage area".to_string());
     }
@@ -161,7 +178,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let primitives = scene.primitives_parallel(o.jobs as usize);
     let prepared = prepare_parallel(&primitives, &target, model, o.jobs as usize).map_err(fail)?;
     let small = target.width <= ASCII_GRID_MAX_SIDE && target.height <= ASCII_GRID_MAX_SIDE;
-    let whole = o.out.is_some() || o.colors_out.is_some() || o.ids_out.is_some() || small;
+    let whole = o.out.is_some() || o.colors_out.is_some() || o.ids_out.is_some() || o.values_out.is_some() || small;
     if !whole && matches!(o.format, OutputFormat::Text) && prepared.bands_skip_all() {
         // Only the summary, of triangles only: the frame is counted band by band, in the
         // memory of a few bands instead of the whole canvas.
@@ -185,6 +202,11 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         let colours = prepared.colour_image(&coverage, &scene.colours(), &target);
         outputs.stage_png(path, &upscale(&colours, scale))?;
         wrote.push(path.display().to_string());
+    }
+    if let Some(path) = &o.values_out {
+        let image = values_png(o, &name, &scene, &coverage, &target)?;
+        outputs.stage(path, "PNG", |out| image.write_to(out, image::ImageFormat::Png))?;
+        wrote.push(format!("{} (values, unscaled)", path.display()));
     }
     if let Some(path) = &o.ids_out {
         let ids = coverage
@@ -226,6 +248,34 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     Ok(ExitCode::SUCCESS)
 }
 
+/// `--values-out`'s image: the varying `--varying` names (default the first) at `--unorm`
+/// bits.
+fn values_png(
+    o: &Options,
+    name: &str,
+    scene: &rasterproof::scene::Scene,
+    coverage: &Coverage,
+    target: &Target,
+) -> Result<image::DynamicImage, String> {
+    let varyings = &scene.varyings;
+    if varyings.list.is_empty() {
+        return Err(format!("--values-out: {name} declares no varyings"));
+    }
+    let k = match &o.varying {
+        None => 0,
+        Some(v) => varyings.list.iter().position(|d| &d.name == v).ok_or_else(|| {
+            let names: Vec<&str> = varyings.list.iter().map(|d| d.name.as_str()).collect();
+            format!(
+                "--varying: {name} declares no varying {v:?} (it declares {})",
+                names.join(", ")
+            )
+        })?,
+    };
+    let values = exact_pixel_values(coverage, &scene.value_triangles(), varyings, target);
+    values_image(&values, varyings, k, target.width, target.height, o.unorm)
+        .map_err(|e| format!("--values-out: {e} (scene {name}, --unorm {})", o.unorm))
+}
+
 /// The summary line of a one-sample render: the pixels covered, once and more than once,
 /// and the plan of a planned model.
 fn summary(
@@ -257,9 +307,9 @@ fn run_samples(
     target: &Target,
     pattern: &rasterproof::pattern::SamplePattern,
 ) -> Result<ExitCode, String> {
-    if o.out.is_some() || o.colors_out.is_some() || o.scale.is_some() {
+    if o.out.is_some() || o.colors_out.is_some() || o.values_out.is_some() || o.scale.is_some() {
         return Err(format!(
-            "{name}: under the {pattern} sample pattern render writes --ids-out (one ids image per sample, stacked) and --count-out; -o, --colors-out and --scale are for one sample per pixel"
+            "{name}: under the {pattern} sample pattern render writes --ids-out (one ids image per sample, stacked) and --count-out (and each sample's values with --format json); -o, --colors-out, --values-out and --scale are for one sample per pixel"
         ));
     }
     let primitives = scene.primitives();
@@ -337,13 +387,14 @@ fn run_conservative(
 ) -> Result<ExitCode, String> {
     let rule = super::parse_conservative(rule)?;
     if o.colors_out.is_some()
+        || o.values_out.is_some()
         || o.ids_out.is_some()
         || o.count_out.is_some()
         || o.samples.is_some()
         || o.model.is_some()
     {
         return Err(format!(
-            "--conservative writes -o SETS.png and the sets on stdout; --colors-out, --ids-out, --count-out, --samples and --model are for sample coverage ({name})"
+            "--conservative writes -o SETS.png and the sets on stdout; --colors-out, --values-out, --ids-out, --count-out, --samples and --model are for sample coverage ({name})"
         ));
     }
     let sets = rasterproof::model::render_conservative(&scene.primitives(), target, &rule)
@@ -409,9 +460,9 @@ fn run_conservative(
 /// `render --coverage area`: the exact area of every pixel, its grey image and its text
 /// or JSON; exit 0.
 fn run_area(o: &Options) -> Result<ExitCode, String> {
-    if o.out.is_some() || o.colors_out.is_some() || o.ids_out.is_some() || o.scale.is_some() {
+    if o.out.is_some() || o.colors_out.is_some() || o.values_out.is_some() || o.ids_out.is_some() || o.scale.is_some() {
         return Err(
-            "--coverage area writes --grey-out GREY.png (and the values on stdout); -o, --colors-out, --ids-out and --scale are for --coverage sample".to_string(),
+            "--coverage area writes --grey-out GREY.png (and the values on stdout); -o, --colors-out, --values-out, --ids-out and --scale are for --coverage sample".to_string(),
         );
     }
     let model = super::parse_model(o.model.as_deref().unwrap_or("exact"))?;

@@ -20,6 +20,7 @@
 
 use std::fmt::Write as _;
 
+use image::{DynamicImage, ImageBuffer};
 use num_rational::BigRational;
 
 use crate::convention::Target;
@@ -28,6 +29,7 @@ use crate::coverage::Coverage;
 use crate::geom::Point;
 use crate::interp::values::{NoValue, Sampling, ValueTriangle, Varyings};
 use crate::num::exact::exact_text;
+use crate::num::unorm::{unorm_levels, UnormRule};
 use crate::pattern::SamplePattern;
 use crate::raster::sample_exact;
 
@@ -131,6 +133,100 @@ pub fn exact_pixel_values(
         varyings,
         target,
     )
+}
+
+/// Why [`values_image`] cannot draw a varying.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ValuesImageError {
+    /// A PNG pixel holds 1 to 4 channels.
+    TooManyChannels {
+        /// The varying's name.
+        name: String,
+        /// Its channel count.
+        channels: usize,
+    },
+    /// UNORM PNGs are 8 or 16 bits a channel.
+    Bits(u32),
+}
+
+impl std::fmt::Display for ValuesImageError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ValuesImageError::TooManyChannels { name, channels } => write!(
+                f,
+                "the varying {name:?} has {channels} channels, and a PNG pixel holds 1 to 4 (grey, grey and alpha, RGB, RGBA)"
+            ),
+            ValuesImageError::Bits(b) => write!(f, "{b} bits a channel: a UNORM PNG has 8 or 16"),
+        }
+    }
+}
+
+/// Varying `k`'s values at sample 0 of each pixel as a UNORM PNG image of `bits` (8 or
+/// 16) a channel: each level the one nearest the exact value scaled by `2^bits - 1`
+/// (ties to even, clamped to `[0, 1]`: [`UnormRule::Nearest`]). One channel is a grey
+/// image, two grey and alpha, three RGB, four RGBA; a pixel without a covered sample 0 or
+/// without a value is 0 in every channel.
+///
+/// ```
+/// use rasterproof::interp::values::{Interpolation, Sampling, Varying, Varyings};
+/// use rasterproof::model::{values_image, SampleValues};
+/// let q = |n: i64, d: i64| num_rational::BigRational::new(n.into(), d.into());
+/// let varyings = Varyings {
+///     list: vec![Varying { name: "c".into(), channels: 1, interpolation: Interpolation::Flat, sampling: Sampling::Centre }],
+///     ..Varyings::default()
+/// };
+/// let half = SampleValues { x: 1, y: 0, sample: 0, id: 0, values: vec![Ok(vec![q(1, 2)])] };
+/// let image = values_image(&[half], &varyings, 0, 2, 1, 8).unwrap();
+/// // 1/2 of 255 is 127.5: the even level, 128.
+/// assert_eq!(image.to_luma8().into_raw(), [0, 128]);
+/// ```
+///
+/// # Errors
+/// More than four channels, or `bits` other than 8 or 16.
+///
+/// # Panics
+/// When `k` is not a varying of `varyings`.
+pub fn values_image(
+    values: &[SampleValues],
+    varyings: &Varyings,
+    k: usize,
+    width: u32,
+    height: u32,
+    bits: u32,
+) -> Result<DynamicImage, ValuesImageError> {
+    let varying = &varyings.list[k];
+    let channels = varying.channels;
+    if channels > 4 {
+        return Err(ValuesImageError::TooManyChannels {
+            name: varying.name.clone(),
+            channels,
+        });
+    }
+    if bits != 8 && bits != 16 {
+        return Err(ValuesImageError::Bits(bits));
+    }
+    let mut levels = vec![0u16; width as usize * height as usize * channels];
+    for v in values.iter().filter(|v| v.sample == 0) {
+        if let Ok(value) = &v.values[k] {
+            let at = (v.y as usize * width as usize + v.x as usize) * channels;
+            for (c, channel) in value.iter().enumerate() {
+                let level = *unorm_levels(channel, bits, UnormRule::Nearest).start();
+                levels[at + c] = u16::try_from(level).expect("at most 16 bits");
+            }
+        }
+    }
+    let narrow = |raw: Vec<u16>| -> Vec<u8> { raw.into_iter().map(|l| u8::try_from(l).expect("8 bits")).collect() };
+    let size = "the image's size";
+    Ok(match (channels, bits) {
+        (1, 8) => DynamicImage::ImageLuma8(ImageBuffer::from_raw(width, height, narrow(levels)).expect(size)),
+        (2, 8) => DynamicImage::ImageLumaA8(ImageBuffer::from_raw(width, height, narrow(levels)).expect(size)),
+        (3, 8) => DynamicImage::ImageRgb8(ImageBuffer::from_raw(width, height, narrow(levels)).expect(size)),
+        (4, 8) => DynamicImage::ImageRgba8(ImageBuffer::from_raw(width, height, narrow(levels)).expect(size)),
+        (1, _) => DynamicImage::ImageLuma16(ImageBuffer::from_raw(width, height, levels).expect(size)),
+        (2, _) => DynamicImage::ImageLumaA16(ImageBuffer::from_raw(width, height, levels).expect(size)),
+        (3, _) => DynamicImage::ImageRgb16(ImageBuffer::from_raw(width, height, levels).expect(size)),
+        _ => DynamicImage::ImageRgba16(ImageBuffer::from_raw(width, height, levels).expect(size)),
+    })
 }
 
 /// Direct3D's centroid of primitive `id` in pixel `(x, y)`: the centre when it covers

@@ -9,6 +9,7 @@ pub mod exact;
 pub mod fixed;
 pub mod lane;
 pub mod plan;
+pub mod unorm;
 
 pub use exact::{parse_rational, NumberError, Rounding};
 pub use fixed::{EnvelopeError, SubPixel, FIXED_ENVELOPE_BITS, MAX_SUBPIXEL_BITS};
