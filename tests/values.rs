@@ -130,7 +130,7 @@ fn library_values(scene: &Scene) -> (SampleCoverage, SamplePattern, Vec<SampleVa
         .clone()
         .unwrap_or_else(|| SamplePattern::single(&target.convention));
     let coverage = render_samples(&scene.primitives(), &target, &pattern, Model::Exact).unwrap();
-    let values = exact_values(&coverage, &pattern, &scene.value_triangles(), &scene.varyings, &target);
+    let values = exact_values(&coverage, &pattern, &scene.value_setups(), &scene.varyings, &target);
     (coverage, pattern, values)
 }
 
@@ -407,6 +407,43 @@ fn a_polygon_drawn_last_has_no_value() {
     assert_eq!(NoValue::NotCarried.name(), "not-carried");
 }
 
+/// Lines interpolate along the segment, by hand. The Bresenham line from pixel 0 to
+/// pixel 3 of a 4x1 canvas has its ends at those pixels' centres (1/2, 1/2) and
+/// (7/2, 1/2): pixel x's centre has t = x / 3, so `s` (0 to 3) is x; `f` is flat, the
+/// last end's 7 (`provoking_vertex: last`). The diamond-exit line from (1/4, 1/2) to
+/// (15/4, 1/2) has t = (x + 1/2 - 1/4) / (7/2) = (4x + 1) / 14 at pixel x's centre: `s`
+/// (0 to 14) is 4x + 1.
+#[test]
+fn lines_interpolate_along_the_segment_by_hand() {
+    let line = |from: &str, to: &str, rule: &str, last: &str| {
+        format!(
+            r#"{{"width": 4, "height": 1, "provoking_vertex": "last",
+                "varyings": [{{"name": "s", "channels": 1, "interpolation": "noperspective"}},
+                             {{"name": "f", "channels": 1, "interpolation": "flat"}}],
+                "lines": [{{"from": {from}, "to": {to}, "rule": "{rule}",
+                           "varyings": {{"s": [[0], [{last}]], "f": [[5], [7]]}}}}]}}"#
+        )
+    };
+    let scene = parse_scene(&line("[0, 0]", "[3, 0]", "bresenham", "3"), "b.json").unwrap();
+    let (_, _, values) = library_values(&scene);
+    let got: Vec<_> = values.iter().map(|v| (v.x, v.values.clone())).collect();
+    let want: Vec<_> = (0..4)
+        .map(|x| (x, vec![Ok(vec![q(i64::from(x), 1)]), Ok(vec![q(7, 1)])]))
+        .collect();
+    assert_eq!(got, want);
+    let scene = parse_scene(
+        &line(r#"["1/4", "1/2"]"#, r#"["15/4", "1/2"]"#, "diamond", "14"),
+        "d.json",
+    )
+    .unwrap();
+    let (_, _, values) = library_values(&scene);
+    assert!(values.len() >= 3, "{values:?}");
+    for v in &values {
+        assert_eq!(v.values[0], Ok(vec![q(4 * i64::from(v.x) + 1, 1)]), "pixel {}", v.x);
+    }
+    assert_eq!(parse_scene(&scene.to_json(), "again.json").unwrap(), scene);
+}
+
 /// A scene without varyings reads as before, and its JSON has no `values`.
 #[test]
 fn old_scenes_have_no_values() {
@@ -418,7 +455,7 @@ fn old_scenes_have_no_values() {
     assert_eq!(scene.varyings, Varyings::default());
     assert!(scene.triangles[0].values.is_none());
     assert!(!scene.to_json().contains("varyings"));
-    assert_eq!(scene.value_triangles(), vec![None]);
+    assert_eq!(scene.value_setups(), vec![None]);
 }
 
 /// Bad value fields: exit 2 from the command line, each error naming the field and the value.
@@ -481,6 +518,16 @@ fn bad_value_fields_name_the_field() {
         (
             format!(r#""triangles": [{}]"#, tri(r#", "w": [1, 1, 1]"#)),
             "triangles[0].w: w only serves perspective-correct varyings",
+        ),
+        (
+            format!(r#"{decl}, "lines": [{{"from": [0, 0], "to": [3, 1]}}]"#),
+            "lines[0].varyings: missing: the scene declares varyings (uv)",
+        ),
+        (
+            format!(
+                r#"{decl}, "lines": [{{"from": [0, 0], "to": [3, 1], "varyings": {{"uv": [[0, 0], [1, 0], [0, 1]]}}}}]"#
+            ),
+            "lines[0].varyings.uv: expected 2 vertices' values, found 3",
         ),
         (
             r#""varyings": [{"name": "uv", "channels": 0}]"#.to_string(),

@@ -225,7 +225,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     }
     match o.format {
         OutputFormat::Json if !scene.varyings.list.is_empty() => {
-            let values = exact_pixel_values(&coverage, &scene.value_triangles(), &scene.varyings, &target);
+            let values = exact_pixel_values(&coverage, &scene.value_setups(), &scene.varyings, &target);
             crate::cli::print_stdout(&values_json(coverage.to_json(), &scene.varyings, &values))?;
             eprintln!("{summary}");
         }
@@ -271,7 +271,7 @@ fn values_png(
             )
         })?,
     };
-    let values = exact_pixel_values(coverage, &scene.value_triangles(), varyings, target);
+    let values = exact_pixel_values(coverage, &scene.value_setups(), varyings, target);
     values_image(&values, varyings, k, target.width, target.height, o.unorm)
         .map_err(|e| format!("--values-out: {e} (scene {name}, --unorm {})", o.unorm))
 }
@@ -351,7 +351,7 @@ fn run_samples(
             let json = if scene.varyings.list.is_empty() {
                 coverage.to_json()
             } else {
-                let values = exact_values(&coverage, pattern, &scene.value_triangles(), &scene.varyings, target);
+                let values = exact_values(&coverage, pattern, &scene.value_setups(), &scene.varyings, target);
                 values_json(coverage.to_json(), &scene.varyings, &values)
             };
             crate::cli::print_stdout(&json)?;

@@ -215,7 +215,7 @@ pub enum NoValue {
     /// `1 / w = 0` at the point: it lies on the triangle's horizon, where a perspective-
     /// correct value is infinite. Only an extrapolated point (outside the triangle) can.
     Horizon,
-    /// The primitive carries no values (lines and polygons do not, yet).
+    /// The primitive carries no values (polygons do not).
     NotCarried,
 }
 
@@ -339,6 +339,105 @@ impl ValueTriangle {
         Ok(channels
             .map(|k| (0..3).fold(BigRational::zero(), |acc, i| acc + &weights[i] * &self.values[i][k]))
             .collect())
+    }
+}
+
+/// A line segment as an interpolator sees it: its two ends (window space, `w = 1`) with
+/// their values.
+///
+/// At a window point `p` the segment's parameter is `t = (p - a) . (b - a) / |b - a|^2`,
+/// the projection of `p` onto the segment's line (the Vulkan specification's "Basic Line
+/// Segment Rasterization" and OpenGL 4.6 section 14.5.1 give it for the fragment's
+/// centre); a `smooth` or `noperspective` value is `(1 - t) f_a + t f_b` (both ends at
+/// `w = 1`, so the two agree), extrapolated where `t` leaves `[0, 1]` (a fragment past an
+/// end). A `flat` value is the provoking end's: the first (`from`) or the last (`to`),
+/// OpenGL's table 13.2 for independent lines.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ValueSegment {
+    /// `from` and `to`.
+    pub ends: [Point; 2],
+    /// Each end's values of every channel.
+    pub values: [Vec<BigRational>; 2],
+}
+
+impl ValueSegment {
+    /// The parameter `t` of window point `p` along the segment; `None` for a segment of
+    /// zero length.
+    ///
+    /// ```
+    /// use rasterproof::geom::Point;
+    /// use rasterproof::interp::values::ValueSegment;
+    /// let q = |n: i64, d: i64| num_rational::BigRational::new(n.into(), d.into());
+    /// let s = ValueSegment { ends: [Point::from_ints(0, 0), Point::from_ints(4, 2)], values: [vec![], vec![]] };
+    /// // (1, 3) . (4, 2) / 20 = 10 / 20.
+    /// assert_eq!(s.parameter(&Point::from_ints(1, 3)), Some(q(1, 2)));
+    /// ```
+    pub fn parameter(&self, p: &Point) -> Option<BigRational> {
+        let [a, b] = &self.ends;
+        let (dx, dy) = (&b.x - &a.x, &b.y - &a.y);
+        let length2 = &dx * &dx + &dy * &dy;
+        if length2.is_zero() {
+            return None;
+        }
+        Some(((&p.x - &a.x) * &dx + (&p.y - &a.y) * &dy) / length2)
+    }
+
+    /// The exact value of the channels `channels` at window point `p` (see the type's
+    /// docs).
+    ///
+    /// # Errors
+    /// [`NoValue::Degenerate`] for a zero-length segment (smooth and noperspective).
+    ///
+    /// # Panics
+    /// When an end has fewer values than `channels` asks for.
+    pub fn value(
+        &self,
+        interpolation: Interpolation,
+        provoking: ProvokingVertex,
+        channels: Range<usize>,
+        p: &Point,
+    ) -> Result<Vec<BigRational>, NoValue> {
+        if interpolation == Interpolation::Flat {
+            let end = match provoking {
+                ProvokingVertex::First => 0,
+                ProvokingVertex::Last => 1,
+            };
+            return Ok(self.values[end][channels].to_vec());
+        }
+        let t = self.parameter(p).ok_or(NoValue::Degenerate)?;
+        let s = BigRational::one() - &t;
+        Ok(channels
+            .map(|k| &s * &self.values[0][k] + &t * &self.values[1][k])
+            .collect())
+    }
+}
+
+/// A primitive's interpolation setup: a triangle's or a line segment's.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ValueSetup {
+    /// A triangle, window-space or clip-space (boxed: nine rationals and three lists).
+    Triangle(Box<ValueTriangle>),
+    /// A line segment (boxed, as the triangle is).
+    Segment(Box<ValueSegment>),
+}
+
+impl ValueSetup {
+    /// The exact value of the channels `channels` at window point `p`
+    /// ([`ValueTriangle::value`], [`ValueSegment::value`]).
+    ///
+    /// # Errors
+    /// As theirs.
+    pub fn value(
+        &self,
+        interpolation: Interpolation,
+        provoking: ProvokingVertex,
+        channels: Range<usize>,
+        p: &Point,
+    ) -> Result<Vec<BigRational>, NoValue> {
+        match self {
+            ValueSetup::Triangle(t) => t.value(interpolation, provoking, channels, p),
+            ValueSetup::Segment(s) => s.value(interpolation, provoking, channels, p),
+        }
     }
 }
 

@@ -27,7 +27,7 @@ use crate::convention::Target;
 use crate::coverage::samples::SampleCoverage;
 use crate::coverage::Coverage;
 use crate::geom::Point;
-use crate::interp::values::{NoValue, Sampling, ValueTriangle, Varyings};
+use crate::interp::values::{NoValue, Sampling, ValueSetup, Varyings};
 use crate::num::exact::exact_text;
 use crate::num::unorm::{unorm_levels, UnormRule};
 use crate::pattern::SamplePattern;
@@ -50,14 +50,14 @@ pub struct SampleValues {
 
 /// The exact values of every covered sample of `coverage` (one [`crate::coverage::Coverage`]
 /// per sample of `pattern`), sorted by row, column and sample. `setups[id]` is primitive
-/// `id`'s interpolation setup, `None` for a primitive that carries no values (a line or a
-/// polygon): its samples get [`NoValue::NotCarried`].
+/// `id`'s interpolation setup, `None` for a primitive that carries no values (a polygon):
+/// its samples get [`NoValue::NotCarried`].
 ///
 /// ```
 /// use rasterproof::convention::{Convention, Target};
 /// use rasterproof::coverage::samples::SampleCoverage;
 /// use rasterproof::geom::{Point, Triangle};
-/// use rasterproof::interp::values::{Interpolation, Sampling, ValueTriangle, Varying, Varyings};
+/// use rasterproof::interp::values::{Interpolation, Sampling, ValueSetup, ValueTriangle, Varying, Varyings};
 /// use rasterproof::model::{exact_values, render_triangles, Model};
 /// use rasterproof::pattern::SamplePattern;
 /// let q = |n: i64, d: i64| num_rational::BigRational::new(n.into(), d.into());
@@ -66,7 +66,11 @@ pub struct SampleValues {
 /// let coverage = render_triangles(&[Triangle::new(a.clone(), b.clone(), c.clone())], &target, Model::Exact).unwrap();
 /// // One channel, 0 at (0, 0), 4 at (4, 0), 0 at (0, 4): the value is x.
 /// let one = q(1, 1);
-/// let setup = ValueTriangle::window([&a, &b, &c], [&one, &one, &one], [vec![q(0, 1)], vec![q(4, 1)], vec![q(0, 1)]]);
+/// let setup = ValueSetup::Triangle(Box::new(ValueTriangle::window(
+///     [&a, &b, &c],
+///     [&one, &one, &one],
+///     [vec![q(0, 1)], vec![q(4, 1)], vec![q(0, 1)]],
+/// )));
 /// let varyings = Varyings {
 ///     list: vec![Varying { name: "x".into(), channels: 1, interpolation: Interpolation::Smooth, sampling: Sampling::Centre }],
 ///     ..Varyings::default()
@@ -80,7 +84,7 @@ pub struct SampleValues {
 pub fn exact_values(
     coverage: &SampleCoverage,
     pattern: &SamplePattern,
-    setups: &[Option<ValueTriangle>],
+    setups: &[Option<ValueSetup>],
     varyings: &Varyings,
     target: &Target,
 ) -> Vec<SampleValues> {
@@ -121,7 +125,7 @@ pub fn exact_values(
 /// `coverage` with its values.
 pub fn exact_pixel_values(
     coverage: &Coverage,
-    setups: &[Option<ValueTriangle>],
+    setups: &[Option<ValueSetup>],
     varyings: &Varyings,
     target: &Target,
 ) -> Vec<SampleValues> {
@@ -246,7 +250,7 @@ fn centroid(coverage: &SampleCoverage, pattern: &SamplePattern, x: u32, y: u32, 
 /// `{"varyings":[{"name","channels","interpolation","sampling"}...],"provoking_vertex",
 /// "samples":[[x,y,sample,id,[value per varying]]...]}`, where a value is its channels as
 /// exact strings (`["1/3","2"]`) or, when there is none, the reason: `"not-carried"` (a
-/// line or polygon), `"horizon"` (a smooth value where 1/w = 0) or `"degenerate"`.
+/// polygon), `"horizon"` (a smooth value where 1/w = 0) or `"degenerate"`.
 ///
 /// ```
 /// use rasterproof::interp::values::Varyings;

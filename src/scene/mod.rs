@@ -15,7 +15,7 @@ use crate::clip::Window;
 use crate::convention::{Convention, PixelCentre, Preset, Rounding, Target, TieRule};
 use crate::geom::Rgb;
 use crate::geom::{CompactTriangle, Point, Polygon, Triangle};
-use crate::interp::values::{ValueTriangle, Varyings};
+use crate::interp::values::{ValueSegment, ValueSetup, ValueTriangle, Varyings};
 use crate::line::{Line, LineRule};
 use crate::model::Primitives;
 use crate::num::compact::Compact;
@@ -91,6 +91,9 @@ pub struct Scene {
     pub triangles: Vec<SceneTriangle>,
     /// `lines`, ids after the triangles, in file order.
     pub lines: Vec<Line>,
+    /// Each line's `varyings`: the values at `from` and at `to` (one entry per line when the
+    /// scene declares varyings, none otherwise).
+    pub line_values: Vec<[Vec<BigRational>; 2]>,
     /// `polygons`, ids after the triangles and the lines, in file order.
     pub polygons: Vec<Polygon>,
     /// `clip_space_triangles`: clip-space `(x, y, z, w)` vertices, clipped against the
@@ -126,6 +129,7 @@ impl Scene {
                 })
                 .collect(),
             lines: Vec::new(),
+            line_values: Vec::new(),
             polygons: Vec::new(),
             clip_space_triangles: Vec::new(),
             viewport: None,
@@ -137,26 +141,49 @@ impl Scene {
 
     /// Each primitive's interpolation setup ([`crate::interp::values`]), by id (triangles,
     /// lines, polygons, clip-space triangles): a triangle's window vertices with its `w` (1
-    /// where it gives none) and values; a clip-space triangle's homogeneous window vertices
-    /// under [`Scene::viewport`] with its values; `None` for a line or a polygon, and for
-    /// every primitive when the scene declares no varyings.
-    pub fn value_triangles(&self) -> Vec<Option<ValueTriangle>> {
-        let others = self.lines.len() + self.polygons.len();
-        let mut out = Vec::with_capacity(self.triangles.len() + others + self.clip_space_triangles.len());
+    /// where it gives none) and values; a line's ends and values; a clip-space triangle's
+    /// homogeneous window vertices under [`Scene::viewport`] with its values (a Bresenham
+    /// line's ends are the sample points of its end pixels, a diamond-exit line's are its
+    /// points); `None` for a polygon, and for every primitive when the scene declares no
+    /// varyings.
+    pub fn value_setups(&self) -> Vec<Option<ValueSetup>> {
+        let mut out = Vec::with_capacity(
+            self.triangles.len() + self.lines.len() + self.polygons.len() + self.clip_space_triangles.len(),
+        );
         let one = BigRational::from_integer(1.into());
         for t in &self.triangles {
             out.push(t.values.as_ref().map(|v| {
                 let tri = t.triangle.to_triangle();
                 let w = v.w.as_ref().map_or([&one, &one, &one], |w| [&w[0], &w[1], &w[2]]);
-                ValueTriangle::window([&tri.v[0], &tri.v[1], &tri.v[2]], w, v.values.clone())
+                ValueSetup::Triangle(Box::new(ValueTriangle::window(
+                    [&tri.v[0], &tri.v[1], &tri.v[2]],
+                    w,
+                    v.values.clone(),
+                )))
             }));
         }
-        out.resize(out.len() + others, None);
+        // A Bresenham line's ends name pixels: they are the pixels' sample points.
+        let centre = self.convention().pixel_centre.offset();
+        for (k, l) in self.lines.iter().enumerate() {
+            let end = |p: &Point| match l.rule {
+                LineRule::Bresenham(_) => Point::new(&p.x + &centre, &p.y + &centre),
+                LineRule::Diamond => p.clone(),
+            };
+            out.push(self.line_values.get(k).map(|values| {
+                ValueSetup::Segment(Box::new(ValueSegment {
+                    ends: [end(&l.from), end(&l.to)],
+                    values: values.clone(),
+                }))
+            }));
+        }
+        out.resize(out.len() + self.polygons.len(), None);
         let viewport = self.viewport();
         for t in &self.clip_space_triangles {
-            out.push((!self.varyings.list.is_empty()).then(|| ValueTriangle {
-                h: [0, 1, 2].map(|i| viewport.homogeneous(&t[i].pos)),
-                values: [0, 1, 2].map(|i| t[i].attrs.clone()),
+            out.push((!self.varyings.list.is_empty()).then(|| {
+                ValueSetup::Triangle(Box::new(ValueTriangle {
+                    h: [0, 1, 2].map(|i| viewport.homogeneous(&t[i].pos)),
+                    values: [0, 1, 2].map(|i| t[i].attrs.clone()),
+                }))
             }));
         }
         out
@@ -386,7 +413,18 @@ impl Scene {
             json_lines(self.triangles.iter().map(|t| triangle_json(t, varyings)))
         );
         if !self.lines.is_empty() {
-            let _ = write!(s, ",\n  \"lines\": {}", json_lines(self.lines.iter().map(line_json)));
+            let items = self.lines.iter().enumerate().map(|(k, l)| {
+                let line = line_json(l);
+                match self.line_values.get(k) {
+                    None => line,
+                    Some(values) => format!(
+                        "{}, \"varyings\": {}}}",
+                        line.strip_suffix('}').expect("an object"),
+                        values_json(values, varyings)
+                    ),
+                }
+            });
+            let _ = write!(s, ",\n  \"lines\": {}", json_lines(items));
         }
         if !self.polygons.is_empty() {
             let _ = write!(
@@ -477,7 +515,7 @@ fn triangle_json(t: &SceneTriangle, varyings: &Varyings) -> String {
 }
 
 /// A primitive's `varyings` object: each varying's channels at each vertex.
-fn values_json(values: &[Vec<BigRational>; 3], varyings: &Varyings) -> String {
+fn values_json(values: &[Vec<BigRational>], varyings: &Varyings) -> String {
     let fields: Vec<String> = varyings
         .ranges()
         .map(|(v, range)| {

@@ -264,15 +264,17 @@ impl Reader<'_> {
             return Err(p.err(
                 &format!("triangles[{k}].varyings"),
                 format!(
-                    "missing: the scene declares varyings ({}), so every triangle gives their values per vertex",
-                    names.join(", ")
+                    "missing: the scene declares varyings ({}), so {}",
+                    names.join(", "),
+                    values::MISSING_TAIL
                 ),
             ));
         }
-        let lines = match root.get("lines") {
-            None => Vec::new(),
-            Some(v) => p.lines(v)?,
+        let (lines, line_values): (Vec<_>, Vec<_>) = match root.get("lines") {
+            None => (Vec::new(), Vec::new()),
+            Some(v) => p.lines(v, &varyings)?.into_iter().unzip(),
         };
+        let line_values: Vec<[Vec<BigRational>; 2]> = line_values.into_iter().flatten().collect();
         let polygons = match root.get("polygons") {
             None => Vec::new(),
             Some(v) => p.polygons(v)?,
@@ -303,6 +305,7 @@ impl Reader<'_> {
             overrides,
             triangles,
             lines,
+            line_values,
             polygons,
             clip_space_triangles,
             viewport,

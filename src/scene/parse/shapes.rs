@@ -18,6 +18,9 @@ use crate::line::{BresenhamTie, Line, LineRule, MAX_BRESENHAM_COORD};
 use crate::pattern::{PatternError, SamplePattern, MAX_SAMPLES, STANDARD_COUNTS};
 use crate::scene::{SceneError, SceneTriangle, VertexValues};
 
+/// A line's values: every declared varying's channels at `from`, then at `to`.
+type EndValues = [Vec<BigRational>; 2];
+
 impl Reader<'_> {
     pub(super) fn triangles(&self, v: &Value, varyings: &Varyings) -> Result<Vec<SceneTriangle>, SceneError> {
         self.each(v, "triangles", MAX_TRIANGLES, |t, at| self.triangle(t, at, varyings))
@@ -85,8 +88,16 @@ impl Reader<'_> {
         Ok(out.try_into().expect("three vertices checked"))
     }
 
-    pub(super) fn lines(&self, v: &Value) -> Result<Vec<Line>, SceneError> {
-        self.each(v, "lines", MAX_TRIANGLES, |l, at| self.line(l, at))
+    /// The lines, each with its ends' values where the scene declares varyings.
+    pub(super) fn lines(&self, v: &Value, varyings: &Varyings) -> Result<Vec<(Line, Option<EndValues>)>, SceneError> {
+        self.each(v, "lines", MAX_TRIANGLES, |l, at| {
+            let line = self.line(l, at)?;
+            let values = match l {
+                Value::Object(obj) => self.vertex_values(obj, at, varyings)?,
+                _ => None, // line() refused it
+            };
+            Ok((line, values))
+        })
     }
 
     fn line(&self, v: &Value, at: &str) -> Result<Line, SceneError> {
@@ -100,7 +111,7 @@ impl Reader<'_> {
                 ),
             ));
         };
-        self.known_fields(obj, at, &["from", "to", "rule", "tie"])?;
+        self.known_fields(obj, at, &["from", "to", "rule", "tie", "varyings"])?;
         let from = self.point(obj.get("from"), &format!("{at}.from"))?;
         let to = self.point(obj.get("to"), &format!("{at}.to"))?;
         let rule_name = match obj.get("rule") {

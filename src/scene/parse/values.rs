@@ -9,6 +9,10 @@ use super::reader::{kind, show, Reader};
 use crate::interp::values::{Interpolation, ProvokingVertex, Sampling, Varying, Varyings};
 use crate::scene::SceneError;
 
+/// The end of the error for a primitive without the declared varyings' values.
+pub(super) const MISSING_TAIL: &str =
+    "every triangle, line and clip-space triangle gives their values per vertex (polygons carry none)";
+
 /// The most channels a scene's varyings may have together (OpenGL's
 /// `GL_MAX_VARYING_COMPONENTS` is at least 60 and Vulkan's `maxFragmentInputComponents` at
 /// least 64; 128 leaves room for both).
@@ -118,12 +122,12 @@ impl Reader<'_> {
     /// The `varyings` field of the primitive object `obj` at `at`: per vertex, every
     /// declared varying's channels concatenated in declaration order. `None` when the
     /// scene declares no varyings (and then the field must be absent).
-    pub(super) fn vertex_values(
+    pub(super) fn vertex_values<const N: usize>(
         &self,
         obj: &Map,
         at: &str,
         varyings: &Varyings,
-    ) -> Result<Option<[Vec<BigRational>; 3]>, SceneError> {
+    ) -> Result<Option<[Vec<BigRational>; N]>, SceneError> {
         let here = format!("{at}.varyings");
         let given = obj.get("varyings");
         if varyings.list.is_empty() {
@@ -140,7 +144,7 @@ impl Reader<'_> {
             return Err(self.err(
                 &here,
                 format!(
-                    "missing: the scene declares varyings ({}), so every triangle gives their values per vertex",
+                    "missing: the scene declares varyings ({}), so {MISSING_TAIL}",
                     names.join(", ")
                 ),
             ));
@@ -156,15 +160,18 @@ impl Reader<'_> {
             ));
         };
         self.known_fields(given, &here, &names)?;
-        let mut out: [Vec<BigRational>; 3] = Default::default();
+        let mut out: [Vec<BigRational>; N] = std::array::from_fn(|_| Vec::new());
         for (k, varying) in varyings.list.iter().enumerate() {
             let field = format!("{here}.{}", varying.name);
             let v = given
                 .get(&varying.name)
                 .ok_or_else(|| self.err(&field, format!("missing (declared in varyings[{k}])")))?;
             let vertices = self.array(v, &field)?;
-            if vertices.len() != 3 {
-                return Err(self.err(&field, format!("expected 3 vertices' values, found {}", vertices.len())));
+            if vertices.len() != N {
+                return Err(self.err(
+                    &field,
+                    format!("expected {N} vertices' values, found {}", vertices.len()),
+                ));
             }
             for (i, vertex) in vertices.iter().enumerate() {
                 let vf = format!("{field}[{i}]");
