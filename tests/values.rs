@@ -170,7 +170,7 @@ fn window_value(scene: &Scene, id: usize, k: usize, p: &Point) -> Result<Vec<Big
         .clone()
         .unwrap_or_else(|| [BigRational::one(), BigRational::one(), BigRational::one()]);
     let range = channels(&scene.varyings, k);
-    let provoking = scene.varyings.provoking.triangle_vertex();
+    let provoking = scene.varyings.provoking.vertex(3);
     let l = barycentric_exact(&tri, p).ok_or(NoValue::Degenerate)?;
     let f = |i: usize, c: usize| values.values[i][c].clone();
     Ok(range
@@ -208,7 +208,7 @@ fn clip_value(scene: &Scene, id: usize, k: usize, p: &Point) -> Result<Vec<BigRa
     let range = channels(&scene.varyings, k);
     let viewport = scene.viewport();
     match scene.varyings.list[k].interpolation {
-        Interpolation::Flat => Ok(t[scene.varyings.provoking.triangle_vertex()].attrs[range].to_vec()),
+        Interpolation::Flat => Ok(t[scene.varyings.provoking.vertex(3)].attrs[range].to_vec()),
         Interpolation::Smooth => {
             let poly = clip_to_window_exact(t, &viewport);
             let fan = first_fan_triangle(&poly).expect("a covered triangle has area");
@@ -331,13 +331,19 @@ fn the_clip_space_family_covers_samples_behind_the_eye() {
     assert!(covered > 8, "{covered}");
 }
 
+/// `rasterproof render PATH` with `args`: its exit status and outputs.
+fn render(path: &std::path::Path, args: &[&str]) -> std::process::Output {
+    Command::cargo_bin("rasterproof")
+        .unwrap()
+        .args(["render", path.to_str().unwrap()])
+        .args(args)
+        .output()
+        .unwrap()
+}
+
 /// `render PATH --model exact --format json`, which must succeed: its JSON.
 fn render_json(path: &std::path::Path) -> serde_json::Value {
-    let out = Command::cargo_bin("rasterproof")
-        .unwrap()
-        .args(["render", path.to_str().unwrap(), "--model", "exact", "--format", "json"])
-        .output()
-        .unwrap();
+    let out = render(path, &["--model", "exact", "--format", "json"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     serde_json::from_slice(&out.stdout).unwrap()
 }
@@ -558,11 +564,7 @@ fn bad_value_fields_name_the_field() {
     for (k, (fields, want)) in cases.iter().enumerate() {
         let path = dir.path().join(format!("bad{k}.json"));
         std::fs::write(&path, format!(r#"{{"width": 4, "height": 4, {fields}}}"#)).unwrap();
-        let out = Command::cargo_bin("rasterproof")
-            .unwrap()
-            .args(["render", path.to_str().unwrap(), "--format", "json"])
-            .output()
-            .unwrap();
+        let out = render(&path, &["--format", "json"]);
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{fields}: {stderr}");
         assert!(
@@ -632,14 +634,7 @@ fn values_out_writes_unorm_levels_by_hand() {
                              "wide": [[0, 0, 0, 0, 0], [0, 0, 0, 0, 0], [0, 0, 0, 0, 0]]}}]}"#,
     )
     .unwrap();
-    let render = |args: &[&str]| {
-        Command::cargo_bin("rasterproof")
-            .unwrap()
-            .args(["render", scene.to_str().unwrap(), "--model", "exact"])
-            .args(args)
-            .output()
-            .unwrap()
-    };
+    let render = |args: &[&str]| render(&scene, &[&["--model", "exact"], args].concat());
     let png = |name: &str| dir.path().join(name).to_str().unwrap().to_string();
     for (args, file) in [
         (vec!["--values-out", &png("s8.png")], "s8.png"),

@@ -134,11 +134,12 @@ impl ProvokingVertex {
             .find(|p| p.name() == name)
     }
 
-    /// The provoking vertex's index in a triangle of a list.
-    pub fn triangle_vertex(self) -> usize {
+    /// The provoking vertex's index in a primitive of `count` vertices of a list (a
+    /// triangle's 0 or 2, a line's 0 or 1).
+    pub fn vertex(self, count: usize) -> usize {
         match self {
             ProvokingVertex::First => 0,
-            ProvokingVertex::Last => 2,
+            ProvokingVertex::Last => count - 1,
         }
     }
 }
@@ -322,24 +323,37 @@ impl ValueTriangle {
         channels: Range<usize>,
         p: &Point,
     ) -> Result<Vec<BigRational>, NoValue> {
-        if interpolation == Interpolation::Flat {
-            return Ok(self.values[provoking.triangle_vertex()][channels].to_vec());
-        }
-        let b = self.barycentrics(p)?;
-        let weights: [BigRational; 3] = match interpolation {
-            Interpolation::Smooth => {
-                let inv_w = &b[0] + &b[1] + &b[2];
-                if inv_w.is_zero() {
-                    return Err(NoValue::Horizon);
-                }
-                b.map(|bi| bi / &inv_w)
+        interpolate(&self.values, interpolation, provoking, channels, || {
+            let b = self.barycentrics(p)?;
+            if interpolation == Interpolation::NoPerspective {
+                return Ok([0, 1, 2].map(|i| &b[i] * &self.h[i][2]));
             }
-            _ => [0, 1, 2].map(|i| &b[i] * &self.h[i][2]),
-        };
-        Ok(channels
-            .map(|k| (0..3).fold(BigRational::zero(), |acc, i| acc + &weights[i] * &self.values[i][k]))
-            .collect())
+            let inv_w = &b[0] + &b[1] + &b[2];
+            if inv_w.is_zero() {
+                return Err(NoValue::Horizon);
+            }
+            Ok(b.map(|bi| bi / &inv_w))
+        })
     }
+}
+
+/// The channels `channels` of a primitive whose vertices hold `values`: the provoking
+/// vertex's for [`Interpolation::Flat`], otherwise the vertices' values weighted by
+/// `weights` (which sum to 1).
+fn interpolate<const N: usize>(
+    values: &[Vec<BigRational>; N],
+    interpolation: Interpolation,
+    provoking: ProvokingVertex,
+    channels: Range<usize>,
+    weights: impl FnOnce() -> Result<[BigRational; N], NoValue>,
+) -> Result<Vec<BigRational>, NoValue> {
+    if interpolation == Interpolation::Flat {
+        return Ok(values[provoking.vertex(N)][channels].to_vec());
+    }
+    let weights = weights()?;
+    Ok(channels
+        .map(|k| (0..N).fold(BigRational::zero(), |acc, i| acc + &weights[i] * &values[i][k]))
+        .collect())
 }
 
 /// A line segment as an interpolator sees it: its two ends (window space, `w = 1`) with
@@ -397,18 +411,10 @@ impl ValueSegment {
         channels: Range<usize>,
         p: &Point,
     ) -> Result<Vec<BigRational>, NoValue> {
-        if interpolation == Interpolation::Flat {
-            let end = match provoking {
-                ProvokingVertex::First => 0,
-                ProvokingVertex::Last => 1,
-            };
-            return Ok(self.values[end][channels].to_vec());
-        }
-        let t = self.parameter(p).ok_or(NoValue::Degenerate)?;
-        let s = BigRational::one() - &t;
-        Ok(channels
-            .map(|k| &s * &self.values[0][k] + &t * &self.values[1][k])
-            .collect())
+        interpolate(&self.values, interpolation, provoking, channels, || {
+            let t = self.parameter(p).ok_or(NoValue::Degenerate)?;
+            Ok([BigRational::one() - &t, t])
+        })
     }
 }
 
@@ -521,6 +527,8 @@ mod tests {
             assert_eq!(ProvokingVertex::parse(p.name()), Some(p));
         }
         assert_eq!(Interpolation::parse("linear"), None);
-        assert_eq!(ProvokingVertex::Last.triangle_vertex(), 2);
+        assert_eq!(ProvokingVertex::Last.vertex(3), 2);
+        assert_eq!(ProvokingVertex::Last.vertex(2), 1);
+        assert_eq!(ProvokingVertex::First.vertex(3), 0);
     }
 }

@@ -96,19 +96,26 @@ pub fn exact_values(
             let Some(&id) = coverage.owners(x, y, s).last() else {
                 continue;
             };
-            let setup = setups.get(id as usize).and_then(Option::as_ref);
-            let values = varyings
-                .ranges()
-                .map(|(varying, channels)| {
-                    let setup = setup.ok_or(NoValue::NotCarried)?;
-                    let at = match varying.sampling {
-                        Sampling::Centre => centre.clone(),
-                        Sampling::Sample => pattern.sample(x, y, s),
-                        Sampling::Centroid => centroid(coverage, pattern, x, y, id, &centre),
-                    };
-                    setup.value(varying.interpolation, varyings.provoking, channels, &at)
-                })
-                .collect();
+            let values = match setups.get(id as usize).and_then(Option::as_ref) {
+                None => vec![Err(NoValue::NotCarried); varyings.list.len()],
+                Some(setup) => {
+                    // The sample's own point and its pixel's centroid, found once for
+                    // every varying that asks.
+                    let sample = pattern.sample(x, y, s);
+                    let centroid = centroid(coverage, pattern, x, y, id, &centre);
+                    varyings
+                        .ranges()
+                        .map(|(varying, channels)| {
+                            let at = match varying.sampling {
+                                Sampling::Centre => &centre,
+                                Sampling::Sample => &sample,
+                                Sampling::Centroid => &centroid,
+                            };
+                            setup.value(varying.interpolation, varyings.provoking, channels, at)
+                        })
+                        .collect()
+                }
+            };
             out.push(SampleValues {
                 x,
                 y,

@@ -413,17 +413,7 @@ impl Scene {
             json_lines(self.triangles.iter().map(|t| triangle_json(t, varyings)))
         );
         if !self.lines.is_empty() {
-            let items = self.lines.iter().enumerate().map(|(k, l)| {
-                let line = line_json(l);
-                match self.line_values.get(k) {
-                    None => line,
-                    Some(values) => format!(
-                        "{}, \"varyings\": {}}}",
-                        line.strip_suffix('}').expect("an object"),
-                        values_json(values, varyings)
-                    ),
-                }
-            });
+            let items = (self.lines.iter().enumerate()).map(|(k, l)| line_json(l, self.line_values.get(k), varyings));
             let _ = write!(s, ",\n  \"lines\": {}", json_lines(items));
         }
         if !self.polygons.is_empty() {
@@ -539,13 +529,16 @@ fn values_json(values: &[Vec<BigRational>], varyings: &Varyings) -> String {
     format!("{{{}}}", fields.join(", "))
 }
 
-/// A line of a scene file: its ends and its rule.
-fn line_json(l: &Line) -> String {
+/// A line of a scene file: its ends, its rule, and its ends' values where it has them.
+fn line_json(l: &Line, values: Option<&[Vec<BigRational>; 2]>, varyings: &Varyings) -> String {
     let rule = match l.rule {
         LineRule::Bresenham(tie) => format!("\"rule\": \"bresenham\", \"tie\": \"{}\"", tie.name()),
         LineRule::Diamond => "\"rule\": \"diamond\"".to_string(),
     };
-    format!("{{\"from\": {}, \"to\": {}, {rule}}}", pt(&l.from), pt(&l.to))
+    let values = values.map_or(String::new(), |v| {
+        format!(", \"varyings\": {}", values_json(v, varyings))
+    });
+    format!("{{\"from\": {}, \"to\": {}, {rule}{values}}}", pt(&l.from), pt(&l.to))
 }
 
 /// A contour of a scene file: its points.

@@ -22,18 +22,14 @@ impl Reader<'_> {
     /// The top-level `varyings` (each `{"name", "channels", "interpolation", "sampling"}`)
     /// and `provoking_vertex`; none declared when `varyings` is absent.
     pub(super) fn varyings(&self, root: &Map) -> Result<Varyings, SceneError> {
-        let provoking = match root.get("provoking_vertex") {
-            None => ProvokingVertex::default(),
-            Some(v) => {
-                let name = self.string(v, "provoking_vertex")?;
-                ProvokingVertex::parse(name).ok_or_else(|| {
-                    self.err(
-                        "provoking_vertex",
-                        format!("unknown rule {name:?} (expected first or last)"),
-                    )
-                })?
-            }
-        };
+        let provoking = self.named(
+            root.get("provoking_vertex"),
+            "provoking_vertex",
+            ProvokingVertex::default(),
+            ProvokingVertex::parse,
+            "rule",
+            "first or last",
+        )?;
         let Some(v) = root.get("varyings") else {
             return Ok(Varyings {
                 list: Vec::new(),
@@ -87,36 +83,46 @@ impl Reader<'_> {
             .ok()
             .filter(|c| (1..=MAX_CHANNELS).contains(c))
             .ok_or_else(|| self.err(&field("channels"), format!("{channels} is not in 1..={MAX_CHANNELS}")))?;
-        let interpolation = match obj.get("interpolation") {
-            None => Interpolation::Smooth,
-            Some(v) => {
-                let name = self.string(v, &field("interpolation"))?;
-                Interpolation::parse(name).ok_or_else(|| {
-                    self.err(
-                        &field("interpolation"),
-                        format!("unknown interpolation {name:?} (expected smooth, noperspective or flat)"),
-                    )
-                })?
-            }
-        };
-        let sampling = match obj.get("sampling") {
-            None => Sampling::Centre,
-            Some(v) => {
-                let name = self.string(v, &field("sampling"))?;
-                Sampling::parse(name).ok_or_else(|| {
-                    self.err(
-                        &field("sampling"),
-                        format!("unknown sampling point {name:?} (expected centre, centroid or sample)"),
-                    )
-                })?
-            }
-        };
+        let interpolation = self.named(
+            obj.get("interpolation"),
+            &field("interpolation"),
+            Interpolation::Smooth,
+            Interpolation::parse,
+            "interpolation",
+            "smooth, noperspective or flat",
+        )?;
+        let sampling = self.named(
+            obj.get("sampling"),
+            &field("sampling"),
+            Sampling::Centre,
+            Sampling::parse,
+            "sampling point",
+            "centre, centroid or sample",
+        )?;
         Ok(Varying {
             name: name.to_string(),
             channels,
             interpolation,
             sampling,
         })
+    }
+
+    /// The optional name `v` at `field`, read by `parse`: `default` when absent, an error
+    /// naming the unknown `what` and the `expected` names otherwise.
+    fn named<T>(
+        &self,
+        v: Option<&Value>,
+        field: &str,
+        default: T,
+        parse: fn(&str) -> Option<T>,
+        what: &str,
+        expected: &str,
+    ) -> Result<T, SceneError> {
+        let Some(v) = v else {
+            return Ok(default);
+        };
+        let name = self.string(v, field)?;
+        parse(name).ok_or_else(|| self.err(field, format!("unknown {what} {name:?} (expected {expected})")))
     }
 
     /// The `varyings` field of the primitive object `obj` at `at`: per vertex, every
