@@ -9,6 +9,8 @@
 //! - [`values`]: a scene's declared varyings, exactly, at any point of a triangle
 //!   (`smooth`, `noperspective`, `flat`; window-space or clip-space vertices).
 
+pub mod envelope;
+pub mod float;
 pub mod values;
 
 use glam::{DVec2, Vec2};

@@ -24,6 +24,7 @@ mod adapters;
 mod adapters_aa_crates;
 #[path = "adapters_area.rs"]
 mod adapters_area;
+mod adapters_values;
 #[path = "adapters_wgpu.rs"]
 mod adapters_wgpu;
 #[path = "area.rs"]
@@ -116,6 +117,7 @@ mod suite;
 mod trade;
 #[path = "values.rs"]
 mod values;
+mod values_compare;
 
 /// Every `tests/*.rs` file is a module of this binary: with `autotests = false` in
 /// Cargo.toml, a file left out of the list above would never compile or run.

@@ -9,6 +9,7 @@ use rasterproof::coverage::picture::{legend_path, Scale};
 use rasterproof::oracle::compare::fit::samples::{SampleFitOptions, POSITION_GRID};
 use rasterproof::oracle::compare::grey::GreyOptions;
 use rasterproof::oracle::compare::samples::SampleOptions;
+use rasterproof::oracle::compare::values::ValueOptions;
 use rasterproof::oracle::compare::HtmlInputs;
 use rasterproof::oracle::{judge, Background, CompareOptions, Comparison, Format, Question, Theirs};
 
@@ -24,8 +25,10 @@ pub struct Options {
     /// How to read THEIRS: mask (covered where a pixel differs from the background), ids
     /// (the ids PNG of `render --ids-out`: id + 1 in R (low byte), G, B; alpha 254 marks
     /// several owners), json, or grey (an anti-aliased 8- or 16-bit grey PNG, compared
-    /// with the exact area coverage: see --semantics and --quantization). Default: json
-    /// for a .json file, ids otherwise.
+    /// with the exact area coverage: see --semantics and --quantization), or values (one
+    /// varying's interpolated values: a float32 TIFF or a UNORM PNG, judged at every
+    /// pixel the oracle covers; see --varying). Default: json for a .json file, values
+    /// for a .tif or .tiff file, ids otherwise.
     #[arg(long = "as", value_name = "FORMAT")]
     theirs_as: Option<String>,
     /// The oracle model: exact-snapped (the default for ids, masks and JSON: the answer of
@@ -104,6 +107,15 @@ pub struct Options {
     /// when it gives every level.
     #[arg(long, value_name = "NAME", conflicts_with_all = ["fit", "semantics", "quantization"])]
     method: Option<String>,
+    /// With `--as values`: the varying their image holds (default the scene's first);
+    /// their first channels are its channels.
+    #[arg(long, value_name = "NAME")]
+    varying: Option<String>,
+    /// With `--as values` and a UNORM PNG: the conversion rule their levels follow
+    /// (`nearest`: round to nearest, ties to even; `vulkan`: either of the two nearest
+    /// levels; `d3d`: within 0.6 of a level's unit).
+    #[arg(long = "unorm-rule", default_value = "nearest", value_name = "nearest|vulkan|d3d")]
+    unorm_rule: String,
 }
 
 /// `--classify`: a bound, or none.
@@ -164,6 +176,16 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     if !grey && (o.semantics != "true" || o.quantization != "round" || o.method.is_some()) {
         return Err("--semantics, --quantization and --method are for --as grey".to_string());
     }
+    let values = format == Format::Values;
+    if !values && (o.varying.is_some() || o.unorm_rule != "nearest") {
+        return Err("--varying and --unorm-rule are for --as values".to_string());
+    }
+    if values && (o.diff_out.is_some() || o.html.is_some() || o.samples.is_some() || o.conservative.is_some()) {
+        return Err(
+            "--as values compares one sample per pixel and prints its comparison (text or JSON); --diff-out, --html, --samples and --conservative are for coverage"
+                .to_string(),
+        );
+    }
     let model = super::parse_model(
         o.model
             .as_deref()
@@ -201,6 +223,14 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     }
     .filter(|p| !p.is_single(&target.convention));
     let question = match (grey_options, &o.conservative, pattern) {
+        _ if values => {
+            let options = ValueOptions::for_scene(&scene, &name, model, o.varying.as_deref(), &o.unorm_rule)?;
+            if o.fit {
+                Question::FitValues(Box::new(options))
+            } else {
+                Question::Values(Box::new(options))
+            }
+        }
         (Some(g), ..) if o.fit => Question::FitGrey(g.model),
         (Some(g), ..) => Question::Grey(g),
         (None, Some(rule), _) => Question::Conservative(super::parse_conservative(rule)?),
@@ -264,13 +294,19 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
 const GREY_PRINTS: &str =
     "--as grey prints its comparison (text, JSON or --html); --diff-out and --background are for the one-sample formats";
 
-/// `--as`, or the default: json for a `.json` file, ids otherwise.
+/// `--as`, or the default: json for a `.json` file, values for a TIFF, ids otherwise.
 fn their_format(o: &Options) -> Result<Format, String> {
     match &o.theirs_as {
-        Some(f) => {
-            Format::from_name(f).ok_or_else(|| format!("--as: unknown format {f:?} (expected mask, ids, json or grey)"))
-        }
+        Some(f) => Format::from_name(f)
+            .ok_or_else(|| format!("--as: unknown format {f:?} (expected mask, ids, json, grey or values)")),
         None if o.theirs.extension().is_some_and(|e| e.eq_ignore_ascii_case("json")) => Ok(Format::Json),
+        None if o
+            .theirs
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("tif") || e.eq_ignore_ascii_case("tiff")) =>
+        {
+            Ok(Format::Values)
+        }
         None => Ok(Format::Ids),
     }
 }

@@ -13,8 +13,8 @@ use rasterproof::coverage::Coverage;
 use rasterproof::coverage::{Scale, ASCII_GRID_MAX_SIDE};
 use rasterproof::model::plan;
 use rasterproof::model::{
-    exact_pixel_values, exact_values, prepare_parallel, render_area_rows, values_image, values_json, Model,
-    PreparedScene,
+    exact_pixel_values, exact_values, prepare_parallel, render_area_rows, values_image, values_json, values_tiff,
+    Model, PreparedScene,
 };
 use rasterproof::num::exact::{counted, exact_text, terminating_decimal};
 use std::time::{Duration, Instant};
@@ -41,12 +41,14 @@ pub struct Options {
     /// Write the interpolated-colour (Gouraud) picture (PNG), at the same scale.
     #[arg(long = "colors-out", value_name = "COLOURS.png")]
     colors_out: Option<PathBuf>,
-    /// Write one varying's exact values as a UNORM PNG (the scene's `varyings`; one
-    /// sample per pixel): each channel the level nearest the exact value (ties to even,
-    /// clamped to [0, 1]); 1 channel grey, 2 grey and alpha, 3 RGB, 4 RGBA; 0 where no
-    /// value. Never scaled. `--varying` names the varying (default the first),
-    /// `--unorm` the bits a channel (8, default, or 16).
-    #[arg(long = "values-out", value_name = "VALUES.png")]
+    /// Write one varying's exact values (the scene's `varyings`; one sample per pixel)
+    /// as a UNORM PNG: each channel the level nearest the exact value (ties to even,
+    /// clamped to [0, 1]); 1 channel grey, 2 grey and alpha, 3 RGB, 4 RGBA. Or, for a
+    /// file ending in .tif or .tiff, as a float32 TIFF: each channel the exact value
+    /// rounded once to the nearest f32; 1 channel grey, 2 or 3 RGB, 4 RGBA. 0 where no
+    /// value; never scaled. `--varying` names the varying (default the first), `--unorm`
+    /// the bits a channel of a PNG (8, default, or 16).
+    #[arg(long = "values-out", value_name = "VALUES.png|VALUES.tiff")]
     values_out: Option<PathBuf>,
     /// With `--values-out`: the varying drawn (default the scene's first).
     #[arg(long, value_name = "NAME")]
@@ -204,8 +206,13 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         wrote.push(path.display().to_string());
     }
     if let Some(path) = &o.values_out {
-        let image = values_png(o, &name, &scene, &coverage, &target)?;
-        outputs.stage(path, "PNG", |out| image.write_to(out, image::ImageFormat::Png))?;
+        let tiff = path
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("tif") || e.eq_ignore_ascii_case("tiff"));
+        match values_out(o, &name, &scene, &coverage, &target, tiff)? {
+            Ok(image) => outputs.stage(path, "PNG", |out| image.write_to(out, image::ImageFormat::Png))?,
+            Err(bytes) => outputs.stage(path, "TIFF", |out| std::io::Write::write_all(out, &bytes))?,
+        }
         wrote.push(format!("{} (values, unscaled)", path.display()));
     }
     if let Some(path) = &o.ids_out {
@@ -248,15 +255,16 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// `--values-out`'s image: the varying `--varying` names (default the first) at `--unorm`
-/// bits.
-fn values_png(
+/// `--values-out`'s image: the varying `--varying` names (default the first), a PNG at
+/// `--unorm` bits (`Ok`) or a float32 TIFF's bytes (`Err`).
+fn values_out(
     o: &Options,
     name: &str,
     scene: &rasterproof::scene::Scene,
     coverage: &Coverage,
     target: &Target,
-) -> Result<image::DynamicImage, String> {
+    tiff: bool,
+) -> Result<Result<image::DynamicImage, Vec<u8>>, String> {
     let varyings = &scene.varyings;
     if varyings.list.is_empty() {
         return Err(format!("--values-out: {name} declares no varyings"));
@@ -272,7 +280,13 @@ fn values_png(
         })?,
     };
     let values = exact_pixel_values(coverage, &scene.value_setups(), varyings, target);
+    if tiff {
+        return values_tiff(&values, varyings, k, target.width, target.height)
+            .map(Err)
+            .map_err(|e| format!("--values-out: {e} (scene {name})"));
+    }
     values_image(&values, varyings, k, target.width, target.height, o.unorm)
+        .map(Ok)
         .map_err(|e| format!("--values-out: {e} (scene {name}, --unorm {})", o.unorm))
 }
 

@@ -22,13 +22,14 @@ use std::fmt::Write as _;
 
 use image::{DynamicImage, ImageBuffer};
 use num_rational::BigRational;
+use num_traits::Signed;
 
 use crate::convention::Target;
 use crate::coverage::samples::SampleCoverage;
 use crate::coverage::Coverage;
 use crate::geom::Point;
 use crate::interp::values::{NoValue, Sampling, ValueSetup, Varyings};
-use crate::num::exact::exact_text;
+use crate::num::exact::{exact_text, nearest_f32};
 use crate::num::unorm::{unorm_levels, UnormRule};
 use crate::pattern::SamplePattern;
 use crate::raster::sample_exact;
@@ -238,6 +239,72 @@ pub fn values_image(
         (3, _) => DynamicImage::ImageRgb16(ImageBuffer::from_raw(width, height, levels).expect(size)),
         _ => DynamicImage::ImageRgba16(ImageBuffer::from_raw(width, height, levels).expect(size)),
     })
+}
+
+/// Varying `k`'s values at sample 0 of each pixel as a float32 TIFF: each channel the
+/// exact value rounded once to the nearest f32 (ties to even). One channel is a grey
+/// image, two or three RGB (a two-channel varying's blue is 0), four RGBA; uncompressed,
+/// IEEE floating-point samples (TIFF 6.0's `SampleFormat` 3), which tifffile, libtiff,
+/// ImageMagick and GIMP read bit for bit. A pixel without a covered sample 0 or without a
+/// value is 0 in every channel; a value beyond f32's range is an infinity of its sign.
+///
+/// ```
+/// use rasterproof::interp::values::{Interpolation, Sampling, Varying, Varyings};
+/// use rasterproof::model::{values_tiff, SampleValues};
+/// let q = |n: i64, d: i64| num_rational::BigRational::new(n.into(), d.into());
+/// let varyings = Varyings {
+///     list: vec![Varying { name: "c".into(), channels: 1, interpolation: Interpolation::Flat, sampling: Sampling::Centre }],
+///     ..Varyings::default()
+/// };
+/// let third = SampleValues { x: 1, y: 0, sample: 0, id: 0, values: vec![Ok(vec![q(1, 3)])] };
+/// let tiff = values_tiff(&[third], &varyings, 0, 2, 1).unwrap();
+/// assert_eq!(&tiff[..4], b"II*\0");
+/// ```
+///
+/// # Errors
+/// More than four channels.
+///
+/// # Panics
+/// When `k` is not a varying of `varyings`.
+pub fn values_tiff(
+    values: &[SampleValues],
+    varyings: &Varyings,
+    k: usize,
+    width: u32,
+    height: u32,
+) -> Result<Vec<u8>, ValuesImageError> {
+    use tiff::encoder::{colortype, TiffEncoder};
+    let varying = &varyings.list[k];
+    let channels = varying.channels;
+    if channels > 4 {
+        return Err(ValuesImageError::TooManyChannels {
+            name: varying.name.clone(),
+            channels,
+        });
+    }
+    let stride = if channels == 2 { 3 } else { channels };
+    let mut samples = vec![0f32; width as usize * height as usize * stride];
+    for v in values.iter().filter(|v| v.sample == 0) {
+        if let Ok(value) = &v.values[k] {
+            let at = (v.y as usize * width as usize + v.x as usize) * stride;
+            for (c, channel) in value.iter().enumerate() {
+                samples[at + c] = nearest_f32(channel).unwrap_or(if channel.is_negative() {
+                    f32::NEG_INFINITY
+                } else {
+                    f32::INFINITY
+                });
+            }
+        }
+    }
+    let mut out = std::io::Cursor::new(Vec::new());
+    let mut encoder = TiffEncoder::new(&mut out).expect("writing to memory");
+    let written = match stride {
+        1 => encoder.write_image::<colortype::Gray32Float>(width, height, &samples),
+        3 => encoder.write_image::<colortype::RGB32Float>(width, height, &samples),
+        _ => encoder.write_image::<colortype::RGBA32Float>(width, height, &samples),
+    };
+    written.expect("a TIFF of the image's own size, in memory");
+    Ok(out.into_inner())
 }
 
 /// Direct3D's centroid of primitive `id` in pixel `(x, y)`: the centre when it covers

@@ -445,6 +445,20 @@ pub fn nearest_f32(x: &BigRational) -> Option<f32> {
     })
 }
 
+/// Whether `x` is an f32 exactly (every finite f32 is a dyadic rational; `x` is one of
+/// them).
+///
+/// ```
+/// use num_rational::BigRational;
+/// use rasterproof::num::exact::is_f32;
+/// assert!(is_f32(&BigRational::new(3.into(), 256.into())));
+/// assert!(!is_f32(&BigRational::new(1.into(), 10.into())));
+/// assert!(!is_f32(&BigRational::new(16_777_217.into(), 1.into())));
+/// ```
+pub fn is_f32(x: &BigRational) -> bool {
+    nearest_f32(x).is_some_and(|f| BigRational::from_float(f64::from(f)).as_ref() == Some(x))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -27,4 +27,4 @@ pub use compare::{
 };
 pub use explain::{explain_pixel, ModelAt, PixelExplanation, PrimitiveAt};
 pub use reason::{Reason, ReasonClass, Snapping};
-pub use theirs::{Background, Format, GreyImage, TheirPixel, Theirs, TheirsError};
+pub use theirs::{Background, Format, GreyImage, TheirPixel, Theirs, TheirsError, ValueImage, ValueSamples};

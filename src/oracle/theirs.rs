@@ -55,6 +55,122 @@ impl GreyImage {
     }
 }
 
+/// Values another renderer wrote: `channels` numbers a pixel, row-major.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ValueImage {
+    /// Width.
+    pub width: u32,
+    /// Height.
+    pub height: u32,
+    /// Channels a pixel (1 to 4).
+    pub channels: usize,
+    /// The numbers, `channels` a pixel, row-major.
+    pub samples: ValueSamples,
+}
+
+/// The numbers of a [`ValueImage`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum ValueSamples {
+    /// Float32 samples, bit for bit as written.
+    F32(Vec<f32>),
+    /// UNORM levels of `bits` bits (8 or 16): level `l` stands for `l / (2^bits - 1)`.
+    Unorm {
+        /// 8 or 16.
+        bits: u32,
+        /// The levels.
+        levels: Vec<u16>,
+    },
+}
+
+impl ValueImage {
+    /// Reads a float32 TIFF (IEEE floating-point samples: 1 a pixel (grey), 3 (RGB) or 4
+    /// (RGBA); uncompressed, LZW or Deflate) or a UNORM PNG (8 or 16 bits; grey, grey and
+    /// alpha, RGB, RGBA).
+    ///
+    /// # Errors
+    /// Neither, another sample type (an integer TIFF, a palette PNG), a canvas beyond
+    /// the crate's largest: the message names what the file holds.
+    pub fn read(bytes: &[u8]) -> Result<ValueImage, String> {
+        if bytes.starts_with(b"\x89PNG\r\n\x1a\n") {
+            return ValueImage::read_png(bytes);
+        }
+        if !(bytes.starts_with(b"II*\0") || bytes.starts_with(b"MM\0*")) {
+            return Err("neither a TIFF nor a PNG file (--as values reads a float32 TIFF or a UNORM PNG)".to_string());
+        }
+        let tiff_err = |e: tiff::TiffError| format!("cannot decode the TIFF: {e}");
+        let mut decoder = tiff::decoder::Decoder::new(std::io::Cursor::new(bytes)).map_err(tiff_err)?;
+        let (width, height) = decoder.dimensions().map_err(tiff_err)?;
+        if width.max(height) > crate::convention::MAX_CANVAS {
+            return Err(format!(
+                "a {width}x{height} image; the largest canvas is {0}x{0}",
+                crate::convention::MAX_CANVAS
+            ));
+        }
+        let channels = match decoder.colortype().map_err(tiff_err)? {
+            tiff::ColorType::Gray(32) => 1,
+            tiff::ColorType::RGB(32) => 3,
+            tiff::ColorType::RGBA(32) => 4,
+            other => {
+                return Err(format!(
+                    "a TIFF of {other:?} samples; --as values reads 32-bit float grey, RGB or RGBA"
+                ))
+            }
+        };
+        match decoder.read_image().map_err(tiff_err)? {
+            tiff::decoder::DecodingResult::F32(samples) if samples.len() == pixel_count(width, height) * channels => {
+                Ok(ValueImage {
+                    width,
+                    height,
+                    channels,
+                    samples: ValueSamples::F32(samples),
+                })
+            }
+            tiff::decoder::DecodingResult::F32(_) => {
+                Err("a float TIFF whose sample count is not its size's".to_string())
+            }
+            _ => Err("a TIFF of 32-bit integer samples; --as values reads float samples (SampleFormat 3)".to_string()),
+        }
+    }
+
+    fn read_png(bytes: &[u8]) -> Result<ValueImage, String> {
+        let image = crate::fill::flood::decode_png_as_decoded(bytes, "", crate::convention::MAX_CANVAS)
+            .map_err(|e| format!("cannot decode the PNG: {}", e.detail()))?;
+        let (width, height) = (image.width(), image.height());
+        let channels = usize::from(image.color().channel_count());
+        let (bits, levels) = match image {
+            DynamicImage::ImageLuma8(_)
+            | DynamicImage::ImageLumaA8(_)
+            | DynamicImage::ImageRgb8(_)
+            | DynamicImage::ImageRgba8(_) => (8, image.into_bytes().into_iter().map(u16::from).collect()),
+            DynamicImage::ImageLuma16(i) => (16, i.into_raw()),
+            DynamicImage::ImageLumaA16(i) => (16, i.into_raw()),
+            DynamicImage::ImageRgb16(i) => (16, i.into_raw()),
+            DynamicImage::ImageRgba16(i) => (16, i.into_raw()),
+            other => {
+                return Err(format!(
+                    "a {:?} PNG; --as values reads 8- or 16-bit UNORM",
+                    other.color()
+                ))
+            }
+        };
+        Ok(ValueImage {
+            width,
+            height,
+            channels,
+            samples: ValueSamples::Unorm { bits, levels },
+        })
+    }
+
+    /// Whether pixel `k` (row-major) has a channel that is not zero.
+    fn nonzero(&self, k: usize) -> bool {
+        let range = k * self.channels..(k + 1) * self.channels;
+        match &self.samples {
+            ValueSamples::F32(s) => s[range].iter().any(|&v| v != 0.0),
+            ValueSamples::Unorm { levels, .. } => levels[range].iter().any(|&v| v != 0),
+        }
+    }
+}
+
 /// How to read the other renderer's file.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Format {
@@ -71,6 +187,10 @@ pub enum Format {
     /// `compare --as grey` and the grey hunt; as a mask, a pixel is covered where its
     /// level is not zero.
     Grey,
+    /// Values written at covered pixels, for `compare --as values`: a float32 TIFF (1, 3
+    /// or 4 samples a pixel) or a UNORM PNG (8 or 16 bits; grey, grey and alpha, RGB or
+    /// RGBA) ([`ValueImage`]); as a mask, a pixel is covered where a channel is not zero.
+    Values,
 }
 
 impl Format {
@@ -81,12 +201,13 @@ impl Format {
             Format::Ids => "ids",
             Format::Json => "json",
             Format::Grey => "grey",
+            Format::Values => "values",
         }
     }
 
     /// Parses a name written by [`Format::name`].
     pub fn from_name(name: &str) -> Option<Format> {
-        [Format::Mask, Format::Ids, Format::Json, Format::Grey]
+        [Format::Mask, Format::Ids, Format::Json, Format::Grey, Format::Values]
             .into_iter()
             .find(|f| f.name() == name)
     }
@@ -131,16 +252,17 @@ pub struct TheirPixel {
     pub several: bool,
 }
 
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 enum Data {
     Mask(Vec<bool>),
     Ids { values: Vec<u32>, several: Vec<bool> },
     Json(Coverage),
     Grey(GreyImage),
+    Values(ValueImage),
 }
 
 /// Another renderer's output for one canvas.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Theirs {
     width: u32,
     height: u32,
@@ -186,6 +308,18 @@ impl Theirs {
                     levels,
                 })
             }
+            Format::Values => {
+                let mut samples = vec![0.0; n];
+                for (x, y, _) in coverage.iter() {
+                    samples[index(width, x, y)] = 1.0;
+                }
+                Data::Values(ValueImage {
+                    width,
+                    height,
+                    channels: 1,
+                    samples: ValueSamples::F32(samples),
+                })
+            }
         };
         Theirs {
             width,
@@ -213,6 +347,15 @@ impl Theirs {
         };
         match format {
             Format::Json => read_json(bytes).map_err(err),
+            Format::Values => {
+                let image = ValueImage::read(bytes).map_err(err)?;
+                Ok(Theirs {
+                    width: image.width,
+                    height: image.height,
+                    format,
+                    data: Data::Values(image),
+                })
+            }
             Format::Grey => {
                 let grey = GreyImage::read_png(bytes, file).map_err(|e| TheirsError {
                     file: file.to_string(),
@@ -270,7 +413,7 @@ impl Theirs {
                         values: values[part(v)].to_vec(),
                         several: several[part(v)].to_vec(),
                     },
-                    Data::Json(_) | Data::Grey(_) => {
+                    Data::Json(_) | Data::Grey(_) | Data::Values(_) => {
                         return Err(format!(
                             "a multisampled output is a stacked PNG, read --as ids or mask, not --as {}",
                             self.format.name()
@@ -305,6 +448,14 @@ impl Theirs {
         }
     }
 
+    /// Their values, when they were read as `Format::Values`.
+    pub fn values(&self) -> Option<&ValueImage> {
+        match &self.data {
+            Data::Values(v) => Some(v),
+            _ => None,
+        }
+    }
+
     /// Canvas width.
     pub fn width(&self) -> u32 {
         self.width
@@ -330,6 +481,10 @@ impl Theirs {
             },
             Data::Grey(g) => TheirPixel {
                 covered: g.levels[k] != 0,
+                ..TheirPixel::default()
+            },
+            Data::Values(v) => TheirPixel {
+                covered: v.nonzero(k),
                 ..TheirPixel::default()
             },
             Data::Ids { values, several } => TheirPixel {
@@ -371,6 +526,10 @@ impl Theirs {
                 .filter(|&(_, &v)| v != 0)
                 .map(|(k, _)| at(k))
                 .collect(),
+            Data::Values(v) => (0..pixel_count(v.width, v.height))
+                .filter(|&k| v.nonzero(k))
+                .map(at)
+                .collect(),
         }
     }
 
@@ -381,6 +540,7 @@ impl Theirs {
             Data::Ids { values, .. } => values.iter().filter(|&&v| v != 0).count(),
             Data::Json(c) => c.covered_pixels(),
             Data::Grey(g) => g.levels.iter().filter(|&&v| v != 0).count(),
+            Data::Values(v) => (0..pixel_count(v.width, v.height)).filter(|&k| v.nonzero(k)).count(),
         }
     }
 }

@@ -13,9 +13,11 @@
 //! | one image per sample index of a pattern | [`samples::compare_samples`] | [`samples::SampleOptions`] | [`samples::SampleCompareReport`] |
 //! | anti-aliased grey levels | [`grey::compare_grey`] | [`grey::GreyOptions`] | [`grey::GreyReport`] |
 //! | a conservative coverage | [`conservative::compare_conservative`] | [`crate::model::ConservativeRule`] | [`conservative::ConservativeReport`] |
+//! | one varying's values (float32 or UNORM) | [`values::compare_values`] | [`values::ValueOptions`] | [`values::ValueReport`] |
 //! | the convention of a one-sample image | [`fit::fit`] | none | [`fit::FitReport`] |
 //! | the convention and sample positions under a pattern | [`fit::samples::fit_samples`] | [`fit::samples::SampleFitOptions`] | [`fit::samples::SampleFitReport`] |
 //! | the method of a grey image | [`fit::grey::fit_grey`] | none | [`fit::grey::GreyFitReport`] |
+//! | the float interpolator of their values | [`fit::values::fit_values`] | [`values::ValueOptions`] | [`fit::values::ValueFitReport`] |
 //!
 //! [`judge`] is the one entry point over all of them: a [`Question`] in, a [`Judgement`]
 //! (any of the reports, itself a [`Comparison`]) out; what the CLI's `compare` calls.
@@ -30,6 +32,7 @@ pub mod fit;
 pub mod grey;
 mod pages;
 pub mod samples;
+pub mod values;
 
 use std::fmt;
 
@@ -160,6 +163,8 @@ pub enum CompareError {
     /// The grey method judged against cannot draw the scene, or makes levels of another
     /// depth than theirs.
     Method(String),
+    /// A values comparison cannot be made: the varying, or their channels.
+    Values(String),
 }
 
 impl CompareError {
@@ -229,7 +234,7 @@ impl fmt::Display for CompareError {
                  --as grey, coverage with --as mask, ids or json)",
                 format.name()
             ),
-            CompareError::Method(e) => write!(f, "{e}"),
+            CompareError::Method(e) | CompareError::Values(e) => write!(f, "{e}"),
             CompareError::ClipSpace => f.write_str(
                 "--fit does not search scenes with clip_space_triangles (their window-space vertices exist only \
                  after clipping); compare them under a stated convention",
@@ -259,6 +264,10 @@ pub enum Question {
     /// The grey methods that give their levels, the scene's area shapes under this exact
     /// model ([`fit::grey::fit_grey`]).
     FitGrey(Model),
+    /// Their values of one varying ([`values::compare_values`]).
+    Values(Box<values::ValueOptions>),
+    /// The float models that reproduce their values ([`fit::values::fit_values`]).
+    FitValues(Box<values::ValueOptions>),
 }
 
 impl Question {
@@ -275,6 +284,7 @@ impl Question {
             Question::Samples(o) => format!("{text} (model {}, {} samples)", o.model, o.pattern),
             Question::Grey(o) => format!("{text} (model {})", o.model),
             Question::FitGrey(model) => format!("{text} (model {model})"),
+            Question::Values(o) | Question::FitValues(o) => format!("{text} (model {})", o.model),
             Question::Conservative(_) | Question::Fit | Question::FitSamples(_) => text,
         }
     }
@@ -297,6 +307,10 @@ pub enum Judgement {
     FitSamples(fit::samples::SampleFitReport),
     /// [`Question::FitGrey`]'s.
     FitGrey(fit::grey::GreyFitReport),
+    /// [`Question::Values`]'s.
+    Values(values::ValueReport),
+    /// [`Question::FitValues`]'s.
+    FitValues(fit::values::ValueFitReport),
 }
 
 impl Judgement {
@@ -319,6 +333,8 @@ impl Judgement {
             Judgement::Fit(r) => r,
             Judgement::FitSamples(r) => r,
             Judgement::FitGrey(r) => r,
+            Judgement::Values(r) => r,
+            Judgement::FitValues(r) => r,
         }
     }
 }
@@ -373,6 +389,8 @@ pub fn judge(
             Judgement::Conservative(conservative::compare_conservative(primitives, target, theirs, rule)?)
         }
         Question::Fit => Judgement::Fit(fit::fit(primitives, target, theirs)?),
+        Question::Values(o) => Judgement::Values(values::compare_values(primitives, target, theirs, o)?),
+        Question::FitValues(o) => Judgement::FitValues(fit::values::fit_values(primitives, target, theirs, o)?),
         Question::FitSamples(o) => Judgement::FitSamples(fit::samples::fit_samples(primitives, target, theirs, o)?),
         Question::FitGrey(model) => {
             let grey = grey_of(theirs)?;

@@ -363,7 +363,7 @@ fn minus(a: &[u32], b: &[u32]) -> Vec<u32> {
 /// they agree (as far as the format tells).
 fn differ(o: &[u32], t: &TheirPixel, format: Format) -> Option<DiffOwners> {
     match format {
-        Format::Mask | Format::Grey => match (o.is_empty(), t.covered) {
+        Format::Mask | Format::Grey | Format::Values => match (o.is_empty(), t.covered) {
             (false, false) => Some((PixelKind::Missing, o.to_vec(), Vec::new(), false)),
             (true, true) => Some((PixelKind::Extra, Vec::new(), Vec::new(), true)),
             _ => None,

@@ -29,6 +29,7 @@ use serde_json::{json, Value};
 
 pub mod grey;
 pub mod samples;
+pub mod values;
 
 use super::binary::{count_differences, PixelKind};
 use super::{CompareError, SizeMismatch};
