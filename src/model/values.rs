@@ -206,14 +206,7 @@ pub fn values_image(
     height: u32,
     bits: u32,
 ) -> Result<DynamicImage, ValuesImageError> {
-    let varying = &varyings.list[k];
-    let channels = varying.channels;
-    if channels > 4 {
-        return Err(ValuesImageError::TooManyChannels {
-            name: varying.name.clone(),
-            channels,
-        });
-    }
+    let channels = pixel_channels(varyings, k)?;
     if bits != 8 && bits != 16 {
         return Err(ValuesImageError::Bits(bits));
     }
@@ -274,14 +267,7 @@ pub fn values_tiff(
     height: u32,
 ) -> Result<Vec<u8>, ValuesImageError> {
     use tiff::encoder::{colortype, TiffEncoder};
-    let varying = &varyings.list[k];
-    let channels = varying.channels;
-    if channels > 4 {
-        return Err(ValuesImageError::TooManyChannels {
-            name: varying.name.clone(),
-            channels,
-        });
-    }
+    let channels = pixel_channels(varyings, k)?;
     let stride = if channels == 2 { 3 } else { channels };
     let mut samples = vec![0f32; width as usize * height as usize * stride];
     for v in values.iter().filter(|v| v.sample == 0) {
@@ -305,6 +291,18 @@ pub fn values_tiff(
     };
     written.expect("a TIFF of the image's own size, in memory");
     Ok(out.into_inner())
+}
+
+/// Varying `k`'s channel count, when an image pixel holds it (1 to 4).
+fn pixel_channels(varyings: &Varyings, k: usize) -> Result<usize, ValuesImageError> {
+    let varying = &varyings.list[k];
+    if varying.channels > 4 {
+        return Err(ValuesImageError::TooManyChannels {
+            name: varying.name.clone(),
+            channels: varying.channels,
+        });
+    }
+    Ok(varying.channels)
 }
 
 /// Direct3D's centroid of primitive `id` in pixel `(x, y)`: the centre when it covers

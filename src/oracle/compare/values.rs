@@ -36,7 +36,7 @@ use crate::convention::Target;
 use crate::coverage::samples::SampleCoverage;
 use crate::geom::Point;
 use crate::interp::envelope::value_envelope;
-use crate::interp::values::{Interpolation, ProvokingVertex, Sampling, ValueSetup, Varyings};
+use crate::interp::values::{Interpolation, ProvokingVertex, Sampling, ValueSetup, Varying, Varyings};
 use crate::model::{exact_values, render, Model, Primitives};
 use crate::num::exact::{exact_text, nearest_f32};
 use crate::num::unorm::{unorm_levels, UnormRule};
@@ -308,26 +308,8 @@ pub fn compare_values(
     theirs: &Theirs,
     options: &ValueOptions,
 ) -> Result<ValueReport, CompareError> {
-    let image = theirs.values().ok_or(CompareError::Format(theirs.format()))?;
-    SizeMismatch::check(theirs, target).map_err(CompareError::Size)?;
-    let varying = options
-        .varyings
-        .list
-        .get(options.varying)
-        .ok_or_else(|| CompareError::Values("the scene declares no such varying".to_string()))?;
-    if image.channels < varying.channels {
-        return Err(CompareError::Values(format!(
-            "their image has {} channels a pixel; the varying {:?} has {}",
-            image.channels, varying.name, varying.channels
-        )));
-    }
+    let (image, varying, range) = their_values(target, theirs, options)?;
     let all = judged(primitives, target, options)?;
-    let range = options
-        .varyings
-        .ranges()
-        .nth(options.varying)
-        .map(|(_, r)| r)
-        .expect("the varying exists");
     let (bits, read_as) = match &image.samples {
         ValueSamples::F32(_) => (0, "float32".to_string()),
         ValueSamples::Unorm { bits, .. } => (*bits, format!("unorm{bits} ({} rule)", options.unorm.name())),
@@ -389,6 +371,29 @@ pub fn compare_values(
         .map(|(&c, n)| (c, n))
         .collect();
     Ok(report)
+}
+
+/// Their values image, checked against the canvas and the varying judged, with the
+/// varying and the range of its channels in a vertex's values.
+pub(crate) fn their_values<'a>(
+    target: &Target,
+    theirs: &'a Theirs,
+    options: &'a ValueOptions,
+) -> Result<(&'a ValueImage, &'a Varying, std::ops::Range<usize>), CompareError> {
+    let image = theirs.values().ok_or(CompareError::Format(theirs.format()))?;
+    SizeMismatch::check(theirs, target).map_err(CompareError::Size)?;
+    let (varying, range) = options
+        .varyings
+        .ranges()
+        .nth(options.varying)
+        .ok_or_else(|| CompareError::Values("the scene declares no such varying".to_string()))?;
+    if image.channels < varying.channels {
+        return Err(CompareError::Values(format!(
+            "their image has {} channels a pixel; the varying {:?} has {}",
+            image.channels, varying.name, varying.channels
+        )));
+    }
+    Ok((image, varying, range))
 }
 
 /// The covered pixels of the oracle model with their exact values: what is judged.

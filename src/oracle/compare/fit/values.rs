@@ -11,8 +11,8 @@ use std::fmt::Write as _;
 
 use serde_json::{json, Value};
 
-use super::super::values::{judged, their_channels, TheirValue, ValueOptions};
-use super::super::{CompareError, Comparison, SizeMismatch};
+use super::super::values::{judged, their_channels, their_values, TheirValue, ValueOptions};
+use super::super::{CompareError, Comparison};
 use crate::convention::Target;
 use crate::interp::float::{FloatInterpolator, FloatTriangle};
 use crate::interp::values::ValueSetup;
@@ -85,23 +85,11 @@ pub fn fit_values(
     theirs: &Theirs,
     options: &ValueOptions,
 ) -> Result<ValueFitReport, CompareError> {
-    let image = theirs.values().ok_or(CompareError::Format(theirs.format()))?;
-    SizeMismatch::check(theirs, target).map_err(CompareError::Size)?;
+    let (image, varying, range) = their_values(target, theirs, options)?;
     if !matches!(image.samples, ValueSamples::F32(_)) {
         return Err(CompareError::Values(
             "--fit reproduces float32 values bit for bit; their image holds UNORM levels".to_string(),
         ));
-    }
-    let (varying, range) = options
-        .varyings
-        .ranges()
-        .nth(options.varying)
-        .ok_or_else(|| CompareError::Values("the scene declares no such varying".to_string()))?;
-    if image.channels < varying.channels {
-        return Err(CompareError::Values(format!(
-            "their image has {} channels a pixel; the varying {:?} has {}",
-            image.channels, varying.name, varying.channels
-        )));
     }
     let all = judged(primitives, target, options)?;
     let models = FloatInterpolator::all();
