@@ -11,6 +11,7 @@
 
 pub mod envelope;
 pub mod float;
+pub mod planned;
 pub mod values;
 
 use glam::{DVec2, Vec2};

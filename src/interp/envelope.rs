@@ -105,6 +105,7 @@ fn diff(a: Input, b: Input) -> (f64, f64) {
 
 /// A window-space triangle as the bound sees it: positions and, per vertex, the function
 /// interpolated (a value, `f / w` or `1 / w`), each with its absolute-value companion.
+#[derive(Debug, Clone)]
 struct Plane {
     x: [Input; 3],
     y: [Input; 3],
@@ -188,62 +189,124 @@ pub fn value_envelope(
     channels: std::ops::Range<usize>,
     p: &Point,
 ) -> Vec<Envelope> {
-    let at = (Input::of(&p.x), Input::of(&p.y));
-    match setup {
-        ValueSetup::Triangle(t) => {
-            let w: Vec<f64> = t.h.iter().map(|h| nearest_f64(&h[2]).unwrap_or(0.0)).collect();
-            if interpolation == Interpolation::Flat {
-                // The provoking vertex is the caller's; every vertex's value is a copy.
-                return channels
-                    .map(|k| {
-                        let most = t.values.iter().map(|v| Input::of(&v[k]).v.abs()).fold(0.0, f64::max);
-                        Envelope::copy(most)
+    channels
+        .map(|k| EnvelopeSetup::new(setup, interpolation, k).at(p))
+        .collect()
+}
+
+/// One channel's envelope, its primitive's part set up once: what [`value_envelope`]
+/// evaluates, for many points.
+#[derive(Debug, Clone)]
+pub struct EnvelopeSetup {
+    kind: Kind,
+}
+
+#[derive(Debug, Clone)]
+enum Kind {
+    Fixed(Envelope),
+    Linear(Plane),
+    Smooth {
+        n: Plane,
+        d: Plane,
+    },
+    Segment {
+        ends: [(Input, Input); 2],
+        fa: f64,
+        fb: f64,
+    },
+}
+
+impl EnvelopeSetup {
+    /// Channel `channel` of `setup` under `interpolation`.
+    pub fn new(setup: &ValueSetup, interpolation: Interpolation, channel: usize) -> EnvelopeSetup {
+        EnvelopeSetup::channels(setup, interpolation, channel..channel + 1)
+            .pop()
+            .expect("one channel")
+    }
+
+    /// The channels `channels` of `setup`, the primitive's positions read once.
+    pub fn channels(
+        setup: &ValueSetup,
+        interpolation: Interpolation,
+        channels: std::ops::Range<usize>,
+    ) -> Vec<EnvelopeSetup> {
+        let each = |kind: &dyn Fn(usize) -> Kind| channels.clone().map(|k| EnvelopeSetup { kind: kind(k) }).collect();
+        match setup {
+            ValueSetup::Triangle(t) => {
+                let value = |i: usize, k: usize| Input::of(&t.values[i][k]).v;
+                if interpolation == Interpolation::Flat {
+                    // The provoking vertex is the caller's; every vertex's value is a copy.
+                    return each(&|k| {
+                        Kind::Fixed(Envelope::copy((0..3).map(|i| value(i, k).abs()).fold(0.0, f64::max)))
+                    });
+                }
+                let w: Vec<f64> = t.h.iter().map(|h| nearest_f64(&h[2]).unwrap_or(0.0)).collect();
+                if w.iter().any(|&w| w <= 0.0 || !w.is_finite()) {
+                    return each(&|_| Kind::Fixed(Envelope::NONE));
+                }
+                let pos = |i: usize, c: usize| Input::of(&(&t.h[i][c] / &t.h[i][2]));
+                let (x, y) = ([0, 1, 2].map(|i| pos(i, 0)), [0, 1, 2].map(|i| pos(i, 1)));
+                let plane = |g: [f64; 3]| Plane { x, y, g };
+                if interpolation == Interpolation::NoPerspective {
+                    each(&|k| Kind::Linear(plane([0, 1, 2].map(|i| value(i, k)))))
+                } else {
+                    let d = plane([0, 1, 2].map(|i| 1.0 / w[i]));
+                    each(&|k| Kind::Smooth {
+                        n: plane([0, 1, 2].map(|i| value(i, k) / w[i])),
+                        d: d.clone(),
                     })
-                    .collect();
+                }
             }
-            if w.iter().any(|&w| w <= 0.0 || !w.is_finite()) {
-                return vec![Envelope::NONE; channels.len()];
-            }
-            let pos = |i: usize, c: usize| Input::of(&(&t.h[i][c] / &t.h[i][2]));
-            let plane = |g: [f64; 3]| Plane {
-                x: [0, 1, 2].map(|i| pos(i, 0)),
-                y: [0, 1, 2].map(|i| pos(i, 1)),
-                g,
-            };
-            let value = |k: usize, i: usize| Input::of(&t.values[i][k]).v;
-            channels
-                .map(|k| {
-                    if interpolation == Interpolation::NoPerspective {
-                        return bounds(plane([0, 1, 2].map(|i| value(k, i))).abs_sum(at));
-                    }
-                    let n = plane([0, 1, 2].map(|i| value(k, i) / w[i])).abs_sum(at);
-                    let d = plane([0, 1, 2].map(|i| 1.0 / w[i])).abs_sum(at);
-                    match (n, d) {
-                        (Some(n), Some(d)) => {
-                            let f = n.2 / d.2;
-                            let quotient = |sn: f64, sd: f64| {
-                                let (en, ed) = (gamma() * sn, gamma() * sd);
-                                let room = d.2.abs() - ed;
-                                (room > 0.0).then(|| (en + f.abs() * ed) / room + U * f.abs())
-                            };
-                            Envelope {
-                                near: quotient(n.0, d.0),
-                                far: quotient(n.1, d.1),
-                            }
-                        }
-                        _ => Envelope::NONE,
+            ValueSetup::Segment(s) => {
+                let ends = [&s.ends[0], &s.ends[1]].map(|e| (Input::of(&e.x), Input::of(&e.y)));
+                each(&|k| {
+                    let fa = Input::of(&s.values[0][k]).v;
+                    let fb = Input::of(&s.values[1][k]).v;
+                    if interpolation == Interpolation::Flat {
+                        Kind::Fixed(Envelope::copy(fa.abs().max(fb.abs())))
+                    } else {
+                        Kind::Segment { ends, fa, fb }
                     }
                 })
-                .collect()
+            }
         }
-        ValueSetup::Segment(s) => channels
-            .map(|k| {
-                let fa = Input::of(&s.values[0][k]).v;
-                let fb = Input::of(&s.values[1][k]).v;
-                if interpolation == Interpolation::Flat {
-                    return Envelope::copy(fa.abs().max(fb.abs()));
+    }
+
+    /// The envelope at window point `p`.
+    pub fn at(&self, p: &Point) -> Envelope {
+        self.at_input((Input::of(&p.x), Input::of(&p.y)))
+    }
+
+    /// The envelope at the point `(x + centre, y + centre)` of pixel `(x, y)`, `centre`
+    /// 1/2 or 0 (exact in f32 below 2^22).
+    pub fn at_pixel(&self, x: u32, y: u32, centre: f64) -> Envelope {
+        let input = |c: u32| Input {
+            v: f64::from(c) + centre,
+            exact: c < 1 << 22,
+        };
+        self.at_input((input(x), input(y)))
+    }
+
+    fn at_input(&self, at: (Input, Input)) -> Envelope {
+        match &self.kind {
+            Kind::Fixed(e) => *e,
+            Kind::Linear(plane) => bounds(plane.abs_sum(at)),
+            Kind::Smooth { n, d } => match (n.abs_sum(at), d.abs_sum(at)) {
+                (Some(n), Some(d)) => {
+                    let f = n.2 / d.2;
+                    let quotient = |sn: f64, sd: f64| {
+                        let (en, ed) = (gamma() * sn, gamma() * sd);
+                        let room = d.2.abs() - ed;
+                        (room > 0.0).then(|| (en + f.abs() * ed) / room + U * f.abs())
+                    };
+                    Envelope {
+                        near: quotient(n.0, d.0),
+                        far: quotient(n.1, d.1),
+                    }
                 }
-                let ends = [&s.ends[0], &s.ends[1]].map(|e| (Input::of(&e.x), Input::of(&e.y)));
+                _ => Envelope::NONE,
+            },
+            Kind::Segment { ends, fa, fb } => {
                 let (dx, adx) = diff(ends[1].0, ends[0].0);
                 let (dy, ady) = diff(ends[1].1, ends[0].1);
                 let length2 = dx * dx + dy * dy;
@@ -257,8 +320,8 @@ pub fn value_envelope(
                 let df_abs = fa.abs() + fb.abs();
                 let e = Some(gamma() * (fa.abs() + (t_abs + t.abs()) * df_abs));
                 Envelope { near: e, far: e }
-            })
-            .collect(),
+            }
+        }
     }
 }
 

@@ -33,15 +33,14 @@ use serde_json::{json, Value};
 
 use super::{CompareError, Comparison, SizeMismatch};
 use crate::convention::Target;
-use crate::coverage::samples::SampleCoverage;
 use crate::geom::Point;
-use crate::interp::envelope::value_envelope;
-use crate::interp::values::{Interpolation, ProvokingVertex, Sampling, ValueSetup, Varying, Varyings};
-use crate::model::{exact_values, render, Model, Primitives};
-use crate::num::exact::{exact_text, nearest_f32};
+use crate::interp::envelope::{value_envelope, EnvelopeSetup};
+use crate::interp::planned::PlannedValue;
+use crate::interp::values::{Interpolation, NoValue, ProvokingVertex, Sampling, ValueSetup, Varying, Varyings};
+use crate::model::{render, Model, Primitives};
+use crate::num::exact::{exact_text, nearest_f32, nearest_f64};
 use crate::num::unorm::{unorm_levels, UnormRule};
 use crate::oracle::theirs::{Theirs, ValueImage, ValueSamples};
-use crate::pattern::SamplePattern;
 use crate::raster::sample_exact;
 use crate::scene::Scene;
 
@@ -309,7 +308,7 @@ pub fn compare_values(
     options: &ValueOptions,
 ) -> Result<ValueReport, CompareError> {
     let (image, varying, range) = their_values(target, theirs, options)?;
-    let all = judged(primitives, target, options)?;
+    let owners = covered_owners(primitives, target, options)?;
     let (bits, read_as) = match &image.samples {
         ValueSamples::F32(_) => (0, "float32".to_string()),
         ValueSamples::Unorm { bits, .. } => (*bits, format!("unorm{bits} ({} rule)", options.unorm.name())),
@@ -326,25 +325,53 @@ pub fn compare_values(
         max_ulps_inside: 0,
     };
     let mut counts = [0usize; ValueClass::ALL.len()];
-    for sample in &all {
-        let Ok(exact) = &sample.values[options.varying] else {
+    let mut plans = Plans::new(options, range.clone(), &target.convention.pixel_centre.offset());
+    let mut listed_inside = 0;
+    for &(x, y, id) in &owners {
+        let Some(plan) = plans.of(id) else {
             report.without_value += 1;
             continue;
         };
-        let setup = options.setups[sample.id as usize]
-            .as_ref()
-            .expect("a value has a setup");
-        let theirs_here = their_channels(image, sample.x, sample.y, varying.channels);
+        let theirs_here = their_channels(image, x, y, varying.channels);
+        let Ok((class, nearest)) = plan.judge(&theirs_here, x, y) else {
+            report.without_value += 1;
+            continue;
+        };
+        let setup = options.setups[id as usize].as_ref().expect("a plan has a setup");
+        // The exact values, where the fast judgement did not settle the class or the
+        // pixel is listed.
+        let list = class.is_some_and(|c| c != ValueClass::Exact) && listed_inside < LISTED_INSIDE;
+        let exact = if class.is_none() || list || class.is_some_and(ValueClass::is_off) {
+            match plan.exact(x, y) {
+                Ok(v) => Some(v),
+                Err(_) => {
+                    report.without_value += 1;
+                    continue;
+                }
+            }
+        } else {
+            None
+        };
         // With one sample per pixel a centroid is the sample, which is the centre.
-        let at = sample_exact(sample.x, sample.y, target);
-        let class = classify(&theirs_here, exact, setup, &at, options, range.clone(), bits);
+        let class = class.unwrap_or_else(|| {
+            let exact = exact.as_ref().expect("computed when undecided");
+            classify(
+                &theirs_here,
+                exact,
+                setup,
+                &sample_exact(x, y, target),
+                options,
+                range.clone(),
+                bits,
+            )
+        });
         counts[ValueClass::ALL.iter().position(|&c| c == class).expect("listed")] += 1;
         report.judged += 1;
         let ulps: Vec<Option<u64>> = theirs_here
             .iter()
-            .zip(exact)
-            .map(|(t, v)| match (t, nearest_f32(v)) {
-                (TheirValue::F32(f), Some(n)) if f.is_finite() => Some(f32_steps(*f, n)),
+            .zip(&nearest)
+            .map(|(t, n)| match (t, n) {
+                (TheirValue::F32(f), Some(n)) if f.is_finite() => Some(f32_steps(*f, *n)),
                 _ => None,
             })
             .collect();
@@ -352,13 +379,14 @@ pub fn compare_values(
             let most = ulps.iter().flatten().copied().max().unwrap_or(0);
             report.max_ulps_inside = report.max_ulps_inside.max(most);
         }
-        if class != ValueClass::Exact {
+        if class != ValueClass::Exact && (class.is_off() || list) {
+            listed_inside += usize::from(!class.is_off());
             report.pixels.push(ValuePixel {
-                x: sample.x,
-                y: sample.y,
-                id: sample.id,
+                x,
+                y,
+                id,
                 class,
-                exact: exact.clone(),
+                exact: exact.expect("computed for a listed pixel"),
                 theirs: theirs_here,
                 ulps,
             });
@@ -396,24 +424,118 @@ pub(crate) fn their_values<'a>(
     Ok((image, varying, range))
 }
 
-/// The covered pixels of the oracle model with their exact values: what is judged.
-pub(crate) fn judged(
+/// The pixels the oracle model covers, row by row, each with the primitive it shows (the
+/// highest id): what is judged.
+pub(crate) fn covered_owners(
     primitives: &Primitives,
     target: &Target,
     options: &ValueOptions,
-) -> Result<Vec<crate::model::SampleValues>, CompareError> {
+) -> Result<Vec<(u32, u32, u32)>, CompareError> {
     if !options.model.is_exact() {
         return Err(CompareError::NotExact(options.model));
     }
     let coverage = render(primitives, target, options.model).map_err(CompareError::Model)?;
-    let pattern = SamplePattern::single(&target.convention);
-    Ok(exact_values(
-        &SampleCoverage::from_samples(vec![coverage]),
-        &pattern,
-        &options.setups,
-        &options.varyings,
-        target,
-    ))
+    let mut owners: Vec<(u32, u32, u32)> = coverage
+        .iter()
+        .filter_map(|(x, y, ids)| ids.last().map(|&id| (x, y, id)))
+        .collect();
+    owners.sort_unstable_by_key(|&(x, y, _)| (y, x));
+    Ok(owners)
+}
+
+/// How many pixels inside the envelope a report lists one by one (every pixel off is
+/// listed; the counts are complete).
+pub const LISTED_INSIDE: usize = 1000;
+
+/// Each primitive's planned values and envelopes, set up on first use.
+pub(crate) struct Plans<'a> {
+    options: &'a ValueOptions,
+    channels: std::ops::Range<usize>,
+    centre: BigRational,
+    centre_f64: f64,
+    plans: Vec<Option<Option<Plan>>>,
+}
+
+/// One primitive's channels: planned values and envelopes.
+pub(crate) struct Plan {
+    values: Vec<PlannedValue>,
+    envelopes: Vec<EnvelopeSetup>,
+    centre: f64,
+}
+
+impl<'a> Plans<'a> {
+    pub(crate) fn new(options: &'a ValueOptions, channels: std::ops::Range<usize>, centre: &BigRational) -> Plans<'a> {
+        Plans {
+            options,
+            channels,
+            centre: centre.clone(),
+            centre_f64: nearest_f64(centre).unwrap_or(0.5),
+            plans: (0..options.setups.len()).map(|_| None).collect(),
+        }
+    }
+
+    /// Primitive `id`'s plan; `None` for a primitive that carries no values.
+    pub(crate) fn of(&mut self, id: u32) -> Option<&Plan> {
+        let (options, channels, centre, centre_f64) = (self.options, &self.channels, &self.centre, self.centre_f64);
+        self.plans[id as usize]
+            .get_or_insert_with(|| {
+                let setup = options.setups[id as usize].as_ref()?;
+                let interpolation = options.varyings.list[options.varying].interpolation;
+                let provoking = options.varyings.provoking;
+                Some(Plan {
+                    values: PlannedValue::channels(setup, interpolation, provoking, channels.clone(), centre),
+                    envelopes: EnvelopeSetup::channels(setup, interpolation, channels.clone()),
+                    centre: centre_f64,
+                })
+            })
+            .as_ref()
+    }
+}
+
+impl Plan {
+    /// The exact values at pixel `(x, y)`.
+    pub(crate) fn exact(&self, x: u32, y: u32) -> Result<Vec<BigRational>, NoValue> {
+        self.values.iter().map(|v| v.exact(x, y)).collect()
+    }
+
+    /// Each channel's exact value rounded to the nearest f32 at pixel `(x, y)`.
+    pub(crate) fn nearest(&self, x: u32, y: u32) -> Result<Vec<Option<f32>>, NoValue> {
+        self.values.iter().map(|v| v.nearest_f32(x, y)).collect()
+    }
+
+    /// The class of their float32 channels at pixel `(x, y)` when the planned values
+    /// settle it (`exact`, `f32`, `far-anchor`), `None` when only the exact search can
+    /// (a pixel off, or UNORM levels); and the correctly rounded values.
+    fn judge(&self, theirs: &[TheirValue], x: u32, y: u32) -> Result<(Option<ValueClass>, Vec<Option<f32>>), NoValue> {
+        let nearest = self.nearest(x, y)?;
+        let mut class = ValueClass::Exact;
+        for (c, (t, n)) in theirs.iter().zip(&nearest).enumerate() {
+            let TheirValue::F32(t) = *t else {
+                return Ok((None, nearest));
+            };
+            if n.is_some_and(|n| n == t && n.is_sign_negative() == t.is_sign_negative())
+                || (*n == Some(0.0) && t == 0.0)
+            {
+                continue;
+            }
+            if !t.is_finite() {
+                return Ok((None, nearest));
+            }
+            let envelope = self.envelopes[c].at_pixel(x, y, self.centre);
+            let inside = |bound: Option<f64>| -> Result<bool, NoValue> {
+                bound.map_or(Ok(false), |b| self.values[c].within(x, y, t, b))
+            };
+            let here = if inside(envelope.near)? {
+                ValueClass::F32
+            } else if inside(envelope.far)? {
+                ValueClass::FarAnchor
+            } else {
+                return Ok((None, nearest));
+            };
+            class = class.max(here);
+        }
+        Ok((Some(class), nearest))
+    }
 }
 
 /// Their first `channels` channels at `(x, y)`.

@@ -11,7 +11,7 @@ use std::fmt::Write as _;
 
 use serde_json::{json, Value};
 
-use super::super::values::{judged, their_channels, their_values, TheirValue, ValueOptions};
+use super::super::values::{covered_owners, their_channels, their_values, Plans, TheirValue, ValueOptions};
 use super::super::{CompareError, Comparison};
 use crate::convention::Target;
 use crate::interp::float::{FloatInterpolator, FloatTriangle};
@@ -91,7 +91,8 @@ pub fn fit_values(
             "--fit reproduces float32 values bit for bit; their image holds UNORM levels".to_string(),
         ));
     }
-    let all = judged(primitives, target, options)?;
+    let owners = covered_owners(primitives, target, options)?;
+    let mut plans = Plans::new(options, range.clone(), &target.convention.pixel_centre.offset());
     let models = FloatInterpolator::all();
     let mut fits: Vec<ModelFit> = models
         .iter()
@@ -108,11 +109,12 @@ pub fn fit_values(
     } else {
         0.0
     };
-    for sample in &all {
-        if sample.values[options.varying].is_err() {
+    for &(x, y, id) in &owners {
+        // A pixel without an exact value (a polygon's, on a horizon) is not judged.
+        if plans.of(id).is_none_or(|p| p.nearest(x, y).is_err()) {
             continue;
         }
-        let id = sample.id as usize;
+        let id = id as usize;
         let triangle = triangles[id]
             .get_or_insert_with(|| options.setups[id].as_ref().and_then(float_triangle))
             .as_ref();
@@ -120,7 +122,7 @@ pub fn fit_values(
             skipped += 1;
             continue;
         };
-        let theirs_here = their_channels(image, sample.x, sample.y, varying.channels);
+        let theirs_here = their_channels(image, x, y, varying.channels);
         for (c, t) in theirs_here.iter().enumerate() {
             let TheirValue::F32(t) = *t else { continue };
             judged_channels += 1;
@@ -130,7 +132,7 @@ pub fn fit_values(
                     varying.interpolation,
                     options.varyings.provoking,
                     range.start + c,
-                    (sample.x, sample.y),
+                    (x, y),
                     target.height,
                     centre,
                 );

@@ -1,0 +1,152 @@
+//! The planned values (`interp::planned`): at every pixel centre the same exact value and
+//! the same nearest f32 as the plain definition (`ValueSetup::value`), and the same
+//! answer to "within a bound of an f32", on random triangles (window-space with w,
+//! clip-space with a vertex behind the eye), segments, values placed exactly on f32
+//! midpoints, and canvases far from the origin.
+
+use num_rational::BigRational;
+use num_traits::Signed;
+use proptest::prelude::*;
+use proptest::test_runner::Config;
+use rasterproof::geom::Point;
+use rasterproof::interp::planned::PlannedValue;
+use rasterproof::interp::values::{Interpolation, ProvokingVertex, ValueSegment, ValueSetup, ValueTriangle};
+use rasterproof::num::exact::nearest_f32;
+
+use crate::common::config;
+
+fn q(n: i64, d: i64) -> BigRational {
+    BigRational::new(n.into(), d.into())
+}
+
+/// A value: thirds, tenths, 256ths, or exactly the midpoint of two f32 neighbours near
+/// the given magnitude (1 + 2^-24 times a power of two), which a filter must not round.
+fn value() -> impl Strategy<Value = BigRational> {
+    prop_oneof![
+        (-4000i64..4000, prop::sample::select(vec![1i64, 3, 10, 256])).prop_map(|(n, d)| q(n, d)),
+        (-20i32..20, any::<bool>(), -1i64..2).prop_map(|(e, neg, nudge)| {
+            // The midpoint, or a hair (2^-70) beside it, which f64 cannot hold.
+            let mid = q((1 << 24) + 1, 1 << 24) + BigRational::new(nudge.into(), num_bigint::BigInt::from(1) << 70);
+            let scaled = if e >= 0 {
+                mid * q(1 << e, 1)
+            } else {
+                mid / q(1 << -e, 1)
+            };
+            if neg {
+                -scaled
+            } else {
+                scaled
+            }
+        }),
+    ]
+}
+
+fn setup() -> impl Strategy<Value = (ValueSetup, i64)> {
+    let coordinate = (0i64..48 * 256).prop_map(|n| q(n, 256));
+    prop_oneof![
+        // A window-space triangle with w in 1/4 .. 8, at an offset.
+        (
+            prop::array::uniform3((coordinate.clone(), coordinate.clone())),
+            prop::array::uniform3(prop::sample::select(vec![q(1, 4), q(1, 1), q(2, 1), q(7, 3), q(8, 1)])),
+            prop::array::uniform3(prop::array::uniform2(value())),
+            prop::sample::select(vec![0i64, 1 << 12, (1 << 24) - 64]),
+        )
+            .prop_map(|(p, w, v, offset)| {
+                let points = p.map(|(x, y)| Point::new(x + q(offset, 1), y));
+                let t = ValueTriangle::window(
+                    [&points[0], &points[1], &points[2]],
+                    [&w[0], &w[1], &w[2]],
+                    v.map(|v| v.to_vec()),
+                );
+                (ValueSetup::Triangle(Box::new(t)), offset)
+            }),
+        // Homogeneous vertices, one of them possibly behind the eye.
+        (
+            prop::array::uniform3(prop::array::uniform3(-64i64..64)),
+            prop::array::uniform3(prop::array::uniform2(value())),
+        )
+            .prop_map(|(h, v)| {
+                let t = ValueTriangle {
+                    h: h.map(|c| [q(c[0] * 4, 1), q(c[1] * 4, 1), q(c[2], 16)]),
+                    values: v.map(|v| v.to_vec()),
+                };
+                (ValueSetup::Triangle(Box::new(t)), 0)
+            }),
+        // A segment.
+        (
+            prop::array::uniform2((coordinate.clone(), coordinate)),
+            prop::array::uniform2(prop::array::uniform2(value())),
+        )
+            .prop_map(|(e, v)| {
+                let s = ValueSegment {
+                    ends: e.map(|(x, y)| Point::new(x, y)),
+                    values: v.map(|v| v.to_vec()),
+                };
+                (ValueSetup::Segment(Box::new(s)), 0)
+            }),
+    ]
+}
+
+fn interpolation() -> impl Strategy<Value = Interpolation> {
+    prop::sample::select(Interpolation::ALL.to_vec())
+}
+
+proptest! {
+    #![proptest_config(Config { cases: 512, ..config("proptest-regressions/values_planned.txt") })]
+
+    #[test]
+    fn planned_values_are_the_plain_ones(
+        (setup, offset) in setup(),
+        interpolation in interpolation(),
+        last in any::<bool>(),
+        half in any::<bool>(),
+        px in 0u32..56,
+        py in 0u32..56,
+        channel in 0usize..2,
+        steps in -3i32..4,
+        bound_exp in -30i32..4,
+    ) {
+        let provoking = if last { ProvokingVertex::Last } else { ProvokingVertex::First };
+        let centre = if half { q(1, 2) } else { q(0, 1) };
+        let x = u32::try_from(offset).unwrap() + px;
+        let p = Point::new(q(i64::from(x), 1) + &centre, q(i64::from(py), 1) + &centre);
+        let plain = setup.value(interpolation, provoking, channel..channel + 1, &p).map(|v| v[0].clone());
+        let planned = PlannedValue::new(&setup, interpolation, provoking, channel, &centre);
+        prop_assert_eq!(planned.exact(x, py), plain.clone());
+        prop_assert_eq!(planned.nearest_f32(x, py), plain.clone().map(|v| nearest_f32(&v)));
+        // Within a bound of an f32 a few steps from the nearest: both ways of deciding.
+        if let Ok(v) = plain {
+            if let Some(n) = nearest_f32(&v).filter(|n| n.is_finite() && *n != 0.0) {
+                let t = f32::from_bits(n.to_bits().wrapping_add_signed(steps));
+                let bound = 2f64.powi(bound_exp) * f64::from(n).abs() * 1e-6;
+                let exact = (BigRational::from_float(f64::from(t)).unwrap() - &v).abs()
+                    <= BigRational::from_float(bound).unwrap();
+                prop_assert_eq!(planned.within(x, py, t, bound), Ok(exact));
+            }
+        }
+    }
+}
+
+/// A value exactly on the midpoint of 1 and its f32 successor rounds to even (1); a
+/// hair (2^-70) above it, which its f64 estimate cannot hold, rounds up.
+#[test]
+fn a_value_on_an_f32_midpoint_rounds_to_even() {
+    let mid = q((1 << 24) + 1, 1 << 24);
+    let above = &mid + BigRational::new(1.into(), num_bigint::BigInt::from(1) << 70);
+    let (a, b, c) = (Point::from_ints(0, 0), Point::from_ints(8, 0), Point::from_ints(0, 8));
+    for (v, expected) in [(mid, 1.0), (above, 1.0 + f32::EPSILON)] {
+        let t = ValueTriangle::window(
+            [&a, &b, &c],
+            [&q(1, 1), &q(1, 1), &q(1, 1)],
+            [vec![v.clone()], vec![v.clone()], vec![v]],
+        );
+        let planned = PlannedValue::new(
+            &ValueSetup::Triangle(Box::new(t)),
+            Interpolation::Smooth,
+            ProvokingVertex::First,
+            0,
+            &q(1, 2),
+        );
+        assert_eq!(planned.nearest_f32(2, 3), Ok(Some(expected)));
+    }
+}
