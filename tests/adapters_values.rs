@@ -176,3 +176,76 @@ fn llvmpipe_with_a_deliberate_fault_is_named() {
         report["counts"]
     );
 }
+
+/// `hunt --as values` with the adapter's command: (exit code, report).
+fn hunt(args: &[&str], fault: Option<&str>) -> (i32, Value) {
+    let dir = tempdir::Dir::new("values-hunt");
+    let report = dir.path().join("report.json");
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/osmesa/values.py");
+    let mut cmd = format!("{} {} {{scene}} {{out}}", python(), script.display());
+    if let Some(f) = fault {
+        cmd.push_str(&format!(" --fault {f}"));
+    }
+    let output = assert_cmd::Command::cargo_bin("rasterproof")
+        .unwrap()
+        .args([
+            "hunt",
+            "--as",
+            "values",
+            "--cmd",
+            &cmd,
+            "--preset",
+            "gl",
+            "--float32-exact",
+            "--jobs",
+            "2",
+        ])
+        .args(["--shrink-runs", "40", "--report"])
+        .arg(&report)
+        .args(args)
+        .output()
+        .unwrap();
+    let code = output.status.code().unwrap();
+    assert!(code <= 1, "{}", String::from_utf8_lossy(&output.stderr));
+    (
+        code,
+        serde_json::from_str(&std::fs::read_to_string(&report).unwrap()).unwrap(),
+    )
+}
+
+/// The signatures of a hunt's findings and their minimal scenes' triangle counts.
+fn found(report: &Value) -> Vec<(String, usize)> {
+    report["findings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| {
+            let triangles = f["minimal"]["triangles"].as_array().map_or(0, Vec::len);
+            (f["signature"].as_str().unwrap().to_string(), triangles)
+        })
+        .collect()
+}
+
+#[test]
+fn the_values_hunt_names_a_deliberate_fault_and_nothing_else() {
+    if !available() {
+        return;
+    }
+    // The renderer as it is: nothing off, smooth and flat (provoking last).
+    let (code, report) = hunt(&["--cases", "4"], None);
+    assert_eq!((code, report["same"].as_u64()), (0, Some(4)), "{report}");
+    let (code, report) = hunt(
+        &["--cases", "3", "--interpolation", "flat", "--provoking", "last"],
+        None,
+    );
+    assert_eq!((code, report["same"].as_u64()), (0, Some(3)), "{report}");
+    // No perspective correction: found as `affine`, shrunk to one triangle.
+    let (code, report) = hunt(&["--cases", "3", "--seed", "3"], Some("affine"));
+    assert_eq!(code, 1);
+    let findings = found(&report);
+    assert!(findings.contains(&("affine".to_string(), 1)), "{findings:?}");
+    // The wrong provoking vertex of a flat varying.
+    let (code, report) = hunt(&["--cases", "3", "--interpolation", "flat"], Some("provoking"));
+    assert_eq!(code, 1);
+    assert_eq!(found(&report), [("provoking-vertex".to_string(), 1)], "{report}");
+}

@@ -4,7 +4,11 @@ scene with Mesa's llvmpipe or softpipe through OSMesa into a float32 TIFF, so th
 `rasterproof compare SCENE.json OUT.tiff --as values` can judge the driver's interpolator.
 
     /usr/bin/python3 adapters/osmesa/values.py SCENE.json OUT.tiff [--varying NAME]
-        [--driver llvmpipe|softpipe]
+        [--driver llvmpipe|softpipe] [--fault affine|provoking]
+
+`--fault` draws with a deliberate bug, so that `compare` and `hunt --as values` can be
+seen naming it on a real renderer: `affine` declares a `smooth` varying `noperspective`
+in the shaders (no perspective correction); `provoking` sets the other provoking vertex.
 
 Needs Debian's libosmesa6, python3-opengl, python3-numpy and python3-tifffile for
 /usr/bin/python3.
@@ -146,8 +150,12 @@ def qualifiers(varying):
     return q
 
 
-def render(scene, driver):
+def render(scene, driver, fault=None):
     width, height, varying, provoking, triangles = scene
+    if fault == "affine" and varying["interpolation"] == "smooth":
+        varying = dict(varying, interpolation="noperspective")
+    if fault == "provoking":
+        provoking = "last" if provoking == "first" else "first"
     os.environ["PYOPENGL_PLATFORM"] = "osmesa"
     os.environ["GALLIUM_DRIVER"] = driver
     try:
@@ -257,10 +265,11 @@ def main(argv):
     p.add_argument("out", help="the TIFF to write")
     p.add_argument("--varying", help="the varying drawn (default the scene's first)")
     p.add_argument("--driver", choices=DRIVERS, default="llvmpipe", help="the Gallium driver (default llvmpipe)")
+    p.add_argument("--fault", choices=("affine", "provoking"), help="draw with this deliberate bug")
     args = p.parse_args(argv)
     try:
         scene = read_scene(args.scene, args.varying)
-        rows = render(scene, args.driver)
+        rows = render(scene, args.driver, args.fault)
         write_tiff(rows, scene[2]["channels"], args.out)
     except Refused as e:
         print(f"{NAME}: {e}", file=sys.stderr)

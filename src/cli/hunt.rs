@@ -14,8 +14,9 @@ use rasterproof::convention::Preset;
 use rasterproof::num::exact::{counted, exact_text};
 use rasterproof::oracle::compare::fit::grey::GreyMethod;
 use rasterproof::oracle::hunt::{
-    fit_convention, fit_grey_method, fit_sample_convention, grey_rust_test, hunt_grey, hunt_interruptible, rust_test,
-    FitFirst, GreyFitFirst, GreyHuntConfig, HuntConfig, HuntReport, SceneFamily, AREA_FAMILIES, FIT_PROBES,
+    fit_convention, fit_grey_method, fit_sample_convention, grey_rust_test, hunt_grey, hunt_interruptible, hunt_values,
+    rust_test, FitFirst, GreyFitFirst, GreyHuntConfig, HuntConfig, HuntReport, SceneFamily, ValueHuntConfig,
+    AREA_FAMILIES, FIT_PROBES, VALUE_FAMILIES,
 };
 use rasterproof::oracle::renderer::{Program, Renderer, StayAlive};
 use rasterproof::oracle::GreyImage;
@@ -46,7 +47,10 @@ pub struct Options {
     serve: Option<String>,
     /// How to read its output: ids (default), mask or json; or grey: an 8- or 16-bit grey
     /// PNG of anti-aliased coverage, judged against exact area coverage (see --semantics and
-    /// --quantization; the families default to those with area).
+    /// --quantization; the families default to those with area); or values: each scene
+    /// gets a varying `c` of 3 channels with a w and values at every vertex, and their
+    /// values image (a float32 TIFF or a UNORM PNG) is judged by `compare --as values`
+    /// (see --interpolation and --provoking; the families default to triangles only).
     #[arg(long = "as", value_name = "FORMAT", default_value = "ids")]
     theirs_as: String,
     /// With --as grey: the exact area semantics their levels approximate (true,
@@ -67,6 +71,13 @@ pub struct Options {
     /// names its semantics and quantization (leave out --semantics and --quantization).
     #[arg(long, value_name = "NAME", conflicts_with_all = ["semantics", "quantization"])]
     method: Option<String>,
+    /// With --as values: the varying's interpolation in every scene (smooth,
+    /// noperspective or flat).
+    #[arg(long, default_value = "smooth")]
+    interpolation: String,
+    /// With --as values: the scenes' provoking vertex (first or last).
+    #[arg(long, default_value = "first")]
+    provoking: String,
     /// How many scenes.
     #[arg(long, default_value_t = 200)]
     cases: u64,
@@ -146,6 +157,11 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         }
         return run_grey(o, &config, program.as_ref(), cmd);
     }
+    if format == Format::Values {
+        config.model = super::parse_model(&o.model)?;
+        let config = ValueHuntConfig::named(config, &o.interpolation, &o.provoking)?;
+        return run_values(o, &config, program.as_ref(), cmd);
+    }
     config.model = match super::parse_model(&o.model)? {
         m if m.plans() => m,
         m => {
@@ -185,7 +201,7 @@ fn exit_code(interrupted: bool, nothing_found: bool) -> ExitCode {
 fn mode(o: &Options) -> Result<(Format, Option<GreyJudged>, Option<SamplePattern>), String> {
     let format = Format::from_name(&o.theirs_as).ok_or_else(|| {
         format!(
-            "--as: unknown format {:?} (expected ids, mask, json or grey)",
+            "--as: unknown format {:?} (expected ids, mask, json, grey or values)",
             o.theirs_as
         )
     })?;
@@ -218,6 +234,16 @@ fn mode(o: &Options) -> Result<(Format, Option<GreyJudged>, Option<SamplePattern
         ));
     }
     let samples = o.samples.map(super::parse_samples).transpose()?.filter(|p| p.len() > 1);
+    let values = format == Format::Values;
+    if !values && (o.interpolation != "smooth" || o.provoking != "first") {
+        return Err("--interpolation and --provoking are for --as values".to_string());
+    }
+    if values && (samples.is_some() || o.fit_first || o.run.outputs.junit.is_some()) {
+        return Err(
+            "--as values hunts one sample per pixel and writes --report (JSON) and --out; leave out --samples, --fit-first and --junit"
+                .to_string(),
+        );
+    }
     if samples.is_some() && grey.is_some() {
         return Err("--samples: a multisample hunt judges ids or masks per sample; leave out --as grey".to_string());
     }
@@ -229,6 +255,8 @@ fn mode(o: &Options) -> Result<(Format, Option<GreyJudged>, Option<SamplePattern
 fn families(o: &Options, grey: bool, samples: bool) -> Result<Vec<SceneFamily>, String> {
     Ok(if o.families.is_empty() && grey {
         AREA_FAMILIES.to_vec()
+    } else if o.families.is_empty() && o.theirs_as == "values" {
+        VALUE_FAMILIES.to_vec()
     } else if o.families.is_empty() && samples {
         SceneFamily::TRIANGLES_ONLY.to_vec()
     } else if o.families.is_empty() {
@@ -484,6 +512,31 @@ fn run_grey(o: &Options, config: &GreyHuntConfig, renderer: &dyn Renderer, cmd: 
     }
     outputs.commit()?;
     super::print_stdout(text.trim_end())?;
+    Ok(exit_code(report.interrupted, report.findings.is_empty()))
+}
+
+/// Runs a values hunt and writes `--out` (each finding's minimal scene and its text) and
+/// `--report`.
+fn run_values(o: &Options, config: &ValueHuntConfig, renderer: &dyn Renderer, cmd: &str) -> Result<ExitCode, String> {
+    let bar = o
+        .run
+        .progress_bar(config.hunt.shard.case_count(config.hunt.cases), "scenes");
+    let report = hunt_values(renderer, config, o.run.jobs, &|| bar.inc(1), &INTERRUPTED)?;
+    bar.finish_and_clear();
+    let mut outputs = Outputs::new();
+    if let Some(dir) = &o.out {
+        std::fs::create_dir_all(dir).map_err(|e| format!("--out {}: cannot create: {e}", dir.display()))?;
+        for (n, f) in report.findings.iter().enumerate() {
+            let path = |ext: &str| dir.join(format!("finding-{:02}.{ext}", n + 1));
+            outputs.stage_text(&path("json"), &f.minimal.to_json())?;
+            outputs.stage_text(&path("txt"), &f.to_text(n + 1))?;
+        }
+    }
+    if let Some(path) = &o.run.outputs.report {
+        outputs.stage_text(path, &report.to_json(cmd).to_string())?;
+    }
+    outputs.commit()?;
+    super::print_stdout(report.to_text().trim_end())?;
     Ok(exit_code(report.interrupted, report.findings.is_empty()))
 }
 

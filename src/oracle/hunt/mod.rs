@@ -28,6 +28,7 @@ mod html;
 mod merge;
 mod report;
 mod test_text;
+mod values;
 mod verdict;
 
 use std::collections::BTreeMap;
@@ -48,6 +49,10 @@ pub use grey_page::grey_rust_test;
 pub use merge::{merge_reports, per_sample_summaries};
 pub use report::{HuntFinding, HuntReport, SampleIndexSummary, HUNT_REPORT_FORMAT, HUNT_REPORT_VERSION};
 pub use test_text::rust_test;
+pub use values::{
+    hunt_values, judge_values, value_signatures, with_values, ValueFinding, ValueHuntConfig, ValueHuntReport,
+    ValueSignature, ValueVerdict, VALUE_FAMILIES,
+};
 pub use verdict::{judge, pixel_kinds, signatures, HuntVerdict, Signature};
 
 use cases::{run_cases, shrink_budget, AskOnce, CaseCounts};

@@ -306,7 +306,11 @@ impl Program {
     pub fn render(&self, scene: &Scene) -> Result<Theirs, RenderFailure> {
         let n = self.count.fetch_add(1, Ordering::Relaxed);
         let scene_path = self.dir.0.join(format!("scene-{n}.json"));
-        let ext = if self.format == Format::Json { "json" } else { "png" };
+        let ext = match self.format {
+            Format::Json => "json",
+            Format::Values => "tiff",
+            _ => "png",
+        };
         let out_path = self.dir.0.join(format!("out-{n}.{ext}"));
         let err_path = self.dir.0.join(format!("stderr-{n}.txt"));
         let result = self.run(scene, &scene_path, &out_path, &err_path);
