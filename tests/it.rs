@@ -118,6 +118,7 @@ mod trade;
 #[path = "values.rs"]
 mod values;
 mod values_compare;
+mod values_invariants;
 mod values_planned;
 
 /// Every `tests/*.rs` file is a module of this binary: with `autotests = false` in

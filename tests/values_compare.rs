@@ -203,7 +203,7 @@ proptest! {
         let p = Point::new(q(i64::from(px), 1) + q(1, 2), q(i64::from(py), 1) + q(1, 2));
         for interpolation in [Interpolation::Smooth, Interpolation::NoPerspective] {
             let Ok(exact) = setup.value(interpolation, ProvokingVertex::First, 0..2, &p) else { continue };
-            let envelope = value_envelope(&setup, interpolation, 0..2, &p);
+            let envelope = value_envelope(&setup, interpolation, 0..2, &p, 16);
             for model in FloatInterpolator::all() {
                 for c in 0..2 {
                     let v = model.value(&tri, interpolation, ProvokingVertex::First, c, (px, py), 16, 0.5);

@@ -164,7 +164,7 @@ fn file(ours: &Coverage, format: Format) -> Vec<u8> {
             });
             png(DynamicImage::ImageRgba8(mask))
         }
-        Format::Grey => {
+        Format::Grey | Format::Values => {
             let grey = image::GrayImage::from_fn(ours.width(), ours.height(), |x, y| {
                 image::Luma([if ours.owners(x, y).is_empty() { 0 } else { 255 }])
             });

@@ -1,5 +1,6 @@
 //! The readers of another renderer's output (`oracle::Theirs::read`: a mask PNG, an ids
-//! PNG, render's JSON) on arbitrary bytes, as they are and behind the PNG signature:
+//! PNG, render's JSON, a values image: a float32 TIFF or a UNORM PNG) on arbitrary bytes,
+//! as they are and behind the PNG and TIFF signatures:
 //! `Ok` or `Err` naming the file, never a panic; what they accept is self-consistent
 //! (`covered()` lists exactly the pixels `pixel()` calls covered, row-major, and
 //! `covered_pixels()` counts them; an ids pixel names exactly one owner; a JSON pixel's
@@ -58,6 +59,11 @@ fn consistent(t: &Theirs) {
                         "a grey pixel is covered where its level is not 0"
                     );
                 }
+                Format::Values => {
+                    assert!(p.ids.is_empty() && !p.several);
+                    let v = t.values().expect("read as values");
+                    assert!((1..=4).contains(&v.channels), "{} channels", v.channels);
+                }
                 Format::Ids => assert_eq!(p.ids.len(), usize::from(p.covered), "an ids pixel names one owner"),
                 Format::Json => {
                     assert_eq!(p.covered, !p.ids.is_empty());
@@ -84,8 +90,8 @@ fn consistent(t: &Theirs) {
 }
 
 fn read(bytes: &[u8], background: Background) {
-    for format in [Format::Mask, Format::Ids, Format::Json, Format::Grey] {
-        if format != Format::Json && !small_enough(bytes) {
+    for format in [Format::Mask, Format::Ids, Format::Json, Format::Grey, Format::Values] {
+        if format != Format::Json && bytes.starts_with(&PNG_SIGNATURE) && !small_enough(bytes) {
             continue;
         }
         match Theirs::read(bytes, "theirs.bin", format, background) {
@@ -111,5 +117,9 @@ fuzz_target!(|data: &[u8]| {
     if !data.starts_with(&PNG_SIGNATURE) {
         let signed: Vec<u8> = PNG_SIGNATURE.iter().chain(data).copied().collect();
         read(&signed, background);
+    }
+    if !data.starts_with(b"II*\0") {
+        let tiff: Vec<u8> = b"II*\0".iter().chain(data).copied().collect();
+        read(&tiff, background);
     }
 });

@@ -10,6 +10,7 @@ mod explain;
 mod fill;
 mod invariance;
 mod line;
+mod values;
 mod watertight;
 
 use std::fmt;
@@ -27,6 +28,9 @@ pub use invariance::{check_rotation_and_winding, check_translation};
 pub use line::{
     check_diamond_agreement, check_line_pixels, check_line_reference, check_line_symmetry, line_departures,
     SymmetryReport,
+};
+pub use values::{
+    check_values_flat, check_values_hull, check_values_rotation, check_values_shared_edge, check_values_translation,
 };
 pub use watertight::{check_no_double_cover, check_watertight, check_watertight_samples};
 

@@ -30,7 +30,8 @@
 //!
 //! Two bounds come out: [`Envelope::near`], the largest over the forms anchored at a vertex
 //! or at the point's own edge functions, and [`Envelope::far`], which adds the plane
-//! anchored at the framebuffer's origin. The origin-anchored plane's error grows with the
+//! anchored at the framebuffer's origin (its top left corner, or a GL renderer's bottom left
+//! one). The origin-anchored plane's error grows with the
 //! distance of the primitive from `(0, 0)` (its `a0` is extrapolated there and its
 //! gradient multiplied by the pixel's coordinates), which is why a value within `far` but
 //! not `near` is named for it. Both are computed in f64 from the exact inputs; f64's own
@@ -110,6 +111,9 @@ struct Plane {
     x: [Input; 3],
     y: [Input; 3],
     g: [f64; 3],
+    /// The canvas's height: a GL renderer's framebuffer origin is its lower left corner,
+    /// `(0, H)` in the scene's window coordinates.
+    height: f64,
 }
 
 impl Plane {
@@ -126,6 +130,10 @@ impl Plane {
             return None;
         }
         let area_abs = ax1 * ay2 + ax2 * ay1;
+        // An area f32 cannot tell from zero: a plane's gradient may be infinite.
+        if gamma() * area_abs >= area.abs() {
+            return None;
+        }
         let (dg1, ag1) = (g[1] - g[0], g[1].abs() + g[0].abs());
         let (dg2, ag2) = (g[2] - g[0], g[2].abs() + g[0].abs());
         let nx = dg1 * dy2 - dg2 * dy1;
@@ -150,12 +158,22 @@ impl Plane {
             let (_, ayj) = diff(y[j], p.1);
             axj * ayk + axk * ayj
         };
-        let barycentric =
-            (0..3).map(|i| g[i].abs() * edge_abs(i)).sum::<f64>() / area.abs() + value.abs() * area_abs / area.abs();
+        // Its denominator is the sum of the three edge functions at p, which cancel down to
+        // the area: their own absolute-value sums bound its error, not the area's.
+        let edges = [0, 1, 2].map(edge_abs);
+        if gamma() * edges.iter().sum::<f64>() >= area.abs() {
+            return None;
+        }
+        let barycentric = (0..3).map(|i| g[i].abs() * edges[i]).sum::<f64>() / area.abs()
+            + value.abs() * edges.iter().sum::<f64>() / area.abs();
         let near = (0..3).map(anchored).fold(barycentric, f64::max);
-        // The origin-anchored plane: a0 = g_j - (g_x x_j + g_y y_j), then a0 + g_x p_x + g_y p_y.
+        // The origin-anchored plane: a0 = g_j - (g_x x_j + g_y y_j), then a0 + g_x p_x + g_y p_y,
+        // with the origin at the top left corner or (y flipped, H - y rounded first) the
+        // bottom left one.
+        let h = self.height.abs();
         let origin = |j: usize| {
-            g[j].abs() + (sx + gx.abs()) * (x[j].v.abs() + p.0.v.abs()) + (sy + gy.abs()) * (y[j].v.abs() + p.1.v.abs())
+            let along_y = y[j].v.abs() + p.1.v.abs() + 2.0 * h;
+            g[j].abs() + (sx + gx.abs()) * (x[j].v.abs() + p.0.v.abs()) + (sy + gy.abs()) * along_y
         };
         let far = (0..3).map(origin).fold(near, f64::max);
         Some((near, far, value))
@@ -178,7 +196,7 @@ impl Plane {
 ///     [&q(1), &q(1), &q(1)],
 ///     [vec![q(0)], vec![q(8)], vec![q(0)]],
 /// )));
-/// let e = value_envelope(&t, Interpolation::NoPerspective, 0..1, &Point::from_ints(1, 1));
+/// let e = value_envelope(&t, Interpolation::NoPerspective, 0..1, &Point::from_ints(1, 1), 8);
 /// // The value is 1; a few dozen f32 roundings of numbers near 8 stay below 2^-15.
 /// let near = e[0].near.unwrap();
 /// assert!(near > 0.0 && near < 1.0 / 32768.0);
@@ -188,9 +206,10 @@ pub fn value_envelope(
     interpolation: Interpolation,
     channels: std::ops::Range<usize>,
     p: &Point,
+    height: u32,
 ) -> Vec<Envelope> {
     channels
-        .map(|k| EnvelopeSetup::new(setup, interpolation, k).at(p))
+        .map(|k| EnvelopeSetup::new(setup, interpolation, k, height).at(p))
         .collect()
 }
 
@@ -217,9 +236,9 @@ enum Kind {
 }
 
 impl EnvelopeSetup {
-    /// Channel `channel` of `setup` under `interpolation`.
-    pub fn new(setup: &ValueSetup, interpolation: Interpolation, channel: usize) -> EnvelopeSetup {
-        EnvelopeSetup::channels(setup, interpolation, channel..channel + 1)
+    /// Channel `channel` of `setup` under `interpolation` on a canvas `height` px high.
+    pub fn new(setup: &ValueSetup, interpolation: Interpolation, channel: usize, height: u32) -> EnvelopeSetup {
+        EnvelopeSetup::channels(setup, interpolation, channel..channel + 1, height)
             .pop()
             .expect("one channel")
     }
@@ -229,6 +248,7 @@ impl EnvelopeSetup {
         setup: &ValueSetup,
         interpolation: Interpolation,
         channels: std::ops::Range<usize>,
+        height: u32,
     ) -> Vec<EnvelopeSetup> {
         let each = |kind: &dyn Fn(usize) -> Kind| channels.clone().map(|k| EnvelopeSetup { kind: kind(k) }).collect();
         match setup {
@@ -246,7 +266,12 @@ impl EnvelopeSetup {
                 }
                 let pos = |i: usize, c: usize| Input::of(&(&t.h[i][c] / &t.h[i][2]));
                 let (x, y) = ([0, 1, 2].map(|i| pos(i, 0)), [0, 1, 2].map(|i| pos(i, 1)));
-                let plane = |g: [f64; 3]| Plane { x, y, g };
+                let plane = |g: [f64; 3]| Plane {
+                    x,
+                    y,
+                    g,
+                    height: f64::from(height),
+                };
                 if interpolation == Interpolation::NoPerspective {
                     each(&|k| Kind::Linear(plane([0, 1, 2].map(|i| value(i, k)))))
                 } else {

@@ -325,7 +325,12 @@ pub fn compare_values(
         max_ulps_inside: 0,
     };
     let mut counts = [0usize; ValueClass::ALL.len()];
-    let mut plans = Plans::new(options, range.clone(), &target.convention.pixel_centre.offset());
+    let mut plans = Plans::new(
+        options,
+        range.clone(),
+        &target.convention.pixel_centre.offset(),
+        target.height,
+    );
     let mut listed_inside = 0;
     for &(x, y, id) in &owners {
         let Some(plan) = plans.of(id) else {
@@ -363,6 +368,7 @@ pub fn compare_values(
                 options,
                 range.clone(),
                 bits,
+                target.height,
             )
         });
         counts[ValueClass::ALL.iter().position(|&c| c == class).expect("listed")] += 1;
@@ -453,6 +459,7 @@ pub(crate) struct Plans<'a> {
     channels: std::ops::Range<usize>,
     centre: BigRational,
     centre_f64: f64,
+    height: u32,
     plans: Vec<Option<Option<Plan>>>,
 }
 
@@ -464,8 +471,14 @@ pub(crate) struct Plan {
 }
 
 impl<'a> Plans<'a> {
-    pub(crate) fn new(options: &'a ValueOptions, channels: std::ops::Range<usize>, centre: &BigRational) -> Plans<'a> {
+    pub(crate) fn new(
+        options: &'a ValueOptions,
+        channels: std::ops::Range<usize>,
+        centre: &BigRational,
+        height: u32,
+    ) -> Plans<'a> {
         Plans {
+            height,
             options,
             channels,
             centre: centre.clone(),
@@ -476,7 +489,8 @@ impl<'a> Plans<'a> {
 
     /// Primitive `id`'s plan; `None` for a primitive that carries no values.
     pub(crate) fn of(&mut self, id: u32) -> Option<&Plan> {
-        let (options, channels, centre, centre_f64) = (self.options, &self.channels, &self.centre, self.centre_f64);
+        let (options, channels, centre, centre_f64, height) =
+            (self.options, &self.channels, &self.centre, self.centre_f64, self.height);
         self.plans[id as usize]
             .get_or_insert_with(|| {
                 let setup = options.setups[id as usize].as_ref()?;
@@ -484,7 +498,7 @@ impl<'a> Plans<'a> {
                 let provoking = options.varyings.provoking;
                 Some(Plan {
                     values: PlannedValue::channels(setup, interpolation, provoking, channels.clone(), centre),
-                    envelopes: EnvelopeSetup::channels(setup, interpolation, channels.clone()),
+                    envelopes: EnvelopeSetup::channels(setup, interpolation, channels.clone(), height),
                     centre: centre_f64,
                 })
             })
@@ -551,6 +565,7 @@ pub(crate) fn their_channels(image: &ValueImage, x: u32, y: u32, channels: usize
 }
 
 /// The class of one pixel (module docs).
+#[allow(clippy::too_many_arguments)]
 fn classify(
     theirs: &[TheirValue],
     exact: &[BigRational],
@@ -559,6 +574,7 @@ fn classify(
     options: &ValueOptions,
     range: std::ops::Range<usize>,
     bits: u32,
+    height: u32,
 ) -> ValueClass {
     let varying = &options.varyings.list[options.varying];
     let rule = options.unorm;
@@ -573,7 +589,7 @@ fn classify(
     if all_within(exact, &none) {
         return ValueClass::Exact;
     }
-    let envelope = value_envelope(setup, varying.interpolation, range.clone(), at);
+    let envelope = value_envelope(setup, varying.interpolation, range.clone(), at, height);
     let near: Vec<Option<f64>> = envelope.iter().map(|e| e.near).collect();
     let far: Vec<Option<f64>> = envelope.iter().map(|e| e.far).collect();
     if all_within(exact, &near) {
@@ -583,7 +599,7 @@ fn classify(
         return ValueClass::FarAnchor;
     }
     for alt in alternatives(exact, setup, at, options, range.clone()) {
-        let bounds: Vec<Option<f64>> = value_envelope(&alt.setup, alt.interpolation, range.clone(), &alt.at)
+        let bounds: Vec<Option<f64>> = value_envelope(&alt.setup, alt.interpolation, range.clone(), &alt.at, height)
             .iter()
             .map(|e| e.far)
             .collect();

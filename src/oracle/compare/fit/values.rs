@@ -92,7 +92,12 @@ pub fn fit_values(
         ));
     }
     let owners = covered_owners(primitives, target, options)?;
-    let mut plans = Plans::new(options, range.clone(), &target.convention.pixel_centre.offset());
+    let mut plans = Plans::new(
+        options,
+        range.clone(),
+        &target.convention.pixel_centre.offset(),
+        target.height,
+    );
     let models = FloatInterpolator::all();
     let mut fits: Vec<ModelFit> = models
         .iter()
