@@ -234,6 +234,45 @@ fn fuzz_case_07_a_shared_edge_beside_a_degenerate_triangle() {
     );
 }
 
+/// A window triangle of the values fuzz cases: exact (for the definition and the
+/// envelope) and as a renderer holds it (each number rounded to f32, `1 / w` an f32
+/// division).
+fn values_case(
+    points: [(i64, i64); 3],
+    w: [(i64, i64); 3],
+    values: [[i64; 2]; 3],
+) -> (
+    rasterproof::interp::values::ValueSetup,
+    rasterproof::interp::float::FloatTriangle,
+) {
+    use num_rational::BigRational;
+    use rasterproof::geom::Point;
+    use rasterproof::interp::values::{ValueSetup, ValueTriangle};
+    let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+    let points = points.map(|(x, y)| Point::new(q(x, 256), q(y, 256)));
+    let w = w.map(|(n, d)| q(n, d));
+    let values = values.map(|v| v.iter().map(|&n| q(n, 8)).collect::<Vec<_>>());
+    let f = |r: &BigRational| rasterproof::num::exact::nearest_f32(r).unwrap();
+    let tri = rasterproof::interp::float::FloatTriangle {
+        x: [0, 1, 2].map(|i| f(&points[i].x)),
+        y: [0, 1, 2].map(|i| f(&points[i].y)),
+        inv_w: [0, 1, 2].map(|i| 1.0 / f(&w[i])),
+        values: values.clone().map(|v| v.iter().map(f).collect()),
+    };
+    let setup = ValueSetup::Triangle(Box::new(ValueTriangle::window(
+        [&points[0], &points[1], &points[2]],
+        [&w[0], &w[1], &w[2]],
+        values,
+    )));
+    (setup, tri)
+}
+
+/// `|v - exact|` for a finite `v`; `None` for an infinity or NaN.
+fn distance(v: f32, exact: &num_rational::BigRational) -> Option<f64> {
+    let v = num_rational::BigRational::from_float(f64::from(v))?;
+    num_traits::ToPrimitive::to_f64(&num_traits::Signed::abs(&(v - exact)))
+}
+
 /// Found by values_invariants: on a 160 px canvas, a triangle with a 1/2.6 px edge at
 /// (127.6, 128) and (128, 128) and a third vertex at (33, 116.2), noperspective, evaluated
 /// at pixel (192, 79), 64 px beyond it, where the value is about -10^6. Barycentrics from
@@ -243,32 +282,19 @@ fn fuzz_case_07_a_shared_edge_beside_a_degenerate_triangle() {
 /// their absolute values.
 #[test]
 fn fuzz_case_08_barycentrics_whose_denominator_cancels() {
-    use num_rational::BigRational;
     use rasterproof::geom::Point;
     use rasterproof::interp::envelope::value_envelope;
-    use rasterproof::interp::float::{FloatInterpolator, FloatTriangle};
-    use rasterproof::interp::values::{Interpolation, ProvokingVertex, ValueSetup, ValueTriangle};
-    let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
-    let (a, b, c) = (
-        Point::new(q(32660, 256), q(32767, 256)),
-        Point::new(q(32767, 256), q(32767, 256)),
-        Point::new(q(8447, 256), q(29752, 256)),
+    use rasterproof::interp::float::FloatInterpolator;
+    use rasterproof::interp::values::{Interpolation, ProvokingVertex};
+    let (setup, tri) = values_case(
+        [(32660, 32767), (32767, 32767), (8447, 29752)],
+        [(2, 1), (2, 1), (1, 2)],
+        [[8653, -14395], [-3588, 12760], [-15960, 8408]],
     );
-    let values = [[8653, -14395], [-3588, 12760], [-15960, 8408]]
-        .map(|v: [i64; 2]| v.iter().map(|&n| q(n, 8)).collect::<Vec<_>>());
-    let setup = ValueSetup::Triangle(Box::new(ValueTriangle::window(
-        [&a, &b, &c],
-        [&q(2, 1), &q(2, 1), &q(1, 2)],
-        values.clone(),
-    )));
-    let p = Point::new(q(385, 2), q(159, 2));
-    let f = |r: &BigRational| rasterproof::num::exact::nearest_f32(r).unwrap();
-    let tri = FloatTriangle {
-        x: [f(&a.x), f(&b.x), f(&c.x)],
-        y: [f(&a.y), f(&b.y), f(&c.y)],
-        inv_w: [0.5, 0.5, 2.0],
-        values: values.map(|v| v.iter().map(f).collect()),
-    };
+    let p = Point::new(
+        num_rational::BigRational::new(385.into(), 2.into()),
+        num_rational::BigRational::new(159.into(), 2.into()),
+    );
     let exact = setup
         .value(Interpolation::NoPerspective, ProvokingVertex::First, 0..2, &p)
         .unwrap();
@@ -284,10 +310,7 @@ fn fuzz_case_08_barycentrics_whose_denominator_cancels() {
                 160,
                 0.5,
             );
-            let d = num_traits::ToPrimitive::to_f64(&num_traits::Signed::abs(
-                &(BigRational::from_float(f64::from(v)).unwrap() - &exact[ch]),
-            ))
-            .unwrap();
+            let d = distance(v, &exact[ch]).unwrap();
             let bound = bounds[ch].far.unwrap();
             assert!(d <= bound, "{} channel {ch}: {d} beyond {bound}", model.name());
         }
@@ -301,33 +324,19 @@ fn fuzz_case_08_barycentrics_whose_denominator_cancels() {
 /// envelope now bounds nothing (and `compare` judges such values by the exact searches).
 #[test]
 fn fuzz_case_09_an_area_f32_cannot_tell_from_zero() {
-    use num_rational::BigRational;
     use rasterproof::geom::Point;
     use rasterproof::interp::envelope::value_envelope;
-    use rasterproof::interp::float::{FloatInterpolator, FloatTriangle};
-    use rasterproof::interp::values::{Interpolation, ProvokingVertex, ValueSetup, ValueTriangle};
-    let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
-    let (a, b, c) = (
-        Point::new(q(1, 256), q(0, 1)),
-        Point::new(q(0, 1), q(0, 1)),
-        Point::new(q(22903, 256), q(23, 256)),
+    use rasterproof::interp::float::FloatInterpolator;
+    use rasterproof::interp::values::{Interpolation, ProvokingVertex};
+    let (setup, tri) = values_case(
+        [(1, 0), (0, 0), (22903, 23)],
+        [(1, 4), (1, 4), (1, 4)],
+        [[0, 2045], [32503, 16080], [2303, -2297]],
     );
-    let values =
-        [[0, 2045], [32503, 16080], [2303, -2297]].map(|v: [i64; 2]| v.iter().map(|&n| q(n, 8)).collect::<Vec<_>>());
-    let quarter = q(1, 4);
-    let setup = ValueSetup::Triangle(Box::new(ValueTriangle::window(
-        [&a, &b, &c],
-        [&quarter, &quarter, &quarter],
-        values.clone(),
-    )));
-    let p = Point::new(q(307, 2), q(253, 2));
-    let f = |r: &BigRational| rasterproof::num::exact::nearest_f32(r).unwrap();
-    let tri = FloatTriangle {
-        x: [f(&a.x), f(&b.x), f(&c.x)],
-        y: [f(&a.y), f(&b.y), f(&c.y)],
-        inv_w: [4.0; 3],
-        values: values.map(|v| v.iter().map(f).collect()),
-    };
+    let p = Point::new(
+        num_rational::BigRational::new(307.into(), 2.into()),
+        num_rational::BigRational::new(253.into(), 2.into()),
+    );
     let exact = setup
         .value(Interpolation::NoPerspective, ProvokingVertex::First, 0..2, &p)
         .unwrap();
@@ -344,13 +353,10 @@ fn fuzz_case_09_an_area_f32_cannot_tell_from_zero() {
                 160,
                 0.5,
             );
-            match (bounds[ch].far, BigRational::from_float(f64::from(v))) {
-                (Some(bound), Some(v)) => {
-                    let d = num_traits::ToPrimitive::to_f64(&num_traits::Signed::abs(&(v - &exact[ch]))).unwrap();
-                    assert!(d <= bound, "{} channel {ch}: {d} beyond {bound}", model.name());
-                }
+            match (bounds[ch].far, distance(v, &exact[ch])) {
+                (Some(bound), Some(d)) => assert!(d <= bound, "{} channel {ch}: {d} beyond {bound}", model.name()),
                 (Some(bound), None) => panic!("{} channel {ch}: {v} under the bound {bound}", model.name()),
-                (None, v) => unbounded_wrong += usize::from(v.is_none()),
+                (None, d) => unbounded_wrong += usize::from(d.is_none()),
             }
         }
     }

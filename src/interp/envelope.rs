@@ -208,8 +208,9 @@ pub fn value_envelope(
     p: &Point,
     height: u32,
 ) -> Vec<Envelope> {
-    channels
-        .map(|k| EnvelopeSetup::new(setup, interpolation, k, height).at(p))
+    EnvelopeSetup::channels(setup, interpolation, channels, height)
+        .iter()
+        .map(|e| e.at(p))
         .collect()
 }
 
