@@ -445,3 +445,425 @@ fn the_clipping_fixtures_show_their_findings() {
         }
     }
 }
+
+// ---------------------------------------------------------------------------------------
+// Interpolated values (`--values`, issue 47 point 5): lavapipe's interpolator through wgpu.
+//
+// What is asserted, and why it should hold independently of these runs:
+// - on random triangles (both windings, w powers of two from 1/4 to 8, values in thirds,
+//   sevenths, tenths and 256ths, vertices on the 1/256 grid) at canvas offsets 0 and
+//   16320 (2^14 − 64), `compare --fit` names the float model LAVAPIPE with 0 differing
+//   values: llvmpipe's setup and interpolation code (`lp_state_setup.c`,
+//   `lp_bld_interp.c`), which lavapipe shares, with Vulkan's provoking vertex (the first)
+//   for every triangle. A scene whose `provoking_vertex` is `last` leaves that model
+//   alone: the adapter draws smooth varyings in the scene's order and Vulkan keeps vertex
+//   0 as the plane's anchor, where llvmpipe under GL's last convention reorders clockwise
+//   triangles to (v1, v0, v2) (`ccw`);
+// - the plain comparison calls none of lavapipe's values off;
+// - a deliberate fault (`--fault affine`, `--fault provoking`) is named by its class at
+//   every pixel, by compare and by a stay-alive `hunt --as values`, which shrinks it to
+//   one triangle;
+// - at 4 samples, the stacked TIFF holds each sample's values where the oracle covers it
+//   (0 elsewhere), within 2^-8 relative of the exact value (f32 error with w ratios up to
+//   32 reaches about 2^-11) for the sampling points whose arithmetic lavapipe gets right
+//   (centre; a noperspective varying at its sample or centroid), and a centroid drawn at
+//   the centre (`--fault centroid`) is off at some partly covered pixels;
+// - refusals (too many channels, w <= 0, no varyings, a varying it does not declare, a
+//   vertex the GPU would clip) exit 2 with the field named.
+// ---------------------------------------------------------------------------------------
+
+/// lavapipe's interpolation arithmetic, as `compare --fit` names it.
+const LAVAPIPE: &str = "origin-plane fma as-given rcp f32 y-down";
+
+/// A random values scene: `triangles` triangles near canvas column `offset` of a
+/// (offset + 64) x 32 canvas (vertices on the 1/256 grid, both windings), a 3-channel
+/// varying `c` of `interpolation` at `sampling`, `w` a power of two from 1/4 to 8 (never
+/// the same at all three vertices, so that smooth and noperspective differ), values in
+/// thirds, sevenths, tenths and 256ths.
+fn values_scene(seed: u64, offset: i64, interpolation: &str, provoking: &str, sampling: &str) -> String {
+    let mut rng = crate::rng::Rng(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1);
+    let (width, height) = (offset + 64, 32);
+    let mut triangles = Vec::new();
+    for _ in 0..12 {
+        let (cx, cy) = (rng.range(offset * 256, width * 256), rng.range(0, height * 256));
+        let v: Vec<Value> = (0..3)
+            .map(|_| {
+                let x = (cx + rng.range(-20 * 256, 20 * 256)).clamp(0, width * 256);
+                let y = (cy + rng.range(-20 * 256, 20 * 256)).clamp(0, height * 256);
+                serde_json::json!([format!("{x}/256"), format!("{y}/256")])
+            })
+            .collect();
+        let w = loop {
+            let w: Vec<i64> = (0..3).map(|_| rng.range(-2, 3)).collect();
+            if w[0] != w[1] || w[1] != w[2] {
+                break w;
+            }
+        };
+        let w: Vec<String> = w
+            .iter()
+            .map(|&k| {
+                if k < 0 {
+                    format!("1/{}", 1 << -k)
+                } else {
+                    (1 << k).to_string()
+                }
+            })
+            .collect();
+        let values: Vec<Vec<String>> = (0..3)
+            .map(|_| {
+                (0..3)
+                    .map(|_| {
+                        let d = [3, 7, 10, 256][usize::try_from(rng.below(4)).unwrap()];
+                        format!("{}/{d}", rng.range(-1000, 1000))
+                    })
+                    .collect()
+            })
+            .collect();
+        triangles.push(serde_json::json!({"v": v, "w": w, "varyings": {"c": values}}));
+    }
+    serde_json::json!({
+        "width": width, "height": height, "preset": "vulkan", "provoking_vertex": provoking,
+        "varyings": [{"name": "c", "channels": 3, "interpolation": interpolation, "sampling": sampling}],
+        "triangles": triangles,
+    })
+    .to_string()
+}
+
+/// The adapter's values TIFF of `scene` with `args` (after `--values`).
+fn draw_values(adapter: &Path, args: &[&str], scene: &Path) -> PathBuf {
+    let out = scene.with_extension(format!("{}.tiff", args.join("").replace('-', "")));
+    let output = Command::new(adapter)
+        .arg("--values")
+        .args(args)
+        .arg(scene)
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(
+        output.status.success(),
+        "wgpu adapter --values {args:?}:\n{}",
+        text(&output)
+    );
+    out
+}
+
+/// `rasterproof compare SCENE THEIRS --as values --format json ARGS`: (exit code, report).
+fn compare_values(scene: &Path, theirs: &Path, args: &[&str]) -> (i32, Value) {
+    let output = assert_cmd::Command::cargo_bin("rasterproof")
+        .unwrap()
+        .arg("compare")
+        .arg(scene)
+        .arg(theirs)
+        .args(["--as", "values", "--format", "json"])
+        .args(args)
+        .output()
+        .unwrap();
+    let code = output.status.code().expect("compare exits");
+    assert!(code == 0 || code == 1, "compare {args:?}:\n{}", text(&output));
+    (code, serde_json::from_slice(&output.stdout).expect("compare's JSON"))
+}
+
+/// The classes a plain values comparison counted.
+fn classes(report: &Value) -> Vec<String> {
+    report["counts"].as_object().unwrap().keys().cloned().collect()
+}
+
+#[test]
+fn lavapipe_values_are_one_float_model_bit_for_bit() {
+    let Some(adapter) = adapter() else { return };
+    let dir = tempdir::Dir::new("wgpu-values-fit");
+    for (seed, offset, interpolation, provoking) in [
+        (1, 0, "smooth", "first"),
+        (2, 0, "smooth", "last"),
+        (3, 16320, "smooth", "first"),
+        (4, 16320, "smooth", "last"),
+        (5, 0, "noperspective", "first"),
+        (6, 16320, "noperspective", "last"),
+        (7, 16320, "flat", "last"),
+    ] {
+        let name = format!("{seed}-{offset}-{interpolation}-{provoking}");
+        let scene = write(
+            &dir,
+            &format!("{name}.json"),
+            &values_scene(seed, offset, interpolation, provoking, "centre"),
+        );
+        let theirs = draw_values(&adapter, &[], &scene);
+        let (code, fit) = compare_values(&scene, &theirs, &["--fit"]);
+        assert_eq!(code, 0, "{name}: {fit}");
+        let exact: Vec<&str> = fit["exact"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|m| m.as_str().unwrap())
+            .collect();
+        assert!(exact.contains(&LAVAPIPE), "{name}: {exact:?}");
+        assert!(fit["judged"].as_u64().unwrap() > 500, "{name}: {fit}");
+        // Smooth, provoking last: the one model whose anchor is vertex 0 whatever the
+        // winding.
+        if interpolation == "smooth" && provoking == "last" {
+            assert_eq!(exact, [LAVAPIPE], "{name}");
+        }
+        let (code, report) = compare_values(&scene, &theirs, &[]);
+        // Far from the origin, the origin-anchored plane's error shows as its class.
+        if offset > 0 && interpolation != "flat" {
+            assert!(report["counts"]["far-anchor"].as_u64().unwrap() > 0, "{name}: {report}");
+            // Not yet asserted there: compare's far envelope still calls a few of these
+            // values `gross` (or `affine`), though the model above reproduces every one
+            // (`far_values_are_never_gross`, ignored until the envelope is fixed).
+            continue;
+        }
+        assert_eq!((code, &report["off"]), (0, &Value::from(0)), "{name}: {report}");
+        assert!(!classes(&report).contains(&"gross".to_string()), "{name}: {report}");
+    }
+}
+
+/// adapters/scenes/values-far-steep-w.json: one triangle near x = 16000 whose w run from
+/// 1/4 to 8. lavapipe's values are its float model's bit for bit, yet plain `compare`
+/// calls pixel (15992, 22) `gross` (68435 f32 steps in channel 0): the origin-anchored
+/// plane of 1/w there is `a0 + dadx x` with `a0` = 21840.84 and `dadx x` = −21836.7,
+/// whose cancellation leaves 1/w = 0.1746 with a 0.47 % error, which a correct f32
+/// origin-anchored interpolator makes and the far envelope does not admit. Ignored until
+/// compare's envelope admits it (issue 47).
+#[test]
+#[ignore = "compare's far-anchor envelope calls lavapipe's correct value gross (issue 47)"]
+fn far_values_are_never_gross() {
+    let Some(adapter) = adapter() else { return };
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/scenes/values-far-steep-w.json");
+    let dir = tempdir::Dir::new("wgpu-values-far");
+    let copy = dir.path().join("far.json");
+    std::fs::copy(&scene, &copy).unwrap();
+    let theirs = draw_values(&adapter, &[], &copy);
+    let (code, fit) = compare_values(&copy, &theirs, &["--fit"]);
+    assert_eq!(code, 0, "{fit}");
+    let (code, report) = compare_values(&copy, &theirs, &[]);
+    assert_eq!(
+        (code, classes(&report)),
+        (0, vec!["far-anchor".to_string()]),
+        "{report}"
+    );
+}
+
+#[test]
+fn lavapipe_with_a_deliberate_fault_is_named() {
+    let Some(adapter) = adapter() else { return };
+    let dir = tempdir::Dir::new("wgpu-values-faults");
+    // No perspective correction: every pixel `affine`.
+    let smooth = write(&dir, "smooth.json", &values_scene(11, 0, "smooth", "first", "centre"));
+    let (code, report) = compare_values(&smooth, &draw_values(&adapter, &["--fault", "affine"], &smooth), &[]);
+    assert_eq!((code, classes(&report)), (1, vec!["affine".to_string()]), "{report}");
+    // The other provoking vertex, either way round.
+    for provoking in ["first", "last"] {
+        let flat = write(
+            &dir,
+            &format!("flat-{provoking}.json"),
+            &values_scene(12, 0, "flat", provoking, "centre"),
+        );
+        let (code, report) = compare_values(&flat, &draw_values(&adapter, &["--fault", "provoking"], &flat), &[]);
+        assert_eq!(
+            (code, classes(&report)),
+            (1, vec!["provoking-vertex".to_string()]),
+            "{provoking}: {report}"
+        );
+    }
+}
+
+/// `hunt --as values` against the adapter kept alive (`--values ADAPTER_ARGS --serve`)
+/// with `hunt_args`, on the families whose vertices lie on the canvas: (exit code, the
+/// findings' signatures and minimal triangle counts, the report).
+fn values_hunt(adapter: &Path, adapter_args: &str, hunt_args: &[&str]) -> (i32, Vec<(String, usize)>, Value) {
+    let dir = tempdir::Dir::new("wgpu-values-hunt");
+    let report = dir.path().join("report.json");
+    let output = assert_cmd::Command::cargo_bin("rasterproof")
+        .unwrap()
+        .args(["hunt", "--as", "values", "--serve"])
+        .arg(format!("{} --values {adapter_args}--serve", adapter.display()))
+        .args([
+            "--preset",
+            "vulkan",
+            "--float32-exact",
+            "--family",
+            "mesh,delaunay,fine",
+        ])
+        .args(["--jobs", "2", "--shrink-runs", "40", "--report"])
+        .arg(&report)
+        .args(hunt_args)
+        .output()
+        .unwrap();
+    let code = output.status.code().unwrap();
+    assert!(code <= 1, "{}", text(&output));
+    let report: Value = serde_json::from_str(&std::fs::read_to_string(&report).unwrap()).unwrap();
+    let found = report["findings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| {
+            let triangles = f["minimal"]["triangles"].as_array().map_or(0, Vec::len);
+            (f["signature"].as_str().unwrap().to_string(), triangles)
+        })
+        .collect();
+    (code, found, report)
+}
+
+#[test]
+fn the_values_hunt_names_a_deliberate_fault_and_nothing_else() {
+    let Some(adapter) = adapter() else { return };
+    let (code, found, report) = values_hunt(&adapter, "", &["--cases", "12"]);
+    assert_eq!(
+        (code, found, report["same"].as_u64()),
+        (0, vec![], Some(12)),
+        "{report}"
+    );
+    let (code, found, report) = values_hunt(
+        &adapter,
+        "",
+        &["--cases", "6", "--interpolation", "flat", "--provoking", "last"],
+    );
+    assert_eq!((code, found, report["same"].as_u64()), (0, vec![], Some(6)), "{report}");
+    let (code, found, report) = values_hunt(&adapter, "--fault affine ", &["--cases", "3"]);
+    assert_eq!(code, 1, "{report}");
+    assert!(found.contains(&("affine".to_string(), 1)), "{found:?}");
+    let (code, found, report) = values_hunt(
+        &adapter,
+        "--fault provoking ",
+        &["--cases", "3", "--interpolation", "flat"],
+    );
+    assert_eq!(code, 1, "{report}");
+    assert_eq!(found, [("provoking-vertex".to_string(), 1)], "{report}");
+}
+
+/// A float TIFF's width, height and samples (channels per pixel interleaved).
+fn read_float_tiff(path: &Path) -> (u32, u32, Vec<f32>) {
+    let mut decoder = tiff::decoder::Decoder::new(std::io::Cursor::new(std::fs::read(path).unwrap())).unwrap();
+    let (w, h) = decoder.dimensions().unwrap();
+    match decoder.read_image().unwrap() {
+        tiff::decoder::DecodingResult::F32(v) => (w, h, v),
+        _ => panic!("{}: not float32", path.display()),
+    }
+}
+
+/// The covered samples of `scene` at 4x whose value in the adapter's stacked TIFF (drawn
+/// with `args` after `--samples 4`) is more than 2^-8 relative (at least 2^-8 absolute)
+/// from the exact value of
+/// `render --samples 4 --format json`, of all covered; asserts the TIFF's size and that
+/// every uncovered sample is 0.
+fn four_sample_values_off(adapter: &Path, scene: &Path, args: &[&str]) -> (usize, usize) {
+    let mut all = vec!["--samples", "4"];
+    all.extend_from_slice(args);
+    let (w, h, pixels) = read_float_tiff(&draw_values(adapter, &all, scene));
+    assert_eq!((w, h), (64, 4 * 32));
+    let output = assert_cmd::Command::cargo_bin("rasterproof")
+        .unwrap()
+        .arg("render")
+        .arg(scene)
+        .args(["--samples", "4", "--format", "json"])
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{}", text(&output));
+    let exact: Value = serde_json::from_slice(&output.stdout).unwrap();
+    let mut covered = vec![false; (w * h) as usize];
+    let mut off = 0;
+    for s in exact["values"]["samples"].as_array().unwrap() {
+        let [x, y, sample] = [0, 1, 2].map(|k| usize::try_from(s[k].as_u64().unwrap()).unwrap());
+        let at = sample * 32 * 64 + y * 64 + x;
+        covered[at] = true;
+        let wrong = s[4][0].as_array().unwrap().iter().enumerate().any(|(c, q)| {
+            let q = q.as_str().unwrap();
+            let (n, d) = q.split_once('/').unwrap_or((q, "1"));
+            let e = n.parse::<f64>().unwrap() / d.parse::<f64>().unwrap();
+            (f64::from(pixels[3 * at + c]) - e).abs() > e.abs().max(1.0) * 2f64.powi(-8)
+        });
+        off += usize::from(wrong);
+    }
+    for (at, covered) in covered.iter().enumerate() {
+        if !covered {
+            assert_eq!(
+                pixels[3 * at..3 * at + 3],
+                [0.0; 3],
+                "{}: row {}",
+                scene.display(),
+                at / 64
+            );
+        }
+    }
+    (off, covered.iter().filter(|&&c| c).count())
+}
+
+#[test]
+fn four_sample_values_are_stacked_per_sample() {
+    let Some(adapter) = adapter() else { return };
+    let dir = tempdir::Dir::new("wgpu-values-4x");
+    let scene = |interpolation: &str, sampling: &str| {
+        write(
+            &dir,
+            &format!("{interpolation}-{sampling}.json"),
+            &values_scene(21, 0, interpolation, "first", sampling),
+        )
+    };
+    for (interpolation, sampling) in [
+        ("smooth", "centre"),
+        ("noperspective", "centre"),
+        ("noperspective", "sample"),
+        ("noperspective", "centroid"),
+    ] {
+        let (off, covered) = four_sample_values_off(&adapter, &scene(interpolation, sampling), &[]);
+        assert_eq!(off, 0, "{interpolation} at {sampling}: {off} of {covered} samples off");
+        assert!(covered > 500, "{interpolation} at {sampling}");
+    }
+    // A centroid drawn at the centre: off where a pixel is partly covered, only there.
+    let centroid = scene("noperspective", "centroid");
+    let (off, covered) = four_sample_values_off(&adapter, &centroid, &["--fault", "centroid"]);
+    assert!(off > 0 && off < covered / 2, "{off} of {covered}");
+}
+
+#[test]
+fn values_refusals_name_the_field() {
+    let Some(adapter) = adapter() else { return };
+    let dir = tempdir::Dir::new("wgpu-values-refusals");
+    let out = dir.path().join("out.tiff");
+    let scene = |name: &str, varyings: &str, triangle: &str| {
+        write(
+            &dir,
+            name,
+            &format!(r#"{{"width": 8, "height": 8, "varyings": [{varyings}], "triangles": [{triangle}]}}"#),
+        )
+    };
+    let five = scene(
+        "five.json",
+        r#"{"name": "c", "channels": 5}"#,
+        r#"{"v": [[0, 0], [8, 0], [0, 8]], "varyings": {"c": [[1, 2, 3, 4, 5], [1, 2, 3, 4, 5], [1, 2, 3, 4, 5]]}}"#,
+    );
+    let message = refusal(&adapter, &["--values"], &five, &out);
+    assert!(message.contains("varyings[0].channels: 5"), "{message}");
+    let w0 = scene(
+        "w0.json",
+        r#"{"name": "c", "channels": 1}"#,
+        r#"{"v": [[0, 0], [8, 0], [0, 8]], "w": [1, 0, 1], "varyings": {"c": [[1], [2], [3]]}}"#,
+    );
+    let message = refusal(&adapter, &["--values"], &w0, &out);
+    assert!(message.contains("triangles[0].w[1]"), "{message}");
+    let none = write(
+        &dir,
+        "none.json",
+        r#"{"width": 8, "height": 8, "triangles": [{"v": [[0, 0], [8, 0], [0, 8]]}]}"#,
+    );
+    let message = refusal(&adapter, &["--values"], &none, &out);
+    assert!(message.contains("varyings: the scene declares none"), "{message}");
+    let one = scene(
+        "one.json",
+        r#"{"name": "c", "channels": 1}"#,
+        r#"{"v": [[0, 0], [8, 0], [0, 8]], "varyings": {"c": [[1], [2], [3]]}}"#,
+    );
+    let message = refusal(&adapter, &["--values", "--varying", "uv"], &one, &out);
+    assert!(message.contains("no varying named \"uv\""), "{message}");
+    let outside = scene(
+        "outside.json",
+        r#"{"name": "c", "channels": 1}"#,
+        r#"{"v": [[-1, 0], [8, 0], [0, 8]], "varyings": {"c": [[1], [2], [3]]}}"#,
+    );
+    let message = refusal(&adapter, &["--values"], &outside, &out);
+    assert!(message.contains("--clip"), "{message}");
+    let message = refusal(&adapter, &["--fault", "affine"], &one, &out);
+    assert!(message.contains("--values"), "{message}");
+    let message = refusal(&adapter, &["--values", "--fault", "nothing"], &one, &out);
+    assert!(message.contains("--fault"), "{message}");
+}

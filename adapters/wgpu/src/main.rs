@@ -12,7 +12,11 @@
 //! ```
 //!
 //! Arguments: `[--samples N] [--conservative] [--clip] (SCENE.json OUT.png | --serve)`, or `--info`
-//! alone. With `--serve` it stays alive and takes one scene per line on stdin (the
+//! alone; or `--values [--varying NAME] [--fault affine|provoking|centroid] [--samples N]
+//! [--clip] (SCENE.json OUT.tiff | --serve)`: one varying's interpolated values as a
+//! float32 TIFF instead of the ids PNG, for `rasterproof compare SCENE.json OUT.tiff --as
+//! values [--fit]` (the `values` module says what it draws, how positions, y and w reach
+//! the GPU exactly, and what lavapipe's interpolator was found to be). With `--serve` it stays alive and takes one scene per line on stdin (the
 //! stay-alive protocol of `rasterproof::oracle::renderer::stay_alive`, through
 //! `rasterproof::oracle::renderer::adapter`); the device, its pipelines and its render targets are
 //! made once per process (the targets again when a scene needs a larger one).
@@ -98,10 +102,16 @@
 //! `llvmpipe`), `WGPU_POWER_PREF` (`low`, `high`). Built without GLES: GL has no standard
 //! sample positions.
 //!
-//! Exit status: 0 when the PNG was written (or `--info` printed), 2 with one line on
+//! **Values on lavapipe**: `compare --fit` names `origin-plane fma as-given rcp f32
+//! y-down` bit for bit (llvmpipe's setup and interpolation, with Vulkan's first provoking
+//! vertex); `Rgba32Float` offers 1 and 4 samples (adapter-specific).
+//!
+//! Exit status: 0 when the PNG (or TIFF) was written (or `--info` printed), 2 with one line on
 //! stderr otherwise; under `--serve` each refusal is an `"ok": false` answer instead.
 
 #![warn(clippy::cast_possible_truncation, clippy::cast_possible_wrap)]
+
+mod values;
 
 use std::ffi::OsString;
 use std::process::ExitCode;
@@ -213,11 +223,14 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    if let Some(values) = options.values.clone() {
+        return values::values_main(args, options, values);
+    }
     // The device is made at the first scene (so that a bad command line is answered
     // without one), once; a failure to make it refuses every scene with its reason.
     let mut gpu: Option<Result<Renderer, String>> = None;
     adapter_main(NAME, args, |scene| {
-        let renderer = gpu.get_or_insert_with(|| Gpu::new().and_then(|g| Renderer::new(g, options)));
+        let renderer = gpu.get_or_insert_with(|| Gpu::new().and_then(|g| Renderer::new(g, options.clone())));
         match renderer {
             Ok(r) => r.render(scene),
             Err(e) => Err(e.clone()),
@@ -226,7 +239,7 @@ fn main() -> ExitCode {
 }
 
 /// The command-line options before the scene (or `--serve`).
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 struct Options {
     /// `--samples N`.
     samples: u32,
@@ -234,6 +247,8 @@ struct Options {
     conservative: bool,
     /// `--clip`: far vertices handed to the GPU's clipper instead of refused.
     clip: bool,
+    /// `--values`: a varying's interpolated values as a float32 TIFF instead of the ids PNG.
+    values: Option<values::ValuesOptions>,
 }
 
 impl Options {
@@ -243,7 +258,9 @@ impl Options {
             samples: 1,
             conservative: false,
             clip: false,
+            values: None,
         };
+        let (mut varying, mut fault) = (None, None);
         loop {
             match args.first().and_then(|a| a.to_str()) {
                 Some("--samples") => {
@@ -261,11 +278,41 @@ impl Options {
                     options.clip = true;
                     args.remove(0);
                 }
+                Some("--values") => {
+                    options.values = Some(values::ValuesOptions::default());
+                    args.remove(0);
+                }
+                Some("--varying") => {
+                    let name = args.get(1).and_then(|a| a.to_str()).ok_or("--varying needs a name")?;
+                    varying = Some(name.to_string());
+                    args.drain(..2);
+                }
+                Some("--fault") => {
+                    let name = args.get(1).and_then(|a| a.to_str()).unwrap_or("");
+                    fault = Some(
+                        values::Fault::parse(name)
+                            .ok_or_else(|| format!("--fault {name:?}: one of affine, provoking, centroid"))?,
+                    );
+                    args.drain(..2);
+                }
                 _ => break,
             }
         }
         if options.conservative && options.samples > 1 {
             return Err("--conservative draws one sample per pixel: leave out --samples".into());
+        }
+        match &mut options.values {
+            Some(values) => {
+                if options.conservative {
+                    return Err("--conservative draws ids only: leave it out with --values".into());
+                }
+                values.varying = varying;
+                values.fault = fault;
+            }
+            None if varying.is_some() || fault.is_some() => {
+                return Err("--varying and --fault go with --values".into());
+            }
+            None => {}
         }
         Ok(options)
     }
@@ -360,6 +407,7 @@ impl Gpu {
             "driver": info.driver,
             "driver_info": info.driver_info,
             "r32uint_sample_counts": r32,
+            "rgba32float_sample_counts": values::sample_counts(self),
             "sample_counts": self.sample_counts(),
             "adapter_specific_format_features": self.adapter.features().contains(wgpu::Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES),
             "conservative_rasterization": self.adapter.features().contains(wgpu::Features::CONSERVATIVE_RASTERIZATION),
