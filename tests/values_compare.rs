@@ -49,6 +49,7 @@ fn options(scene: &Scene) -> ValueOptions {
         varyings: scene.varyings.clone(),
         varying: 0,
         unorm: UnormRule::Nearest,
+        pattern: None,
     }
 }
 
@@ -139,6 +140,86 @@ fn each_fault_is_named_by_its_class() {
         classes(&smooth, &gross),
         [(ValueClass::Exact, n - 1), (ValueClass::Gross, 1)]
     );
+}
+
+/// Under the standard 4x pattern, a centroid varying: the triangle (0, 0), (23/8, 0),
+/// (0, 23/8) with the value x + y (w = 1) on a 4x4 canvas, their image stacked per sample.
+/// By hand: the standard 4x samples sit at (3/8, 1/8), (7/8, 3/8), (1/8, 5/8), (5/8, 7/8)
+/// of the pixel, so sample s of pixel (i, j) has x + y = i + j + (1/2, 5/4, 3/4, 3/2)[s],
+/// inside where that is below 23/8 (never equal: the sums are quarters). Pixel (1, 1):
+/// samples 0 and 2 inside (5/2, 11/4), 1 and 3 outside (13/4, 7/2); its centre (3/2, 3/2)
+/// at 3 is outside too. Direct3D's centroid is sample 0, value 5/2. The region of the pixel
+/// inside the triangle runs from (1, 1) (value 2) to the edge (value 23/8): any value in
+/// [2, 23/8] is a point Vulkan's centroid allows; 3, the centre's, is not.
+#[test]
+fn a_centroid_per_sample_is_judged_by_hand() {
+    let truth = parse_scene(
+        r#"{"width": 4, "height": 4, "samples": 4,
+            "varyings": [{"name": "c", "channels": 1, "interpolation": "smooth", "sampling": "centroid"}],
+            "triangles": [{"v": [[0, 0], ["23/8", 0], [0, "23/8"]], "varyings": {"c": [[0], ["23/8"], ["23/8"]]}}]}"#,
+        "centroid",
+    )
+    .unwrap();
+    let target = Target::new(4, 4, truth.convention()).unwrap();
+    let offsets = [0.5f32, 1.25, 0.75, 1.5];
+    let grey = |samples: &[f32], height: u32| {
+        let mut bytes = std::io::Cursor::new(Vec::new());
+        tiff::encoder::TiffEncoder::new(&mut bytes)
+            .unwrap()
+            .write_image::<tiff::encoder::colortype::Gray32Float>(4, height, samples)
+            .unwrap();
+        Theirs::read(&bytes.into_inner(), "theirs.tiff", Format::Values, Default::default()).unwrap()
+    };
+    let stacked = |pixel_1_1: f32| {
+        let mut samples = vec![0f32; 4 * 16];
+        for j in 0..4u32 {
+            for i in 0..4u32 {
+                let inside: Vec<bool> = offsets.iter().map(|o| (i + j) as f32 + o < 2.875).collect();
+                // The fragment's value: the centre's when every sample is inside, else
+                // the first inside sample's.
+                let value = if inside.iter().all(|&b| b) {
+                    (i + j) as f32 + 1.0
+                } else if let Some(first) = inside.iter().position(|&b| b) {
+                    (i + j) as f32 + offsets[first]
+                } else {
+                    continue;
+                };
+                let value = if (i, j) == (1, 1) { pixel_1_1 } else { value };
+                for (s, _) in inside.iter().enumerate().filter(|&(_, &b)| b) {
+                    samples[(s as u32 * 16 + j * 4 + i) as usize] = value;
+                }
+            }
+        }
+        grey(&samples, 16)
+    };
+    let options = options(&truth).with_pattern(truth.samples.clone(), &target.convention);
+    let judge = |theirs: &Theirs| compare_values(&truth.primitives(), &target, theirs, &options).unwrap();
+    // Pixels (0, 0), (1, 0), (0, 1) wholly inside; (2, 0), (0, 2), (1, 1) in part: 3 x 4 +
+    // 3 x 2 samples (pixel (2, 0): sums 5/2 and 11/4 inside, as (1, 1)).
+    let right = judge(&stacked(2.5));
+    assert_eq!(right.counts, [(ValueClass::Exact, 18)], "{right:?}");
+    assert_eq!(right.samples, 4);
+    let at_centre = judge(&stacked(3.0));
+    assert_eq!(at_centre.counts, [(ValueClass::Exact, 16), (ValueClass::AtCentre, 2)]);
+    let off: Vec<(u32, u32, usize)> = at_centre.pixels.iter().map(|p| (p.x, p.y, p.sample)).collect();
+    assert_eq!(off, [(1, 1, 0), (1, 1, 2)]);
+    // Sample 2's value, 11/4: another covered sample, inside the region.
+    let vulkan = judge(&stacked(2.75));
+    assert_eq!(vulkan.counts, [(ValueClass::Exact, 16), (ValueClass::CentroidRange, 2)]);
+    assert_eq!(vulkan.off(), 0);
+    // The region's corner and its far edge are its extremes, give or take f32's error
+    // (a few steps); 1/64 beyond is not allowed.
+    assert_eq!(judge(&stacked(2.0)).counts[1], (ValueClass::CentroidRange, 2));
+    assert_eq!(judge(&stacked(step(2.0, -2))).counts[1], (ValueClass::CentroidRange, 2));
+    assert_eq!(judge(&stacked(2.875)).counts[1], (ValueClass::CentroidRange, 2));
+    assert_eq!(judge(&stacked(2.0 - 1.0 / 64.0)).counts[1].0, ValueClass::Gross);
+    assert_eq!(judge(&stacked(2.875 + 1.0 / 64.0)).counts[1].0, ValueClass::Gross);
+    // An image of the canvas's size, not stacked: refused with both sizes named.
+    let flat = grey(&[0.0; 16], 4);
+    let error = compare_values(&truth.primitives(), &target, &flat, &options)
+        .unwrap_err()
+        .to_string();
+    assert!(error.contains("4x4") && error.contains("4x16"), "{error}");
 }
 
 #[test]

@@ -9,7 +9,7 @@ use num_traits::Signed;
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 use rasterproof::geom::Point;
-use rasterproof::interp::planned::PlannedValue;
+use rasterproof::interp::planned::{FastPlan, PlannedValue, TriangleF64};
 use rasterproof::interp::values::{Interpolation, ProvokingVertex, ValueSegment, ValueSetup, ValueTriangle};
 use rasterproof::num::exact::nearest_f32;
 
@@ -105,15 +105,33 @@ proptest! {
         channel in 0usize..2,
         steps in -3i32..4,
         bound_exp in -30i32..4,
+        sample in prop::option::of((0i64..16, 0i64..16)),
     ) {
         let provoking = if last { ProvokingVertex::Last } else { ProvokingVertex::First };
         let centre = if half { q(1, 2) } else { q(0, 1) };
+        // The pixel's centre, or a sample position on the 1/16 grid.
+        let offset_point = match sample {
+            Some((sx, sy)) => Point::new(q(sx, 16), q(sy, 16)),
+            None => Point::new(centre.clone(), centre.clone()),
+        };
         let x = u32::try_from(offset).unwrap() + px;
-        let p = Point::new(q(i64::from(x), 1) + &centre, q(i64::from(py), 1) + &centre);
+        let p = Point::new(q(i64::from(x), 1) + &offset_point.x, q(i64::from(py), 1) + &offset_point.y);
         let plain = setup.value(interpolation, provoking, channel..channel + 1, &p).map(|v| v[0].clone());
-        let planned = PlannedValue::new(&setup, interpolation, provoking, channel, &centre);
+        let planned = PlannedValue::channels_at(&setup, interpolation, provoking, channel..channel + 1, &offset_point)
+            .pop()
+            .unwrap();
         prop_assert_eq!(planned.exact(x, py), plain.clone());
         prop_assert_eq!(planned.nearest_f32(x, py), plain.clone().map(|v| nearest_f32(&v)));
+        // The f64 filter: where it decides, the plain value's nearest f32.
+        if let Some(t) = TriangleF64::of(&setup, channel..channel + 1) {
+            let f = |v: &BigRational| num_traits::ToPrimitive::to_f64(v).unwrap();
+            let fast = FastPlan::new(&t, interpolation, provoking, (f(&offset_point.x), f(&offset_point.y)));
+            let mut out = [None];
+            fast.nearest_f32(x, py, &mut out);
+            if let Some(decided) = out[0] {
+                prop_assert_eq!(Ok(Some(decided)), plain.clone().map(|v| nearest_f32(&v)));
+            }
+        }
         // Within a bound of an f32 a few steps from the nearest: both ways of deciding.
         if let Ok(v) = plain {
             if let Some(n) = nearest_f32(&v).filter(|n| n.is_finite() && *n != 0.0) {
@@ -148,5 +166,58 @@ fn a_value_on_an_f32_midpoint_rounds_to_even() {
             &q(1, 2),
         );
         assert_eq!(planned.nearest_f32(2, 3), Ok(Some(expected)));
+    }
+}
+
+/// The f64 filter leaves a value on an f32 midpoint (or 2^-70 beside it) to the exact
+/// path, and decides a plain one: at the centres of a 32x32 triangle with thirds, w = 1, 3
+/// and 1/4, far from any midpoint, every pixel.
+#[test]
+fn the_f64_filter_decides_plain_values_and_leaves_midpoints() {
+    let (a, b, c) = (Point::from_ints(0, 0), Point::from_ints(32, 0), Point::from_ints(0, 32));
+    let setup = |v: [BigRational; 3], w: [BigRational; 3]| {
+        ValueSetup::Triangle(Box::new(ValueTriangle::window(
+            [&a, &b, &c],
+            [&w[0], &w[1], &w[2]],
+            v.map(|v| vec![v]),
+        )))
+    };
+    let mid = q((1 << 24) + 1, 1 << 24);
+    let above = &mid + BigRational::new(1.into(), num_bigint::BigInt::from(1) << 70);
+    for v in [mid, above] {
+        let s = setup([v.clone(), v.clone(), v], [q(1, 1), q(1, 1), q(1, 1)]);
+        let fast = FastPlan::new(
+            &TriangleF64::of(&s, 0..1).unwrap(),
+            Interpolation::Smooth,
+            ProvokingVertex::First,
+            (0.5, 0.5),
+        );
+        let mut out = [Some(0.0)];
+        fast.nearest_f32(2, 3, &mut out);
+        assert_eq!(out, [None]);
+    }
+    let s = setup([q(1, 3), q(-7, 3), q(100, 3)], [q(1, 1), q(3, 1), q(1, 4)]);
+    for interpolation in [Interpolation::Smooth, Interpolation::NoPerspective] {
+        let fast = FastPlan::new(
+            &TriangleF64::of(&s, 0..1).unwrap(),
+            interpolation,
+            ProvokingVertex::First,
+            (0.5, 0.5),
+        );
+        let (mut decided, mut inside) = (0, 0);
+        for y in 0..32u32 {
+            for x in 0..32 - y {
+                let p = Point::new(q(2 * i64::from(x) + 1, 2), q(2 * i64::from(y) + 1, 2));
+                let exact = s.value(interpolation, ProvokingVertex::First, 0..1, &p).unwrap();
+                let mut out = [None];
+                fast.nearest_f32(x, y, &mut out);
+                inside += 1;
+                if let Some(f) = out[0] {
+                    assert_eq!(Some(f), nearest_f32(&exact[0]), "({x}, {y}) {interpolation:?}");
+                    decided += 1;
+                }
+            }
+        }
+        assert_eq!(decided, inside, "{interpolation:?}");
     }
 }

@@ -180,9 +180,9 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     if !values && (o.varying.is_some() || o.unorm_rule != "nearest") {
         return Err("--varying and --unorm-rule are for --as values".to_string());
     }
-    if values && (o.diff_out.is_some() || o.html.is_some() || o.samples.is_some() || o.conservative.is_some()) {
+    if values && (o.diff_out.is_some() || o.html.is_some() || o.conservative.is_some()) {
         return Err(
-            "--as values compares one sample per pixel and prints its comparison (text or JSON); --diff-out, --html, --samples and --conservative are for coverage"
+            "--as values prints its comparison (text or JSON); --diff-out, --html and --conservative are for coverage"
                 .to_string(),
         );
     }
@@ -222,9 +222,10 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         None => scene.samples.clone(),
     }
     .filter(|p| !p.is_single(&target.convention));
-    let question = match (grey_options, &o.conservative, pattern) {
+    let question = match (grey_options, &o.conservative, pattern.clone()) {
         _ if values => {
-            let options = ValueOptions::for_scene(&scene, &name, model, o.varying.as_deref(), &o.unorm_rule)?;
+            let options = ValueOptions::for_scene(&scene, &name, model, o.varying.as_deref(), &o.unorm_rule)?
+                .with_pattern(pattern, &target.convention);
             if o.fit {
                 Question::FitValues(Box::new(options))
             } else {

@@ -78,6 +78,11 @@ pub struct Options {
     /// With --as values: the scenes' provoking vertex (first or last).
     #[arg(long, default_value = "first")]
     provoking: String,
+    /// With --as values: where the varying is sampled (centre, centroid or sample; the
+    /// last two differ from the centre under --samples N, where their answer is a
+    /// float32 TIFF of N values images stacked, W x N·H).
+    #[arg(long, default_value = "centre")]
+    sampling: String,
     /// How many scenes.
     #[arg(long, default_value_t = 200)]
     cases: u64,
@@ -159,7 +164,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     }
     if format == Format::Values {
         config.model = super::parse_model(&o.model)?;
-        let config = ValueHuntConfig::named(config, &o.interpolation, &o.provoking)?;
+        let config = ValueHuntConfig::named(config, &o.interpolation, &o.provoking, &o.sampling)?;
         return run_values(o, &config, program.as_ref(), cmd);
     }
     config.model = match super::parse_model(&o.model)? {
@@ -235,14 +240,11 @@ fn mode(o: &Options) -> Result<(Format, Option<GreyJudged>, Option<SamplePattern
     }
     let samples = o.samples.map(super::parse_samples).transpose()?.filter(|p| p.len() > 1);
     let values = format == Format::Values;
-    if !values && (o.interpolation != "smooth" || o.provoking != "first") {
-        return Err("--interpolation and --provoking are for --as values".to_string());
+    if !values && (o.interpolation != "smooth" || o.provoking != "first" || o.sampling != "centre") {
+        return Err("--interpolation, --provoking and --sampling are for --as values".to_string());
     }
-    if values && (samples.is_some() || o.fit_first || o.run.outputs.junit.is_some()) {
-        return Err(
-            "--as values hunts one sample per pixel and writes --report (JSON) and --out; leave out --samples, --fit-first and --junit"
-                .to_string(),
-        );
+    if values && (o.fit_first || o.run.outputs.junit.is_some()) {
+        return Err("--as values writes --report (JSON) and --out; leave out --fit-first and --junit".to_string());
     }
     if samples.is_some() && grey.is_some() {
         return Err("--samples: a multisample hunt judges ids or masks per sample; leave out --as grey".to_string());

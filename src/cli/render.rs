@@ -266,28 +266,33 @@ fn values_out(
     tiff: bool,
 ) -> Result<Result<image::DynamicImage, Vec<u8>>, String> {
     let varyings = &scene.varyings;
-    if varyings.list.is_empty() {
-        return Err(format!("--values-out: {name} declares no varyings"));
-    }
-    let k = match &o.varying {
-        None => 0,
-        Some(v) => varyings.list.iter().position(|d| &d.name == v).ok_or_else(|| {
-            let names: Vec<&str> = varyings.list.iter().map(|d| d.name.as_str()).collect();
-            format!(
-                "--varying: {name} declares no varying {v:?} (it declares {})",
-                names.join(", ")
-            )
-        })?,
-    };
+    let k = varying_index(o, name, varyings)?;
     let values = exact_pixel_values(coverage, &scene.value_setups(), varyings, target);
     if tiff {
-        return values_tiff(&values, varyings, k, target.width, target.height)
+        return values_tiff(&values, varyings, k, target.width, target.height, 1)
             .map(Err)
             .map_err(|e| format!("--values-out: {e} (scene {name})"));
     }
     values_image(&values, varyings, k, target.width, target.height, o.unorm)
         .map(Ok)
         .map_err(|e| format!("--values-out: {e} (scene {name}, --unorm {})", o.unorm))
+}
+
+/// The varying `--values-out` writes: the one `--varying` names, default the first.
+fn varying_index(o: &Options, name: &str, varyings: &rasterproof::interp::values::Varyings) -> Result<usize, String> {
+    if varyings.list.is_empty() {
+        return Err(format!("--values-out: {name} declares no varyings"));
+    }
+    match &o.varying {
+        None => Ok(0),
+        Some(v) => varyings.list.iter().position(|d| &d.name == v).ok_or_else(|| {
+            let names: Vec<&str> = varyings.list.iter().map(|d| d.name.as_str()).collect();
+            format!(
+                "--varying: {name} declares no varying {v:?} (it declares {})",
+                names.join(", ")
+            )
+        }),
+    }
 }
 
 /// The summary line of a one-sample render: the pixels covered, once and more than once,
@@ -321,9 +326,17 @@ fn run_samples(
     target: &Target,
     pattern: &rasterproof::pattern::SamplePattern,
 ) -> Result<ExitCode, String> {
-    if o.out.is_some() || o.colors_out.is_some() || o.values_out.is_some() || o.scale.is_some() {
+    let tiff = |p: &std::path::Path| {
+        p.extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("tif") || e.eq_ignore_ascii_case("tiff"))
+    };
+    if o.out.is_some()
+        || o.colors_out.is_some()
+        || o.values_out.as_deref().is_some_and(|p| !tiff(p))
+        || o.scale.is_some()
+    {
         return Err(format!(
-            "{name}: under the {pattern} sample pattern render writes --ids-out (one ids image per sample, stacked) and --count-out (and each sample's values with --format json); -o, --colors-out, --values-out and --scale are for one sample per pixel"
+            "{name}: under the {pattern} sample pattern render writes --ids-out (one ids image per sample, stacked), --values-out STACKED.tiff (one float32 values image per sample, stacked) and --count-out (and each sample's values with --format json); -o, --colors-out, a PNG --values-out and --scale are for one sample per pixel"
         ));
     }
     let primitives = scene.primitives();
@@ -337,6 +350,18 @@ fn run_samples(
             .map_err(|e| format!("--ids-out {}: {e} (scene {name})", path.display()))?;
         outputs.stage_png(path, &ids)?;
         wrote.push(format!("{} (ids, {} samples stacked)", path.display(), pattern.len()));
+    }
+    if let Some(path) = &o.values_out {
+        let k = varying_index(o, name, &scene.varyings)?;
+        let values = exact_values(&coverage, pattern, &scene.value_setups(), &scene.varyings, target);
+        let bytes = values_tiff(&values, &scene.varyings, k, target.width, target.height, pattern.len())
+            .map_err(|e| format!("--values-out: {e} (scene {name})"))?;
+        outputs.stage(path, "TIFF", |out| std::io::Write::write_all(out, &bytes))?;
+        wrote.push(format!(
+            "{} (values, {} samples stacked)",
+            path.display(),
+            pattern.len()
+        ));
     }
     if let Some(path) = &o.count_out {
         outputs.stage_png(path, &coverage.to_count_image())?;

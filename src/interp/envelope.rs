@@ -313,6 +313,20 @@ impl EnvelopeSetup {
         self.at_input((input(x), input(y)))
     }
 
+    /// The envelope at the point `(x + offset.0, y + offset.1)` of pixel `(x, y)`: a
+    /// sample position of a pattern, each offset an f64 that is exactly the position's
+    /// (the caller's to ensure; [`EnvelopeSetup::at`] takes any exact point).
+    pub fn at_offset(&self, x: u32, y: u32, offset: (f64, f64)) -> Envelope {
+        let input = |c: u32, o: f64| {
+            // Exact in f64 for the short dyadic offsets of sample patterns (below 2^24 px).
+            let v = f64::from(c) + o;
+            #[allow(clippy::cast_possible_truncation)] // the question is whether it is exact
+            let exact = f64::from(v as f32) == v && v - f64::from(c) == o;
+            Input { v, exact }
+        };
+        self.at_input((input(x, offset.0), input(y, offset.1)))
+    }
+
     fn at_input(&self, at: (Input, Input)) -> Envelope {
         match &self.kind {
             Kind::Fixed(e) => *e,

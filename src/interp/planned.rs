@@ -11,8 +11,8 @@
 //!   denominator;
 //! - a segment: `f = f_a + t (f_b - f_a)` with `t = (p - a) . (b - a) / |b - a|^2`.
 //!
-//! At pixel `(x, y)` the point is `(x + c, y + c)` for the convention's centre `c`, so the
-//! value is `N(x, y) / D(x, y)` with `N = a x + b y + k` and `D = d x + e y + g`, six exact
+//! At pixel `(x, y)` the point is `(x + c, y + c)` for the convention's centre `c` (or a
+//! sample's `(x + o_x, y + o_y)`, [`PlannedValue::channels_at`]), so the value is `N(x, y) / D(x, y)` with `N = a x + b y + k` and `D = d x + e y + g`, six exact
 //! rationals set up once per primitive and channel. Per pixel the plan evaluates both in
 //! f64 from the coefficients rounded to f64: each result within `4 u (|a x| + |b y| + |k|)`
 //! of the exact one (`u = 2^-53`: one rounding of each coefficient, two products, two
@@ -34,6 +34,7 @@
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
+use crate::geom::Point;
 use crate::interp::values::{Interpolation, NoValue, ProvokingVertex, ValueSetup};
 use crate::num::exact::{nearest_f32, nearest_f64};
 
@@ -119,6 +120,38 @@ impl PlannedValue {
         channels: std::ops::Range<usize>,
         centre: &BigRational,
     ) -> Vec<PlannedValue> {
+        let offset = Point::new(centre.clone(), centre.clone());
+        PlannedValue::channels_at(setup, interpolation, provoking, channels, &offset)
+    }
+
+    /// [`PlannedValue::channels`] at the point `(x + offset.x, y + offset.y)` of pixel
+    /// `(x, y)`: a sample position of a pattern, the same in every pixel.
+    ///
+    /// ```
+    /// use rasterproof::geom::Point;
+    /// use rasterproof::interp::planned::PlannedValue;
+    /// use rasterproof::interp::values::{Interpolation, ProvokingVertex, ValueSetup, ValueTriangle};
+    /// let q = |n: i64, d: i64| num_rational::BigRational::new(n.into(), d.into());
+    /// let (a, b, c) = (Point::from_ints(0, 0), Point::from_ints(8, 0), Point::from_ints(0, 8));
+    /// // The value is x + 2y (0, 8 and 16 at the vertices, w = 1).
+    /// let t = ValueSetup::Triangle(Box::new(ValueTriangle::window(
+    ///     [&a, &b, &c],
+    ///     [&q(1, 1), &q(1, 1), &q(1, 1)],
+    ///     [vec![q(0, 1)], vec![q(8, 1)], vec![q(16, 1)]],
+    /// )));
+    /// // Vulkan's 4x sample 0 sits at (3/8, 1/8) in its pixel: in pixel (2, 1) at
+    /// // (19/8, 9/8), where x + 2y = 37/8.
+    /// let offset = Point::from_fractions(3, 8, 1, 8);
+    /// let planned = PlannedValue::channels_at(&t, Interpolation::Smooth, ProvokingVertex::First, 0..1, &offset);
+    /// assert_eq!(planned[0].exact(2, 1), Ok(q(37, 8)));
+    /// ```
+    pub fn channels_at(
+        setup: &ValueSetup,
+        interpolation: Interpolation,
+        provoking: ProvokingVertex,
+        channels: std::ops::Range<usize>,
+        offset: &Point,
+    ) -> Vec<PlannedValue> {
         let constant = |v: &BigRational| PlannedValue {
             form: Form::Constant(v.clone(), nearest_f32(v)),
         };
@@ -155,7 +188,7 @@ impl PlannedValue {
                     return none(NoValue::Degenerate);
                 }
                 // sum over i of weight_i (q . n_i), as a function of (x, y), with
-                // q = (x + centre, y + centre, 1).
+                // q = (x + offset_x, y + offset_y, 1).
                 let affine = |weight: &dyn Fn(usize) -> BigRational| {
                     let mut c = [BigRational::zero(), BigRational::zero(), BigRational::zero()];
                     for (i, n) in normals.iter().enumerate() {
@@ -164,7 +197,7 @@ impl PlannedValue {
                             c[k] += &w * &n[k];
                         }
                     }
-                    let k = &c[2] + (&c[0] + &c[1]) * centre;
+                    let k = &c[2] + &c[0] * &offset.x + &c[1] * &offset.y;
                     Affine::new([c[0].clone(), c[1].clone(), k])
                 };
                 if interpolation == Interpolation::Smooth {
@@ -187,7 +220,7 @@ impl PlannedValue {
                     return none(NoValue::Degenerate);
                 }
                 let d = Affine::constant(length2.clone());
-                let from = (centre - &a.x) * &dx + (centre - &a.y) * &dy;
+                let from = (&offset.x - &a.x) * &dx + (&offset.y - &a.y) * &dy;
                 channels
                     .map(|k| {
                         let (fa, fb) = (&s.values[0][k], &s.values[1][k]);
@@ -299,5 +332,243 @@ impl PlannedValue {
         let v = self.exact(x, y)?;
         let t = BigRational::from_float(f64::from(t)).expect("a finite f32");
         Ok(BigRational::from_float(bound).is_some_and(|b| (t - v).abs() <= b))
+    }
+}
+
+/// A window-space triangle's inputs in f64, each the nearest f64 to the exact input:
+/// what [`FastPlan`] sets up from (converted once per primitive, as a renderer holds its
+/// vertices in floats).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TriangleF64 {
+    /// The vertices' window x.
+    pub x: [f64; 3],
+    /// The vertices' window y.
+    pub y: [f64; 3],
+    /// The vertices' clip-space w (1 without perspective).
+    pub w: [f64; 3],
+    /// Per vertex, the channels set up (the first of them at index 0).
+    pub values: [Vec<f64>; 3],
+}
+
+impl TriangleF64 {
+    /// The channels `channels` of `setup`'s triangle; `None` for a segment, an input beyond
+    /// f64's range, or a vertex at `w <= 0` (the fast plan's bound needs `1 / w` finite).
+    pub fn of(setup: &ValueSetup, channels: std::ops::Range<usize>) -> Option<TriangleF64> {
+        let ValueSetup::Triangle(t) = setup else {
+            return None;
+        };
+        let w = [0, 1, 2].map(|i| nearest_f64(&t.h[i][2]));
+        let w = [w[0]?, w[1]?, w[2]?];
+        if w.iter().any(|&w| w <= 0.0 || !w.is_finite()) {
+            return None;
+        }
+        let coordinate = |i: usize, c: usize| nearest_f64(&(&t.h[i][c] / &t.h[i][2])).filter(|v| v.is_finite());
+        let x = [coordinate(0, 0)?, coordinate(1, 0)?, coordinate(2, 0)?];
+        let y = [coordinate(0, 1)?, coordinate(1, 1)?, coordinate(2, 1)?];
+        let values = [0, 1, 2].map(|i| {
+            t.values[i][channels.clone()]
+                .iter()
+                .map(|v| nearest_f64(v).filter(|v| v.is_finite()))
+                .collect::<Option<Vec<f64>>>()
+        });
+        let [Some(a), Some(b), Some(c)] = values else {
+            return None;
+        };
+        Some(TriangleF64 {
+            x,
+            y,
+            w,
+            values: [a, b, c],
+        })
+    }
+}
+
+/// `γ_n = n u / (1 - n u)`: the bound on `n` relative roundings (Higham, *Accuracy and
+/// Stability of Numerical Algorithms*, lemma 3.1).
+fn gamma(n: f64) -> f64 {
+    n * U / (1.0 - n * U)
+}
+
+/// The roundings on any path of the fast plan's evaluation, the inputs' own included
+/// (counted in [`FastPlan`]'s docs): 15, with one to spare.
+const FAST_ROUNDINGS: f64 = 16.0;
+
+/// A triangle's values at the points `(x + o_x, y + o_y)` of pixels `(x, y)` set up in f64
+/// arithmetic from the nearest-f64 inputs ([`TriangleF64`]), with an error bound that
+/// decides the nearest f32 of the exact value at most pixels for the cost of a few float
+/// operations, and says when it cannot ([`FastPlan::nearest_f32`] gives `None`; the exact
+/// [`PlannedValue`] decides those).
+///
+/// The value is `N / D` with `N = sum g_i E_i(p)` and `D = sum r_i E_i(p)`, `E_i` the
+/// edge function opposite vertex `i` (`E_0(p) = (x_1 - p_x)(y_2 - p_y) - (x_2 - p_x)(y_1
+/// - p_y)`, cyclically), and `r_i = 1 / w_i`, `g_i = f_i / w_i` (`smooth`) or `r_i = 1`,
+/// `g_i = f_i` (`noperspective`). The plane is anchored at the integer point `(a_x, a_y)`
+/// at or below vertex 0 (its coordinates rounded down): the positions are taken relative
+/// to it, exactly (a position f64 cannot hold exactly, or one whose difference from the
+/// anchor it cannot, leaves every value to the exact path), so that the terms stay the
+/// size of the triangle wherever it lies on the canvas. Written as `A_i x + B_i y + K_i` at
+/// pixel `(a_x + x, a_y + y)`: `A_i = y_j - y_k`, `B_i = x_k - x_j`, `K_i = x_j y_k - x_k
+/// y_j + A_i o_x + B_i o_y`, with relative coordinates.
+///
+/// **The bound.** Every computed number is the exact one's polynomial (or reciprocal) in
+/// the inputs, each monomial perturbed by at most `m` factors `(1 + δ)`, `|δ| <= u = 2^-53`:
+/// an input 1, `r_i` 2, `g_i` 4, `A_i` and `B_i` 2, `K_i` 6, the coefficients `sum g_i K_i`
+/// 13, and the value of `N` at a pixel (`x` and `y` exact integers) 15. So `|N' - N| <= γ_16
+/// S_N`, `S_N` the same computation on absolute values (lemma 3.3 and section 3.1 of
+/// Higham's book), here bounded in closed form: with `X >= |x_i|, |x|` and `Y >= |y_i|,
+/// |y|` (vertices and pixel, relative to the anchor), `|o| <= 1`, every `|A_i| |x| + |B_i| |y| + |K_i|` term is at
+/// most `T = 6 X Y + 2 X + 2 Y`, so `S_N <= T sum |g_i|` and `S_D <= T sum |r_i|`. Then, at
+/// a pixel where `|D'| > 1024 e_D`: `|N' / D' - N / D| <= (e_N + |N / D| e_D) / |D'|`, and
+/// the computed quotient `N' * fl(1 / D')` adds two roundings; solved for the error `E`,
+/// `E <= (e_N + |v'| e_D) Q + 8 u |v'|` with `Q = |fl(1 / D')| (1024 / 1023)(1 + 2u)`, widened
+/// by `(1 + 8 u)` for its own arithmetic. Round-to-nearest is monotone, so when `v' - E` and
+/// `v' + E` round to the same f32 the exact value does too.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FastPlan {
+    form: FastForm,
+    /// The anchor `(a_x, a_y)`, integers.
+    anchor: (f64, f64),
+    /// The pixels the bound holds for: `|x - a_x| <= limit.0`, `|y - a_y| <= limit.1`.
+    limit: (f64, f64),
+}
+
+#[derive(Debug, Clone, PartialEq)]
+enum FastForm {
+    /// Per channel the decided f32 (`None`: the exact value decides).
+    Constant(Vec<Option<f32>>),
+    Ratio {
+        /// `D`'s coefficients `[a, b, k]` at integer pixel coordinates.
+        d: [f64; 3],
+        /// `D`'s error bound.
+        e_d: f64,
+        /// Per channel, `N`'s coefficients and error bound.
+        n: Vec<([f64; 3], f64)>,
+    },
+}
+
+/// The f32 every real of `[lo, hi]` rounds to, when they all round to one finite f32.
+#[inline]
+fn decided(lo: f64, hi: f64) -> Option<f32> {
+    #[allow(clippy::cast_possible_truncation)] // rounding to f32 is the point
+    let (a, b) = (lo as f32, hi as f32);
+    (a.to_bits() == b.to_bits() && a.is_finite() && lo <= hi).then_some(a)
+}
+
+/// `a - b` when f64 holds it exactly (Knuth's TwoSum leaves no error term).
+fn exact_difference(a: f64, b: f64) -> Option<f64> {
+    let s = a - b;
+    let bv = s - a;
+    let av = s - bv;
+    let e = (a - av) + (-b - bv);
+    (e == 0.0 && s.is_finite()).then_some(s)
+}
+
+impl FastPlan {
+    /// The plan of `t`'s channels under `interpolation` (`provoking` for `flat`) at
+    /// offset `offset` in each pixel (each coordinate of magnitude at most 1), for pixels
+    /// within 2 px of the triangle's bounding box (others: `None` from
+    /// [`FastPlan::nearest_f32`]).
+    pub fn new(
+        t: &TriangleF64,
+        interpolation: Interpolation,
+        provoking: ProvokingVertex,
+        offset: (f64, f64),
+    ) -> FastPlan {
+        let channels = t.values[0].len();
+        let anchor = (t.x[0].floor(), t.y[0].floor());
+        let relative = |c: &[f64; 3], a: f64| -> Option<[f64; 3]> {
+            Some([
+                exact_difference(c[0], a)?,
+                exact_difference(c[1], a)?,
+                exact_difference(c[2], a)?,
+            ])
+        };
+        let (Some(x), Some(y)) = (relative(&t.x, anchor.0), relative(&t.y, anchor.1)) else {
+            return FastPlan {
+                form: FastForm::Constant(vec![None; channels]),
+                anchor,
+                limit: (0.0, 0.0),
+            };
+        };
+        let most = |c: &[f64; 3]| c.iter().fold(0.0f64, |m, v| m.max(v.abs())) + 2.0;
+        let limit = (most(&x), most(&y));
+        if interpolation == Interpolation::Flat {
+            let v = &t.values[provoking.vertex(3)];
+            let each = v
+                .iter()
+                .map(|&f| decided(f - f.abs() * 2.0 * U, f + f.abs() * 2.0 * U))
+                .collect();
+            return FastPlan {
+                form: FastForm::Constant(each),
+                anchor,
+                limit: (f64::INFINITY, f64::INFINITY),
+            };
+        }
+        let (x, y) = (&x, &y);
+        let (ox, oy) = offset;
+        let mut a = [0.0; 3];
+        let mut b = [0.0; 3];
+        let mut k = [0.0; 3];
+        for i in 0..3 {
+            let (j, l) = ((i + 1) % 3, (i + 2) % 3);
+            a[i] = y[j] - y[l];
+            b[i] = x[l] - x[j];
+            k[i] = (x[j] * y[l] - x[l] * y[j]) + (a[i] * ox + b[i] * oy);
+        }
+        let smooth = interpolation == Interpolation::Smooth;
+        let r = t.w.map(|w| if smooth { 1.0 / w } else { 1.0 });
+        let combine = |weight: &dyn Fn(usize) -> f64| {
+            let c = |coefficient: &[f64; 3]| {
+                (weight(0) * coefficient[0] + weight(1) * coefficient[1]) + weight(2) * coefficient[2]
+            };
+            [c(&a), c(&b), c(&k)]
+        };
+        let (xl, yl) = limit;
+        let terms = 6.0 * xl * yl + 2.0 * xl + 2.0 * yl;
+        // The bound on sums computed in f64 themselves: widened by 2^-40.
+        let bound = |weights: f64| gamma(FAST_ROUNDINGS) * terms * weights * (1.0 + 1.0 / 1_099_511_627_776.0);
+        let d = combine(&|i| r[i]);
+        let e_d = bound(r.iter().map(|r| r.abs()).sum());
+        let n = (0..channels)
+            .map(|c| {
+                let g = [0, 1, 2].map(|i| t.values[i][c] * r[i]);
+                (combine(&|i| g[i]), bound(g.iter().map(|g| g.abs()).sum()))
+            })
+            .collect();
+        FastPlan {
+            form: FastForm::Ratio { d, e_d, n },
+            anchor,
+            limit,
+        }
+    }
+
+    /// Every channel's exact value at pixel `(x, y)` rounded to the nearest f32, into
+    /// `out` (one per channel), where the bound decides it; `None` where it does not (the
+    /// exact value must decide: [`PlannedValue::nearest_f32`]).
+    ///
+    /// # Panics
+    /// When `out` is shorter than the plan's channels.
+    #[inline]
+    pub fn nearest_f32(&self, x: u32, y: u32, out: &mut [Option<f32>]) {
+        // Exact: integers below 2^53.
+        let (xf, yf) = (f64::from(x) - self.anchor.0, f64::from(y) - self.anchor.1);
+        match &self.form {
+            FastForm::Constant(each) => out[..each.len()].copy_from_slice(each),
+            FastForm::Ratio { d, e_d, n } => {
+                let dv = d[0] * xf + d[1] * yf + d[2];
+                if xf.abs() > self.limit.0 || yf.abs() > self.limit.1 || !(dv.abs() > 1024.0 * e_d) {
+                    out[..n.len()].fill(None);
+                    return;
+                }
+                let inv = 1.0 / dv;
+                let q = inv.abs() * (1024.0 / 1023.0) * (1.0 + 2.0 * U);
+                let p = e_d * q + 8.0 * U;
+                for (o, (c, e_n)) in out.iter_mut().zip(n) {
+                    let v = (c[0] * xf + c[1] * yf + c[2]) * inv;
+                    let e = (v.abs() * p + e_n * q) * (1.0 + 8.0 * U);
+                    *o = decided(v - e, v + e);
+                }
+            }
+        }
     }
 }

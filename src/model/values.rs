@@ -159,6 +159,11 @@ pub enum ValuesImageError {
     },
     /// UNORM PNGs are 8 or 16 bits a channel.
     Bits(u32),
+    /// A stacked image taller than a TIFF's 2^32 - 1 rows.
+    TooTall {
+        /// The rows it would need.
+        rows: usize,
+    },
 }
 
 impl std::fmt::Display for ValuesImageError {
@@ -169,6 +174,9 @@ impl std::fmt::Display for ValuesImageError {
                 "the varying {name:?} has {channels} channels, and a PNG pixel holds 1 to 4 (grey, grey and alpha, RGB, RGBA)"
             ),
             ValuesImageError::Bits(b) => write!(f, "{b} bits a channel: a UNORM PNG has 8 or 16"),
+            ValuesImageError::TooTall { rows } => {
+                write!(f, "{rows} rows of stacked samples: an image has at most 4294967295")
+            }
         }
     }
 }
@@ -234,12 +242,15 @@ pub fn values_image(
     })
 }
 
-/// Varying `k`'s values at sample 0 of each pixel as a float32 TIFF: each channel the
-/// exact value rounded once to the nearest f32 (ties to even). One channel is a grey
-/// image, two or three RGB (a two-channel varying's blue is 0), four RGBA; uncompressed,
-/// IEEE floating-point samples (TIFF 6.0's `SampleFormat` 3), which tifffile, libtiff,
-/// ImageMagick and GIMP read bit for bit. A pixel without a covered sample 0 or without a
-/// value is 0 in every channel; a value beyond f32's range is an infinity of its sign.
+/// Varying `k`'s values as a float32 TIFF: each channel the exact value rounded once to
+/// the nearest f32 (ties to even). With `samples` 1, sample 0 of each pixel on the
+/// `width` x `height` canvas; with more, one such image per sample index stacked (width
+/// W, height `samples` x H, sample s in rows `s H` to `(s + 1) H - 1`), as a multisampled
+/// target read back sample by sample. One channel is a grey image, two or three RGB (a
+/// two-channel varying's blue is 0), four RGBA; uncompressed, IEEE floating-point samples
+/// (TIFF 6.0's `SampleFormat` 3), which tifffile, libtiff, ImageMagick and GIMP read bit
+/// for bit. A sample not covered or without a value is 0 in every channel; a value beyond
+/// f32's range is an infinity of its sign.
 ///
 /// ```
 /// use rasterproof::interp::values::{Interpolation, Sampling, Varying, Varyings};
@@ -250,7 +261,7 @@ pub fn values_image(
 ///     ..Varyings::default()
 /// };
 /// let third = SampleValues { x: 1, y: 0, sample: 0, id: 0, values: vec![Ok(vec![q(1, 3)])] };
-/// let tiff = values_tiff(&[third], &varyings, 0, 2, 1).unwrap();
+/// let tiff = values_tiff(&[third], &varyings, 0, 2, 1, 1).unwrap();
 /// assert_eq!(&tiff[..4], b"II*\0");
 /// ```
 ///
@@ -265,14 +276,20 @@ pub fn values_tiff(
     k: usize,
     width: u32,
     height: u32,
+    samples: usize,
 ) -> Result<Vec<u8>, ValuesImageError> {
     use tiff::encoder::{colortype, TiffEncoder};
     let channels = pixel_channels(varyings, k)?;
     let stride = if channels == 2 { 3 } else { channels };
-    let mut samples = vec![0f32; width as usize * height as usize * stride];
-    for v in values.iter().filter(|v| v.sample == 0) {
+    let count = samples;
+    let rows = height as usize * count;
+    let stacked = u32::try_from(rows).map_err(|_| ValuesImageError::TooTall { rows })?;
+    let (canvas_height, height) = (height, stacked);
+    let mut samples = vec![0f32; width as usize * rows * stride];
+    for v in values.iter().filter(|v| v.sample < count) {
         if let Ok(value) = &v.values[k] {
-            let at = (v.y as usize * width as usize + v.x as usize) * stride;
+            let row = v.sample * canvas_height as usize + v.y as usize;
+            let at = (row * width as usize + v.x as usize) * stride;
             for (c, channel) in value.iter().enumerate() {
                 samples[at + c] = nearest_f32(channel).unwrap_or(if channel.is_negative() {
                     f32::NEG_INFINITY

@@ -7,6 +7,14 @@
 //! coverage is `compare --as ids`'s question; here a pixel they left empty reads as their
 //! background (usually 0) and is judged like any other value.
 //!
+//! Under a pattern of several samples ([`ValueOptions::with_pattern`]) their image is one
+//! values image per sample index, stacked (sample `s` in rows `[s H, (s + 1) H)`), and every
+//! covered sample is judged: the value of its highest-id owner, taken at the centre
+//! (`centre`), at the sample (`sample`), or at Direct3D's centroid (`centroid`: the centre
+//! when the primitive covers every sample of the pixel, else its first covered sample).
+//! Vulkan's `Centroid` decoration and GLSL's `centroid` qualifier allow any point inside
+//! both the pixel and the primitive; such a value is `centroid-range`, not off.
+//!
 //! The classes, in the order they are tried (the first that holds names the pixel):
 //!
 //! | class | off? | holds when every channel of theirs is |
@@ -14,9 +22,14 @@
 //! | `exact` | no | the exact value rounded to the nearest f32 (float32), or a level the UNORM rule allows |
 //! | `f32` | no | within the envelope of an interpolator anchored at a vertex ([`crate::interp::envelope`]) |
 //! | `far-anchor` | no | within the envelope of a plane anchored at the framebuffer's origin |
+//! | `unbounded` | no | where f32 bounds nothing (the 1/w plane's error exceeds 1/w): within the envelope elsewhere |
+//! | `centroid-range` | no | a `centroid` varying's value somewhere in the pixel inside the primitive |
 //! | `affine` | yes | the `noperspective` value of a `smooth` varying (no perspective correction) |
 //! | `perspective` | yes | the `smooth` value of a `noperspective` varying |
 //! | `provoking-vertex` | yes | another vertex's value of a `flat` varying |
+//! | `at-centre` | yes | the value at the pixel's centre where the varying asks for its centroid or sample |
+//! | `w-at-centre` | yes | a smooth value with `f / w` at the sample or centroid and `1 / w` at the centre |
+//! | `at-sample` | yes | the value at another of the primitive's covered samples in the pixel |
 //! | `channels-swapped` | yes | the exact channels in another order |
 //! | `vertices-permuted` | yes | the value of the primitive with its vertices' values in another order |
 //! | `unorm-rule` | yes | a level another UNORM rule (nearest, Vulkan, Direct3D) allows |
@@ -32,15 +45,20 @@ use num_traits::{Signed, ToPrimitive, Zero};
 use serde_json::{json, Value};
 
 use super::{CompareError, Comparison, SizeMismatch};
-use crate::convention::Target;
+use crate::clip::halfplane::HalfPlane;
+use crate::clip::sutherland_hodgman::clip_exact;
+use crate::convention::{Convention, Target};
 use crate::geom::Point;
-use crate::interp::envelope::{value_envelope, EnvelopeSetup};
-use crate::interp::planned::PlannedValue;
-use crate::interp::values::{Interpolation, NoValue, ProvokingVertex, Sampling, ValueSetup, Varying, Varyings};
-use crate::model::{render, Model, Primitives};
+use crate::interp::envelope::{value_envelope, Envelope, EnvelopeSetup};
+use crate::interp::planned::{FastPlan, PlannedValue, TriangleF64};
+use crate::interp::values::{
+    Interpolation, NoValue, ProvokingVertex, Sampling, ValueSetup, ValueTriangle, Varying, Varyings,
+};
+use crate::model::{render, render_samples, Model, Primitives};
 use crate::num::exact::{exact_text, nearest_f32, nearest_f64};
 use crate::num::unorm::{unorm_levels, UnormRule};
 use crate::oracle::theirs::{Theirs, ValueImage, ValueSamples};
+use crate::pattern::SamplePattern;
 use crate::raster::sample_exact;
 use crate::scene::Scene;
 
@@ -57,6 +75,9 @@ pub struct ValueOptions {
     pub varying: usize,
     /// How a UNORM image's levels are judged.
     pub unorm: UnormRule,
+    /// The sample pattern of their image, when it has several samples per pixel: one
+    /// values image per sample index, stacked (`None`: one sample per pixel).
+    pub pattern: Option<SamplePattern>,
 }
 
 impl ValueOptions {
@@ -92,7 +113,20 @@ impl ValueOptions {
             varyings: varyings.clone(),
             varying,
             unorm,
+            pattern: None,
         })
+    }
+
+    /// These options for their image under `pattern` (`None`, or a pattern of one sample
+    /// at the convention's centre: one sample per pixel).
+    pub fn with_pattern(mut self, pattern: Option<SamplePattern>, convention: &Convention) -> ValueOptions {
+        self.pattern = pattern.filter(|p| !p.is_single(convention));
+        self
+    }
+
+    /// Samples per pixel of their image.
+    pub fn samples(&self) -> usize {
+        self.pattern.as_ref().map_or(1, SamplePattern::len)
     }
 }
 
@@ -105,12 +139,23 @@ pub enum ValueClass {
     F32,
     /// Within the envelope of a plane anchored at the framebuffer's origin only.
     FarAnchor,
+    /// Where f32 arithmetic bounds nothing: any value is a correct interpolator's.
+    Unbounded,
+    /// A centroid varying's value at another point of the pixel inside the primitive.
+    CentroidRange,
     /// A smooth varying's noperspective value.
     Affine,
     /// A noperspective varying's smooth value.
     Perspective,
     /// A flat varying's value from another vertex.
     ProvokingVertex,
+    /// The value at the pixel's centre where the varying asks for a centroid or a sample.
+    AtCentre,
+    /// A smooth value with `f / w` taken at the sample or centroid and `1 / w` at the
+    /// pixel's centre.
+    WAtCentre,
+    /// The value at another covered sample of the pixel than the point asked for.
+    AtSample,
     /// The channels in another order.
     ChannelsSwapped,
     /// The vertices' values in another order.
@@ -123,13 +168,18 @@ pub enum ValueClass {
 
 impl ValueClass {
     /// Every class, in the order they are tried.
-    pub const ALL: [ValueClass; 10] = [
+    pub const ALL: [ValueClass; 15] = [
         ValueClass::Exact,
         ValueClass::F32,
         ValueClass::FarAnchor,
+        ValueClass::Unbounded,
+        ValueClass::CentroidRange,
         ValueClass::Affine,
         ValueClass::Perspective,
         ValueClass::ProvokingVertex,
+        ValueClass::AtCentre,
+        ValueClass::WAtCentre,
+        ValueClass::AtSample,
         ValueClass::ChannelsSwapped,
         ValueClass::VerticesPermuted,
         ValueClass::UnormRule,
@@ -142,9 +192,14 @@ impl ValueClass {
             ValueClass::Exact => "exact",
             ValueClass::F32 => "f32",
             ValueClass::FarAnchor => "far-anchor",
+            ValueClass::Unbounded => "unbounded",
+            ValueClass::CentroidRange => "centroid-range",
             ValueClass::Affine => "affine",
             ValueClass::Perspective => "perspective",
             ValueClass::ProvokingVertex => "provoking-vertex",
+            ValueClass::AtCentre => "at-centre",
+            ValueClass::WAtCentre => "w-at-centre",
+            ValueClass::AtSample => "at-sample",
             ValueClass::ChannelsSwapped => "channels-swapped",
             ValueClass::VerticesPermuted => "vertices-permuted",
             ValueClass::UnormRule => "unorm-rule",
@@ -153,9 +208,16 @@ impl ValueClass {
     }
 
     /// Whether the class is a difference the specifications do not allow (every class
-    /// but `exact`, `f32` and `far-anchor`).
+    /// but `exact`, `f32`, `far-anchor`, `unbounded` and `centroid-range`).
     pub fn is_off(self) -> bool {
-        !matches!(self, ValueClass::Exact | ValueClass::F32 | ValueClass::FarAnchor)
+        !matches!(
+            self,
+            ValueClass::Exact
+                | ValueClass::F32
+                | ValueClass::FarAnchor
+                | ValueClass::Unbounded
+                | ValueClass::CentroidRange
+        )
     }
 
     /// One line on what the class means.
@@ -166,9 +228,20 @@ impl ValueClass {
             ValueClass::FarAnchor => {
                 "within the f32 error of a plane anchored at the framebuffer's origin, beyond a vertex-anchored one's"
             }
+            ValueClass::Unbounded => {
+                "no f32 bound here: the error of a 1/w plane (anchored far away, or near the horizon) can exceed 1/w itself, so any value is a correct interpolator's"
+            }
+            ValueClass::CentroidRange => {
+                "a centroid varying's value at a point inside both the pixel and the primitive other than Direct3D's centroid (Vulkan and GL allow any)"
+            }
             ValueClass::Affine => "the screen-linear value of a smooth varying: no perspective correction",
             ValueClass::Perspective => "the perspective-correct value of a noperspective varying",
             ValueClass::ProvokingVertex => "another vertex's value of a flat varying: the wrong provoking vertex",
+            ValueClass::AtCentre => "the value at the pixel's centre where the varying asks for its centroid or its sample",
+            ValueClass::WAtCentre => {
+                "a smooth value divided at the wrong point: f/w at the sample or centroid, 1/w at the pixel's centre"
+            }
+            ValueClass::AtSample => "the value at another covered sample of the pixel than the point the varying asks for",
             ValueClass::ChannelsSwapped => "the exact channels in another order",
             ValueClass::VerticesPermuted => "the value of the primitive with its vertices' values in another order",
             ValueClass::UnormRule => "a level another UNORM conversion rule allows",
@@ -210,6 +283,8 @@ pub struct ValuePixel {
     pub x: u32,
     /// Row.
     pub y: u32,
+    /// The sample index (0 with one sample per pixel).
+    pub sample: usize,
     /// The primitive shown.
     pub id: u32,
     /// Its class.
@@ -232,6 +307,9 @@ pub struct ValueReport {
     pub interpolation: Interpolation,
     /// Its sampling.
     pub sampling: Sampling,
+    /// Samples per pixel of their image (1, or the pattern's count: one image per sample
+    /// index, stacked).
+    pub samples: usize,
     /// `float32`, or `unorm8`/`unorm16` with the rule.
     pub read_as: String,
     /// Pixels judged (covered, with an exact value).
@@ -242,7 +320,8 @@ pub struct ValueReport {
     pub counts: Vec<(ValueClass, usize)>,
     /// Every pixel not `exact`, row by row.
     pub pixels: Vec<ValuePixel>,
-    /// The largest distance in f32 steps among the pixels inside the envelope.
+    /// The largest distance in f32 steps among the pixels inside the envelope (`f32`,
+    /// `far-anchor`; not `centroid-range`, another point's value).
     pub max_ulps_inside: u64,
 }
 
@@ -299,8 +378,9 @@ struct Alternative {
 /// `primitives` on `target` (module docs).
 ///
 /// # Errors
-/// A canvas of another size; their image not read as values; fewer channels than the
-/// varying has; a model that is not exact or refuses the scene.
+/// A canvas of another size (under a pattern of several samples, not the canvas stacked
+/// once per sample); their image not read as values; fewer channels than the varying has;
+/// a model that is not exact or refuses the scene.
 pub fn compare_values(
     primitives: &Primitives,
     target: &Target,
@@ -308,7 +388,7 @@ pub fn compare_values(
     options: &ValueOptions,
 ) -> Result<ValueReport, CompareError> {
     let (image, varying, range) = their_values(target, theirs, options)?;
-    let owners = covered_owners(primitives, target, options)?;
+    let judged = judged_samples(primitives, target, options, varying.sampling)?;
     let (bits, read_as) = match &image.samples {
         ValueSamples::F32(_) => (0, "float32".to_string()),
         ValueSamples::Unorm { bits, .. } => (*bits, format!("unorm{bits} ({} rule)", options.unorm.name())),
@@ -317,6 +397,7 @@ pub fn compare_values(
         varying: varying.name.clone(),
         interpolation: varying.interpolation,
         sampling: varying.sampling,
+        samples: options.samples(),
         read_as,
         judged: 0,
         without_value: 0,
@@ -325,19 +406,15 @@ pub fn compare_values(
         max_ulps_inside: 0,
     };
     let mut counts = [0usize; ValueClass::ALL.len()];
-    let mut plans = Plans::new(
-        options,
-        range.clone(),
-        &target.convention.pixel_centre.offset(),
-        target.height,
-    );
+    let mut plans = Plans::new(options, range.clone(), target);
     let mut listed_inside = 0;
-    for &(x, y, id) in &owners {
-        let Some(plan) = plans.of(id) else {
+    for j in &judged {
+        let (x, y, id) = (j.x, j.y, j.id);
+        let Some(plan) = plans.of_at(id, j.point) else {
             report.without_value += 1;
             continue;
         };
-        let theirs_here = their_channels(image, x, y, varying.channels);
+        let theirs_here = their_channels(image, x, y + j.sample as u32 * target.height, varying.channels);
         let Ok((class, nearest)) = plan.judge(&theirs_here, x, y) else {
             report.without_value += 1;
             continue;
@@ -357,14 +434,20 @@ pub fn compare_values(
         } else {
             None
         };
-        // With one sample per pixel a centroid is the sample, which is the centre.
         let class = class.unwrap_or_else(|| {
             let exact = exact.as_ref().expect("computed when undecided");
+            let at = plans.point(x, y, j.point);
+            let others = j.others.iter().map(|&p| plans.point(x, y, p)).collect();
+            let context = Context {
+                setup,
+                at,
+                others,
+                centre: sample_exact(x, y, target),
+            };
             classify(
                 &theirs_here,
                 exact,
-                setup,
-                &sample_exact(x, y, target),
+                &context,
                 options,
                 range.clone(),
                 bits,
@@ -381,7 +464,7 @@ pub fn compare_values(
                 _ => None,
             })
             .collect();
-        if !class.is_off() {
+        if matches!(class, ValueClass::Exact | ValueClass::F32 | ValueClass::FarAnchor) {
             let most = ulps.iter().flatten().copied().max().unwrap_or(0);
             report.max_ulps_inside = report.max_ulps_inside.max(most);
         }
@@ -390,6 +473,7 @@ pub fn compare_values(
             report.pixels.push(ValuePixel {
                 x,
                 y,
+                sample: j.sample,
                 id,
                 class,
                 exact: exact.expect("computed for a listed pixel"),
@@ -407,15 +491,27 @@ pub fn compare_values(
     Ok(report)
 }
 
-/// Their values image, checked against the canvas and the varying judged, with the
-/// varying and the range of its channels in a vertex's values.
+/// Their values image, checked against the canvas (stacked once per sample under a
+/// pattern of several) and the varying judged, with the varying and the range of its
+/// channels in a vertex's values.
 pub(crate) fn their_values<'a>(
     target: &Target,
     theirs: &'a Theirs,
     options: &'a ValueOptions,
 ) -> Result<(&'a ValueImage, &'a Varying, std::ops::Range<usize>), CompareError> {
     let image = theirs.values().ok_or(CompareError::Format(theirs.format()))?;
-    SizeMismatch::check(theirs, target).map_err(CompareError::Size)?;
+    match &options.pattern {
+        None => SizeMismatch::check(theirs, target).map_err(CompareError::Size)?,
+        Some(pattern) => {
+            let stacked = u64::from(target.height) * pattern.len() as u64;
+            if (image.width, u64::from(image.height)) != (target.width, stacked) {
+                return Err(CompareError::Values(format!(
+                    "their image is {}x{}; under the {pattern} sample pattern it must be the {}x{} canvas stacked once per sample index ({}x{}, sample s in rows s*{} to (s+1)*{} - 1)",
+                    image.width, image.height, target.width, target.height, target.width, stacked, target.height, target.height
+                )));
+            }
+        }
+    }
     let (varying, range) = options
         .varyings
         .ranges()
@@ -431,7 +527,7 @@ pub(crate) fn their_values<'a>(
 }
 
 /// The pixels the oracle model covers, row by row, each with the primitive it shows (the
-/// highest id): what is judged.
+/// highest id): what is judged with one sample per pixel.
 pub(crate) fn covered_owners(
     primitives: &Primitives,
     target: &Target,
@@ -449,60 +545,187 @@ pub(crate) fn covered_owners(
     Ok(owners)
 }
 
+/// One judged sample: where, which primitive it shows, and the point its value is taken
+/// at (a [`Plans`] point: 0 the pixel's centre, `1 + s` sample `s`).
+#[derive(Debug, Clone, PartialEq)]
+struct Judged {
+    x: u32,
+    y: u32,
+    sample: usize,
+    id: u32,
+    point: usize,
+    /// The other points of the pixel a renderer might have taken instead (`at-sample`):
+    /// the primitive's other covered samples.
+    others: Vec<usize>,
+}
+
+/// Every covered sample, row by row, then by sample index, with the point its value is
+/// taken at under `sampling`: the centre (`centre`, or `centroid` when the primitive
+/// covers every sample of the pixel), the sample (`sample`), or the primitive's first
+/// covered sample (`centroid`, Direct3D's rule). With one sample per pixel, every covered
+/// pixel at its centre.
+fn judged_samples(
+    primitives: &Primitives,
+    target: &Target,
+    options: &ValueOptions,
+    sampling: Sampling,
+) -> Result<Vec<Judged>, CompareError> {
+    let Some(pattern) = &options.pattern else {
+        let owners = covered_owners(primitives, target, options)?;
+        return Ok(owners
+            .into_iter()
+            .map(|(x, y, id)| Judged {
+                x,
+                y,
+                sample: 0,
+                id,
+                point: 0,
+                others: Vec::new(),
+            })
+            .collect());
+    };
+    if !options.model.is_exact() {
+        return Err(CompareError::NotExact(options.model));
+    }
+    let coverage = render_samples(primitives, target, pattern, options.model).map_err(CompareError::Model)?;
+    let count = pattern.len();
+    let all = if count >= 64 { u64::MAX } else { (1u64 << count) - 1 };
+    let mut out = Vec::new();
+    for (x, y) in coverage.covered_pixels() {
+        for s in 0..count {
+            let Some(&id) = coverage.owners(x, y, s).last() else {
+                continue;
+            };
+            let mask = coverage.mask_of(x, y, id);
+            let point = match sampling {
+                Sampling::Centre => 0,
+                Sampling::Sample => 1 + s,
+                Sampling::Centroid if mask & all == all => 0,
+                Sampling::Centroid => 1 + mask.trailing_zeros() as usize,
+            };
+            let others = (0..count)
+                .filter(|&k| mask >> k & 1 == 1 && 1 + k != point)
+                .map(|k| 1 + k)
+                .collect();
+            out.push(Judged {
+                x,
+                y,
+                sample: s,
+                id,
+                point,
+                others,
+            });
+        }
+    }
+    out.sort_by_key(|j| (j.y, j.x, j.sample));
+    Ok(out)
+}
+
 /// How many pixels inside the envelope a report lists one by one (every pixel off is
 /// listed; the counts are complete).
 pub const LISTED_INSIDE: usize = 1000;
 
-/// Each primitive's planned values and envelopes, set up on first use.
+/// Each primitive's planned values and envelopes, set up on first use, at each point of
+/// a pixel a value is taken at: point 0 the convention's centre, point `1 + s` sample `s`
+/// of the pattern.
 pub(crate) struct Plans<'a> {
     options: &'a ValueOptions,
     channels: std::ops::Range<usize>,
-    centre: BigRational,
-    centre_f64: f64,
     height: u32,
+    /// Per point, its exact offset from the pixel's corner and how the envelope reads it.
+    points: Vec<(Point, Offset)>,
     plans: Vec<Option<Option<Plan>>>,
 }
 
-/// One primitive's channels: planned values and envelopes.
+/// How a plan's envelope takes its point from the pixel's coordinates.
+#[derive(Debug, Clone, Copy)]
+enum Offset {
+    /// The centre `(x + c, y + c)`, `c` 1/2 or 0.
+    Centre(f64),
+    /// `(x + o_x, y + o_y)`, each offset exact in f64.
+    Dyadic(f64, f64),
+    /// An offset f64 cannot hold: the envelope takes the exact point.
+    Exact,
+}
+
+/// One primitive's channels at one point of the pixel: planned values and envelopes.
 pub(crate) struct Plan {
+    /// The f64 filter that decides most nearest f32s in a few operations.
+    fast: Option<FastPlan>,
     values: Vec<PlannedValue>,
     envelopes: Vec<EnvelopeSetup>,
-    centre: f64,
+    offset: Offset,
+    exact_offset: Point,
 }
 
 impl<'a> Plans<'a> {
-    pub(crate) fn new(
-        options: &'a ValueOptions,
-        channels: std::ops::Range<usize>,
-        centre: &BigRational,
-        height: u32,
-    ) -> Plans<'a> {
+    pub(crate) fn new(options: &'a ValueOptions, channels: std::ops::Range<usize>, target: &Target) -> Plans<'a> {
+        let centre = target.convention.pixel_centre.offset();
+        let mut points = vec![(
+            Point::new(centre.clone(), centre.clone()),
+            Offset::Centre(target.convention.pixel_centre.offset_f64()),
+        )];
+        for [ox, oy] in options.pattern.iter().flat_map(|p| p.positions()) {
+            let exact = |v: &BigRational| nearest_f64(v).filter(|f| BigRational::from_float(*f).as_ref() == Some(v));
+            let offset = match (exact(ox), exact(oy)) {
+                (Some(fx), Some(fy)) => Offset::Dyadic(fx, fy),
+                _ => Offset::Exact,
+            };
+            points.push((Point::new(ox.clone(), oy.clone()), offset));
+        }
+        let slots = options.setups.len() * points.len();
         Plans {
-            height,
+            height: target.height,
             options,
             channels,
-            centre: centre.clone(),
-            centre_f64: nearest_f64(centre).unwrap_or(0.5),
-            plans: (0..options.setups.len()).map(|_| None).collect(),
+            points,
+            plans: (0..slots).map(|_| None).collect(),
         }
     }
 
-    /// Primitive `id`'s plan; `None` for a primitive that carries no values.
+    /// Primitive `id`'s plan at pixel centres; `None` for a primitive that carries no
+    /// values.
     pub(crate) fn of(&mut self, id: u32) -> Option<&Plan> {
-        let (options, channels, centre, centre_f64, height) =
-            (self.options, &self.channels, &self.centre, self.centre_f64, self.height);
-        self.plans[id as usize]
+        self.of_at(id, 0)
+    }
+
+    /// Primitive `id`'s plan at point `point`.
+    fn of_at(&mut self, id: u32, point: usize) -> Option<&Plan> {
+        let (options, channels, height) = (self.options, &self.channels, self.height);
+        let (offset, kind) = &self.points[point];
+        let slot = id as usize * self.points.len() + point;
+        self.plans[slot]
             .get_or_insert_with(|| {
                 let setup = options.setups[id as usize].as_ref()?;
                 let interpolation = options.varyings.list[options.varying].interpolation;
                 let provoking = options.varyings.provoking;
+                let fast = match kind {
+                    Offset::Centre(c) => Some((*c, *c)),
+                    Offset::Dyadic(ox, oy) => Some((*ox, *oy)),
+                    Offset::Exact => None,
+                }
+                .and_then(|o| {
+                    let t = TriangleF64::of(setup, channels.clone())?;
+                    Some(FastPlan::new(&t, interpolation, provoking, o))
+                });
                 Some(Plan {
-                    values: PlannedValue::channels(setup, interpolation, provoking, channels.clone(), centre),
+                    fast,
+                    values: PlannedValue::channels_at(setup, interpolation, provoking, channels.clone(), offset),
                     envelopes: EnvelopeSetup::channels(setup, interpolation, channels.clone(), height),
-                    centre: centre_f64,
+                    offset: *kind,
+                    exact_offset: offset.clone(),
                 })
             })
             .as_ref()
+    }
+
+    /// Point `point` of pixel `(x, y)`, exactly.
+    fn point(&self, x: u32, y: u32, point: usize) -> Point {
+        let offset = &self.points[point].0;
+        Point::new(
+            BigRational::from_integer(x.into()) + &offset.x,
+            BigRational::from_integer(y.into()) + &offset.y,
+        )
     }
 }
 
@@ -514,7 +737,30 @@ impl Plan {
 
     /// Each channel's exact value rounded to the nearest f32 at pixel `(x, y)`.
     pub(crate) fn nearest(&self, x: u32, y: u32) -> Result<Vec<Option<f32>>, NoValue> {
-        self.values.iter().map(|v| v.nearest_f32(x, y)).collect()
+        let mut fast = vec![None; self.values.len()];
+        if let Some(plan) = &self.fast {
+            plan.nearest_f32(x, y, &mut fast);
+        }
+        fast.into_iter()
+            .zip(&self.values)
+            .map(|(f, v)| match f {
+                Some(f) => Ok(Some(f)),
+                None => v.nearest_f32(x, y),
+            })
+            .collect()
+    }
+
+    /// Channel `c`'s envelope at pixel `(x, y)`'s point.
+    fn envelope(&self, c: usize, x: u32, y: u32) -> Envelope {
+        let e = &self.envelopes[c];
+        match self.offset {
+            Offset::Centre(centre) => e.at_pixel(x, y, centre),
+            Offset::Dyadic(ox, oy) => e.at_offset(x, y, (ox, oy)),
+            Offset::Exact => e.at(&Point::new(
+                BigRational::from_integer(x.into()) + &self.exact_offset.x,
+                BigRational::from_integer(y.into()) + &self.exact_offset.y,
+            )),
+        }
     }
 
     /// The class of their float32 channels at pixel `(x, y)` when the planned values
@@ -535,7 +781,7 @@ impl Plan {
             if !t.is_finite() {
                 return Ok((None, nearest));
             }
-            let envelope = self.envelopes[c].at_pixel(x, y, self.centre);
+            let envelope = self.envelope(c, x, y);
             let inside = |bound: Option<f64>| -> Result<bool, NoValue> {
                 bound.map_or(Ok(false), |b| self.values[c].within(x, y, t, b))
             };
@@ -564,18 +810,28 @@ pub(crate) fn their_channels(image: &ValueImage, x: u32, y: u32, channels: usize
     }
 }
 
+/// Where one judged value was taken, for [`classify`].
+struct Context<'a> {
+    setup: &'a ValueSetup,
+    /// The point its value is taken at.
+    at: Point,
+    /// The primitive's other covered samples of the pixel.
+    others: Vec<Point>,
+    /// The pixel's centre.
+    centre: Point,
+}
+
 /// The class of one pixel (module docs).
-#[allow(clippy::too_many_arguments)]
 fn classify(
     theirs: &[TheirValue],
     exact: &[BigRational],
-    setup: &ValueSetup,
-    at: &Point,
+    context: &Context,
     options: &ValueOptions,
     range: std::ops::Range<usize>,
     bits: u32,
     height: u32,
 ) -> ValueClass {
+    let (setup, at) = (context.setup, &context.at);
     let varying = &options.varyings.list[options.varying];
     let rule = options.unorm;
     let all_within = |values: &[BigRational], bounds: &[Option<f64>]| {
@@ -598,7 +854,27 @@ fn classify(
     if all_within(exact, &far) {
         return ValueClass::FarAnchor;
     }
-    for alt in alternatives(exact, setup, at, options, range.clone()) {
+    let unbounded = far.iter().any(Option::is_none)
+        && theirs
+            .iter()
+            .zip(exact)
+            .zip(&far)
+            .all(|((t, v), b)| b.is_none() || within(*t, v, *b, bits, rule));
+    if unbounded {
+        return ValueClass::Unbounded;
+    }
+    if varying.sampling == Sampling::Centroid {
+        if let Some(extremes) = centroid_range(setup, varying.interpolation, &context.centre, range.clone(), height) {
+            let inside = theirs
+                .iter()
+                .zip(&extremes)
+                .all(|(t, (lo, hi, bound))| within_range(*t, lo, hi, *bound, bits, rule));
+            if inside {
+                return ValueClass::CentroidRange;
+            }
+        }
+    }
+    for alt in alternatives(exact, context, options, range.clone()) {
         let bounds: Vec<Option<f64>> = value_envelope(&alt.setup, alt.interpolation, range.clone(), &alt.at, height)
             .iter()
             .map(|e| e.far)
@@ -623,15 +899,105 @@ fn classify(
     ValueClass::Gross
 }
 
+/// Per channel, the least and the greatest value a window-space triangle takes in the
+/// closed pixel square around `centre` (side 1) clipped to the closed triangle, with the
+/// largest f32 envelope (anchored at the origin) at the clipped region's vertices: the
+/// values Vulkan's and GL's centroid allows ("a location inside both the pixel and the
+/// primitive"). A smooth or noperspective value is a ratio of two affine functions whose
+/// denominator keeps its sign inside the triangle (`1 / w > 0`), so its extremes over the
+/// convex region lie at the region's vertices. `None` for a flat varying, a segment, a
+/// triangle with a vertex at `w <= 0`, a degenerate one, or an empty region.
+#[allow(clippy::type_complexity)]
+fn centroid_range(
+    setup: &ValueSetup,
+    interpolation: Interpolation,
+    centre: &Point,
+    range: std::ops::Range<usize>,
+    height: u32,
+) -> Option<Vec<(BigRational, BigRational, Option<f64>)>> {
+    let ValueSetup::Triangle(t) = setup else {
+        return None;
+    };
+    if interpolation == Interpolation::Flat || t.h.iter().any(|h| !h[2].is_positive()) {
+        return None;
+    }
+    let p: Vec<Point> = t.h.iter().map(|h| Point::new(&h[0] / &h[2], &h[1] / &h[2])).collect();
+    let area = (&p[1].x - &p[0].x) * (&p[2].y - &p[0].y) - (&p[1].y - &p[0].y) * (&p[2].x - &p[0].x);
+    if area.is_zero() {
+        return None;
+    }
+    // Walk the edges so that the third vertex, and with it the inside, is where each
+    // edge function is >= 0 (`HalfPlane::inside_of_edge`): E_01(p_2) = -area.
+    let order = if area.is_negative() { [0, 1, 2] } else { [0, 2, 1] };
+    let planes: Vec<HalfPlane> = (0..3)
+        .map(|k| HalfPlane::inside_of_edge(&p[order[k]], &p[order[(k + 1) % 3]]))
+        .collect::<Option<_>>()?;
+    let half = BigRational::new(1.into(), 2.into());
+    let (x0, x1) = (&centre.x - &half, &centre.x + &half);
+    let (y0, y1) = (&centre.y - &half, &centre.y + &half);
+    let square = [
+        Point::new(x0.clone(), y0.clone()),
+        Point::new(x1.clone(), y0),
+        Point::new(x1, y1.clone()),
+        Point::new(x0, y1),
+    ];
+    let region = clip_exact(&square, &planes);
+    let mut out: Option<Vec<(BigRational, BigRational, Option<f64>)>> = None;
+    for vertex in &region {
+        let values = setup
+            .value(interpolation, ProvokingVertex::First, range.clone(), vertex)
+            .ok()?;
+        let envelopes = value_envelope(setup, interpolation, range.clone(), vertex, height);
+        let next = values.into_iter().zip(envelopes).map(|(v, e)| (v.clone(), v, e.far));
+        out = Some(match out {
+            None => next.collect(),
+            Some(so_far) => so_far
+                .into_iter()
+                .zip(next)
+                .map(|((lo, hi, b), (v, _, e))| {
+                    let bound = b.zip(e).map(|(b, e)| b.max(e));
+                    (lo.min(v.clone()), hi.max(v), bound)
+                })
+                .collect(),
+        });
+    }
+    out
+}
+
+/// Whether their channel `t` lies in `[lo, hi]` widened by `bound` (UNORM: a level the
+/// rule allows for some value there).
+fn within_range(
+    t: TheirValue,
+    lo: &BigRational,
+    hi: &BigRational,
+    bound: Option<f64>,
+    bits: u32,
+    rule: UnormRule,
+) -> bool {
+    let b = bound
+        .and_then(BigRational::from_float)
+        .unwrap_or_else(BigRational::zero);
+    let (lo, hi) = (lo - &b, hi + &b);
+    match t {
+        TheirValue::F32(f) => {
+            BigRational::from_float(f64::from(f)).is_some_and(|v| lo <= v && v <= hi)
+                || [nearest_f32(&lo), nearest_f32(&hi)].contains(&Some(f))
+        }
+        TheirValue::Level(l) => {
+            (*unorm_levels(&lo, bits, rule).start()..=*unorm_levels(&hi, bits, rule).end()).contains(&l)
+        }
+    }
+}
+
 /// The values a renderer with one of the known bugs would write (module docs), in class
 /// order.
 fn alternatives(
     exact: &[BigRational],
-    setup: &ValueSetup,
-    at: &Point,
+    context: &Context,
     options: &ValueOptions,
     range: std::ops::Range<usize>,
 ) -> Vec<Alternative> {
+    let (setup, at) = (context.setup, &context.at);
     let varying = &options.varyings.list[options.varying];
     let provoking = options.varyings.provoking;
     let mut out = Vec::new();
@@ -669,6 +1035,35 @@ fn alternatives(
             }
         }
     }
+    if varying.interpolation != Interpolation::Flat {
+        let divided = match (varying.interpolation, setup) {
+            (Interpolation::Smooth, ValueSetup::Triangle(t)) if context.centre != *at => {
+                divided_at_centre(t, at, &context.centre, range.clone())
+            }
+            _ => None,
+        };
+        if context.centre != *at {
+            push(
+                ValueClass::AtCentre,
+                varying.interpolation,
+                setup,
+                &context.centre,
+                provoking,
+            );
+        }
+        for other in &context.others {
+            push(ValueClass::AtSample, varying.interpolation, setup, other, provoking);
+        }
+        if let Some(values) = divided {
+            out.push(Alternative {
+                class: ValueClass::WAtCentre,
+                values,
+                interpolation: Interpolation::Smooth,
+                setup: setup.clone(),
+                at: at.clone(),
+            });
+        }
+    }
     if exact.len() > 1 {
         for perm in permutations(exact.len()).into_iter().skip(1) {
             out.push(Alternative {
@@ -699,6 +1094,27 @@ fn alternatives(
         }
     }
     out
+}
+
+/// The smooth value with its numerator `sum b_i f_i` taken at `at` and its denominator
+/// `sum b_i` (`1 / w`) at `centre`, `b` the homogeneous barycentrics: what an interpolator
+/// computes when it moves `f / w` to the sample or centroid and leaves `1 / w` at the centre.
+fn divided_at_centre(
+    t: &ValueTriangle,
+    at: &Point,
+    centre: &Point,
+    channels: std::ops::Range<usize>,
+) -> Option<Vec<BigRational>> {
+    let (b, c) = (t.barycentrics(at).ok()?, t.barycentrics(centre).ok()?);
+    let d = &c[0] + &c[1] + &c[2];
+    if d.is_zero() {
+        return None;
+    }
+    Some(
+        channels
+            .map(|k| (&b[0] * &t.values[0][k] + &b[1] * &t.values[1][k] + &b[2] * &t.values[2][k]) / &d)
+            .collect(),
+    )
 }
 
 /// Every permutation of `0..n` (n at most 4), the identity first.
@@ -738,22 +1154,33 @@ impl Comparison for ValueReport {
     }
 
     fn to_text(&self, scene: &str, theirs: &str, limit: usize) -> String {
+        let samples = if self.samples > 1 {
+            format!(", {} samples a pixel", self.samples)
+        } else {
+            String::new()
+        };
         let mut s = format!(
-            "{theirs} against {scene}, values of {:?} ({}, {}), read as {}: ",
+            "{theirs} against {scene}, values of {:?} ({}, {}{samples}), read as {}: ",
             self.varying,
             self.interpolation.name(),
             self.sampling.name(),
             self.read_as
         );
         let off = self.off();
+        let unit = if self.samples > 1 { "samples" } else { "pixels" };
         if off == 0 {
+            let range = if self.counts.iter().any(|(c, _)| *c == ValueClass::CentroidRange) {
+                ", or inside the centroid's range"
+            } else {
+                ""
+            };
             let _ = writeln!(
                 s,
-                "right: {} pixels judged, every value exact or inside the f32 envelope (at most {} f32 steps)",
+                "right: {} {unit} judged, every value exact or inside the f32 envelope (at most {} f32 steps){range}",
                 self.judged, self.max_ulps_inside
             );
         } else {
-            let _ = writeln!(s, "{off} of {} judged pixels off", self.judged);
+            let _ = writeln!(s, "{off} of {} judged {unit} off", self.judged);
         }
         if self.without_value > 0 {
             let _ = writeln!(
@@ -770,9 +1197,14 @@ impl Comparison for ValueReport {
         for p in listed.into_iter().take(limit) {
             let exact: Vec<String> = p.exact.iter().map(exact_text).collect();
             let theirs: Vec<String> = p.theirs.iter().map(|t| t.text()).collect();
+            let sample = if self.samples > 1 {
+                format!(" sample {}", p.sample)
+            } else {
+                String::new()
+            };
             let _ = write!(
                 s,
-                "  ({}, {}) primitive {}: {}; exact [{}], theirs [{}]",
+                "  ({}, {}){sample} primitive {}: {}; exact [{}], theirs [{}]",
                 p.x,
                 p.y,
                 p.id,
@@ -806,6 +1238,7 @@ impl Comparison for ValueReport {
                 json!({
                     "x": p.x,
                     "y": p.y,
+                    "sample": p.sample,
                     "id": p.id,
                     "class": p.class.name(),
                     "exact": p.exact.iter().map(exact_text).collect::<Vec<_>>(),
@@ -821,6 +1254,7 @@ impl Comparison for ValueReport {
             "varying": self.varying,
             "interpolation": self.interpolation.name(),
             "sampling": self.sampling.name(),
+            "samples": self.samples,
             "read_as": self.read_as,
             "identical": self.identical(),
             "judged": self.judged,

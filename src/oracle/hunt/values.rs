@@ -46,16 +46,24 @@ pub struct ValueHuntConfig {
     pub interpolation: Interpolation,
     /// The scenes' provoking vertex.
     pub provoking: ProvokingVertex,
+    /// Where the varying is sampled (`centroid` and `sample` differ from `centre` only
+    /// under a pattern of several samples: `hunt --samples N`).
+    pub sampling: Sampling,
 }
 
 impl ValueHuntConfig {
-    /// A values hunt over `hunt`'s scenes with the interpolation and provoking vertex
-    /// named as a scene file names them (`smooth`, `noperspective`, `flat`; `first`,
-    /// `last`).
+    /// A values hunt over `hunt`'s scenes with the interpolation, provoking vertex and
+    /// sampling named as a scene file names them (`smooth`, `noperspective`, `flat`;
+    /// `first`, `last`; `centre`, `centroid`, `sample`).
     ///
     /// # Errors
     /// An unknown name: one line naming the option.
-    pub fn named(hunt: HuntConfig, interpolation: &str, provoking: &str) -> Result<ValueHuntConfig, String> {
+    pub fn named(
+        hunt: HuntConfig,
+        interpolation: &str,
+        provoking: &str,
+        sampling: &str,
+    ) -> Result<ValueHuntConfig, String> {
         Ok(ValueHuntConfig {
             hunt,
             interpolation: Interpolation::parse(interpolation).ok_or_else(|| {
@@ -65,6 +73,8 @@ impl ValueHuntConfig {
             })?,
             provoking: ProvokingVertex::parse(provoking)
                 .ok_or_else(|| format!("--provoking: {provoking:?} is not first or last"))?,
+            sampling: Sampling::parse(sampling)
+                .ok_or_else(|| format!("--sampling: {sampling:?} is not centre, centroid or sample"))?,
         })
     }
 }
@@ -108,7 +118,7 @@ fn varyings(config: &ValueHuntConfig) -> Varyings {
             name: "c".to_string(),
             channels: 3,
             interpolation: config.interpolation,
-            sampling: Sampling::Centre,
+            sampling: config.sampling,
         }],
         provoking: config.provoking,
     }
@@ -171,7 +181,9 @@ pub fn judge_values(scene: &Scene, theirs: Result<Theirs, RenderFailure>, model:
         varyings: scene.varyings.clone(),
         varying: 0,
         unorm: crate::num::unorm::UnormRule::Nearest,
-    };
+        pattern: None,
+    }
+    .with_pattern(scene.samples.clone(), &target.convention);
     match compare_values(&scene.primitives(), &target, &theirs, &options) {
         Ok(report) if report.identical() => ValueVerdict::Same(Box::new(report)),
         Ok(report) => ValueVerdict::Differs(Box::new(report)),

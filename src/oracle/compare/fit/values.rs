@@ -91,13 +91,13 @@ pub fn fit_values(
             "--fit reproduces float32 values bit for bit; their image holds UNORM levels".to_string(),
         ));
     }
+    if let Some(pattern) = &options.pattern {
+        return Err(CompareError::Values(format!(
+            "--fit runs the float models at pixel centres, one sample per pixel; their image is stacked for the {pattern} pattern (compare it without --fit, or fit a one-sample rendering)"
+        )));
+    }
     let owners = covered_owners(primitives, target, options)?;
-    let mut plans = Plans::new(
-        options,
-        range.clone(),
-        &target.convention.pixel_centre.offset(),
-        target.height,
-    );
+    let mut plans = Plans::new(options, range.clone(), target);
     let models = FloatInterpolator::all();
     let mut fits: Vec<ModelFit> = models
         .iter()

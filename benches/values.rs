@@ -1,0 +1,268 @@
+//! Speed of exact interpolated values against float interpolators, side by side in one
+//! run, on a 1920x1080 mesh of about 100k triangles (a grid of jittered quads, vertices on
+//! the 1/256 grid, each vertex a w of 1/4 to 8 and three values in thirds, tenths and
+//! 256ths; about 20 px a triangle). Mpix/s is criterion's element throughput (elements =
+//! covered pixels, each one value of three channels).
+//!
+//! Every contender walks the same list of covered pixels, triangle by triangle (the
+//! exact-snapped coverage, computed before timing: the rasterizer is not what is
+//! measured), sets each triangle up from inputs already in its own number type (as a
+//! renderer holds its vertices), and computes the three channels' f32 values at each pixel
+//! centre:
+//!
+//! - `f32-origin-plane`: the plane equations of `1 / w` and `f / w` anchored at the
+//!   framebuffer's origin in f32 (llvmpipe's setup and evaluation: `a0 + dadx x + dady y`,
+//!   fused, the quotient as a multiply by the reciprocal);
+//! - `f32-barycentric`: the three edge functions at the centre, `sum E_i f_i / w_i / sum E_i
+//!   / w_i` in f32;
+//! - `planned-exact`: the exact value rounded to the nearest f32, from
+//!   `interp::planned`'s f64 filter (`FastPlan`) with the exact ratio (`PlannedValue`, set
+//!   up in rationals on first need) where the filter cannot decide;
+//! - `plain-exact`: the readable definition (`ValueSetup::value`) in rationals, on the
+//!   first 500 triangles only (per pixel its cost does not depend on the mesh size).
+//!
+//! `cargo bench --features bench --bench values`
+
+use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+use num_rational::BigRational;
+use rasterproof::convention::{Preset, Target};
+use rasterproof::geom::{Point, Triangle};
+use rasterproof::interp::planned::{FastPlan, PlannedValue, TriangleF64};
+use rasterproof::interp::values::{Interpolation, ProvokingVertex, ValueSetup, ValueTriangle};
+use rasterproof::model::{render, Model, Primitives};
+use rasterproof::num::exact::nearest_f32;
+
+#[path = "../tests/common/rng.rs"]
+mod rng;
+use rng::Rng;
+
+const WIDTH: u32 = 1920;
+const HEIGHT: u32 = 1080;
+/// 259 x 193 quads, two triangles each: 99,974 triangles.
+const COLUMNS: i64 = 259;
+const ROWS: i64 = 193;
+
+/// One triangle: its exact setup, its f32 and f64 inputs, and the pixels it shows.
+struct Item {
+    setup: ValueSetup,
+    f32_in: ([f32; 3], [f32; 3], [f32; 3], [[f32; 3]; 3]),
+    f64_in: TriangleF64,
+    pixels: Vec<(u32, u32)>,
+}
+
+fn mesh() -> (Vec<Item>, u64) {
+    let mut rng = Rng(0x5eed_1080);
+    let g = 256;
+    // Grid vertices, interior ones jittered by up to a third of a cell; each with a w and
+    // three values.
+    let w_of = [1i64, 2, 4, 8, 16, 32];
+    let mut vertices = Vec::new();
+    for j in 0..=ROWS {
+        for i in 0..=COLUMNS {
+            let (cx, cy) = (i * i64::from(WIDTH) * g / COLUMNS, j * i64::from(HEIGHT) * g / ROWS);
+            let jitter = |rng: &mut Rng, edge: bool, cell: i64| if edge { 0 } else { rng.range(-cell / 3, cell / 3) };
+            let x = cx + jitter(&mut rng, i == 0 || i == COLUMNS, i64::from(WIDTH) * g / COLUMNS);
+            let y = cy + jitter(&mut rng, j == 0 || j == ROWS, i64::from(HEIGHT) * g / ROWS);
+            let w = BigRational::new(w_of[rng.below(6) as usize].into(), 4.into());
+            let values: Vec<BigRational> = (0..3)
+                .map(|_| {
+                    BigRational::new(
+                        (rng.below(2001) - 1000).into(),
+                        [1i64, 3, 10, 256][rng.below(4) as usize].into(),
+                    )
+                })
+                .collect();
+            vertices.push((Point::from_fractions(x, g, y, g), w, values));
+        }
+    }
+    let at = |i: i64, j: i64| (j * (COLUMNS + 1) + i) as usize;
+    let mut triangles = Vec::new();
+    for j in 0..ROWS {
+        for i in 0..COLUMNS {
+            triangles.push([at(i, j), at(i + 1, j), at(i, j + 1)]);
+            triangles.push([at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)]);
+        }
+    }
+    let target = Target::new(WIDTH, HEIGHT, Preset::Vulkan.convention()).unwrap();
+    let geometry: Vec<Triangle> = triangles
+        .iter()
+        .map(|t| {
+            Triangle::new(
+                vertices[t[0]].0.clone(),
+                vertices[t[1]].0.clone(),
+                vertices[t[2]].0.clone(),
+            )
+        })
+        .collect();
+    let coverage = render(&Primitives::from_triangles(&geometry), &target, Model::ExactSnapped).unwrap();
+    let mut pixels = vec![Vec::new(); triangles.len()];
+    let mut total = 0;
+    for (x, y, ids) in coverage.iter() {
+        if let Some(&id) = ids.last() {
+            pixels[id as usize].push((x, y));
+            total += 1;
+        }
+    }
+    let items = triangles
+        .iter()
+        .zip(pixels)
+        .map(|(t, pixels)| {
+            let v = t.map(|k| &vertices[k]);
+            let setup = ValueSetup::Triangle(Box::new(ValueTriangle::window(
+                [&v[0].0, &v[1].0, &v[2].0],
+                [&v[0].1, &v[1].1, &v[2].1],
+                [v[0].2.clone(), v[1].2.clone(), v[2].2.clone()],
+            )));
+            let f = |q: &BigRational| nearest_f32(q).unwrap();
+            let f32_in = (
+                v.map(|v| f(&v.0.x)),
+                v.map(|v| f(&v.0.y)),
+                v.map(|v| 1.0 / f(&v.1)),
+                v.map(|v| [f(&v.2[0]), f(&v.2[1]), f(&v.2[2])]),
+            );
+            let f64_in = TriangleF64::of(&setup, 0..3).unwrap();
+            Item {
+                setup,
+                f32_in,
+                f64_in,
+                pixels,
+            }
+        })
+        .collect();
+    (items, total)
+}
+
+/// llvmpipe's plane setup in f32 (see `interp::float`'s module docs): each attribute
+/// `a_i` (here `1 / w_i` and `f_i / w_i`) as `a0 + dadx x + dady y` at integer pixel
+/// coordinates, the centre folded into `a0`.
+fn plane(x: &[f32; 3], y: &[f32; 3], a: [f32; 3]) -> [f32; 3] {
+    let (dx01, dy01) = (x[0] - x[1], y[0] - y[1]);
+    let (dx20, dy20) = (x[2] - x[0], y[2] - y[0]);
+    let ooa = 1.0 / (dx01 * dy20 - dy01 * dx20);
+    let (da01, da20) = (a[0] - a[1], a[2] - a[0]);
+    let dadx = da01 * (dy20 * ooa) - da20 * (dy01 * ooa);
+    let dady = da20 * (dx01 * ooa) - da01 * (dx20 * ooa);
+    let a0 = a[0] - (dadx * (x[0] - 0.5) + dady * (y[0] - 0.5));
+    [a0, dadx, dady]
+}
+
+fn f32_origin_plane(items: &[Item]) -> u64 {
+    let mut sum = 0u64;
+    for item in items {
+        let (x, y, r, v) = &item.f32_in;
+        let w = plane(x, y, *r);
+        let c = [0, 1, 2].map(|c| plane(x, y, [v[0][c] * r[0], v[1][c] * r[1], v[2][c] * r[2]]));
+        for &(px, py) in &item.pixels {
+            let (fx, fy) = (px as f32, py as f32);
+            let rw = 1.0 / fy.mul_add(w[2], fx.mul_add(w[1], w[0]));
+            for p in &c {
+                sum = sum.wrapping_add(u64::from((fy.mul_add(p[2], fx.mul_add(p[1], p[0])) * rw).to_bits()));
+            }
+        }
+    }
+    sum
+}
+
+fn f32_barycentric(items: &[Item]) -> u64 {
+    let mut sum = 0u64;
+    for item in items {
+        let (x, y, r, v) = &item.f32_in;
+        let g = [0, 1, 2].map(|c| [v[0][c] * r[0], v[1][c] * r[1], v[2][c] * r[2]]);
+        for &(px, py) in &item.pixels {
+            let (cx, cy) = (px as f32 + 0.5, py as f32 + 0.5);
+            let e = [0, 1, 2].map(|i| {
+                let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+                (x[j] - cx) * (y[k] - cy) - (x[k] - cx) * (y[j] - cy)
+            });
+            let d = e[0] * r[0] + e[1] * r[1] + e[2] * r[2];
+            for gc in &g {
+                let n = e[0] * gc[0] + e[1] * gc[1] + e[2] * gc[2];
+                sum = sum.wrapping_add(u64::from((n / d).to_bits()));
+            }
+        }
+    }
+    sum
+}
+
+fn planned_exact(items: &[Item]) -> (u64, u64) {
+    let (mut sum, mut exact) = (0u64, 0u64);
+    let half = BigRational::new(1.into(), 2.into());
+    for item in items {
+        let fast = FastPlan::new(&item.f64_in, Interpolation::Smooth, ProvokingVertex::First, (0.5, 0.5));
+        let mut slow: Option<Vec<PlannedValue>> = None;
+        let mut out = [None; 3];
+        for &(px, py) in &item.pixels {
+            fast.nearest_f32(px, py, &mut out);
+            for (c, o) in out.iter().enumerate() {
+                let f = match o {
+                    Some(f) => *f,
+                    None => {
+                        exact += 1;
+                        let plans = slow.get_or_insert_with(|| {
+                            PlannedValue::channels(
+                                &item.setup,
+                                Interpolation::Smooth,
+                                ProvokingVertex::First,
+                                0..3,
+                                &half,
+                            )
+                        });
+                        plans[c].nearest_f32(px, py).unwrap().unwrap()
+                    }
+                };
+                sum = sum.wrapping_add(u64::from(f.to_bits()));
+            }
+        }
+    }
+    (sum, exact)
+}
+
+fn plain_exact(items: &[Item]) -> u64 {
+    let mut sum = 0u64;
+    let half = BigRational::new(1.into(), 2.into());
+    for item in items {
+        for &(px, py) in &item.pixels {
+            let p = Point::new(
+                BigRational::from_integer(px.into()) + &half,
+                BigRational::from_integer(py.into()) + &half,
+            );
+            let v = item
+                .setup
+                .value(Interpolation::Smooth, ProvokingVertex::First, 0..3, &p)
+                .unwrap();
+            for c in &v {
+                sum = sum.wrapping_add(u64::from(nearest_f32(c).unwrap().to_bits()));
+            }
+        }
+    }
+    sum
+}
+
+fn bench(c: &mut Criterion) {
+    let (items, pixels) = mesh();
+    let subset = &items[..500];
+    let subset_pixels: u64 = subset.iter().map(|i| i.pixels.len() as u64).sum();
+    // The planned values are the plain ones (checked here once, outside the timing), and
+    // how often the exact ratio decided.
+    let (planned_sum, slow) = planned_exact(subset);
+    assert_eq!(planned_sum, plain_exact(subset), "planned and plain values differ");
+    let (_, slow_all) = planned_exact(&items);
+    eprintln!(
+        "mesh: {} triangles, {pixels} covered pixels ({:.1} a triangle); the exact ratio decided {slow_all} of {} channel values ({slow} in the 500-triangle prefix)",
+        items.len(),
+        pixels as f64 / items.len() as f64,
+        3 * pixels
+    );
+    let mut group = c.benchmark_group("values-1080p-100k");
+    group.sample_size(10);
+    group.throughput(Throughput::Elements(pixels));
+    group.bench_function("f32-origin-plane", |b| b.iter(|| f32_origin_plane(&items)));
+    group.bench_function("f32-barycentric", |b| b.iter(|| f32_barycentric(&items)));
+    group.bench_function("planned-exact", |b| b.iter(|| planned_exact(&items)));
+    group.throughput(Throughput::Elements(subset_pixels));
+    group.bench_function("plain-exact (500 triangles)", |b| b.iter(|| plain_exact(subset)));
+    group.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
