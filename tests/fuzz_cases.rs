@@ -299,7 +299,10 @@ fn fuzz_case_08_barycentrics_whose_denominator_cancels() {
         .value(Interpolation::NoPerspective, ProvokingVertex::First, 0..2, &p)
         .unwrap();
     let bounds = value_envelope(&setup, Interpolation::NoPerspective, 0..2, &p, 160);
-    for model in FloatInterpolator::all() {
+    for model in FloatInterpolator::all()
+        .into_iter()
+        .filter(FloatInterpolator::enveloped)
+    {
         for ch in 0..2 {
             let v = model.value(
                 &tri,
@@ -342,7 +345,10 @@ fn fuzz_case_09_an_area_f32_cannot_tell_from_zero() {
         .unwrap();
     let bounds = value_envelope(&setup, Interpolation::NoPerspective, 0..2, &p, 160);
     let mut unbounded_wrong = 0;
-    for model in FloatInterpolator::all() {
+    for model in FloatInterpolator::all()
+        .into_iter()
+        .filter(FloatInterpolator::enveloped)
+    {
         for ch in 0..2 {
             let v = model.value(
                 &tri,

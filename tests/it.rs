@@ -24,6 +24,8 @@ mod adapters;
 mod adapters_aa_crates;
 #[path = "adapters_area.rs"]
 mod adapters_area;
+#[path = "adapters_euc.rs"]
+mod adapters_euc;
 mod adapters_values;
 #[path = "adapters_wgpu.rs"]
 mod adapters_wgpu;

@@ -30,6 +30,28 @@
 //!   counted from the bottom), since a GL renderer sets up in its own window coordinates.
 //!
 //! A `flat` value is the provoking vertex's value in every model.
+//!
+//! One more form is not a plane but 2D homogeneous rasterization (Olano and Greer 1997),
+//! as the pure-Rust software renderer euc 0.5.3 builds it (`src/rasterizer/triangles.rs`,
+//! with vek 0.14's products) and adapters/euc feeds it: [`Form::Homogeneous`]`(k)`, named
+//! `homogeneous-S` for a square target of side `S = 2^k`. Each vertex is sent at clip
+//! position `(ndc_x w, ndc_y w, 0, w)` with `ndc_x = x (2/S) - 1` and `ndc_y = 1 - y (2/S)`
+//! (y up; `w` taken back as `1 / (1 / w)` from the model's input, the scene's w where it is
+//! a power of two, and 1 for a `noperspective` value); with `c = (x_c, y_c, w_c)`
+//! the last vertex's `(x, y, w)`, `ca = a - c`, `cb = b - c`, `n = ca x cb` and `r = 1 / (n .
+//! c)` (`((n_x c_x + n_y c_y) + n_z c_z)`; 1 when `n` is zero), the matrix with rows `cb x
+//! c`, `c x ca`, `n`, each entry times `r`, times the NDC matrix `[[2/S, 0, -1], [0, -2/S,
+//! 1], [0, 0, 1]]` (each entry `(m_0 t_0j + m_1 t_1j) + m_2 t_2j`) gives `F`, and at the
+//! pixel's centre `p`, `h_i = (F_i0 p_x + F_i1 p_y) + F_i2`; the weights are `w_a = h_0 /
+//! h_2`, `w_b = h_1 / h_2`, `w_c = (1 - w_a) - w_b` (perspective-correct, since the
+//! positions carry w) and the value `w_a a + (w_b b + w_c c)`, fused as
+//! `fma(a, w_a, fma(b, w_b, c w_c))` under `fma` (euc's `Interpolate::lerp3`). Every other
+//! operation is one rounding (vek's `mul_add` on f32 is a product and a sum, unfused). [`VertexOrder::Reversed`] is euc's reordering: a triangle
+//! whose NDC cross product `(b - a) x (c - a)` is negative (clockwise with y up) is set up as
+//! `(c, b, a)`. The matrix is ill-conditioned when the triangle is small against its
+//! distance from the target's centre (every NDC coordinate and every `n` entry loses the
+//! bits of that ratio), so these models are not bounded by [`crate::interp::envelope`]'s
+//! error bound ([`FloatInterpolator::enveloped`]).
 
 use std::ops::{Add, Div, Mul, Sub};
 
@@ -45,7 +67,13 @@ pub enum Form {
     VertexPlane,
     /// `sum E_i(p) a_i / sum E_i(p)` at the pixel's centre.
     Barycentric,
+    /// euc's 2D homogeneous weights on a square target of side `2^k` (module docs).
+    Homogeneous(u8),
 }
+
+/// The largest `k` of [`Form::Homogeneous`] that [`FloatInterpolator::all`] lists: a target
+/// of side 2^14, the largest canvas.
+pub const HOMOGENEOUS_MAX_LOG2: u8 = 14;
 
 /// The vertex order the setup sees (module docs).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -54,6 +82,9 @@ pub enum VertexOrder {
     AsGiven,
     /// A clockwise triangle reordered counter-clockwise, keeping the provoking vertex.
     CounterClockwise,
+    /// euc's: a triangle clockwise in y-up NDC (for the planes: a negative area in the
+    /// model's window coordinates) set up as `(v2, v1, v0)`.
+    Reversed,
 }
 
 /// How a `smooth` value's quotient is taken.
@@ -130,7 +161,8 @@ impl Real for f64 {
 
 impl FloatInterpolator {
     /// Every model, llvmpipe's first: origin plane, fused, counter-clockwise, reciprocal,
-    /// f32, y up.
+    /// f32, y up; the 96 plane and barycentric models, then euc's homogeneous ones for each
+    /// target side 2^0 to 2^14, fused or not, reversed or as given (quotient, f32, y down).
     pub fn all() -> Vec<FloatInterpolator> {
         let mut out = Vec::new();
         for y_up in [true, false] {
@@ -153,23 +185,45 @@ impl FloatInterpolator {
                 }
             }
         }
+        for k in 0..=HOMOGENEOUS_MAX_LOG2 {
+            for fma in [true, false] {
+                for order in [VertexOrder::Reversed, VertexOrder::AsGiven] {
+                    out.push(FloatInterpolator {
+                        form: Form::Homogeneous(k),
+                        fma,
+                        order,
+                        divide: Divide::Quotient,
+                        f64: false,
+                        y_up: false,
+                    });
+                }
+            }
+        }
         out
     }
 
+    /// Whether the model's error is bounded by [`crate::interp::envelope`]'s: every plane
+    /// and barycentric model; not the homogeneous ones (module docs).
+    pub fn enveloped(&self) -> bool {
+        !matches!(self.form, Form::Homogeneous(_))
+    }
+
     /// The model's name: its choices joined by spaces, e.g. `origin-plane fma ccw rcp f32
-    /// y-up`.
+    /// y-up`, or euc's on a 64-pixel target, `homogeneous-64 fma rev div f32 y-down`.
     pub fn name(&self) -> String {
         format!(
             "{} {} {} {} {} {}",
             match self.form {
-                Form::OriginPlane => "origin-plane",
-                Form::VertexPlane => "vertex-plane",
-                Form::Barycentric => "barycentric",
+                Form::OriginPlane => "origin-plane".to_string(),
+                Form::VertexPlane => "vertex-plane".to_string(),
+                Form::Barycentric => "barycentric".to_string(),
+                Form::Homogeneous(k) => format!("homogeneous-{}", 1u32 << k),
             },
             if self.fma { "fma" } else { "no-fma" },
             match self.order {
                 VertexOrder::AsGiven => "as-given",
                 VertexOrder::CounterClockwise => "ccw",
+                VertexOrder::Reversed => "rev",
             },
             match self.divide {
                 Divide::Reciprocal => "rcp",
@@ -186,14 +240,15 @@ impl FloatInterpolator {
     /// ```
     /// use rasterproof::interp::float::{FloatInterpolator, FloatTriangle};
     /// use rasterproof::interp::values::{Interpolation, ProvokingVertex};
-    /// // The value x over (0, 0), (8, 0), (0, 8): every model gives 1.5 at pixel (1, 3).
+    /// // The value x over (0, 0), (8, 0), (0, 8): every plane and barycentric model gives
+    /// // 1.5 at pixel (1, 3), and so does euc's homogeneous setup on an 8-pixel target.
     /// let t = FloatTriangle {
     ///     x: [0.0, 8.0, 0.0],
     ///     y: [0.0, 0.0, 8.0],
     ///     inv_w: [1.0; 3],
     ///     values: [vec![0.0], vec![8.0], vec![0.0]],
     /// };
-    /// for m in FloatInterpolator::all() {
+    /// for m in FloatInterpolator::all().into_iter().filter(|m| m.enveloped() || m.name().starts_with("homogeneous-8 ")) {
     ///     let v = m.value(&t, Interpolation::Smooth, ProvokingVertex::First, 0, (1, 3), 8, 0.5);
     ///     assert_eq!(v, 1.5, "{}", m.name());
     /// }
@@ -230,6 +285,9 @@ impl FloatInterpolator {
         height: u32,
         centre: f32,
     ) -> f32 {
+        if let Form::Homogeneous(k) = self.form {
+            return self.homogeneous::<R>(t, interpolation, channel, (px, py), k, centre);
+        }
         let flip = |y: f32| if self.y_up { height as f32 - y } else { y };
         let row = if self.y_up { height - 1 - py } else { py };
         let (x, y) = (t.x.map(R::of), t.y.map(|v| R::of(flip(v))));
@@ -241,6 +299,11 @@ impl FloatInterpolator {
                     ProvokingVertex::First => [0, 2, 1],
                     ProvokingVertex::Last => [1, 0, 2],
                 };
+            }
+        } else if self.order == VertexOrder::Reversed {
+            let area = (x[0] - x[1]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[0] - y[1]);
+            if area.out() < 0.0 {
+                order = [2, 1, 0];
             }
         }
         let x = order.map(|i| x[i]);
@@ -265,6 +328,7 @@ impl FloatInterpolator {
                     let (e0, e1, e2) = (e(1, 2), e(2, 0), e(0, 1));
                     (e0 * g[0] + e1 * g[1] + e2 * g[2]) / (e0 + e1 + e2)
                 }
+                Form::Homogeneous(_) => unreachable!("set up by FloatInterpolator::homogeneous"),
                 Form::OriginPlane | Form::VertexPlane => {
                     let (dx01, dy01) = (x[0] - x[1], y[0] - y[1]);
                     let (dx20, dy20) = (x[2] - x[0], y[2] - y[0]);
@@ -296,5 +360,135 @@ impl FloatInterpolator {
             Divide::Reciprocal => (value * (R::of(1.0) / w)).out(),
             Divide::Quotient => (value / w).out(),
         }
+    }
+
+    /// euc's value on a target of side `2^k` (module docs), every step as euc and vek take it.
+    #[allow(clippy::cast_precision_loss, clippy::many_single_char_names)]
+    fn homogeneous<R: Real>(
+        &self,
+        t: &FloatTriangle,
+        interpolation: Interpolation,
+        channel: usize,
+        (px, py): (u32, u32),
+        k: u8,
+        centre: f32,
+    ) -> f32 {
+        let (zero, one) = (R::of(0.0), R::of(1.0));
+        let side = R::of((1u32 << k) as f32);
+        let scale = R::of(2.0) / side;
+        let cross = |a: [R; 3], b: [R; 3]| {
+            [
+                a[1] * b[2] - a[2] * b[1],
+                a[2] * b[0] - a[0] * b[2],
+                a[0] * b[1] - a[1] * b[0],
+            ]
+        };
+        let dot = |a: [R; 3], b: [R; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        // The vertex shader: clip-space (x, y, w), and the NDC point after the divide.
+        let hom = [0, 1, 2].map(|i| {
+            let w = if interpolation == Interpolation::Smooth {
+                one / R::of(t.inv_w[i])
+            } else {
+                one
+            };
+            let ndc_x = R::of(t.x[i]) * scale - one;
+            let ndc_y = one - R::of(t.y[i]) * scale;
+            [ndc_x * w, ndc_y * w, w]
+        });
+        let ndc = hom.map(|h| [h[0] / h[2], h[1] / h[2]]);
+        let mut order = [0, 1, 2];
+        if self.order == VertexOrder::Reversed {
+            let (ab, ac) = (
+                [ndc[1][0] - ndc[0][0], ndc[1][1] - ndc[0][1]],
+                [ndc[2][0] - ndc[0][0], ndc[2][1] - ndc[0][1]],
+            );
+            if (ab[0] * ac[1] - ab[1] * ac[0]).out() < 0.0 {
+                order = [2, 1, 0];
+            }
+        }
+        let [a, b, c] = order.map(|i| hom[i]);
+        let ca = [a[0] - c[0], a[1] - c[1], a[2] - c[2]];
+        let cb = [b[0] - c[0], b[1] - c[1], b[2] - c[2]];
+        let n = cross(ca, cb);
+        let r = if dot(n, n).out() > 0.0 { one / dot(n, c) } else { one };
+        let m = [cross(cb, c), cross(c, ca), n].map(|row| row.map(|e| e * r));
+        let ndc_matrix = [
+            [scale, zero, R::of(-1.0)],
+            [zero, R::of(-2.0) / side, one],
+            [zero, zero, one],
+        ];
+        let f = m.map(|row| {
+            [0, 1, 2].map(|j| row[0] * ndc_matrix[0][j] + row[1] * ndc_matrix[1][j] + row[2] * ndc_matrix[2][j])
+        });
+        let p = (R::of(px as f32) + R::of(centre), R::of(py as f32) + R::of(centre));
+        let h = f.map(|row| row[0] * p.0 + row[1] * p.1 + row[2]);
+        let (wa, wb) = match self.divide {
+            Divide::Quotient => (h[0] / h[2], h[1] / h[2]),
+            Divide::Reciprocal => {
+                let rcp = one / h[2];
+                (h[0] * rcp, h[1] * rcp)
+            }
+        };
+        let wc = one - wa - wb;
+        let [va, vb, vc] = order.map(|i| R::of(t.values[i][channel]));
+        if self.fma {
+            va.fused(wa, vb.fused(wb, vc * wc)).out()
+        } else {
+            (va * wa + (vb * wb + vc * wc)).out()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// euc's setup of (0, 0), (8, 0), (0, 8) with w = 1, 1, 2 on an 8-pixel target, by hand:
+    /// scale 1/4, clip positions a = (-1, 1, 1), b = (1, 1, 1), c = (-2, -2, 2); the NDC
+    /// cross product is -4, so the setup is reversed: a = (-2, -2, 2), c = (-1, 1, 1).
+    /// `ca = (-1, -3, 1)`, `cb = (2, 0, 0)`, `n = (0, 2, 6)`, `n . c = 8`, `r = 1/8`; the
+    /// rows `cb x c = (0, -2, 2)`, `c x ca = (4, 0, 4)`, `n` times `r`, times the NDC
+    /// matrix, give F = [[0, 1/16, 0], [1/8, 0, 0], [0, -1/16, 1]] (every step exact), so at
+    /// pixel (1, 3), centre (1.5, 3.5): h = (7/32, 3/16, 25/32), the perspective-correct
+    /// weights 7/25, 6/25, 12/25 of the vertices (0, 8), (8, 0), (0, 0). The weights are
+    /// the two f32 quotients and `(1 - w_a) - w_b`; the value is euc's fused lerp of the
+    /// values 7, 5, 3 in that order.
+    #[test]
+    fn homogeneous_matches_the_hand_derived_setup() {
+        let t = FloatTriangle {
+            x: [0.0, 8.0, 0.0],
+            y: [0.0, 0.0, 8.0],
+            inv_w: [1.0, 1.0, 0.5],
+            values: [vec![3.0], vec![5.0], vec![7.0]],
+        };
+        let (h0, h1, h2) = (7.0f32 / 32.0, 3.0f32 / 16.0, 25.0f32 / 32.0);
+        let (wa, wb) = (h0 / h2, h1 / h2);
+        let wc = 1.0 - wa - wb;
+        let euc = FloatInterpolator {
+            form: Form::Homogeneous(3),
+            fma: true,
+            order: VertexOrder::Reversed,
+            divide: Divide::Quotient,
+            f64: false,
+            y_up: false,
+        };
+        assert_eq!(euc.name(), "homogeneous-8 fma rev div f32 y-down");
+        let v = euc.value(&t, Interpolation::Smooth, ProvokingVertex::First, 0, (1, 3), 8, 0.5);
+        assert_eq!(v.to_bits(), 7.0f32.mul_add(wa, 5.0f32.mul_add(wb, 3.0 * wc)).to_bits());
+        // Unfused: the products rounded, then summed as euc's order would.
+        let unfused = FloatInterpolator { fma: false, ..euc };
+        let v = unfused.value(&t, Interpolation::Smooth, ProvokingVertex::First, 0, (1, 3), 8, 0.5);
+        assert_eq!(v.to_bits(), (7.0 * wa + (5.0 * wb + 3.0 * wc)).to_bits());
+        // The exact value is (7 * 7 + 5 * 6 + 3 * 12) / 25 = 4.6; euc is within a step.
+        assert!((v - 4.6).abs() <= 2.0 * f32::EPSILON * 4.6, "{v}");
+    }
+
+    #[test]
+    fn every_model_has_its_own_name() {
+        let all = FloatInterpolator::all();
+        let names: std::collections::HashSet<String> = all.iter().map(FloatInterpolator::name).collect();
+        assert_eq!(names.len(), all.len());
+        assert_eq!(all.len(), 96 + 4 * (usize::from(HOMOGENEOUS_MAX_LOG2) + 1));
+        assert_eq!(all.iter().filter(|m| m.enveloped()).count(), 96);
     }
 }
