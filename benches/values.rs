@@ -12,12 +12,15 @@
 //!
 //! - `f32-origin-plane`: the plane equations of `1 / w` and `f / w` anchored at the
 //!   framebuffer's origin in f32 (llvmpipe's setup and evaluation: `a0 + dadx x + dady y`,
-//!   fused, the quotient as a multiply by the reciprocal);
+//!   the quotient as a multiply by the reciprocal; unfused, since without the target's FMA
+//!   a fused multiply-add is a library call);
 //! - `f32-barycentric`: the three edge functions at the centre, `sum E_i f_i / w_i / sum E_i
 //!   / w_i` in f32;
 //! - `planned-exact`: the exact value rounded to the nearest f32, from
 //!   `interp::planned`'s f64 filter (`FastPlan`) with the exact ratio (`PlannedValue`, set
 //!   up in rationals on first need) where the filter cannot decide;
+//! - `rasterize-exact-snapped`: for scale, what finding those pixels costs (the exact
+//!   integer rasterizer, one thread), which a renderer adds to any interpolator;
 //! - `plain-exact`: the readable definition (`ValueSetup::value`) in rationals, on the
 //!   first 500 triangles only (per pixel its cost does not depend on the mesh size).
 //!
@@ -50,7 +53,13 @@ struct Item {
     pixels: Vec<(u32, u32)>,
 }
 
-fn mesh() -> (Vec<Item>, u64) {
+/// The mesh's triangles and their canvas, for the rasterizer's share.
+struct Geometry {
+    primitives: Primitives,
+    target: Target,
+}
+
+fn mesh() -> (Vec<Item>, u64, Geometry) {
     let mut rng = Rng(0x5eed_1080);
     let g = 256;
     // Grid vertices, interior ones jittered by up to a third of a cell; each with a w and
@@ -129,7 +138,11 @@ fn mesh() -> (Vec<Item>, u64) {
             }
         })
         .collect();
-    (items, total)
+    let geometry = Geometry {
+        primitives: Primitives::from_triangles(&geometry),
+        target,
+    };
+    (items, total, geometry)
 }
 
 /// llvmpipe's plane setup in f32 (see `interp::float`'s module docs): each attribute
@@ -154,9 +167,11 @@ fn f32_origin_plane(items: &[Item]) -> u64 {
         let c = [0, 1, 2].map(|c| plane(x, y, [v[0][c] * r[0], v[1][c] * r[1], v[2][c] * r[2]]));
         for &(px, py) in &item.pixels {
             let (fx, fy) = (px as f32, py as f32);
-            let rw = 1.0 / fy.mul_add(w[2], fx.mul_add(w[1], w[0]));
+            // Unfused: `mul_add` without the target's FMA is a library call, not the
+            // instruction a renderer built for its CPU uses.
+            let rw = 1.0 / (w[0] + w[1] * fx + w[2] * fy);
             for p in &c {
-                sum = sum.wrapping_add(u64::from((fy.mul_add(p[2], fx.mul_add(p[1], p[0])) * rw).to_bits()));
+                sum = sum.wrapping_add(u64::from(((p[0] + p[1] * fx + p[2] * fy) * rw).to_bits()));
             }
         }
     }
@@ -239,7 +254,7 @@ fn plain_exact(items: &[Item]) -> u64 {
 }
 
 fn bench(c: &mut Criterion) {
-    let (items, pixels) = mesh();
+    let (items, pixels, geometry) = mesh();
     let subset = &items[..500];
     let subset_pixels: u64 = subset.iter().map(|i| i.pixels.len() as u64).sum();
     // The planned values are the plain ones (checked here once, outside the timing), and
@@ -259,6 +274,11 @@ fn bench(c: &mut Criterion) {
     group.bench_function("f32-origin-plane", |b| b.iter(|| f32_origin_plane(&items)));
     group.bench_function("f32-barycentric", |b| b.iter(|| f32_barycentric(&items)));
     group.bench_function("planned-exact", |b| b.iter(|| planned_exact(&items)));
+    // What a renderer adds to any of them: finding the covered pixels (the exact-snapped
+    // integer rasterizer, one thread).
+    group.bench_function("rasterize-exact-snapped", |b| {
+        b.iter(|| render(&geometry.primitives, &geometry.target, Model::ExactSnapped).unwrap())
+    });
     group.throughput(Throughput::Elements(subset_pixels));
     group.bench_function("plain-exact (500 triangles)", |b| b.iter(|| plain_exact(subset)));
     group.finish();

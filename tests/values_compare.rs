@@ -372,4 +372,35 @@ fn the_cli_reads_values_and_names_its_errors() {
         text.contains("--varying and --unorm-rule are for --as values"),
         "{text}"
     );
+    // Under 4 samples: the stacked TIFF (32 rows), judged per sample; the one-sample TIFF
+    // refused with both sizes; a PNG --values-out refused.
+    let stacked = dir.path().join("stacked.tiff");
+    let render4 = |out: &std::path::Path| {
+        Command::cargo_bin("rasterproof")
+            .unwrap()
+            .arg("render")
+            .arg(&scene)
+            .args(["--samples", "4", "--values-out"])
+            .arg(out)
+            .output()
+            .unwrap()
+    };
+    assert!(render4(&stacked).status.success());
+    let (code, text) = compare(&[
+        scene.as_os_str(),
+        stacked.as_os_str(),
+        "--samples".as_ref(),
+        "4".as_ref(),
+    ]);
+    assert_eq!(code, 0, "{text}");
+    assert!(
+        text.contains("4 samples a pixel") && text.contains("samples judged"),
+        "{text}"
+    );
+    let (code, text) = compare(&[scene.as_os_str(), tiff.as_os_str(), "--samples".as_ref(), "4".as_ref()]);
+    assert_eq!(code, 2, "{text}");
+    assert!(text.contains("8x4") && text.contains("8x16"), "{text}");
+    let refused = render4(&png);
+    assert_eq!(refused.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("a PNG --values-out"));
 }

@@ -5,7 +5,7 @@
 //! 1. The invariants of `check::values` hold for the exact definition: hull, rotation,
 //!    translation (by any offset of the 1/256 grid), a shared edge, flat copies.
 //! 2. The planned value (`PlannedValue`) at the pixel's centre is the plain one, and so is
-//!    its nearest f32.
+//!    its nearest f32; so is the f64 filter's (`FastPlan`) wherever it decides one.
 //! 3. Every float model of `interp::float` lands within the envelope's `far` bound.
 //!
 //! `Debug` is the input struct (Rust).
@@ -23,7 +23,7 @@ use rasterproof::check::{
 use rasterproof::geom::Point;
 use rasterproof::interp::envelope::value_envelope;
 use rasterproof::interp::float::{FloatInterpolator, FloatTriangle};
-use rasterproof::interp::planned::PlannedValue;
+use rasterproof::interp::planned::{FastPlan, PlannedValue, TriangleF64};
 use rasterproof::interp::values::{Interpolation, ProvokingVertex, ValueSetup, ValueTriangle};
 use rasterproof::num::exact::nearest_f32;
 
@@ -81,7 +81,17 @@ fuzz_target!(|input: Input| {
         let plain = setup.value(interpolation, provoking, c..c + 1, &p).map(|v| v[0].clone());
         let planned = PlannedValue::new(&setup, interpolation, provoking, c, &q(1, 2));
         assert_eq!(planned.exact(px, py), plain);
-        assert_eq!(planned.nearest_f32(px, py), plain.map(|v| nearest_f32(&v)));
+        assert_eq!(planned.nearest_f32(px, py), plain.clone().map(|v| nearest_f32(&v)));
+    }
+    if let Some(t64) = TriangleF64::of(&setup, 0..2) {
+        let mut out = [None; 2];
+        FastPlan::new(&t64, interpolation, provoking, (0.5, 0.5)).nearest_f32(px, py, &mut out);
+        for (c, decided) in out.iter().enumerate() {
+            if let Some(f) = decided {
+                let plain = setup.value(interpolation, provoking, c..c + 1, &p).map(|v| nearest_f32(&v[0]));
+                assert_eq!(plain, Ok(Some(*f)), "channel {c}");
+            }
+        }
     }
 
     // 3. The float models inside the envelope.

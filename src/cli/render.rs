@@ -266,7 +266,7 @@ fn values_out(
     tiff: bool,
 ) -> Result<Result<image::DynamicImage, Vec<u8>>, String> {
     let varyings = &scene.varyings;
-    let k = varying_index(o, name, varyings)?;
+    let k = varying_index(o, name, scene)?;
     let values = exact_pixel_values(coverage, &scene.value_setups(), varyings, target);
     if tiff {
         return values_tiff(&values, varyings, k, target.width, target.height, 1)
@@ -279,7 +279,8 @@ fn values_out(
 }
 
 /// The varying `--values-out` writes: the one `--varying` names, default the first.
-fn varying_index(o: &Options, name: &str, varyings: &rasterproof::interp::values::Varyings) -> Result<usize, String> {
+fn varying_index(o: &Options, name: &str, scene: &rasterproof::scene::Scene) -> Result<usize, String> {
+    let varyings = &scene.varyings;
     if varyings.list.is_empty() {
         return Err(format!("--values-out: {name} declares no varyings"));
     }
@@ -352,7 +353,7 @@ fn run_samples(
         wrote.push(format!("{} (ids, {} samples stacked)", path.display(), pattern.len()));
     }
     if let Some(path) = &o.values_out {
-        let k = varying_index(o, name, &scene.varyings)?;
+        let k = varying_index(o, name, scene)?;
         let values = exact_values(&coverage, pattern, &scene.value_setups(), &scene.varyings, target);
         let bytes = values_tiff(&values, &scene.varyings, k, target.width, target.height, pattern.len())
             .map_err(|e| format!("--values-out: {e} (scene {name})"))?;

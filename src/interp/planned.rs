@@ -346,13 +346,17 @@ pub struct TriangleF64 {
     pub y: [f64; 3],
     /// The vertices' clip-space w (1 without perspective).
     pub w: [f64; 3],
-    /// Per vertex, the channels set up (the first of them at index 0).
-    pub values: [Vec<f64>; 3],
+    /// Per vertex, the channels set up (the first of them at index 0; at most four, the
+    /// rest 0).
+    pub values: [[f64; FAST_CHANNELS]; 3],
+    /// How many channels `values` holds.
+    pub channels: usize,
 }
 
 impl TriangleF64 {
-    /// The channels `channels` of `setup`'s triangle; `None` for a segment, an input beyond
-    /// f64's range, or a vertex at `w <= 0` (the fast plan's bound needs `1 / w` finite).
+    /// The channels `channels` of `setup`'s triangle; `None` for a segment, more than four
+    /// channels, an input beyond f64's range, or a vertex at `w <= 0` (the fast plan's
+    /// bound needs `1 / w` finite).
     pub fn of(setup: &ValueSetup, channels: std::ops::Range<usize>) -> Option<TriangleF64> {
         let ValueSetup::Triangle(t) = setup else {
             return None;
@@ -365,20 +369,21 @@ impl TriangleF64 {
         let coordinate = |i: usize, c: usize| nearest_f64(&(&t.h[i][c] / &t.h[i][2])).filter(|v| v.is_finite());
         let x = [coordinate(0, 0)?, coordinate(1, 0)?, coordinate(2, 0)?];
         let y = [coordinate(0, 1)?, coordinate(1, 1)?, coordinate(2, 1)?];
-        let values = [0, 1, 2].map(|i| {
-            t.values[i][channels.clone()]
-                .iter()
-                .map(|v| nearest_f64(v).filter(|v| v.is_finite()))
-                .collect::<Option<Vec<f64>>>()
-        });
-        let [Some(a), Some(b), Some(c)] = values else {
+        if channels.len() > FAST_CHANNELS {
             return None;
-        };
+        }
+        let mut values = [[0.0; FAST_CHANNELS]; 3];
+        for (vertex, out) in values.iter_mut().enumerate() {
+            for (o, v) in out.iter_mut().zip(&t.values[vertex][channels.clone()]) {
+                *o = nearest_f64(v).filter(|v| v.is_finite())?;
+            }
+        }
         Some(TriangleF64 {
             x,
             y,
             w,
-            values: [a, b, c],
+            values,
+            channels: channels.len(),
         })
     }
 }
@@ -400,15 +405,16 @@ const FAST_ROUNDINGS: f64 = 16.0;
 /// [`PlannedValue`] decides those).
 ///
 /// The value is `N / D` with `N = sum g_i E_i(p)` and `D = sum r_i E_i(p)`, `E_i` the
-/// edge function opposite vertex `i` (`E_0(p) = (x_1 - p_x)(y_2 - p_y) - (x_2 - p_x)(y_1
-/// - p_y)`, cyclically), and `r_i = 1 / w_i`, `g_i = f_i / w_i` (`smooth`) or `r_i = 1`,
-/// `g_i = f_i` (`noperspective`). The plane is anchored at the integer point `(a_x, a_y)`
-/// at or below vertex 0 (its coordinates rounded down): the positions are taken relative
-/// to it, exactly (a position f64 cannot hold exactly, or one whose difference from the
-/// anchor it cannot, leaves every value to the exact path), so that the terms stay the
-/// size of the triangle wherever it lies on the canvas. Written as `A_i x + B_i y + K_i` at
-/// pixel `(a_x + x, a_y + y)`: `A_i = y_j - y_k`, `B_i = x_k - x_j`, `K_i = x_j y_k - x_k
-/// y_j + A_i o_x + B_i o_y`, with relative coordinates.
+/// edge function opposite vertex `i` (cyclically, `E_0(p) = (x_1 - p_x)(y_2 - p_y) -
+/// (x_2 - p_x)(y_1 - p_y)`), and `r_i = 1 / w_i`, `g_i = f_i / w_i` (`smooth`) or `r_i =
+/// 1`, `g_i = f_i` (`noperspective`). The plane is anchored at the integer point `(a_x,
+/// a_y)` at or below vertex 0 (its coordinates rounded down): the positions are taken
+/// relative to it, exactly (a position f64 cannot hold exactly, or one whose difference
+/// from the anchor it cannot, leaves every value to the exact path), so that the terms
+/// stay the size of the triangle wherever it lies on the canvas. Each `E_i` is written as
+/// `A_i x + B_i y + K_i` at pixel `(a_x + x, a_y + y)`, with `A_i = y_j - y_k`,
+/// `B_i = x_k - x_j` and `K_i = x_j y_k - x_k y_j + A_i o_x + B_i o_y` in relative
+/// coordinates.
 ///
 /// **The bound.** Every computed number is the exact one's polynomial (or reciprocal) in
 /// the inputs, each monomial perturbed by at most `m` factors `(1 + δ)`, `|δ| <= u = 2^-53`:
@@ -434,24 +440,33 @@ pub struct FastPlan {
 
 #[derive(Debug, Clone, PartialEq)]
 enum FastForm {
+    /// Nothing decided: the exact values decide every channel.
+    Undecided(usize),
     /// Per channel the decided f32 (`None`: the exact value decides).
-    Constant(Vec<Option<f32>>),
+    Constant([Option<f32>; FAST_CHANNELS], usize),
     Ratio {
         /// `D`'s coefficients `[a, b, k]` at integer pixel coordinates.
         d: [f64; 3],
         /// `D`'s error bound.
         e_d: f64,
-        /// Per channel, `N`'s coefficients and error bound.
-        n: Vec<([f64; 3], f64)>,
+        /// Per channel, `N`'s coefficients.
+        n: [[f64; 3]; FAST_CHANNELS],
+        /// Per channel, `N`'s error bound.
+        e_n: [f64; FAST_CHANNELS],
+        channels: usize,
     },
 }
+
+/// The channels a fast plan decides (a vec4's); more leave every value to the exact path.
+const FAST_CHANNELS: usize = 4;
 
 /// The f32 every real of `[lo, hi]` rounds to, when they all round to one finite f32.
 #[inline]
 fn decided(lo: f64, hi: f64) -> Option<f32> {
     #[allow(clippy::cast_possible_truncation)] // rounding to f32 is the point
     let (a, b) = (lo as f32, hi as f32);
-    (a.to_bits() == b.to_bits() && a.is_finite() && lo <= hi).then_some(a)
+    // NaN (from an infinite or NaN bound) converts to NaN: not finite.
+    (a.to_bits() == b.to_bits() && a.is_finite()).then_some(a)
 }
 
 /// `a - b` when f64 holds it exactly (Knuth's TwoSum leaves no error term).
@@ -474,7 +489,7 @@ impl FastPlan {
         provoking: ProvokingVertex,
         offset: (f64, f64),
     ) -> FastPlan {
-        let channels = t.values[0].len();
+        let channels = t.channels;
         let anchor = (t.x[0].floor(), t.y[0].floor());
         let relative = |c: &[f64; 3], a: f64| -> Option<[f64; 3]> {
             Some([
@@ -483,9 +498,13 @@ impl FastPlan {
                 exact_difference(c[2], a)?,
             ])
         };
-        let (Some(x), Some(y)) = (relative(&t.x, anchor.0), relative(&t.y, anchor.1)) else {
+        let (Some(x), Some(y), true) = (
+            relative(&t.x, anchor.0),
+            relative(&t.y, anchor.1),
+            channels <= FAST_CHANNELS,
+        ) else {
             return FastPlan {
-                form: FastForm::Constant(vec![None; channels]),
+                form: FastForm::Undecided(channels),
                 anchor,
                 limit: (0.0, 0.0),
             };
@@ -494,12 +513,12 @@ impl FastPlan {
         let limit = (most(&x), most(&y));
         if interpolation == Interpolation::Flat {
             let v = &t.values[provoking.vertex(3)];
-            let each = v
-                .iter()
-                .map(|&f| decided(f - f.abs() * 2.0 * U, f + f.abs() * 2.0 * U))
-                .collect();
+            let mut each = [None; FAST_CHANNELS];
+            for (e, &f) in each.iter_mut().zip(&v[..channels]) {
+                *e = decided(f - f.abs() * 2.0 * U, f + f.abs() * 2.0 * U);
+            }
             return FastPlan {
-                form: FastForm::Constant(each),
+                form: FastForm::Constant(each, channels),
                 anchor,
                 limit: (f64::INFINITY, f64::INFINITY),
             };
@@ -516,27 +535,38 @@ impl FastPlan {
             k[i] = (x[j] * y[l] - x[l] * y[j]) + (a[i] * ox + b[i] * oy);
         }
         let smooth = interpolation == Interpolation::Smooth;
-        let r = t.w.map(|w| if smooth { 1.0 / w } else { 1.0 });
-        let combine = |weight: &dyn Fn(usize) -> f64| {
+        let r = if smooth {
+            [1.0 / t.w[0], 1.0 / t.w[1], 1.0 / t.w[2]]
+        } else {
+            [1.0; 3]
+        };
+        let combine = |weight: &[f64; 3]| -> [f64; 3] {
             let c = |coefficient: &[f64; 3]| {
-                (weight(0) * coefficient[0] + weight(1) * coefficient[1]) + weight(2) * coefficient[2]
+                (weight[0] * coefficient[0] + weight[1] * coefficient[1]) + weight[2] * coefficient[2]
             };
             [c(&a), c(&b), c(&k)]
         };
         let (xl, yl) = limit;
         let terms = 6.0 * xl * yl + 2.0 * xl + 2.0 * yl;
         // The bound on sums computed in f64 themselves: widened by 2^-40.
-        let bound = |weights: f64| gamma(FAST_ROUNDINGS) * terms * weights * (1.0 + 1.0 / 1_099_511_627_776.0);
-        let d = combine(&|i| r[i]);
-        let e_d = bound(r.iter().map(|r| r.abs()).sum());
-        let n = (0..channels)
-            .map(|c| {
-                let g = [0, 1, 2].map(|i| t.values[i][c] * r[i]);
-                (combine(&|i| g[i]), bound(g.iter().map(|g| g.abs()).sum()))
-            })
-            .collect();
+        let scale = gamma(FAST_ROUNDINGS) * terms * (1.0 + 1.0 / 1_099_511_627_776.0);
+        let d = combine(&r);
+        let e_d = scale * (r[0].abs() + r[1].abs() + r[2].abs());
+        let mut n = [[0.0; 3]; FAST_CHANNELS];
+        let mut e_n = [0.0; FAST_CHANNELS];
+        for c in 0..channels {
+            let g = [t.values[0][c] * r[0], t.values[1][c] * r[1], t.values[2][c] * r[2]];
+            n[c] = combine(&g);
+            e_n[c] = scale * (g[0].abs() + g[1].abs() + g[2].abs());
+        }
         FastPlan {
-            form: FastForm::Ratio { d, e_d, n },
+            form: FastForm::Ratio {
+                d,
+                e_d,
+                n,
+                e_n,
+                channels,
+            },
             anchor,
             limit,
         }
@@ -553,17 +583,26 @@ impl FastPlan {
         // Exact: integers below 2^53.
         let (xf, yf) = (f64::from(x) - self.anchor.0, f64::from(y) - self.anchor.1);
         match &self.form {
-            FastForm::Constant(each) => out[..each.len()].copy_from_slice(each),
-            FastForm::Ratio { d, e_d, n } => {
+            FastForm::Undecided(channels) => out[..*channels].fill(None),
+            FastForm::Constant(each, channels) => out[..*channels].copy_from_slice(&each[..*channels]),
+            FastForm::Ratio {
+                d,
+                e_d,
+                n,
+                e_n,
+                channels,
+            } => {
                 let dv = d[0] * xf + d[1] * yf + d[2];
-                if xf.abs() > self.limit.0 || yf.abs() > self.limit.1 || !(dv.abs() > 1024.0 * e_d) {
-                    out[..n.len()].fill(None);
+                // A NaN denominator fails the last test too.
+                let far_enough = dv.abs() > 1024.0 * e_d;
+                if xf.abs() > self.limit.0 || yf.abs() > self.limit.1 || !far_enough {
+                    out[..*channels].fill(None);
                     return;
                 }
                 let inv = 1.0 / dv;
                 let q = inv.abs() * (1024.0 / 1023.0) * (1.0 + 2.0 * U);
                 let p = e_d * q + 8.0 * U;
-                for (o, (c, e_n)) in out.iter_mut().zip(n) {
+                for ((o, c), e_n) in out[..*channels].iter_mut().zip(n).zip(e_n) {
                     let v = (c[0] * xf + c[1] * yf + c[2]) * inv;
                     let e = (v.abs() * p + e_n * q) * (1.0 + 8.0 * U);
                     *o = decided(v - e, v + e);

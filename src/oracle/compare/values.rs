@@ -414,7 +414,9 @@ pub fn compare_values(
             report.without_value += 1;
             continue;
         };
-        let theirs_here = their_channels(image, x, y + j.sample as u32 * target.height, varying.channels);
+        // The stacked row: checked to fit (their image is that tall).
+        let row = u32::try_from(j.sample).expect("at most 64 samples") * target.height + y;
+        let theirs_here = their_channels(image, x, row, varying.channels);
         let Ok((class, nearest)) = plan.judge(&theirs_here, x, y) else {
             report.without_value += 1;
             continue;

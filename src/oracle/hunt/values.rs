@@ -396,6 +396,8 @@ impl ValueHuntReport {
             "as": "values",
             "interpolation": self.config.interpolation.name(),
             "provoking_vertex": self.config.provoking.name(),
+            "sampling": self.config.sampling.name(),
+            "samples": self.config.hunt.samples.as_ref().map_or(1, |p| p.len()),
             "requested": self.requested,
             "cases": self.cases,
             "same": self.same,
