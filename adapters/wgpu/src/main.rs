@@ -790,34 +790,43 @@ impl Renderer {
         }
         encoder.copy_buffer_to_buffer(&storage, 0, &readback, 0, bytes);
         self.gpu.queue.submit([encoder.finish()]);
-        let slice = readback.slice(..);
-        let mapped: Arc<Mutex<Option<Result<(), wgpu::BufferAsyncError>>>> = Arc::new(Mutex::new(None));
-        let done = mapped.clone();
-        slice.map_async(wgpu::MapMode::Read, move |r| {
-            if let Ok(mut d) = done.lock() {
-                *d = Some(r);
-            }
-        });
-        device
-            .poll(wgpu::PollType::Wait {
-                submission_index: None,
-                timeout: Some(std::time::Duration::from_secs(60)),
-            })
-            .map_err(|e| format!("waiting for the GPU: {e}"))?;
-        match mapped.lock().map_err(|_| "internal: poisoned")?.take() {
-            Some(Ok(())) => {}
-            Some(Err(e)) => return Err(format!("cannot read the result back: {e}")),
-            None => return Err("the GPU did not finish".into()),
-        }
-        let words: Vec<u32> = slice
-            .get_mapped_range()
-            .map_err(|e| format!("cannot read the result back: {e}"))?
-            .chunks_exact(4)
-            .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
-            .collect();
-        readback.unmap();
-        Ok(words)
+        Ok(read_back(device, &readback)?
+            .into_iter()
+            .map(u32::from_le_bytes)
+            .collect())
     }
+}
+
+/// The 4-byte words of `readback` once the GPU has written it (the work submitted):
+/// mapped, waited for (at most 60 s), copied out and unmapped.
+fn read_back(device: &wgpu::Device, readback: &wgpu::Buffer) -> Result<Vec<[u8; 4]>, String> {
+    let slice = readback.slice(..);
+    let mapped: Arc<Mutex<Option<Result<(), wgpu::BufferAsyncError>>>> = Arc::new(Mutex::new(None));
+    let done = mapped.clone();
+    slice.map_async(wgpu::MapMode::Read, move |r| {
+        if let Ok(mut d) = done.lock() {
+            *d = Some(r);
+        }
+    });
+    device
+        .poll(wgpu::PollType::Wait {
+            submission_index: None,
+            timeout: Some(std::time::Duration::from_secs(60)),
+        })
+        .map_err(|e| format!("waiting for the GPU: {e}"))?;
+    match mapped.lock().map_err(|_| "internal: poisoned")?.take() {
+        Some(Ok(())) => {}
+        Some(Err(e)) => return Err(format!("cannot read the result back: {e}")),
+        None => return Err("the GPU did not finish".into()),
+    }
+    let words = slice
+        .get_mapped_range()
+        .map_err(|e| format!("cannot read the result back: {e}"))?
+        .chunks_exact(4)
+        .map(|b| [b[0], b[1], b[2], b[3]])
+        .collect();
+    readback.unmap();
+    Ok(words)
 }
 
 /// Refuses what the adapter does not draw.

@@ -104,19 +104,16 @@
 
 use std::collections::HashMap;
 use std::ffi::OsString;
-use std::io::Write as _;
 use std::ops::Range;
 use std::path::Path;
 use std::process::ExitCode;
-use std::sync::{Arc, Mutex};
 
 use num_rational::BigRational;
 use num_traits::One;
 use rasterproof::interp::values::{Interpolation, ProvokingVertex, Sampling, Varying};
 use rasterproof::num::exact::nearest_f32;
-use rasterproof::oracle::renderer::stay_alive::PROTOCOL_VERSION;
-use rasterproof::scene::{parse_scene, parse_scene_with, ParseOptions, Scene};
-use serde_json::{json, Value};
+use rasterproof::oracle::renderer::adapter::{run_once, serve, FileBytes};
+use rasterproof::scene::Scene;
 
 use super::{Gpu, Options, NAME};
 
@@ -214,17 +211,17 @@ pub fn sample_counts(gpu: &Gpu) -> Vec<u32> {
 /// `--values`: one scene from a file to a TIFF, or the stay-alive loop.
 pub fn values_main(args: Vec<OsString>, options: Options, values: ValuesOptions) -> ExitCode {
     let mut renderer: Option<Result<ValuesRenderer, String>> = None;
-    let mut render = |scene: &Scene| -> Result<Vec<u8>, String> {
+    let mut render = |scene: &Scene| -> Result<FileBytes, String> {
         let r =
             renderer.get_or_insert_with(|| Gpu::new().and_then(|g| ValuesRenderer::new(g, &options, values.clone())));
         match r {
-            Ok(r) => r.render(scene),
+            Ok(r) => r.render(scene).map(|bytes| FileBytes { bytes, kind: "TIFF" }),
             Err(e) => Err(e.clone()),
         }
     };
     let result = match args.as_slice() {
-        [flag] if flag == "--serve" => serve(&mut render),
-        [scene, out] => once(Path::new(scene), Path::new(out), &mut render),
+        [flag] if flag == "--serve" => serve(NAME, std::io::stdin().lock(), &mut std::io::stdout(), &mut render),
+        [scene, out] => run_once(Path::new(scene), Path::new(out), &mut render),
         _ => Err(format!(
             "usage: {NAME} --values [--varying NAME] [--fault affine|provoking|centroid] [--samples N] [--clip] (SCENE.json OUT.tiff | --serve)"
         )),
@@ -236,76 +233,6 @@ pub fn values_main(args: Vec<OsString>, options: Options, values: ValuesOptions)
             ExitCode::from(2)
         }
     }
-}
-
-/// One scene from a file to a TIFF.
-fn once(
-    scene_path: &Path,
-    out: &Path,
-    render: &mut impl FnMut(&Scene) -> Result<Vec<u8>, String>,
-) -> Result<(), String> {
-    let source = scene_path.display().to_string();
-    let bytes = std::fs::read(scene_path).map_err(|e| format!("{source}: cannot read: {e}"))?;
-    let scene = parse_scene_with(&bytes, &source, &ParseOptions::default()).map_err(|e| e.to_string())?;
-    let tiff = render(&scene).map_err(|e| format!("{source}: {e}"))?;
-    std::fs::write(out, tiff).map_err(|e| format!("{}: cannot write the TIFF: {e}", out.display()))
-}
-
-/// The stay-alive loop (`rasterproof::oracle::renderer::stay_alive`'s protocol, version
-/// 1), each scene's TIFF written at its request's `out`.
-fn serve(render: &mut impl FnMut(&Scene) -> Result<Vec<u8>, String>) -> Result<(), String> {
-    use std::io::BufRead as _;
-    let mut stdout = std::io::stdout().lock();
-    for line in std::io::stdin().lock().lines() {
-        let line = line.map_err(|e| format!("cannot read stdin: {e}"))?;
-        if line.trim().is_empty() {
-            continue;
-        }
-        let request: Result<Value, String> =
-            serde_json::from_str(&line).map_err(|e| format!("not a JSON request: {e}"));
-        let id = request
-            .as_ref()
-            .ok()
-            .and_then(|r| r.get("id").cloned())
-            .unwrap_or(Value::Null);
-        let answer = match request.and_then(|r| answer(&r, render)) {
-            Ok(()) => json!({"id": id, "ok": true}),
-            Err(error) => {
-                eprintln!("{NAME}: request {id}: {error}");
-                json!({"id": id, "ok": false, "error": error})
-            }
-        };
-        writeln!(stdout, "{answer}")
-            .and_then(|()| stdout.flush())
-            .map_err(|e| format!("cannot answer on stdout: {e}"))?;
-    }
-    Ok(())
-}
-
-/// One request: its scene's TIFF at its `out`.
-fn answer(request: &Value, render: &mut impl FnMut(&Scene) -> Result<Vec<u8>, String>) -> Result<(), String> {
-    let version = request.get("rasterproof").and_then(Value::as_u64);
-    if version != Some(u64::from(PROTOCOL_VERSION)) {
-        return Err(format!(
-            "protocol version {}: this adapter speaks {PROTOCOL_VERSION}",
-            version.map_or("(none)".to_string(), |v| v.to_string())
-        ));
-    }
-    if let Some(kind) = request.get("as").and_then(Value::as_str) {
-        if kind != "values" {
-            return Err(format!(
-                "the request asks for {kind:?}; this adapter was started with --values (float32 TIFFs only)"
-            ));
-        }
-    }
-    let out = request
-        .get("out")
-        .and_then(Value::as_str)
-        .ok_or("the request has no \"out\" path")?;
-    let scene = request.get("scene").ok_or("the request has no \"scene\"")?;
-    let scene = parse_scene(&scene.to_string(), "the request's scene").map_err(|e| e.to_string())?;
-    let tiff = render(&scene)?;
-    std::fs::write(out, tiff).map_err(|e| format!("{out}: cannot write the TIFF: {e}"))
 }
 
 /// The varying drawn: its channels' range in a vertex's values, and itself.
@@ -839,33 +766,10 @@ impl ValuesRenderer {
         }
         encoder.copy_buffer_to_buffer(&storage, 0, &readback, 0, bytes);
         queue.submit([encoder.finish()]);
-        let slice = readback.slice(..);
-        let mapped: Arc<Mutex<Option<Result<(), wgpu::BufferAsyncError>>>> = Arc::new(Mutex::new(None));
-        let done = mapped.clone();
-        slice.map_async(wgpu::MapMode::Read, move |r| {
-            if let Ok(mut d) = done.lock() {
-                *d = Some(r);
-            }
-        });
-        device
-            .poll(wgpu::PollType::Wait {
-                submission_index: None,
-                timeout: Some(std::time::Duration::from_secs(60)),
-            })
-            .map_err(|e| format!("waiting for the GPU: {e}"))?;
-        match mapped.lock().map_err(|_| "internal: poisoned")?.take() {
-            Some(Ok(())) => {}
-            Some(Err(e)) => return Err(format!("cannot read the result back: {e}")),
-            None => return Err("the GPU did not finish".into()),
-        }
-        let floats: Vec<f32> = slice
-            .get_mapped_range()
-            .map_err(|e| format!("cannot read the result back: {e}"))?
-            .chunks_exact(4)
-            .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
-            .collect();
-        readback.unmap();
-        Ok(floats)
+        Ok(super::read_back(device, &readback)?
+            .into_iter()
+            .map(f32::from_le_bytes)
+            .collect())
     }
 }
 

@@ -18,24 +18,66 @@ use std::ffi::OsString;
 use std::path::Path;
 use std::process::ExitCode;
 
-use image::DynamicImage;
+use image::{DynamicImage, ImageBuffer};
 use serde_json::{json, Value};
 
 use crate::scene::{parse_scene, parse_scene_with, ParseOptions, Scene};
 
+/// What an adapter's `render` gives for a scene: an image, written as a PNG (an ids or
+/// mask image of the canvas, an `RgbaImage`; a grey image of its coverage, a `GrayImage`),
+/// or a file's bytes written as they are ([`FileBytes`]: a float32 values TIFF).
+pub trait AdapterOutput {
+    /// Writes it at `out`; the error names the path.
+    ///
+    /// # Errors
+    /// The file cannot be written.
+    fn write_at(self, out: &Path) -> Result<(), String>;
+}
+
+impl<P: image::Pixel, C> AdapterOutput for ImageBuffer<P, C>
+where
+    DynamicImage: From<ImageBuffer<P, C>>,
+{
+    fn write_at(self, out: &Path) -> Result<(), String> {
+        write_png(self.into(), out)
+    }
+}
+
+impl AdapterOutput for DynamicImage {
+    fn write_at(self, out: &Path) -> Result<(), String> {
+        write_png(self, out)
+    }
+}
+
+/// A file's bytes, written as they are: what an adapter answering `--as values` renders (a
+/// float32 TIFF, `render --values-out`'s layout).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FileBytes {
+    /// The file.
+    pub bytes: Vec<u8>,
+    /// Its kind in an error message (`TIFF`).
+    pub kind: &'static str,
+}
+
+impl AdapterOutput for FileBytes {
+    fn write_at(self, out: &Path) -> Result<(), String> {
+        std::fs::write(out, self.bytes).map_err(|e| format!("{}: cannot write the {}: {e}", out.display(), self.kind))
+    }
+}
+
 /// Runs an adapter named `name` on its command-line `args` (without the program name):
 /// `SCENE.json OUT.png` renders one scene with `render` and writes the PNG (exit 0, or 2
 /// with one line on stderr); `--serve` answers requests until stdin ends (exit 0).
-/// `render` turns a scene into the PNG's pixels (an ids or mask PNG of the scene's canvas,
-/// an `RgbaImage`; or a grey image of its coverage, a `GrayImage`) or says why it cannot.
-pub fn adapter_main<I: Into<DynamicImage>>(
+/// `render` turns a scene into the output (an image for the PNG, [`AdapterOutput`]) or
+/// says why it cannot.
+pub fn adapter_main<I: AdapterOutput>(
     name: &str,
     args: Vec<OsString>,
     mut render: impl FnMut(&Scene) -> Result<I, String>,
 ) -> ExitCode {
     let result = match args.as_slice() {
         [flag] if flag == "--serve" => serve(name, std::io::stdin().lock(), &mut std::io::stdout(), &mut render),
-        [scene, out] => once(Path::new(scene), Path::new(out), &mut render),
+        [scene, out] => run_once(Path::new(scene), Path::new(out), &mut render),
         _ => Err(format!("usage: {name} SCENE.json OUT.png, or {name} --serve")),
     };
     match result {
@@ -47,8 +89,13 @@ pub fn adapter_main<I: Into<DynamicImage>>(
     }
 }
 
-/// One scene from a file to a PNG.
-fn once<I: Into<DynamicImage>>(
+/// One scene from the file `scene_path` rendered into `out`: what [`adapter_main`] does
+/// with `SCENE.json OUT`, for an adapter that reads its own options first.
+///
+/// # Errors
+/// The scene cannot be read or parsed, `render` refuses it (the message names the scene
+/// file), or `out` cannot be written.
+pub fn run_once<I: AdapterOutput>(
     scene_path: &Path,
     out: &Path,
     render: &mut impl FnMut(&Scene) -> Result<I, String>,
@@ -56,8 +103,8 @@ fn once<I: Into<DynamicImage>>(
     let bytes = std::fs::read(scene_path).map_err(|e| format!("{}: cannot read: {e}", scene_path.display()))?;
     let scene = parse_scene_with(&bytes, &scene_path.display().to_string(), &ParseOptions::default())
         .map_err(|e| e.to_string())?;
-    let image = render(&scene).map_err(|e| format!("{}: {e}", scene_path.display()))?;
-    write_png(image.into(), out)
+    let output = render(&scene).map_err(|e| format!("{}: {e}", scene_path.display()))?;
+    output.write_at(out)
 }
 
 /// `image` as a PNG at `out`.
@@ -73,7 +120,7 @@ fn write_png(image: DynamicImage, out: &Path) -> Result<(), String> {
 ///
 /// # Errors
 /// Only when `output` cannot be written (rasterproof is gone).
-pub fn serve<I: Into<DynamicImage>>(
+pub fn serve<I: AdapterOutput>(
     name: &str,
     input: impl std::io::BufRead,
     output: &mut impl std::io::Write,
@@ -106,7 +153,7 @@ pub fn serve<I: Into<DynamicImage>>(
 }
 
 /// Renders one request's scene into its `out`.
-fn answer<I: Into<DynamicImage>>(
+fn answer<I: AdapterOutput>(
     request: &Value,
     render: &mut impl FnMut(&Scene) -> Result<I, String>,
 ) -> Result<(), String> {
@@ -124,8 +171,7 @@ fn answer<I: Into<DynamicImage>>(
         .ok_or("the request has no \"out\" path")?;
     let scene = request.get("scene").ok_or("the request has no \"scene\"")?;
     let scene = parse_scene(&scene.to_string(), "the request's scene").map_err(|e| e.to_string())?;
-    let image = render(&scene)?;
-    write_png(image.into(), Path::new(out))
+    render(&scene)?.write_at(Path::new(out))
 }
 
 #[cfg(test)]
