@@ -829,8 +829,8 @@ fn read_back(device: &wgpu::Device, readback: &wgpu::Buffer) -> Result<Vec<[u8; 
     Ok(words)
 }
 
-/// Refuses what the adapter does not draw.
-fn refuse_unsupported(scene: &Scene) -> Result<(), String> {
+/// Refuses what neither mode draws: primitives other than window-space triangles.
+fn refuse_other_primitives(scene: &Scene) -> Result<(), String> {
     let mut refused = Vec::new();
     if !scene.lines.is_empty() {
         refused.push("lines");
@@ -844,12 +844,19 @@ fn refuse_unsupported(scene: &Scene) -> Result<(), String> {
     if !scene.clip_space_triangles.is_empty() {
         refused.push("clip-space triangles");
     }
-    if !refused.is_empty() {
-        return Err(format!(
-            "this adapter draws triangles only; the scene has {}",
+    if refused.is_empty() {
+        Ok(())
+    } else {
+        Err(format!(
+            "this adapter draws window-space triangles only; the scene has {}",
             refused.join(", ")
-        ));
+        ))
     }
+}
+
+/// Refuses what the adapter does not draw.
+fn refuse_unsupported(scene: &Scene) -> Result<(), String> {
+    refuse_other_primitives(scene)?;
     if scene.triangles.len() > MAX_ENCODED as usize {
         return Err(format!(
             "{} triangles: the ids PNG holds ids up to {}",

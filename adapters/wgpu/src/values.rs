@@ -776,25 +776,7 @@ impl ValuesRenderer {
 /// Refuses what the values mode does not draw: primitives other than window-space
 /// triangles, and a sample pattern other than the standard one of `samples`.
 fn refuse_unsupported(scene: &Scene, samples: u32) -> Result<(), String> {
-    let mut refused = Vec::new();
-    if !scene.lines.is_empty() {
-        refused.push("lines");
-    }
-    if !scene.polygons.is_empty() {
-        refused.push("polygons");
-    }
-    if scene.clip.is_some() {
-        refused.push("a clip window");
-    }
-    if !scene.clip_space_triangles.is_empty() {
-        refused.push("clip-space triangles");
-    }
-    if !refused.is_empty() {
-        return Err(format!(
-            "this adapter draws window-space triangles only; the scene has {}",
-            refused.join(", ")
-        ));
-    }
+    super::refuse_other_primitives(scene)?;
     if let Some(pattern) = &scene.samples {
         if !pattern.is_standard() {
             return Err(format!(
