@@ -369,3 +369,87 @@ fn fuzz_case_09_an_area_f32_cannot_tell_from_zero() {
     // Some model does give a non-finite value here: the reason there is no bound.
     assert!(unbounded_wrong > 0);
 }
+
+/// Found by values_invariants (its seed `seed-fuzz-case-08b`): the triangle of
+/// `fuzz_case_08` at pixel (32, 79) of a 160 px canvas, noperspective. The models that set
+/// up in GL's window coordinates (y up: `y' = 160 - y`) anchor their origin plane at the
+/// canvas's bottom-left corner, 160 px from the top-left one the envelope's far bound
+/// measured from; a value they gave lay beyond it. The far bound now takes the plane
+/// anchored at either corner.
+#[test]
+fn fuzz_case_10_an_origin_plane_anchored_at_the_bottom_left() {
+    use rasterproof::geom::Point;
+    use rasterproof::interp::envelope::value_envelope;
+    use rasterproof::interp::float::FloatInterpolator;
+    use rasterproof::interp::values::{Interpolation, ProvokingVertex};
+    let (setup, tri) = values_case(
+        [(32660, 32767), (32767, 32767), (8447, 29752)],
+        [(2, 1), (2, 1), (1, 2)],
+        [[8653, -14395], [-3588, 12760], [-15960, 8408]],
+    );
+    let p = Point::new(
+        num_rational::BigRational::new(65.into(), 2.into()),
+        num_rational::BigRational::new(159.into(), 2.into()),
+    );
+    let exact = setup
+        .value(Interpolation::NoPerspective, ProvokingVertex::First, 0..2, &p)
+        .unwrap();
+    let bounds = value_envelope(&setup, Interpolation::NoPerspective, 0..2, &p, 160);
+    let mut y_up = 0;
+    for model in FloatInterpolator::all()
+        .into_iter()
+        .filter(FloatInterpolator::enveloped)
+    {
+        y_up += usize::from(model.y_up);
+        for ch in 0..2 {
+            let v = model.value(
+                &tri,
+                Interpolation::NoPerspective,
+                ProvokingVertex::First,
+                ch,
+                (32, 79),
+                160,
+                0.5,
+            );
+            let d = distance(v, &exact[ch]).unwrap();
+            let bound = bounds[ch].far.unwrap();
+            assert!(d <= bound, "{} channel {ch}: {d} beyond {bound}", model.name());
+        }
+    }
+    assert!(y_up > 0, "the y-up models are among those checked");
+}
+
+/// Found by values_invariants once it checked the f64 filter (`FastPlan`): vertices 1 and 2
+/// both at the origin, w = 1/4, 1/4 and 8, smooth, at pixel (0, 0). The triangle has no
+/// area, so the plain definition gives no value (`Degenerate`); but with unequal w the
+/// filter's `N / D` is finite off the triangle's line, and it decided 2198.6775 there. The
+/// filter now leaves every value of a triangle whose area's sign it cannot certify to the
+/// exact path.
+#[test]
+fn fuzz_case_11_the_f64_filter_on_a_triangle_without_area() {
+    use rasterproof::geom::Point;
+    use rasterproof::interp::planned::{FastPlan, TriangleF64};
+    use rasterproof::interp::values::{Interpolation, NoValue, ProvokingVertex};
+    let (setup, _) = values_case(
+        [(31207, 175), (0, 0), (0, 0)],
+        [(1, 4), (1, 4), (8, 1)],
+        [[-1184, 4848], [17049, 11965], [296, 0]],
+    );
+    let p = Point::new(
+        num_rational::BigRational::new(1.into(), 2.into()),
+        num_rational::BigRational::new(1.into(), 2.into()),
+    );
+    assert_eq!(
+        setup.value(Interpolation::Smooth, ProvokingVertex::First, 0..2, &p),
+        Err(NoValue::Degenerate)
+    );
+    let fast = FastPlan::new(
+        &TriangleF64::of(&setup, 0..2).unwrap(),
+        Interpolation::Smooth,
+        ProvokingVertex::First,
+        (0.5, 0.5),
+    );
+    let mut out = [Some(0.0); 2];
+    fast.nearest_f32(0, 0, &mut out);
+    assert_eq!(out, [None, None]);
+}

@@ -355,8 +355,11 @@ pub struct TriangleF64 {
 
 impl TriangleF64 {
     /// The channels `channels` of `setup`'s triangle; `None` for a segment, more than four
-    /// channels, an input beyond f64's range, or a vertex at `w <= 0` (the fast plan's
-    /// bound needs `1 / w` finite).
+    /// channels, an input beyond f64's range, a window position f64 does not hold exactly
+    /// (the fast plan's bound counts no rounding of the positions, whose error would be
+    /// relative to their distance from the origin, not to the triangle's size), or a
+    /// vertex at `w <= 0` (the bound needs `1 / w` finite). `w` and the values may be
+    /// rounded: their errors are relative.
     pub fn of(setup: &ValueSetup, channels: std::ops::Range<usize>) -> Option<TriangleF64> {
         let ValueSetup::Triangle(t) = setup else {
             return None;
@@ -366,7 +369,10 @@ impl TriangleF64 {
         if w.iter().any(|&w| w <= 0.0 || !w.is_finite()) {
             return None;
         }
-        let coordinate = |i: usize, c: usize| nearest_f64(&(&t.h[i][c] / &t.h[i][2])).filter(|v| v.is_finite());
+        let coordinate = |i: usize, c: usize| {
+            let exact = &t.h[i][c] / &t.h[i][2];
+            nearest_f64(&exact).filter(|v| BigRational::from_float(*v).as_ref() == Some(&exact))
+        };
         let x = [coordinate(0, 0)?, coordinate(1, 0)?, coordinate(2, 0)?];
         let y = [coordinate(0, 1)?, coordinate(1, 1)?, coordinate(2, 1)?];
         if channels.len() > FAST_CHANNELS {
@@ -524,6 +530,18 @@ impl FastPlan {
             };
         }
         let (x, y) = (&x, &y);
+        // A triangle without area has no value (the plain definition's `Degenerate`), though
+        // N / D may be finite off its line: leave every value to the exact path unless the
+        // area's sign is certain (exact positions: three roundings).
+        let (p, q) = ((x[1] - x[0]) * (y[2] - y[0]), (x[2] - x[0]) * (y[1] - y[0]));
+        let certain = (p - q).abs() > gamma(4.0) * (p.abs() + q.abs()) * 2.0;
+        if !certain {
+            return FastPlan {
+                form: FastForm::Undecided(channels),
+                anchor,
+                limit: (0.0, 0.0),
+            };
+        }
         let (ox, oy) = offset;
         let mut a = [0.0; 3];
         let mut b = [0.0; 3];
