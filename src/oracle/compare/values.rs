@@ -739,13 +739,15 @@ impl Plan {
 
     /// Each channel's exact value rounded to the nearest f32 at pixel `(x, y)`.
     pub(crate) fn nearest(&self, x: u32, y: u32) -> Result<Vec<Option<f32>>, NoValue> {
-        let mut fast = vec![None; self.values.len()];
-        if let Some(plan) = &self.fast {
-            plan.nearest_f32(x, y, &mut fast);
+        // A fast plan exists for at most four channels: its answers fit on the stack.
+        let mut fast = [None; 4];
+        if let (Some(plan), Some(out)) = (&self.fast, fast.get_mut(..self.values.len())) {
+            plan.nearest_f32(x, y, out);
         }
-        fast.into_iter()
-            .zip(&self.values)
-            .map(|(f, v)| match f {
+        self.values
+            .iter()
+            .enumerate()
+            .map(|(c, v)| match fast.get(c).copied().flatten() {
                 Some(f) => Ok(Some(f)),
                 None => v.nearest_f32(x, y),
             })
