@@ -101,12 +101,18 @@ fn render(adapter: &Path, args: &[&str], scene: &Path, out: &Path) {
 
 /// `rasterproof compare SCENE THEIRS --as ids --format json ARGS`: (exit code, report).
 fn compare(scene: &Path, theirs: &Path, args: &[&str]) -> (i32, Value) {
+    compare_as("ids", scene, theirs, args)
+}
+
+/// `rasterproof compare SCENE THEIRS --as AS --format json ARGS`: (exit code, report);
+/// asserts it exited 0 or 1.
+fn compare_as(format: &str, scene: &Path, theirs: &Path, args: &[&str]) -> (i32, Value) {
     let output = assert_cmd::Command::cargo_bin("rasterproof")
         .unwrap()
         .arg("compare")
         .arg(scene)
         .arg(theirs)
-        .args(["--as", "ids", "--format", "json"])
+        .args(["--as", format, "--format", "json"])
         .args(args)
         .output()
         .unwrap();
@@ -549,18 +555,7 @@ fn draw_values(adapter: &Path, args: &[&str], scene: &Path) -> PathBuf {
 
 /// `rasterproof compare SCENE THEIRS --as values --format json ARGS`: (exit code, report).
 fn compare_values(scene: &Path, theirs: &Path, args: &[&str]) -> (i32, Value) {
-    let output = assert_cmd::Command::cargo_bin("rasterproof")
-        .unwrap()
-        .arg("compare")
-        .arg(scene)
-        .arg(theirs)
-        .args(["--as", "values", "--format", "json"])
-        .args(args)
-        .output()
-        .unwrap();
-    let code = output.status.code().expect("compare exits");
-    assert!(code == 0 || code == 1, "compare {args:?}:\n{}", text(&output));
-    (code, serde_json::from_slice(&output.stdout).expect("compare's JSON"))
+    compare_as("values", scene, theirs, args)
 }
 
 /// The classes a plain values comparison counted.

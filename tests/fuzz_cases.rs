@@ -267,6 +267,60 @@ fn values_case(
     (setup, tri)
 }
 
+/// The triangle of `fuzz_case_08` and `fuzz_case_10`: a 1/2.6 px edge at (127.6, 128) and
+/// (128, 128), a third vertex at (33, 116.2), w 2, 2 and 1/2.
+fn case_08_triangle() -> (
+    rasterproof::interp::values::ValueSetup,
+    rasterproof::interp::float::FloatTriangle,
+) {
+    values_case(
+        [(32660, 32767), (32767, 32767), (8447, 29752)],
+        [(2, 1), (2, 1), (1, 2)],
+        [[8653, -14395], [-3588, 12760], [-15960, 8408]],
+    )
+}
+
+/// Every float model the envelope bounds, at pixel `pixel` of a 160 px canvas (centre
+/// 1/2), noperspective, lands within the envelope's far bound of the exact value in both
+/// channels; gives the models checked.
+fn enveloped_models_inside_far(
+    setup: &rasterproof::interp::values::ValueSetup,
+    tri: &rasterproof::interp::float::FloatTriangle,
+    pixel: (u32, u32),
+) -> Vec<rasterproof::interp::float::FloatInterpolator> {
+    use rasterproof::geom::Point;
+    use rasterproof::interp::envelope::value_envelope;
+    use rasterproof::interp::float::FloatInterpolator;
+    use rasterproof::interp::values::{Interpolation, ProvokingVertex};
+    let centre = |c: u32| num_rational::BigRational::new((2 * i64::from(c) + 1).into(), 2.into());
+    let p = Point::new(centre(pixel.0), centre(pixel.1));
+    let exact = setup
+        .value(Interpolation::NoPerspective, ProvokingVertex::First, 0..2, &p)
+        .unwrap();
+    let bounds = value_envelope(setup, Interpolation::NoPerspective, 0..2, &p, 160);
+    let models: Vec<FloatInterpolator> = FloatInterpolator::all()
+        .into_iter()
+        .filter(FloatInterpolator::enveloped)
+        .collect();
+    for model in &models {
+        for ch in 0..2 {
+            let v = model.value(
+                tri,
+                Interpolation::NoPerspective,
+                ProvokingVertex::First,
+                ch,
+                pixel,
+                160,
+                0.5,
+            );
+            let d = distance(v, &exact[ch]).unwrap();
+            let bound = bounds[ch].far.unwrap();
+            assert!(d <= bound, "{} channel {ch}: {d} beyond {bound}", model.name());
+        }
+    }
+    models
+}
+
 /// `|v - exact|` for a finite `v`; `None` for an infinity or NaN.
 fn distance(v: f32, exact: &num_rational::BigRational) -> Option<f64> {
     let v = num_rational::BigRational::from_float(f64::from(v))?;
@@ -282,42 +336,8 @@ fn distance(v: f32, exact: &num_rational::BigRational) -> Option<f64> {
 /// their absolute values.
 #[test]
 fn fuzz_case_08_barycentrics_whose_denominator_cancels() {
-    use rasterproof::geom::Point;
-    use rasterproof::interp::envelope::value_envelope;
-    use rasterproof::interp::float::FloatInterpolator;
-    use rasterproof::interp::values::{Interpolation, ProvokingVertex};
-    let (setup, tri) = values_case(
-        [(32660, 32767), (32767, 32767), (8447, 29752)],
-        [(2, 1), (2, 1), (1, 2)],
-        [[8653, -14395], [-3588, 12760], [-15960, 8408]],
-    );
-    let p = Point::new(
-        num_rational::BigRational::new(385.into(), 2.into()),
-        num_rational::BigRational::new(159.into(), 2.into()),
-    );
-    let exact = setup
-        .value(Interpolation::NoPerspective, ProvokingVertex::First, 0..2, &p)
-        .unwrap();
-    let bounds = value_envelope(&setup, Interpolation::NoPerspective, 0..2, &p, 160);
-    for model in FloatInterpolator::all()
-        .into_iter()
-        .filter(FloatInterpolator::enveloped)
-    {
-        for ch in 0..2 {
-            let v = model.value(
-                &tri,
-                Interpolation::NoPerspective,
-                ProvokingVertex::First,
-                ch,
-                (192, 79),
-                160,
-                0.5,
-            );
-            let d = distance(v, &exact[ch]).unwrap();
-            let bound = bounds[ch].far.unwrap();
-            assert!(d <= bound, "{} channel {ch}: {d} beyond {bound}", model.name());
-        }
-    }
+    let (setup, tri) = case_08_triangle();
+    enveloped_models_inside_far(&setup, &tri, (192, 79));
 }
 
 /// Found by values_invariants: a sliver 1/256 px wide at the origin reaching (89.5,
@@ -378,45 +398,12 @@ fn fuzz_case_09_an_area_f32_cannot_tell_from_zero() {
 /// anchored at either corner.
 #[test]
 fn fuzz_case_10_an_origin_plane_anchored_at_the_bottom_left() {
-    use rasterproof::geom::Point;
-    use rasterproof::interp::envelope::value_envelope;
-    use rasterproof::interp::float::FloatInterpolator;
-    use rasterproof::interp::values::{Interpolation, ProvokingVertex};
-    let (setup, tri) = values_case(
-        [(32660, 32767), (32767, 32767), (8447, 29752)],
-        [(2, 1), (2, 1), (1, 2)],
-        [[8653, -14395], [-3588, 12760], [-15960, 8408]],
+    let (setup, tri) = case_08_triangle();
+    let checked = enveloped_models_inside_far(&setup, &tri, (32, 79));
+    assert!(
+        checked.iter().any(|m| m.y_up),
+        "the y-up models are among those checked"
     );
-    let p = Point::new(
-        num_rational::BigRational::new(65.into(), 2.into()),
-        num_rational::BigRational::new(159.into(), 2.into()),
-    );
-    let exact = setup
-        .value(Interpolation::NoPerspective, ProvokingVertex::First, 0..2, &p)
-        .unwrap();
-    let bounds = value_envelope(&setup, Interpolation::NoPerspective, 0..2, &p, 160);
-    let mut y_up = 0;
-    for model in FloatInterpolator::all()
-        .into_iter()
-        .filter(FloatInterpolator::enveloped)
-    {
-        y_up += usize::from(model.y_up);
-        for ch in 0..2 {
-            let v = model.value(
-                &tri,
-                Interpolation::NoPerspective,
-                ProvokingVertex::First,
-                ch,
-                (32, 79),
-                160,
-                0.5,
-            );
-            let d = distance(v, &exact[ch]).unwrap();
-            let bound = bounds[ch].far.unwrap();
-            assert!(d <= bound, "{} channel {ch}: {d} beyond {bound}", model.name());
-        }
-    }
-    assert!(y_up > 0, "the y-up models are among those checked");
 }
 
 /// Found by values_invariants once it checked the f64 filter (`FastPlan`): vertices 1 and 2

@@ -704,18 +704,7 @@ impl Renderer {
             .flat_map(|v| v.to_le_bytes())
             .collect();
         self.gpu.queue.write_buffer(&params, 0, &param_words);
-        let storage = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("words"),
-            size: bytes,
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
-            mapped_at_creation: false,
-        });
-        let readback = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("read-back"),
-            size: bytes,
-            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let out = ReadOut::new(device, bytes);
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("read"),
             layout: &self.read.get_bind_group_layout(0),
@@ -730,7 +719,7 @@ impl Renderer {
                 },
                 wgpu::BindGroupEntry {
                     binding: 2,
-                    resource: storage.as_entire_binding(),
+                    resource: out.storage.as_entire_binding(),
                 },
                 wgpu::BindGroupEntry {
                     binding: 3,
@@ -779,21 +768,68 @@ impl Renderer {
                 pass.draw(0..count, 0..1);
             }
         }
+        Ok(out
+            .read(
+                device,
+                &self.gpu.queue,
+                encoder,
+                (&self.read, &bind_group),
+                (w, h, samples),
+            )?
+            .into_iter()
+            .map(u32::from_le_bytes)
+            .collect())
+    }
+}
+
+/// Where a read pass writes what it reads of the targets (`storage`) and the buffer it is
+/// copied to for mapping (`readback`): both modes read their targets this way.
+struct ReadOut {
+    storage: wgpu::Buffer,
+    readback: wgpu::Buffer,
+    bytes: u64,
+}
+
+impl ReadOut {
+    fn new(device: &wgpu::Device, bytes: u64) -> ReadOut {
+        let buffer = |label, usage| {
+            device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size: bytes,
+                usage,
+                mapped_at_creation: false,
+            })
+        };
+        ReadOut {
+            storage: buffer("read", wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC),
+            readback: buffer("read-back", wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST),
+            bytes,
+        }
+    }
+
+    /// Ends `encoder` with the read pass (`pipeline` and its bind group, one invocation per
+    /// pixel of `w` x `h` and sample), the copy to the read-back buffer; submits it and
+    /// gives the words read back.
+    fn read(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        mut encoder: wgpu::CommandEncoder,
+        (pipeline, bind_group): (&wgpu::ComputePipeline, &wgpu::BindGroup),
+        (w, h, samples): (u32, u32, u32),
+    ) -> Result<Vec<[u8; 4]>, String> {
         {
             let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
                 label: Some("read"),
                 timestamp_writes: None,
             });
-            pass.set_pipeline(&self.read);
-            pass.set_bind_group(0, &bind_group, &[]);
+            pass.set_pipeline(pipeline);
+            pass.set_bind_group(0, bind_group, &[]);
             pass.dispatch_workgroups(w.div_ceil(8), h.div_ceil(8), samples);
         }
-        encoder.copy_buffer_to_buffer(&storage, 0, &readback, 0, bytes);
-        self.gpu.queue.submit([encoder.finish()]);
-        Ok(read_back(device, &readback)?
-            .into_iter()
-            .map(u32::from_le_bytes)
-            .collect())
+        encoder.copy_buffer_to_buffer(&self.storage, 0, &self.readback, 0, self.bytes);
+        queue.submit([encoder.finish()]);
+        read_back(device, &self.readback)
     }
 }
 

@@ -694,18 +694,7 @@ impl ValuesRenderer {
         });
         let param_words: Vec<u8> = [w, h, 0, 0].iter().flat_map(|v| v.to_le_bytes()).collect();
         queue.write_buffer(&params, 0, &param_words);
-        let storage = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("values"),
-            size: bytes,
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
-            mapped_at_creation: false,
-        });
-        let readback = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("read-back"),
-            size: bytes,
-            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let out = super::ReadOut::new(device, bytes);
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("read values"),
             layout: &self.read_layout,
@@ -716,7 +705,7 @@ impl ValuesRenderer {
                 },
                 wgpu::BindGroupEntry {
                     binding: 1,
-                    resource: storage.as_entire_binding(),
+                    resource: out.storage.as_entire_binding(),
                 },
                 wgpu::BindGroupEntry {
                     binding: 2,
@@ -755,18 +744,8 @@ impl ValuesRenderer {
                 pass.draw(0..count, 0..1);
             }
         }
-        {
-            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                label: Some("read values"),
-                timestamp_writes: None,
-            });
-            pass.set_pipeline(&self.read);
-            pass.set_bind_group(0, &bind_group, &[]);
-            pass.dispatch_workgroups(w.div_ceil(8), h.div_ceil(8), samples);
-        }
-        encoder.copy_buffer_to_buffer(&storage, 0, &readback, 0, bytes);
-        queue.submit([encoder.finish()]);
-        Ok(super::read_back(device, &readback)?
+        Ok(out
+            .read(device, queue, encoder, (&self.read, &bind_group), (w, h, samples))?
             .into_iter()
             .map(f32::from_le_bytes)
             .collect())

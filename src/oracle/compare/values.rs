@@ -439,7 +439,7 @@ pub fn compare_values(
         let class = class.unwrap_or_else(|| {
             let exact = exact.as_ref().expect("computed when undecided");
             let at = plans.point(x, y, j.point);
-            let others = j.others.iter().map(|&p| plans.point(x, y, p)).collect();
+            let others = j.others().map(|p| plans.point(x, y, p)).collect();
             let context = Context {
                 setup,
                 at,
@@ -556,9 +556,18 @@ struct Judged {
     sample: usize,
     id: u32,
     point: usize,
-    /// The other points of the pixel a renderer might have taken instead (`at-sample`):
-    /// the primitive's other covered samples.
-    others: Vec<usize>,
+    /// The primitive's covered samples in the pixel (bit `k`: sample `k`; 0 with one
+    /// sample per pixel): the other points a renderer might have taken (`at-sample`).
+    mask: u64,
+}
+
+impl Judged {
+    /// The points (as [`Plans`] numbers them) of the primitive's other covered samples.
+    fn others(&self) -> impl Iterator<Item = usize> + '_ {
+        (0..64usize)
+            .filter(move |&k| self.mask >> k & 1 == 1 && 1 + k != self.point)
+            .map(|k| 1 + k)
+    }
 }
 
 /// Every covered sample, row by row, then by sample index, with the point its value is
@@ -582,7 +591,7 @@ fn judged_samples(
                 sample: 0,
                 id,
                 point: 0,
-                others: Vec::new(),
+                mask: 0,
             })
             .collect());
     };
@@ -605,17 +614,13 @@ fn judged_samples(
                 Sampling::Centroid if mask & all == all => 0,
                 Sampling::Centroid => 1 + mask.trailing_zeros() as usize,
             };
-            let others = (0..count)
-                .filter(|&k| mask >> k & 1 == 1 && 1 + k != point)
-                .map(|k| 1 + k)
-                .collect();
             out.push(Judged {
                 x,
                 y,
                 sample: s,
                 id,
                 point,
-                others,
+                mask,
             });
         }
     }
