@@ -128,8 +128,24 @@ proptest! {
             let fast = FastPlan::new(&t, interpolation, provoking, (f(&offset_point.x), f(&offset_point.y)));
             let mut out = [None];
             fast.nearest_f32(x, py, &mut out);
+            let nearest = plain.clone().map(|v| nearest_f32(&v));
             if let Some(decided) = out[0] {
-                prop_assert_eq!(Ok(Some(decided)), plain.clone().map(|v| nearest_f32(&v)));
+                prop_assert_eq!(Ok(Some(decided)), nearest.clone());
+            }
+            // Where it does not, the sign of the exact inputs, when it decides.
+            if let Some(decided) = fast.nearest_f32_exact(&setup, channel, x, py, 0) {
+                prop_assert_eq!(Ok(Some(decided)), nearest.clone());
+            }
+            // Four pixels at once: this one and three along its row and column.
+            let (xs, ys) = ([x, x + 1, x, x + 3], [py, py, py + 1, py + 2]);
+            let mut four = [[0.0f32; 4]; 4];
+            let undecided = fast.nearest_f32_x4(xs, ys, &mut four);
+            for i in 0..4 {
+                if undecided & (1 << i) == 0 {
+                    let at = Point::new(q(i64::from(xs[i]), 1) + &offset_point.x, q(i64::from(ys[i]), 1) + &offset_point.y);
+                    let exact = setup.value(interpolation, provoking, channel..channel + 1, &at).map(|v| nearest_f32(&v[0]));
+                    prop_assert_eq!(Ok(Some(four[0][i])), exact, "lane {}", i);
+                }
             }
         }
         // Within a bound of an f32 a few steps from the nearest: both ways of deciding.
@@ -185,7 +201,7 @@ fn the_f64_filter_decides_plain_values_and_leaves_midpoints() {
     let mid = q((1 << 24) + 1, 1 << 24);
     let above = &mid + BigRational::new(1.into(), num_bigint::BigInt::from(1) << 70);
     for v in [mid, above] {
-        let s = setup([v.clone(), v.clone(), v], [q(1, 1), q(1, 1), q(1, 1)]);
+        let s = setup([v.clone(), v.clone(), v.clone()], [q(1, 1), q(1, 1), q(1, 1)]);
         let fast = FastPlan::new(
             &TriangleF64::of(&s, 0..1).unwrap(),
             Interpolation::Smooth,
@@ -195,6 +211,12 @@ fn the_f64_filter_decides_plain_values_and_leaves_midpoints() {
         let mut out = [Some(0.0)];
         fast.nearest_f32(2, 3, &mut out);
         assert_eq!(out, [None]);
+        let mut four = [[0.0; 4]; 4];
+        assert_eq!(fast.nearest_f32_x4([2, 3, 4, 5], [3, 3, 3, 3], &mut four), 0b1111);
+        // The exact inputs' sign decides: the midpoint itself ties to even (1), the value
+        // 2^-70 above it rounds up.
+        let expected = if v == q((1 << 24) + 1, 1 << 24) { 1.0 } else { 1.0 + f32::EPSILON };
+        assert_eq!(fast.nearest_f32_exact(&s, 0, 2, 3, 0), Some(expected));
     }
     let s = setup([q(1, 3), q(-7, 3), q(100, 3)], [q(1, 1), q(3, 1), q(1, 4)]);
     for interpolation in [Interpolation::Smooth, Interpolation::NoPerspective] {
@@ -216,6 +238,10 @@ fn the_f64_filter_decides_plain_values_and_leaves_midpoints() {
                     assert_eq!(Some(f), nearest_f32(&exact[0]), "({x}, {y}) {interpolation:?}");
                     decided += 1;
                 }
+                // The uniform bound alone decides every covered pixel here too.
+                let mut four = [[0.0; 4]; 4];
+                assert_eq!(fast.nearest_f32_x4([x; 4], [y; 4], &mut four), 0, "({x}, {y})");
+                assert_eq!(Some(four[0][0]), nearest_f32(&exact[0]));
             }
         }
         assert_eq!(decided, inside, "{interpolation:?}");

@@ -105,7 +105,8 @@ fn diff(a: Input, b: Input) -> (f64, f64) {
 }
 
 /// A window-space triangle as the bound sees it: positions and, per vertex, the function
-/// interpolated (a value, `f / w` or `1 / w`), each with its absolute-value companion.
+/// interpolated (a value, `f / w` or `1 / w`), each with its absolute-value companion; and
+/// what of `S` does not depend on the point, worked out once ([`Plane::new`]).
 #[derive(Debug, Clone)]
 struct Plane {
     x: [Input; 3],
@@ -114,34 +115,72 @@ struct Plane {
     /// The canvas's height: a GL renderer's framebuffer origin is its lower left corner,
     /// `(0, H)` in the scene's window coordinates.
     height: f64,
+    /// `None` where f32 bounds nothing at any point (a degenerate area).
+    gradient: Option<Gradient>,
+}
+
+/// A plane's gradient and the absolute-value sums of its computation.
+#[derive(Debug, Clone, Copy)]
+struct Gradient {
+    /// Twice the signed area.
+    area: f64,
+    gx: f64,
+    gy: f64,
+    /// The gradient's absolute-value sums, the denominator's error included.
+    sx: f64,
+    sy: f64,
 }
 
 impl Plane {
+    fn new(x: [Input; 3], y: [Input; 3], g: [f64; 3], height: f64) -> Plane {
+        let gradient = (|| {
+            let (dx1, ax1) = diff(x[1], x[0]);
+            let (dx2, ax2) = diff(x[2], x[0]);
+            let (dy1, ay1) = diff(y[1], y[0]);
+            let (dy2, ay2) = diff(y[2], y[0]);
+            let area = dx1 * dy2 - dx2 * dy1;
+            if area == 0.0 || !area.is_finite() {
+                return None;
+            }
+            let area_abs = ax1 * ay2 + ax2 * ay1;
+            // An area f32 cannot tell from zero: a plane's gradient may be infinite.
+            if gamma() * area_abs >= area.abs() {
+                return None;
+            }
+            let (dg1, ag1) = (g[1] - g[0], g[1].abs() + g[0].abs());
+            let (dg2, ag2) = (g[2] - g[0], g[2].abs() + g[0].abs());
+            let nx = dg1 * dy2 - dg2 * dy1;
+            let ny = dx1 * dg2 - dx2 * dg1;
+            let (gx, gy) = (nx / area, ny / area);
+            Some(Gradient {
+                area,
+                gx,
+                gy,
+                sx: (ag1 * ay2 + ag2 * ay1 + gx.abs() * area_abs) / area.abs(),
+                sy: (ax1 * ag2 + ax2 * ag1 + gy.abs() * area_abs) / area.abs(),
+            })
+        })();
+        Plane {
+            x,
+            y,
+            g,
+            height,
+            gradient,
+        }
+    }
+
     /// `S` of the function at `p` (module docs), the largest over the forms, without and
     /// with the origin-anchored plane; and the exact function's value there (f64).
     fn abs_sum(&self, p: (Input, Input)) -> Option<(f64, f64, f64)> {
         let (x, y, g) = (&self.x, &self.y, &self.g);
-        let (dx1, ax1) = diff(x[1], x[0]);
-        let (dx2, ax2) = diff(x[2], x[0]);
-        let (dy1, ay1) = diff(y[1], y[0]);
-        let (dy2, ay2) = diff(y[2], y[0]);
-        let area = dx1 * dy2 - dx2 * dy1;
-        if area == 0.0 || !area.is_finite() {
-            return None;
-        }
-        let area_abs = ax1 * ay2 + ax2 * ay1;
-        // An area f32 cannot tell from zero: a plane's gradient may be infinite.
-        if gamma() * area_abs >= area.abs() {
-            return None;
-        }
-        let (dg1, ag1) = (g[1] - g[0], g[1].abs() + g[0].abs());
-        let (dg2, ag2) = (g[2] - g[0], g[2].abs() + g[0].abs());
-        let nx = dg1 * dy2 - dg2 * dy1;
-        let ny = dx1 * dg2 - dx2 * dg1;
-        let (gx, gy) = (nx / area, ny / area);
-        // The gradient's absolute-value sums, the denominator's error included.
-        let sx = (ag1 * ay2 + ag2 * ay1 + gx.abs() * area_abs) / area.abs();
-        let sy = (ax1 * ag2 + ax2 * ag1 + gy.abs() * area_abs) / area.abs();
+        let Gradient {
+            area,
+            gx,
+            gy,
+            sx,
+            sy,
+            ..
+        } = self.gradient?;
         let value = g[0] + gx * (p.0.v - x[0].v) + gy * (p.1.v - y[0].v);
         // A plane anchored at vertex j: g_j + g_x (p_x - x_j) + g_y (p_y - y_j).
         let anchored = |j: usize| {
@@ -267,12 +306,7 @@ impl EnvelopeSetup {
                 }
                 let pos = |i: usize, c: usize| Input::of(&(&t.h[i][c] / &t.h[i][2]));
                 let (x, y) = ([0, 1, 2].map(|i| pos(i, 0)), [0, 1, 2].map(|i| pos(i, 1)));
-                let plane = |g: [f64; 3]| Plane {
-                    x,
-                    y,
-                    g,
-                    height: f64::from(height),
-                };
+                let plane = |g: [f64; 3]| Plane::new(x, y, g, f64::from(height));
                 if interpolation == Interpolation::NoPerspective {
                     each(&|k| Kind::Linear(plane([0, 1, 2].map(|i| value(i, k)))))
                 } else {

@@ -346,6 +346,8 @@ pub struct TriangleF64 {
     pub y: [f64; 3],
     /// The vertices' clip-space w (1 without perspective).
     pub w: [f64; 3],
+    /// `1 / w` of each vertex, rounded (set up once, as a renderer keeps it).
+    pub r: [f64; 3],
     /// Per vertex, the channels set up (the first of them at index 0; at most four, the
     /// rest 0).
     pub values: [[f64; FAST_CHANNELS]; 3],
@@ -388,6 +390,7 @@ impl TriangleF64 {
             x,
             y,
             w,
+            r: w.map(|w| 1.0 / w),
             values,
             channels: channels.len(),
         })
@@ -405,36 +408,52 @@ fn gamma(n: f64) -> f64 {
 const FAST_ROUNDINGS: f64 = 16.0;
 
 /// A triangle's values at the points `(x + o_x, y + o_y)` of pixels `(x, y)` set up in f64
-/// arithmetic from the nearest-f64 inputs ([`TriangleF64`]), with an error bound that
-/// decides the nearest f32 of the exact value at most pixels for the cost of a few float
-/// operations, and says when it cannot ([`FastPlan::nearest_f32`] gives `None`; the exact
-/// [`PlannedValue`] decides those).
+/// arithmetic from the nearest-f64 inputs ([`TriangleF64`]), with error bounds that
+/// decide the nearest f32 of the exact value at almost every pixel for the cost of a few
+/// float operations, and say when they cannot ([`FastPlan::nearest_f32`] gives `None`:
+/// [`FastPlan::nearest_f32_exact`] decides nearly all of those from the exact inputs by one
+/// sign, and the exact [`PlannedValue`] the rest).
 ///
 /// The value is `N / D` with `N = sum g_i E_i(p)` and `D = sum r_i E_i(p)`, `E_i` the
 /// edge function opposite vertex `i` (cyclically, `E_0(p) = (x_1 - p_x)(y_2 - p_y) -
 /// (x_2 - p_x)(y_1 - p_y)`), and `r_i = 1 / w_i`, `g_i = f_i / w_i` (`smooth`) or `r_i =
-/// 1`, `g_i = f_i` (`noperspective`). The plane is anchored at the integer point `(a_x,
-/// a_y)` at or below vertex 0 (its coordinates rounded down): the positions are taken
-/// relative to it, exactly (a position f64 cannot hold exactly, or one whose difference
-/// from the anchor it cannot, leaves every value to the exact path), so that the terms
-/// stay the size of the triangle wherever it lies on the canvas. Each `E_i` is written as
-/// `A_i x + B_i y + K_i` at pixel `(a_x + x, a_y + y)`, with `A_i = y_j - y_k`,
-/// `B_i = x_k - x_j` and `K_i = x_j y_k - x_k y_j + A_i o_x + B_i o_y` in relative
-/// coordinates.
+/// 1`, `g_i = f_i` (`noperspective`), every `r_i` and `g_i` negated when the triangle is
+/// clockwise (`N / D` is unchanged, and `D > 0` inside the triangle). The plane is
+/// anchored at the integer point `(a_x, a_y)` at or below vertex 0 (its coordinates
+/// rounded down): the positions are taken relative to it, exactly (a position f64 cannot
+/// hold exactly, or one whose difference from the anchor it cannot, leaves every value to
+/// the exact path), so that the terms stay the size of the triangle wherever it lies on
+/// the canvas. Each `E_i` is written as `A_i x + B_i y + K_i` at pixel `(a_x + x, a_y +
+/// y)`, with `A_i = y_j - y_k`, `B_i = x_k - x_j` and `K_i = x_j y_k - x_k y_j + A_i o_x +
+/// B_i o_y` in relative coordinates.
 ///
-/// **The bound.** Every computed number is the exact one's polynomial (or reciprocal) in
-/// the inputs, each monomial perturbed by at most `m` factors `(1 + δ)`, `|δ| <= u = 2^-53`:
-/// an input 1, `r_i` 2, `g_i` 4, `A_i` and `B_i` 2, `K_i` 6, the coefficients `sum g_i K_i`
-/// 13, and the value of `N` at a pixel (`x` and `y` exact integers) 15. So `|N' - N| <= γ_16
-/// S_N`, `S_N` the same computation on absolute values (lemma 3.3 and section 3.1 of
-/// Higham's book), here bounded in closed form: with `X >= |x_i|, |x|` and `Y >= |y_i|,
-/// |y|` (vertices and pixel, relative to the anchor), `|o| <= 1`, every `|A_i| |x| + |B_i| |y| + |K_i|` term is at
-/// most `T = 6 X Y + 2 X + 2 Y`, so `S_N <= T sum |g_i|` and `S_D <= T sum |r_i|`. Then, at
-/// a pixel where `|D'| > 1024 e_D`: `|N' / D' - N / D| <= (e_N + |N / D| e_D) / |D'|`, and
-/// the computed quotient `N' * fl(1 / D')` adds two roundings; solved for the error `E`,
-/// `E <= (e_N + |v'| e_D) Q + 8 u |v'|` with `Q = |fl(1 / D')| (1024 / 1023)(1 + 2u)`, widened
-/// by `(1 + 8 u)` for its own arithmetic. Round-to-nearest is monotone, so when `v' - E` and
-/// `v' + E` round to the same f32 the exact value does too.
+/// **The bound at a pixel.** Every computed number is the exact one's polynomial (or
+/// reciprocal) in the inputs, each monomial perturbed by at most `m` factors `(1 + δ)`,
+/// `|δ| <= u = 2^-53`: an input 1, `r_i` 2, `g_i` 4, `A_i` and `B_i` 2, `K_i` 6, the
+/// coefficients `sum g_i K_i` 13, and the value of `N` at a pixel (`x` and `y` exact
+/// integers) 15. So `|N' - N| <= γ_16 S_N`, `S_N` the same computation on absolute values
+/// (lemma 3.3 and section 3.1 of Higham's book), here bounded in closed form: with `X >=
+/// |x_i|, |x|` and `Y >= |y_i|, |y|` (vertices and pixel, relative to the anchor), `|o| <=
+/// 1`, every `|A_i| |x| + |B_i| |y| + |K_i|` term is at most `T = 6 X Y + 2 X + 2 Y`, so
+/// `S_N <= T sum |g_i|` (`e_N`, a constant of the triangle) and `S_D <= T sum |r_i|`
+/// (`e_D`). Then, at a pixel where `|D'| > 1024 e_D`: `|N' / D' - N / D| <= (e_N + |N / D|
+/// e_D) / |D'|`, and the computed quotient `N' * fl(1 / D')` adds two roundings; solved for
+/// the error `E`, `E <= (e_N + |v'| e_D) Q + 8 u |v'|` with `Q = |fl(1 / D')| (1024 /
+/// 1023)(1 + 2u)`, widened by `(1 + 8 u)` for its own arithmetic. Round-to-nearest is
+/// monotone, so when `v' - E` and `v' + E` round to the same f32 the exact value does too.
+///
+/// **The uniform bound**, tried first at every pixel. The bound above is largest where
+/// `|D'|` is smallest and `|v'|` largest, so over the pixels where `D' >= F` (a floor set
+/// up per triangle, at least `1024 e_D`) and `|v'| <= V_c` (per channel) it is at most
+/// `U_c = ((e_N + V_c e_D)(1 / F)(1 + u)(1024 / 1023)(1 + 2u) + 8 u V_c)(1 + 8u)`, widened
+/// by `(1 + 16 u)` for the roundings of its own set-up (`fl(1 / D') <= (1 / F)(1 + u)`
+/// when `D' >= F`). A pixel meeting both tests is decided when `v' - U_c` and `v' + U_c`
+/// round alike: two conversions and three comparisons a channel, no bound computed per
+/// pixel. The floor is half the smallest of `D`'s values at the vertices (`r_i` times
+/// twice the area: `D` is affine and its minimum over the triangle is at a vertex), and
+/// `V_c` twice the largest `|f_i|` of the channel (inside the triangle the value is in
+/// the vertices' hull), so the pixels a triangle covers pass both tests; any other pixel
+/// falls back to the bound at the pixel, which holds wherever `|D'| > 1024 e_D`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FastPlan {
     form: FastForm,
@@ -450,17 +469,32 @@ enum FastForm {
     Undecided(usize),
     /// Per channel the decided f32 (`None`: the exact value decides).
     Constant([Option<f32>; FAST_CHANNELS], usize),
-    Ratio {
-        /// `D`'s coefficients `[a, b, k]` at integer pixel coordinates.
-        d: [f64; 3],
-        /// `D`'s error bound.
-        e_d: f64,
-        /// Per channel, `N`'s coefficients.
-        n: [[f64; 3]; FAST_CHANNELS],
-        /// Per channel, `N`'s error bound.
-        e_n: [f64; FAST_CHANNELS],
-        channels: usize,
-    },
+    Ratio(FastRatio),
+}
+
+/// `N / D`'s coefficients and bounds (see [`FastPlan`]).
+#[derive(Debug, Clone, PartialEq)]
+struct FastRatio {
+    /// `D`'s coefficients `[a, b, k]` at integer pixel coordinates.
+    d: [f64; 3],
+    /// `D`'s error bound.
+    e_d: f64,
+    /// Per channel, `N`'s coefficients.
+    n: [[f64; 3]; FAST_CHANNELS],
+    /// Per channel, `N`'s error bound.
+    e_n: [f64; FAST_CHANNELS],
+    channels: usize,
+    /// The uniform bound's floor `F` on `D'`.
+    floor: f64,
+    /// Per channel the uniform bound `U_c`, and the largest `|v'|` it holds for, `V_c`.
+    uniform: [f64; FAST_CHANNELS],
+    most: [f64; FAST_CHANNELS],
+    /// What the exact sign needs: the offset in the pixel, the vertices relative to the
+    /// anchor (exact), and whether `r_i = 1 / w_i`.
+    offset: (f64, f64),
+    x: [f64; 3],
+    y: [f64; 3],
+    smooth: bool,
 }
 
 /// The channels a fast plan decides (a vec4's); more leave every value to the exact path.
@@ -484,10 +518,27 @@ fn exact_difference(a: f64, b: f64) -> Option<f64> {
     (e == 0.0 && s.is_finite()).then_some(s)
 }
 
+/// The largest integer at most `v` (`f64::floor` without the library call where a
+/// conversion does it: below 2^62 in magnitude).
+#[inline]
+fn floor(v: f64) -> f64 {
+    if v.abs() < 4_611_686_018_427_387_904.0 {
+        #[allow(clippy::cast_possible_truncation, clippy::cast_precision_loss)] // |v| < 2^62: exact
+        let t = v as i64 as f64;
+        if t > v {
+            t - 1.0
+        } else {
+            t
+        }
+    } else {
+        v.floor()
+    }
+}
+
 impl FastPlan {
     /// The plan of `t`'s channels under `interpolation` (`provoking` for `flat`) at
-    /// offset `offset` in each pixel (each coordinate of magnitude at most 1), for pixels
-    /// within 2 px of the triangle's bounding box (others: `None` from
+    /// offset `offset` in each pixel (each coordinate of magnitude at most 1, exact in
+    /// f64), for pixels within 2 px of the triangle's bounding box (others: `None` from
     /// [`FastPlan::nearest_f32`]).
     pub fn new(
         t: &TriangleF64,
@@ -496,7 +547,7 @@ impl FastPlan {
         offset: (f64, f64),
     ) -> FastPlan {
         let channels = t.channels;
-        let anchor = (t.x[0].floor(), t.y[0].floor());
+        let anchor = (floor(t.x[0]), floor(t.y[0]));
         let relative = |c: &[f64; 3], a: f64| -> Option<[f64; 3]> {
             Some([
                 exact_difference(c[0], a)?,
@@ -504,19 +555,20 @@ impl FastPlan {
                 exact_difference(c[2], a)?,
             ])
         };
+        let undecided = FastPlan {
+            form: FastForm::Undecided(channels),
+            anchor,
+            limit: (0.0, 0.0),
+        };
         let (Some(x), Some(y), true) = (
             relative(&t.x, anchor.0),
             relative(&t.y, anchor.1),
             channels <= FAST_CHANNELS,
         ) else {
-            return FastPlan {
-                form: FastForm::Undecided(channels),
-                anchor,
-                limit: (0.0, 0.0),
-            };
+            return undecided;
         };
-        let most = |c: &[f64; 3]| c.iter().fold(0.0f64, |m, v| m.max(v.abs())) + 2.0;
-        let limit = (most(&x), most(&y));
+        let most_of = |c: &[f64; 3]| c[0].abs().max(c[1].abs()).max(c[2].abs()) + 2.0;
+        let limit = (most_of(&x), most_of(&y));
         if interpolation == Interpolation::Flat {
             let v = &t.values[provoking.vertex(3)];
             let mut each = [None; FAST_CHANNELS];
@@ -529,19 +581,16 @@ impl FastPlan {
                 limit: (f64::INFINITY, f64::INFINITY),
             };
         }
-        let (x, y) = (&x, &y);
         // A triangle without area has no value (the plain definition's `Degenerate`), though
         // N / D may be finite off its line: leave every value to the exact path unless the
         // area's sign is certain (exact positions: three roundings).
         let (p, q) = ((x[1] - x[0]) * (y[2] - y[0]), (x[2] - x[0]) * (y[1] - y[0]));
-        let certain = (p - q).abs() > gamma(4.0) * (p.abs() + q.abs()) * 2.0;
+        let area2 = p - q;
+        let certain = area2.abs() > gamma(4.0) * (p.abs() + q.abs()) * 2.0;
         if !certain {
-            return FastPlan {
-                form: FastForm::Undecided(channels),
-                anchor,
-                limit: (0.0, 0.0),
-            };
+            return undecided;
         }
+        let sign = if area2 < 0.0 { -1.0 } else { 1.0 };
         let (ox, oy) = offset;
         let mut a = [0.0; 3];
         let mut b = [0.0; 3];
@@ -554,9 +603,9 @@ impl FastPlan {
         }
         let smooth = interpolation == Interpolation::Smooth;
         let r = if smooth {
-            [1.0 / t.w[0], 1.0 / t.w[1], 1.0 / t.w[2]]
+            [sign * t.r[0], sign * t.r[1], sign * t.r[2]]
         } else {
-            [1.0; 3]
+            [sign; 3]
         };
         let combine = |weight: &[f64; 3]| -> [f64; 3] {
             let c = |coefficient: &[f64; 3]| {
@@ -570,29 +619,45 @@ impl FastPlan {
         let scale = gamma(FAST_ROUNDINGS) * terms * (1.0 + 1.0 / 1_099_511_627_776.0);
         let d = combine(&r);
         let e_d = scale * (r[0].abs() + r[1].abs() + r[2].abs());
-        let mut n = [[0.0; 3]; FAST_CHANNELS];
-        let mut e_n = [0.0; FAST_CHANNELS];
+        // The uniform bound's floor: half D's least value at a vertex, `r_i |2 A|`.
+        let least = r[0].abs().min(r[1].abs()).min(r[2].abs());
+        let floor_d = (0.5 * area2.abs() * least).max(1024.0 * e_d);
+        let q_most = (1.0 / floor_d) * (1.0 + U) * (1024.0 / 1023.0) * (1.0 + 2.0 * U);
+        let mut ratio = FastRatio {
+            d,
+            e_d,
+            n: [[0.0; 3]; FAST_CHANNELS],
+            e_n: [0.0; FAST_CHANNELS],
+            channels,
+            floor: floor_d,
+            uniform: [0.0; FAST_CHANNELS],
+            most: [0.0; FAST_CHANNELS],
+            offset,
+            x,
+            y,
+            smooth,
+        };
         for c in 0..channels {
-            let g = [t.values[0][c] * r[0], t.values[1][c] * r[1], t.values[2][c] * r[2]];
-            n[c] = combine(&g);
-            e_n[c] = scale * (g[0].abs() + g[1].abs() + g[2].abs());
+            let f = [t.values[0][c], t.values[1][c], t.values[2][c]];
+            let g = [f[0] * r[0], f[1] * r[1], f[2] * r[2]];
+            ratio.n[c] = combine(&g);
+            let e_n = scale * (g[0].abs() + g[1].abs() + g[2].abs());
+            ratio.e_n[c] = e_n;
+            let most = 2.0 * f[0].abs().max(f[1].abs()).max(f[2].abs());
+            ratio.most[c] = most;
+            ratio.uniform[c] = ((e_n + most * e_d) * q_most + 8.0 * U * most) * (1.0 + 8.0 * U) * (1.0 + 16.0 * U);
         }
         FastPlan {
-            form: FastForm::Ratio {
-                d,
-                e_d,
-                n,
-                e_n,
-                channels,
-            },
+            form: FastForm::Ratio(ratio),
             anchor,
             limit,
         }
     }
 
     /// Every channel's exact value at pixel `(x, y)` rounded to the nearest f32, into
-    /// `out` (one per channel), where the bound decides it; `None` where it does not (the
-    /// exact value must decide: [`PlannedValue::nearest_f32`]).
+    /// `out` (one per channel), where a bound decides it; `None` where none does (the
+    /// exact inputs must decide: [`FastPlan::nearest_f32_exact`], then
+    /// [`PlannedValue::nearest_f32`]).
     ///
     /// # Panics
     /// When `out` is shorter than the plan's channels.
@@ -603,29 +668,183 @@ impl FastPlan {
         match &self.form {
             FastForm::Undecided(channels) => out[..*channels].fill(None),
             FastForm::Constant(each, channels) => out[..*channels].copy_from_slice(&each[..*channels]),
-            FastForm::Ratio {
-                d,
-                e_d,
-                n,
-                e_n,
-                channels,
-            } => {
-                let dv = d[0] * xf + d[1] * yf + d[2];
-                // A NaN denominator fails the last test too.
-                let far_enough = dv.abs() > 1024.0 * e_d;
-                if xf.abs() > self.limit.0 || yf.abs() > self.limit.1 || !far_enough {
-                    out[..*channels].fill(None);
+            FastForm::Ratio(r) => {
+                let out = &mut out[..r.channels];
+                if xf.abs() > self.limit.0 || yf.abs() > self.limit.1 {
+                    out.fill(None);
                     return;
                 }
-                let inv = 1.0 / dv;
-                let q = inv.abs() * (1024.0 / 1023.0) * (1.0 + 2.0 * U);
-                let p = e_d * q + 8.0 * U;
-                for ((o, c), e_n) in out[..*channels].iter_mut().zip(n).zip(e_n) {
-                    let v = (c[0] * xf + c[1] * yf + c[2]) * inv;
-                    let e = (v.abs() * p + e_n * q) * (1.0 + 8.0 * U);
-                    *o = decided(v - e, v + e);
+                let dv = r.d[0] * xf + r.d[1] * yf + r.d[2];
+                if dv >= r.floor {
+                    // The uniform bound (type docs).
+                    let inv = 1.0 / dv;
+                    let mut all = true;
+                    for (c, o) in out.iter_mut().enumerate() {
+                        let n = &r.n[c];
+                        let v = (n[0] * xf + n[1] * yf + n[2]) * inv;
+                        let here = decided(v - r.uniform[c], v + r.uniform[c]).filter(|_| v.abs() <= r.most[c]);
+                        all &= here.is_some();
+                        *o = here;
+                    }
+                    if all {
+                        return;
+                    }
+                }
+                for (c, o) in out.iter_mut().enumerate() {
+                    *o = r.interval(xf, yf, c).and_then(|(lo, hi)| decided(lo, hi));
                 }
             }
         }
+    }
+
+    /// [`FastPlan::nearest_f32`] at four pixels at once under the uniform bound alone
+    /// (its arithmetic in four lanes, which the compiler can run as vectors): channel `c`
+    /// of pixel `(x[i], y[i])` into `out[c][i]`, and a mask with bit `i` set where that
+    /// bound does not decide every channel of pixel `i` (ask [`FastPlan::nearest_f32`]
+    /// there).
+    #[inline]
+    pub fn nearest_f32_x4(&self, x: [u32; 4], y: [u32; 4], out: &mut [[f32; 4]; FAST_CHANNELS]) -> u8 {
+        let r = match &self.form {
+            FastForm::Ratio(r) => r,
+            FastForm::Undecided(_) => return 0xf,
+            FastForm::Constant(each, channels) => {
+                let mut all = true;
+                for (c, e) in each[..*channels].iter().enumerate() {
+                    out[c] = [e.unwrap_or(0.0); 4];
+                    all &= e.is_some();
+                }
+                return if all { 0 } else { 0xf };
+            }
+        };
+
+        let mut xf = [0.0; 4];
+        let mut yf = [0.0; 4];
+        for i in 0..4 {
+            xf[i] = f64::from(x[i]) - self.anchor.0;
+            yf[i] = f64::from(y[i]) - self.anchor.1;
+        }
+        let mut ok = [false; 4];
+        let mut inv = [0.0; 4];
+        for i in 0..4 {
+            let dv = r.d[0] * xf[i] + r.d[1] * yf[i] + r.d[2];
+            ok[i] = (dv >= r.floor) & (xf[i].abs() <= self.limit.0) & (yf[i].abs() <= self.limit.1);
+            inv[i] = 1.0 / dv;
+        }
+        for c in 0..r.channels.min(FAST_CHANNELS) {
+            let (n, u, most) = (r.n[c], r.uniform[c], r.most[c]);
+            for i in 0..4 {
+                let v = (n[0] * xf[i] + n[1] * yf[i] + n[2]) * inv[i];
+                #[allow(clippy::cast_possible_truncation)] // rounding to f32 is the point
+                let (lo, hi) = ((v - u) as f32, (v + u) as f32);
+                ok[i] &= (lo.to_bits() == hi.to_bits()) & (v.abs() <= most) & lo.is_finite();
+                out[c][i] = lo;
+            }
+        }
+        u8::from(!ok[0]) | u8::from(!ok[1]) << 1 | u8::from(!ok[2]) << 2 | u8::from(!ok[3]) << 3
+    }
+
+    /// Whether channel `channel`'s exact value at pixel `(x, y)` lies within `bound` of
+    /// `t`, where the bound at the pixel decides it (as [`PlannedValue::within`]); `None`
+    /// where it does not.
+    pub fn within(&self, x: u32, y: u32, channel: usize, t: f32, bound: f64) -> Option<bool> {
+        let (xf, yf) = (f64::from(x) - self.anchor.0, f64::from(y) - self.anchor.1);
+        let (lo, hi) = match &self.form {
+            FastForm::Ratio(r) if channel < r.channels && xf.abs() <= self.limit.0 && yf.abs() <= self.limit.1 => {
+                r.interval(xf, yf, channel)?
+            }
+            _ => return None,
+        };
+        // The exact value lies in [lo, hi]: |t - v| is at most the farther end's distance
+        // and at least the nearer's (0 inside), each difference rounded once.
+        let t = f64::from(t);
+        let (to_lo, to_hi) = ((t - lo).abs(), (t - hi).abs());
+        let farthest = to_lo.max(to_hi) * (1.0 + 2.0 * U);
+        let nearest = if lo <= t && t <= hi { 0.0 } else { to_lo.min(to_hi) * (1.0 - 2.0 * U) };
+        if !farthest.is_finite() {
+            None
+        } else if farthest <= bound {
+            Some(true)
+        } else if nearest > bound {
+            Some(false)
+        } else {
+            None
+        }
+    }
+
+    /// Channel `channel`'s exact value at pixel `(x, y)` rounded to the nearest f32, where
+    /// the bound at the pixel leaves exactly two neighbouring f32s of one sign, `a < b`:
+    /// then the exact value `v` rounds to `a` below their midpoint `m`, to `b` above it,
+    /// and to the even one at it, and the sign of `v - m = (N - m D) / D` decides, `N - m D
+    /// = sum (f_i - m) r_i E_i(p)` and `D`, computed exactly from `setup`'s rationals (the
+    /// window positions, which f64 holds exactly, and `p`, dyadic). `None` in any other
+    /// case (the caller asks [`PlannedValue::nearest_f32`]). `setup` must be the triangle
+    /// the plan was set up from, with `channel` counted from the plan's first channel at
+    /// `first` of `setup`'s.
+    pub fn nearest_f32_exact(&self, setup: &ValueSetup, first: usize, x: u32, y: u32, channel: usize) -> Option<f32> {
+        let (FastForm::Ratio(r), ValueSetup::Triangle(t)) = (&self.form, setup) else {
+            return None;
+        };
+        let (xf, yf) = (f64::from(x) - self.anchor.0, f64::from(y) - self.anchor.1);
+        if xf.abs() > self.limit.0 || yf.abs() > self.limit.1 || channel >= r.channels {
+            return None;
+        }
+        let (lo, hi) = r.interval(xf, yf, channel)?;
+        #[allow(clippy::cast_possible_truncation)] // rounding to f32 is the point
+        let (a, b) = (lo as f32, hi as f32);
+        let neighbours = a.is_finite()
+            && b.is_finite()
+            && a != 0.0
+            && b != 0.0
+            && (a > 0.0) == (b > 0.0)
+            && f32::from_bits(if a > 0.0 { a.to_bits() + 1 } else { a.to_bits() - 1 }) == b;
+        if !neighbours {
+            return None;
+        }
+        let m = BigRational::from_float((f64::from(a) + f64::from(b)) / 2.0)?;
+        let exact = BigRational::from_float;
+        let (px, py) = (exact(xf)? + exact(r.offset.0)?, exact(yf)? + exact(r.offset.1)?);
+        let each = |c: &[f64; 3]| Some([exact(c[0])?, exact(c[1])?, exact(c[2])?]);
+        let (vx, vy) = (each(&r.x)?, each(&r.y)?);
+        let (mut n, mut d) = (BigRational::zero(), BigRational::zero());
+        for i in 0..3 {
+            let (j, l) = ((i + 1) % 3, (i + 2) % 3);
+            let e = (&vx[j] - &px) * (&vy[l] - &py) - (&vx[l] - &px) * (&vy[j] - &py);
+            let re = if r.smooth { e / &t.h[i][2] } else { e };
+            n += (&t.values[i][first + channel] - &m) * &re;
+            d += re;
+        }
+        Some(match (n.signum() * d.signum()).cmp(&BigRational::zero()) {
+            std::cmp::Ordering::Less => a,
+            std::cmp::Ordering::Greater => b,
+            std::cmp::Ordering::Equal if d.is_zero() => return None,
+            std::cmp::Ordering::Equal => {
+                if a.to_bits() % 2 == 0 {
+                    a
+                } else {
+                    b
+                }
+            }
+        })
+    }
+}
+
+impl FastRatio {
+    /// Channel `c`'s certified interval at the relative pixel `(xf, yf)` under the bound
+    /// at the pixel ([`FastPlan`]), when `|D'|` is large enough for it.
+    #[inline]
+    fn interval(&self, xf: f64, yf: f64, c: usize) -> Option<(f64, f64)> {
+        let dv = self.d[0] * xf + self.d[1] * yf + self.d[2];
+        // A NaN denominator fails the test too.
+        let far_enough = dv.abs() > 1024.0 * self.e_d;
+        if !far_enough {
+            return None;
+        }
+        let inv = 1.0 / dv;
+        let q = inv.abs() * (1024.0 / 1023.0) * (1.0 + 2.0 * U);
+        let p = self.e_d * q + 8.0 * U;
+        let n = &self.n[c];
+        let v = (n[0] * xf + n[1] * yf + n[2]) * inv;
+        let e = (v.abs() * p + self.e_n[c] * q) * (1.0 + 8.0 * U);
+        Some((v - e, v + e))
     }
 }

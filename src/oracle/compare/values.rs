@@ -641,7 +641,7 @@ pub(crate) struct Plans<'a> {
     height: u32,
     /// Per point, its exact offset from the pixel's corner and how the envelope reads it.
     points: Vec<(Point, Offset)>,
-    plans: Vec<Option<Option<Plan>>>,
+    plans: Vec<Option<Option<Plan<'a>>>>,
 }
 
 /// How a plan's envelope takes its point from the pixel's coordinates.
@@ -656,10 +656,15 @@ enum Offset {
 }
 
 /// One primitive's channels at one point of the pixel: planned values and envelopes.
-pub(crate) struct Plan {
+pub(crate) struct Plan<'a> {
     /// The f64 filter that decides most nearest f32s in a few operations.
     fast: Option<FastPlan>,
-    values: Vec<PlannedValue>,
+    /// The exact planned values, set up where the filter first leaves a question open.
+    values: std::cell::OnceCell<Vec<PlannedValue>>,
+    setup: &'a ValueSetup,
+    interpolation: Interpolation,
+    provoking: ProvokingVertex,
+    channels: std::ops::Range<usize>,
     envelopes: Vec<EnvelopeSetup>,
     offset: Offset,
     exact_offset: Point,
@@ -692,12 +697,12 @@ impl<'a> Plans<'a> {
 
     /// Primitive `id`'s plan at pixel centres; `None` for a primitive that carries no
     /// values.
-    pub(crate) fn of(&mut self, id: u32) -> Option<&Plan> {
+    pub(crate) fn of(&mut self, id: u32) -> Option<&Plan<'a>> {
         self.of_at(id, 0)
     }
 
     /// Primitive `id`'s plan at point `point`.
-    fn of_at(&mut self, id: u32, point: usize) -> Option<&Plan> {
+    fn of_at(&mut self, id: u32, point: usize) -> Option<&Plan<'a>> {
         let (options, channels, height) = (self.options, &self.channels, self.height);
         let (offset, kind) = &self.points[point];
         let slot = id as usize * self.points.len() + point;
@@ -717,7 +722,11 @@ impl<'a> Plans<'a> {
                 });
                 Some(Plan {
                     fast,
-                    values: PlannedValue::channels_at(setup, interpolation, provoking, channels.clone(), offset),
+                    values: std::cell::OnceCell::new(),
+                    setup,
+                    interpolation,
+                    provoking,
+                    channels: channels.clone(),
                     envelopes: EnvelopeSetup::channels(setup, interpolation, channels.clone(), height),
                     offset: *kind,
                     exact_offset: offset.clone(),
@@ -736,25 +745,45 @@ impl<'a> Plans<'a> {
     }
 }
 
-impl Plan {
-    /// The exact values at pixel `(x, y)`.
-    pub(crate) fn exact(&self, x: u32, y: u32) -> Result<Vec<BigRational>, NoValue> {
-        self.values.iter().map(|v| v.exact(x, y)).collect()
+impl Plan<'_> {
+    /// The exact planned values, set up on first use.
+    fn values(&self) -> &[PlannedValue] {
+        self.values.get_or_init(|| {
+            PlannedValue::channels_at(
+                self.setup,
+                self.interpolation,
+                self.provoking,
+                self.channels.clone(),
+                &self.exact_offset,
+            )
+        })
     }
 
-    /// Each channel's exact value rounded to the nearest f32 at pixel `(x, y)`.
+    /// The exact values at pixel `(x, y)`.
+    pub(crate) fn exact(&self, x: u32, y: u32) -> Result<Vec<BigRational>, NoValue> {
+        self.values().iter().map(|v| v.exact(x, y)).collect()
+    }
+
+    /// Each channel's exact value rounded to the nearest f32 at pixel `(x, y)`: the f64
+    /// filter's, the exact inputs' sign where it leaves a question, the exact planned
+    /// value's where that does too.
     pub(crate) fn nearest(&self, x: u32, y: u32) -> Result<Vec<Option<f32>>, NoValue> {
+        let channels = self.channels.len();
         // A fast plan exists for at most four channels: its answers fit on the stack.
         let mut fast = [None; 4];
-        if let (Some(plan), Some(out)) = (&self.fast, fast.get_mut(..self.values.len())) {
+        if let (Some(plan), Some(out)) = (&self.fast, fast.get_mut(..channels)) {
             plan.nearest_f32(x, y, out);
         }
-        self.values
-            .iter()
-            .enumerate()
-            .map(|(c, v)| match fast.get(c).copied().flatten() {
-                Some(f) => Ok(Some(f)),
-                None => v.nearest_f32(x, y),
+        (0..channels)
+            .map(|c| {
+                let decided = fast.get(c).copied().flatten().or_else(|| {
+                    let plan = self.fast.as_ref()?;
+                    plan.nearest_f32_exact(self.setup, self.channels.start, x, y, c)
+                });
+                match decided {
+                    Some(f) => Ok(Some(f)),
+                    None => self.values()[c].nearest_f32(x, y),
+                }
             })
             .collect()
     }
@@ -792,7 +821,13 @@ impl Plan {
             }
             let envelope = self.envelope(c, x, y);
             let inside = |bound: Option<f64>| -> Result<bool, NoValue> {
-                bound.map_or(Ok(false), |b| self.values[c].within(x, y, t, b))
+                let Some(b) = bound else {
+                    return Ok(false);
+                };
+                match self.fast.as_ref().and_then(|f| f.within(x, y, c, t, b)) {
+                    Some(answer) => Ok(answer),
+                    None => self.values()[c].within(x, y, t, b),
+                }
             };
             let here = if inside(envelope.near)? {
                 ValueClass::F32
