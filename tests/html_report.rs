@@ -435,3 +435,90 @@ fn a_grey_hunts_index_and_tests() {
     let shown = text_of(&after, "explanation-01");
     assert!(shown.starts_with(line), "{shown}\nnot starting with\n{line}");
 }
+
+/// `compare --as values --html` on a real renderer's output (the committed lavapipe
+/// finding, a smooth centroid varying under 4x: three samples of pixel (1, 0) divided at
+/// the wrong point): the counts table names each class, sample indices with a value off
+/// are open, and `#sample=1&pixel=1,0` shows that sample's line of the text report, what
+/// its class means and the `explain` command that derives it. A one-sample page (the
+/// affine values of a smooth varying) explains its first pixel the same way.
+#[test]
+fn a_values_page_explains_a_pixels_class() {
+    let dir = tempdir::Dir::new("html-values");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/fixtures/wgpu-lavapipe-values");
+    let scene = root.join("01-w-at-centre-smooth-centroid-4x.json");
+    let theirs = root.join("01-w-at-centre-smooth-centroid-4x.tiff");
+    let (scene, theirs) = (scene.to_str().unwrap(), theirs.to_str().unwrap());
+    let page = dir.path().join("values.html");
+    let (code, json) = run(&[
+        "compare",
+        scene,
+        theirs,
+        "--html",
+        page.to_str().unwrap(),
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 1);
+    let report: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(report["counts"]["w-at-centre"], 3);
+    let html = std::fs::read_to_string(&page).unwrap();
+    for fetch in ["src=\"http", "href=\"http", "src=\"//", "@import"] {
+        assert!(!html.contains(fetch), "the page fetches something: {fetch}");
+    }
+    assert!(html.contains("<td class=\"class\">w-at-centre</td><td class=\"num\">3</td>"));
+    let (_, text) = run(&["compare", scene, theirs, "--limit", "10"]);
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("  (1, 0) sample 1 "))
+        .expect("sample 1 of pixel (1, 0) in the text report")
+        .trim();
+    let Some(browser) = chromium() else { return };
+    let after = dom(&browser, &page, "#sample=1&pixel=1,0");
+    assert_eq!(text_of(&after, "pixel-title-1"), "Pixel (1, 0)");
+    let shown = text_of(&after, "explanation-1");
+    assert!(
+        shown.starts_with(&format!("{line}\n\nw-at-centre: a smooth value divided")),
+        "{shown}"
+    );
+    assert!(shown.contains("rasterproof explain "), "{shown}");
+    assert_eq!(text_of(&after, "pixel-title-0"), "No pixel chosen");
+    assert!(after.contains("id=\"sample-1\" open"), "sample 1 has a value off");
+    assert!(!after.contains("id=\"sample-3\" open"), "sample 3 has none");
+
+    let smooth = Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/scenes/values-smooth.json");
+    let smooth_text = std::fs::read_to_string(&smooth).unwrap();
+    let affine_scene = dir.path().join("noperspective.json");
+    std::fs::write(&affine_scene, smooth_text.replace("\"smooth\"", "\"noperspective\"")).unwrap();
+    let affine = dir.path().join("affine.tiff");
+    let (code, _) = run(&[
+        "render",
+        affine_scene.to_str().unwrap(),
+        "--values-out",
+        affine.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0);
+    let page = dir.path().join("affine.html");
+    let smooth = smooth.to_str().unwrap();
+    let (code, json) = run(&[
+        "compare",
+        smooth,
+        affine.to_str().unwrap(),
+        "--html",
+        page.to_str().unwrap(),
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 1);
+    let report: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let first = &report["pixels"][0];
+    assert_eq!(first["class"], "affine");
+    let (x, y) = (first["x"].as_u64().unwrap(), first["y"].as_u64().unwrap());
+    let after = dom(&browser, &page, &format!("#pixel={x},{y}"));
+    assert_eq!(text_of(&after, "pixel-title"), format!("Pixel ({x}, {y})"));
+    let shown = text_of(&after, "explanation");
+    assert!(
+        shown.starts_with(&format!("({x}, {y}) primitive ")) && shown.contains("affine: the screen-linear value"),
+        "{shown}"
+    );
+}
