@@ -73,6 +73,15 @@ fn os(s: &str) -> &std::ffi::OsStr {
     s.as_ref()
 }
 
+/// `explain ARGS --format json`, which succeeds: its JSON.
+fn explain_json(args: &[&std::ffi::OsStr]) -> Value {
+    let mut all = args.to_vec();
+    all.extend([os("--format"), os("json")]);
+    let (code, json, err) = explain(&all);
+    assert_eq!(code, 0, "{err}");
+    serde_json::from_str(&json).unwrap()
+}
+
 /// By hand, pixel (1, 1) at its centre p = (3/2, 3/2). Window barycentrics over (0, 0),
 /// (4, 0), (0, 4): mu_1 = x / 4 = 3/8, mu_2 = y / 4 = 3/8, mu_0 = 1/4. Homogeneous
 /// barycentrics b_i = mu_i / w_i = (1/4, 3/16, 3/32), their sum 1/w = 17/32. Smooth:
@@ -98,15 +107,7 @@ fn a_pixels_values_are_derived_as_by_hand() {
         their_tiff(1, &[(1, 1, 0, 0x40b4_b4b3), (0, 2, 0, 0x4130_0000)]),
     )
     .unwrap();
-    let (code, json, err) = explain(&[
-        scene.as_os_str(),
-        os("1,1"),
-        theirs.as_os_str(),
-        os("--format"),
-        os("json"),
-    ]);
-    assert_eq!(code, 0, "{err}");
-    let why: Value = serde_json::from_str(&json).unwrap();
+    let why = explain_json(&[scene.as_os_str(), os("1,1"), theirs.as_os_str()]);
     assert_eq!(why["read_as"], "float32");
     assert_eq!(why["varying"]["name"], "s");
     let sample = &why["samples"][0];
@@ -133,15 +134,7 @@ fn a_pixels_values_are_derived_as_by_hand() {
     assert_eq!(sample["class"], "f32");
     assert_eq!(sample["off"], false);
 
-    let (code, json, err) = explain(&[
-        scene.as_os_str(),
-        os("0,2"),
-        theirs.as_os_str(),
-        os("--format"),
-        os("json"),
-    ]);
-    assert_eq!(code, 0, "{err}");
-    let why: Value = serde_json::from_str(&json).unwrap();
+    let why = explain_json(&[scene.as_os_str(), os("0,2"), theirs.as_os_str()]);
     let sample = &why["samples"][0];
     let c = &sample["shown"]["channels"][0];
     assert_eq!(c["exact"], "32/5");
@@ -163,18 +156,14 @@ fn a_pixels_values_are_derived_as_by_hand() {
 
     // Without their image: the exact values alone; the flat varying `k` is the provoking
     // (last) vertex's 5.
-    let (code, json, err) = explain(&[
+    let why = explain_json(&[
         scene.as_os_str(),
         os("1,1"),
         os("--as"),
         os("values"),
         os("--varying"),
         os("k"),
-        os("--format"),
-        os("json"),
     ]);
-    assert_eq!(code, 0, "{err}");
-    let why: Value = serde_json::from_str(&json).unwrap();
     let sample = &why["samples"][0];
     assert_eq!(sample["shown"]["channels"][0]["exact"], "5");
     assert!(sample["shown"]["channels"][0]["formula"]
@@ -205,15 +194,7 @@ fn each_sample_of_a_pattern_is_derived_at_its_own_point() {
         their_tiff(4, &[(1, 1, 0, nearest.to_bits()), (1, 1, 3, 100f32.to_bits())]),
     )
     .unwrap();
-    let (code, json, err) = explain(&[
-        scene.as_os_str(),
-        os("1,1"),
-        theirs.as_os_str(),
-        os("--format"),
-        os("json"),
-    ]);
-    assert_eq!(code, 0, "{err}");
-    let why: Value = serde_json::from_str(&json).unwrap();
+    let why = explain_json(&[scene.as_os_str(), os("1,1"), theirs.as_os_str()]);
     let samples = why["samples"].as_array().unwrap();
     assert_eq!(samples.len(), 4);
     let s0 = &samples[0]["shown"];
