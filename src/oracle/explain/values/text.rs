@@ -268,7 +268,7 @@ impl ValueExplanation {
             });
             let Some(shown) = &sample.shown else {
                 let _ = writeln!(s, "{place}not covered (model {})", self.model);
-                self.theirs_only(sample, &mut s);
+                theirs_only(sample, &mut s);
                 continue;
             };
             let _ = writeln!(
@@ -291,9 +291,9 @@ impl ValueExplanation {
                 }
                 None => {
                     let _ = writeln!(s, "  taken at {}", shown.at);
-                    let segment = matches!(shown.derivation, Some(Derivation::Segment(_)));
-                    let _ = writeln!(s, "  {}", definition(v.interpolation, segment));
                     if let Some(d) = &shown.derivation {
+                        let segment = matches!(d, Derivation::Segment(_));
+                        let _ = writeln!(s, "  {}", definition(v.interpolation, segment));
                         d.text(&shown.primitive, &mut s);
                     }
                     seen.push((shown.id, &shown.point, sample.index));
@@ -307,7 +307,8 @@ impl ValueExplanation {
                 }
                 Err(e) => {
                     let _ = writeln!(s, "  no value: {e}");
-                    self.theirs_only(sample, &mut s);
+                    theirs_only(sample, &mut s);
+                    continue;
                 }
             }
             if let Some(judged) = sample.judged_text() {
@@ -316,27 +317,26 @@ impl ValueExplanation {
         }
         s
     }
+}
 
-    /// Their channels at a sample without an exact value, and why it is not judged.
-    fn theirs_only(&self, sample: &SampleValue, s: &mut String) {
-        if let Some(theirs) = &sample.theirs {
-            let texts: Vec<String> = theirs
-                .iter()
-                .map(|t| match t {
-                    TheirValue::F32(f) => f32_text(*f),
-                    TheirValue::Level(l) => format!("level {l}"),
-                })
-                .collect();
-            let _ = writeln!(s, "  theirs [{}]", texts.join(", "));
-        }
-        if sample.shown.as_ref().is_some_and(|sh| sh.channels.is_ok()) {
-            return;
-        }
-        if let Some(judged) = sample.judged_text() {
-            let _ = writeln!(s, "  {judged}");
-        }
+/// Their channels at a sample without an exact value, and why it is not judged.
+fn theirs_only(sample: &SampleValue, s: &mut String) {
+    if let Some(theirs) = &sample.theirs {
+        let texts: Vec<String> = theirs
+            .iter()
+            .map(|t| match t {
+                TheirValue::F32(f) => f32_text(*f),
+                TheirValue::Level(l) => format!("level {l}"),
+            })
+            .collect();
+        let _ = writeln!(s, "  theirs [{}]", texts.join(", "));
     }
+    if let Some(judged) = sample.judged_text() {
+        let _ = writeln!(s, "  {judged}");
+    }
+}
 
+impl ValueExplanation {
     /// For programs: `{"x", "y", "varying": {"name", "channels", "interpolation",
     /// "sampling"}, "provoking_vertex", "model", "pattern", "read_as", "samples": [{"index",
     /// "position", "owners", "shown": null or {"id", "primitive", "why", "at", "point",
