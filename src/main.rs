@@ -37,7 +37,8 @@ enum Command {
     #[command(after_help = cli::EXIT_CODES)]
     Compare(cli::compare::Options),
     /// Explain one pixel: its exact sample, each nearby primitive's edge values and
-    /// flags, and what every model decides.
+    /// flags, and what every model decides; with `--as values`, a varying's exact value
+    /// there, derived, against theirs.
     #[command(after_help = cli::EXIT_CODES)]
     Explain(cli::explain::Options),
     /// Differential testing of another renderer (a program): random scenes rendered by it

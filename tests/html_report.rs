@@ -183,6 +183,17 @@ fn run(args: &[&str]) -> (i32, String) {
     rasterproof(&os)
 }
 
+/// `rasterproof compare ARGS --html PAGE --format json`, which finds a difference (exit
+/// 1): its JSON report.
+fn compare_with_page(args: &[&str], page: &Path) -> serde_json::Value {
+    let mut all = vec!["compare"];
+    all.extend_from_slice(args);
+    all.extend_from_slice(&["--html", page.to_str().unwrap(), "--format", "json"]);
+    let (code, json) = run(&all);
+    assert_eq!(code, 1, "{json}");
+    serde_json::from_str(&json).unwrap()
+}
+
 /// `compare --as grey --html`: the page shows the levels judged against and theirs, and a
 /// click on a differing pixel (its first, from the JSON report) shows that pixel's line of
 /// the text report and what its class means; the headline names the method that gives
@@ -206,19 +217,7 @@ fn a_grey_page_explains_a_pixels_class() {
     ]);
     assert_eq!(code, 0);
     let page = dir.path().join("grey.html");
-    let (code, json) = run(&[
-        "compare",
-        scene,
-        theirs,
-        "--as",
-        "grey",
-        "--html",
-        page.to_str().unwrap(),
-        "--format",
-        "json",
-    ]);
-    assert_eq!(code, 1);
-    let report: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let report = compare_with_page(&[scene, theirs, "--as", "grey"], &page);
     let first = &report["pixels"][0];
     let (x, y) = (first["x"].as_u64().unwrap(), first["y"].as_u64().unwrap());
     assert_eq!(first["class"], "quantization");
@@ -273,19 +272,7 @@ fn a_sample_page_explains_a_pixel_of_one_sample_index() {
     let (code, _) = run(&["render", moved_path.to_str().unwrap(), "--ids-out", theirs]);
     assert_eq!(code, 0);
     let page = dir.path().join("samples.html");
-    let (code, json) = run(&[
-        "compare",
-        scene,
-        theirs,
-        "--samples",
-        "4",
-        "--html",
-        page.to_str().unwrap(),
-        "--format",
-        "json",
-    ]);
-    assert_eq!(code, 1);
-    let report: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let report = compare_with_page(&[scene, theirs, "--samples", "4"], &page);
     for s in [0, 1, 3] {
         assert_eq!(
             report["samples"][s]["report"]["pixels"].as_array().unwrap().len(),
@@ -329,19 +316,7 @@ fn a_conservative_page_explains_a_missing_pixel() {
     let (code, _) = run(&["render", scene, "--ids-out", theirs]);
     assert_eq!(code, 0);
     let page = dir.path().join("conservative.html");
-    let (code, json) = run(&[
-        "compare",
-        scene,
-        theirs,
-        "--conservative",
-        "vulkan",
-        "--html",
-        page.to_str().unwrap(),
-        "--format",
-        "json",
-    ]);
-    assert_eq!(code, 1);
-    let report: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let report = compare_with_page(&[scene, theirs, "--conservative", "vulkan"], &page);
     let first = &report["missing"][0];
     let (x, y) = (first[0].as_u64().unwrap(), first[1].as_u64().unwrap());
     let ids = first[2].as_array().unwrap();
@@ -434,4 +409,71 @@ fn a_grey_hunts_index_and_tests() {
     assert_eq!(text_of(&after, "pixel-title-01"), format!("Pixel ({x}, {y})"));
     let shown = text_of(&after, "explanation-01");
     assert!(shown.starts_with(line), "{shown}\nnot starting with\n{line}");
+}
+
+/// `compare --as values --html` on a real renderer's output (the committed lavapipe
+/// finding, a smooth centroid varying under 4x: three samples of pixel (1, 0) divided at
+/// the wrong point): the counts table names each class, sample indices with a value off
+/// are open, and `#sample=1&pixel=1,0` shows that sample's line of the text report, what
+/// its class means and the `explain` command that derives it. A one-sample page (the
+/// affine values of a smooth varying) explains its first pixel the same way.
+#[test]
+fn a_values_page_explains_a_pixels_class() {
+    let dir = tempdir::Dir::new("html-values");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/fixtures/wgpu-lavapipe-values");
+    let scene = root.join("01-w-at-centre-smooth-centroid-4x.json");
+    let theirs = root.join("01-w-at-centre-smooth-centroid-4x.tiff");
+    let (scene, theirs) = (scene.to_str().unwrap(), theirs.to_str().unwrap());
+    let page = dir.path().join("values.html");
+    let report = compare_with_page(&[scene, theirs], &page);
+    assert_eq!(report["counts"]["w-at-centre"], 3);
+    let html = std::fs::read_to_string(&page).unwrap();
+    for fetch in ["src=\"http", "href=\"http", "src=\"//", "@import"] {
+        assert!(!html.contains(fetch), "the page fetches something: {fetch}");
+    }
+    assert!(html.contains("<td class=\"class\">w-at-centre</td><td class=\"num\">3</td>"));
+    let (_, text) = run(&["compare", scene, theirs, "--limit", "10"]);
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("  (1, 0) sample 1 "))
+        .expect("sample 1 of pixel (1, 0) in the text report")
+        .trim();
+    let Some(browser) = chromium() else { return };
+    let after = dom(&browser, &page, "#sample=1&pixel=1,0");
+    assert_eq!(text_of(&after, "pixel-title-1"), "Pixel (1, 0)");
+    let shown = text_of(&after, "explanation-1");
+    assert!(
+        shown.starts_with(&format!("{line}\n\nw-at-centre: a smooth value divided")),
+        "{shown}"
+    );
+    assert!(shown.contains("rasterproof explain "), "{shown}");
+    assert_eq!(text_of(&after, "pixel-title-0"), "No pixel chosen");
+    assert!(after.contains("id=\"sample-1\" open"), "sample 1 has a value off");
+    assert!(!after.contains("id=\"sample-3\" open"), "sample 3 has none");
+
+    let smooth = Path::new(env!("CARGO_MANIFEST_DIR")).join("adapters/scenes/values-smooth.json");
+    let smooth_text = std::fs::read_to_string(&smooth).unwrap();
+    let affine_scene = dir.path().join("noperspective.json");
+    std::fs::write(&affine_scene, smooth_text.replace("\"smooth\"", "\"noperspective\"")).unwrap();
+    let affine = dir.path().join("affine.tiff");
+    let (code, _) = run(&[
+        "render",
+        affine_scene.to_str().unwrap(),
+        "--values-out",
+        affine.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0);
+    let page = dir.path().join("affine.html");
+    let smooth = smooth.to_str().unwrap();
+    let report = compare_with_page(&[smooth, affine.to_str().unwrap()], &page);
+    let first = &report["pixels"][0];
+    assert_eq!(first["class"], "affine");
+    let (x, y) = (first["x"].as_u64().unwrap(), first["y"].as_u64().unwrap());
+    let after = dom(&browser, &page, &format!("#pixel={x},{y}"));
+    assert_eq!(text_of(&after, "pixel-title"), format!("Pixel ({x}, {y})"));
+    let shown = text_of(&after, "explanation");
+    assert!(
+        shown.starts_with(&format!("({x}, {y}) primitive ")) && shown.contains("affine: the screen-linear value"),
+        "{shown}"
+    );
 }

@@ -120,6 +120,7 @@ mod trade;
 #[path = "values.rs"]
 mod values;
 mod values_compare;
+mod values_explain;
 mod values_invariants;
 mod values_planned;
 

@@ -50,6 +50,7 @@ fn options(scene: &Scene) -> ValueOptions {
         varying: 0,
         unorm: UnormRule::Nearest,
         pattern: None,
+        picture: false,
     }
 }
 

@@ -9,10 +9,10 @@ use rasterproof::coverage::picture::{legend_path, Scale};
 use rasterproof::oracle::compare::fit::samples::{SampleFitOptions, POSITION_GRID};
 use rasterproof::oracle::compare::grey::GreyOptions;
 use rasterproof::oracle::compare::samples::SampleOptions;
-use rasterproof::oracle::compare::values::ValueOptions;
 use rasterproof::oracle::compare::HtmlInputs;
-use rasterproof::oracle::{judge, Background, CompareOptions, Comparison, Format, Question, Theirs};
+use rasterproof::oracle::{judge, Background, CompareOptions, Comparison, Format, Question};
 
+use super::value_args::{read_theirs, their_format, ValueArgs};
 use super::{ConventionArgs, OutputFormat, Outputs};
 
 /// What `compare` was asked to do.
@@ -50,7 +50,8 @@ pub struct Options {
     diff_out: Option<PathBuf>,
     /// Write the comparison as one self-contained HTML page: the three images side by
     /// side, zoom and pan, each pixel's explanation on click (grey levels by class, each
-    /// sample index of a pattern, a conservative set's must-pixels and band alike).
+    /// sample index of a pattern, a conservative set's must-pixels and band, and values:
+    /// the exact values and theirs in grey, each judged pixel coloured by class, alike).
     #[arg(long, value_name = "REPORT.html")]
     html: Option<PathBuf>,
     /// Output format on stdout.
@@ -107,15 +108,8 @@ pub struct Options {
     /// when it gives every level.
     #[arg(long, value_name = "NAME", conflicts_with_all = ["fit", "semantics", "quantization"])]
     method: Option<String>,
-    /// With `--as values`: the varying their image holds (default the scene's first);
-    /// their first channels are its channels.
-    #[arg(long, value_name = "NAME")]
-    varying: Option<String>,
-    /// With `--as values` and a UNORM PNG: the conversion rule their levels follow
-    /// (`nearest`: round to nearest, ties to even; `vulkan`: either of the two nearest
-    /// levels; `d3d`: within 0.6 of a level's unit).
-    #[arg(long = "unorm-rule", default_value = "nearest", value_name = "nearest|vulkan|d3d")]
-    unorm_rule: String,
+    #[command(flatten)]
+    values: ValueArgs,
 }
 
 /// `--classify`: a bound, or none.
@@ -167,7 +161,7 @@ fn parse_background(text: &str) -> Result<Background, String> {
 /// [`rasterproof::oracle::judge`], writes `--diff-out` and `--html`, and prints the report;
 /// exit 1 when the images differ (or no convention fits).
 pub fn run(o: &Options) -> Result<ExitCode, String> {
-    let format = their_format(o)?;
+    let format = their_format(o.theirs_as.as_deref(), &o.theirs)?;
     let background = background(o, format)?;
     let grey = format == Format::Grey;
     if grey && o.diff_out.is_some() {
@@ -177,12 +171,10 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
         return Err("--semantics, --quantization and --method are for --as grey".to_string());
     }
     let values = format == Format::Values;
-    if !values && (o.varying.is_some() || o.unorm_rule != "nearest") {
-        return Err("--varying and --unorm-rule are for --as values".to_string());
-    }
-    if values && (o.diff_out.is_some() || o.html.is_some() || o.conservative.is_some()) {
+    o.values.only_for_values(values)?;
+    if values && (o.diff_out.is_some() || o.conservative.is_some()) {
         return Err(
-            "--as values prints its comparison (text or JSON); --diff-out, --html and --conservative are for coverage"
+            "--as values prints its comparison (text, JSON or --html); --diff-out and --conservative are for coverage"
                 .to_string(),
         );
     }
@@ -194,9 +186,7 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     let semantics = super::parse_semantics(&o.semantics)?;
     let quantization = super::parse_quantization(&o.quantization)?;
     let (name, scene, target) = super::load_scene_with(&o.scene, &o.convention, o.jobs as usize)?;
-    let theirs_name = o.theirs.display().to_string();
-    let bytes = std::fs::read(&o.theirs).map_err(|e| format!("{theirs_name}: cannot read: {e}"))?;
-    let theirs = Theirs::read(&bytes, &theirs_name, format, background).map_err(|e| e.to_string())?;
+    let (theirs_name, theirs) = read_theirs(&o.theirs, format, background)?;
     // Rounding is read at their image's depth (8 or 16 bits); the other quantizations
     // name theirs.
     let quantization = match theirs.grey() {
@@ -224,8 +214,10 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
     .filter(|p| !p.is_single(&target.convention));
     let question = match (grey_options, &o.conservative, pattern.clone()) {
         _ if values => {
-            let options = ValueOptions::for_scene(&scene, &name, model, o.varying.as_deref(), &o.unorm_rule)?
-                .with_pattern(pattern, &target.convention);
+            let options = o
+                .values
+                .options(&scene, &name, model, pattern, &target)?
+                .with_picture(o.html.is_some());
             if o.fit {
                 Question::FitValues(Box::new(options))
             } else {
@@ -294,23 +286,6 @@ pub fn run(o: &Options) -> Result<ExitCode, String> {
 /// Why `--as grey` refuses the picture and page options.
 const GREY_PRINTS: &str =
     "--as grey prints its comparison (text, JSON or --html); --diff-out and --background are for the one-sample formats";
-
-/// `--as`, or the default: json for a `.json` file, values for a TIFF, ids otherwise.
-fn their_format(o: &Options) -> Result<Format, String> {
-    match &o.theirs_as {
-        Some(f) => Format::from_name(f)
-            .ok_or_else(|| format!("--as: unknown format {f:?} (expected mask, ids, json, grey or values)")),
-        None if o.theirs.extension().is_some_and(|e| e.eq_ignore_ascii_case("json")) => Ok(Format::Json),
-        None if o
-            .theirs
-            .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("tif") || e.eq_ignore_ascii_case("tiff")) =>
-        {
-            Ok(Format::Values)
-        }
-        None => Ok(Format::Ids),
-    }
-}
 
 /// `--background`, which only a mask has.
 fn background(o: &Options, format: Format) -> Result<Background, String> {

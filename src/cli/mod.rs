@@ -12,6 +12,7 @@ pub mod plan;
 pub mod render;
 pub mod run_args;
 pub mod trade;
+pub mod value_args;
 
 use std::ffi::OsString;
 use std::fmt::Display;

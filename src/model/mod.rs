@@ -49,7 +49,7 @@ pub use error::ModelError;
 pub use prepared::{prepare, prepare_parallel, render, render_triangles, PreparedScene, Primitives, Shape};
 pub use samples::{render_samples, SampleFrames};
 pub use values::{
-    exact_pixel_values, exact_values, values_image, values_json, values_tiff, SampleValues, ValuesImageError,
+    centroid, exact_pixel_values, exact_values, values_image, values_json, values_tiff, SampleValues, ValuesImageError,
 };
 
 /// A model: one arithmetic for every primitive of a scene (the CLI's `--model`).

@@ -322,9 +322,28 @@ fn pixel_channels(varyings: &Varyings, k: usize) -> Result<usize, ValuesImageErr
     Ok(varying.channels)
 }
 
-/// Direct3D's centroid of primitive `id` in pixel `(x, y)`: the centre when it covers
-/// every sample, otherwise its first covered sample.
-fn centroid(coverage: &SampleCoverage, pattern: &SamplePattern, x: u32, y: u32, id: u32, centre: &Point) -> Point {
+/// Direct3D's centroid of primitive `id` in pixel `(x, y)` of `coverage` (one coverage
+/// per sample of `pattern`): `centre` when it covers every sample, otherwise its first
+/// covered sample (the Direct3D 11.3 functional specification's centroid sampling).
+///
+/// ```
+/// use rasterproof::convention::{Convention, Target};
+/// use rasterproof::coverage::samples::SampleCoverage;
+/// use rasterproof::geom::Point;
+/// use rasterproof::model::centroid;
+/// use rasterproof::pattern::SamplePattern;
+/// let four = SamplePattern::standard(4).unwrap();
+/// let mut coverage = SampleCoverage::new(1, 1, 4);
+/// coverage.cover(0, 0, 2, 0);
+/// let centre = Point::new(num_rational::BigRational::new(1.into(), 2.into()), num_rational::BigRational::new(1.into(), 2.into()));
+/// // Sample 2 of the standard 4x pattern sits at (1/8, 5/8) of the pixel.
+/// assert_eq!(centroid(&coverage, &four, 0, 0, 0, &centre), four.sample(0, 0, 2));
+/// coverage.cover(0, 0, 0, 0);
+/// coverage.cover(0, 0, 1, 0);
+/// coverage.cover(0, 0, 3, 0);
+/// assert_eq!(centroid(&coverage, &four, 0, 0, 0, &centre), centre);
+/// ```
+pub fn centroid(coverage: &SampleCoverage, pattern: &SamplePattern, x: u32, y: u32, id: u32, centre: &Point) -> Point {
     let count = coverage.sample_count();
     let mask = coverage.mask_of(x, y, id);
     let all = if count >= 64 { u64::MAX } else { (1u64 << count) - 1 };

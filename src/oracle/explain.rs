@@ -1,5 +1,8 @@
 //! Explaining one pixel of a scene: its exact sample, every nearby primitive's exact
-//! evidence as written and as snapped, and which models cover it ([`explain_pixel`]).
+//! evidence as written and as snapped, and which models cover it ([`explain_pixel`]); its
+//! interpolated values, exactly, against another renderer's ([`values::explain_values`]).
+
+pub mod values;
 
 use std::fmt::Write as _;
 

@@ -9,7 +9,10 @@
 //!   each the binary page's views of that index's comparison (`#sample=S&pixel=X,Y`
 //!   opens one pixel of index S);
 //! - a conservative set ([`ConservativeReport::to_html`]): the must-pixels, the band and
-//!   theirs, the difference by kind (missing, beyond, the band covered or not).
+//!   theirs, the difference by kind (missing, beyond, the band covered or not);
+//! - one varying's values ([`ValueReport::to_html`]): the counts by class, the exact
+//!   values' first channel and theirs in grey, the classes per pixel (one block per sample
+//!   index of a pattern), and the pixels listed with their exact values and theirs.
 
 use std::fmt::Write as _;
 
@@ -19,6 +22,7 @@ use super::binary::{html_escape as escape, html_page, view_block, EMPTY_COLOUR, 
 use super::conservative::ConservativeReport;
 use super::grey::{GreyClass, GreyReport};
 use super::samples::SampleCompareReport;
+use super::values::{JudgedValue, TheirValue, ValueClass, ValuePicture, ValueReport};
 use super::{Comparison, HtmlInputs};
 
 /// `#rrggbb`.
@@ -297,6 +301,273 @@ impl ConservativeReport {
             "diff": diff,
             "palette": palette,
             "kinds": ["neither", "covered, must be", "the band, covered", "the band, not covered", "missing", "beyond"],
+            "explain": explain,
+        })
+    }
+}
+
+/// A value class's colour in the class view: greys and blues for the classes inside the
+/// envelope, warm and saturated colours for those off.
+fn value_colour(class: ValueClass) -> [u8; 3] {
+    match class {
+        ValueClass::Exact => MATCHED_COLOUR,
+        ValueClass::F32 => [90, 170, 255],
+        ValueClass::FarAnchor => [40, 100, 210],
+        ValueClass::Unbounded => [160, 150, 230],
+        ValueClass::CentroidRange => [60, 210, 200],
+        ValueClass::Affine => [255, 140, 0],
+        ValueClass::Perspective => [255, 205, 130],
+        ValueClass::ProvokingVertex => [240, 230, 40],
+        ValueClass::AtCentre => [230, 60, 230],
+        ValueClass::WAtCentre => [255, 110, 170],
+        ValueClass::AtSample => [170, 90, 255],
+        ValueClass::ChannelsSwapped => [40, 200, 70],
+        ValueClass::VerticesPermuted => [160, 240, 80],
+        ValueClass::UnormRule => [190, 130, 80],
+        ValueClass::Gross => [255, 30, 30],
+    }
+}
+
+/// At most this many pixels are listed in a values page's table (the off ones first);
+/// the views explain every listed pixel.
+const VALUES_LISTED_AT_MOST: usize = 200;
+
+impl ValueReport {
+    /// The page: the counts by class with their colours and meanings; the views (one block
+    /// per sample index under a pattern, `#sample=S&pixel=X,Y` opens one): the exact
+    /// values' first channel (rounded to f32) and theirs in grey on a common scale, and the
+    /// class of each judged pixel; a click on a listed pixel shows its line of the text
+    /// report, what its class means and how to derive it (`explain --as values`); then the
+    /// listed pixels (off first) with their exact values and theirs. The views need the
+    /// report made with [`super::values::ValueOptions::picture`] (`compare --html` asks
+    /// for it); without, the page says so.
+    pub fn to_html(&self, inputs: &HtmlInputs<'_>) -> String {
+        let title = format!(
+            "rasterproof compare --as values: {} against {}",
+            inputs.theirs, inputs.scene
+        );
+        let mut blocks = self.counts_table();
+        match &self.picture {
+            Some(picture) => blocks.push_str(&self.views(picture, inputs)),
+            None => blocks.push_str(
+                "<p id=\"no-picture\">No picture: the report was made without the judged samples (ValueOptions::picture).</p>\n",
+            ),
+        }
+        blocks.push_str(&self.listed_table());
+        page(&title, &blocks, &self.to_text(inputs.scene, inputs.theirs, 0), inputs)
+    }
+
+    /// The counts by class: colour, name, count, whether off, meaning.
+    fn counts_table(&self) -> String {
+        let unit = if self.samples > 1 { "samples" } else { "pixels" };
+        let mut out = format!(
+            "<table id=\"counts\"><caption>{} judged {unit} of {:?} ({}, {}), read as {} ({} off)</caption>\n\
+             <tr><th></th><th>class</th><th>{unit}</th><th>off</th><th>meaning</th></tr>\n",
+            self.judged,
+            escape(&self.varying),
+            self.interpolation.name(),
+            self.sampling.name(),
+            escape(&self.read_as),
+            self.off()
+        );
+        for (class, n) in &self.counts {
+            let _ = writeln!(
+                out,
+                "<tr class=\"{}\"><td><i style=\"background: {}\"></i></td><td class=\"class\">{}</td><td class=\"num\">{n}</td><td>{}</td><td>{}</td></tr>",
+                if class.is_off() { "off" } else { "inside" },
+                hex(value_colour(*class)),
+                class.name(),
+                if class.is_off() { "off" } else { "no" },
+                escape(class.meaning())
+            );
+        }
+        out.push_str("</table>\n");
+        out
+    }
+
+    /// The pixels listed, off first, at most [`VALUES_LISTED_AT_MOST`]: per channel the
+    /// exact value, its nearest f32, theirs and the distance in f32 steps.
+    fn listed_table(&self) -> String {
+        let listed = self.listed();
+        if listed.is_empty() {
+            return "<p id=\"listed\">Every judged value is exact: nothing to list.</p>\n".to_string();
+        }
+        let sample = if self.samples > 1 { "<th>sample</th>" } else { "" };
+        let mut out = format!(
+            "<table id=\"listed\"><caption>{} listed (every one off, then the first {} inside the envelope), off first</caption>\n\
+             <tr><th>pixel</th>{sample}<th>primitive</th><th>class</th><th>channel</th><th>exact</th><th>its nearest f32</th><th>theirs</th><th>f32 steps</th></tr>\n",
+            listed.len(),
+            super::values::LISTED_INSIDE
+        );
+        for p in listed.iter().take(VALUES_LISTED_AT_MOST) {
+            let rows = p.exact.len().max(1);
+            let sample = if self.samples > 1 {
+                format!("<td rowspan=\"{rows}\">{}</td>", p.sample)
+            } else {
+                String::new()
+            };
+            let _ = write!(
+                out,
+                "<tr class=\"{}\"><td rowspan=\"{rows}\" class=\"num\">({}, {})</td>{sample}<td rowspan=\"{rows}\">{}</td><td rowspan=\"{rows}\" class=\"class\">{}</td>",
+                if p.class.is_off() { "off" } else { "inside" },
+                p.x,
+                p.y,
+                p.id,
+                p.class.name()
+            );
+            for (c, exact) in p.exact.iter().enumerate() {
+                if c > 0 {
+                    out.push_str("<tr>");
+                }
+                let nearest = crate::num::exact::nearest_f32(exact)
+                    .map_or_else(|| "beyond f32".to_string(), |f| format!("{f:e}"));
+                let theirs = p.theirs.get(c).map_or_else(String::new, |t| t.text());
+                let steps = p
+                    .ulps
+                    .get(c)
+                    .copied()
+                    .flatten()
+                    .map_or_else(|| "-".to_string(), |u| u.to_string());
+                let _ = writeln!(
+                    out,
+                    "<td>{c}</td><td class=\"exact\">{}</td><td class=\"num\">{nearest}</td><td class=\"num\">{}</td><td class=\"num\">{steps}</td></tr>",
+                    escape(&crate::num::exact::exact_text(exact)),
+                    escape(&theirs)
+                );
+            }
+        }
+        if listed.len() > VALUES_LISTED_AT_MOST {
+            let _ = writeln!(
+                out,
+                "<tr><td colspan=\"9\">and {} more (compare --format json lists every one)</td></tr>",
+                listed.len() - VALUES_LISTED_AT_MOST
+            );
+        }
+        out.push_str("</table>\n");
+        out
+    }
+
+    /// The views, one block per sample index (each in a `<details>`, open where a sample
+    /// is off, under a pattern).
+    fn views(&self, picture: &ValuePicture, inputs: &HtmlInputs<'_>) -> String {
+        let classes: Vec<ValueClass> = self.counts.iter().map(|&(c, _)| c).collect();
+        let number = |t: TheirValue| match t {
+            TheirValue::F32(f) => Some(f),
+            TheirValue::Level(l) => {
+                let top = if self.read_as.starts_with("unorm16") {
+                    65535.0
+                } else {
+                    255.0
+                };
+                #[allow(clippy::cast_precision_loss)] // a level of at most 16 bits
+                Some(l as f32 / top)
+            }
+        };
+        // One grey scale for every view: the least and greatest finite value shown.
+        let finite = picture
+            .judged
+            .iter()
+            .flat_map(|j| [j.exact, j.theirs.and_then(number)])
+            .flatten()
+            .filter(|f| f.is_finite());
+        let (lo, hi) = finite.fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), f| (lo.min(f), hi.max(f)));
+        let range = if lo <= hi { [lo, hi] } else { [0.0, 1.0] };
+        let mut out = String::new();
+        for s in 0..self.samples {
+            let here: Vec<&JudgedValue> = picture.judged.iter().filter(|j| j.sample == s).collect();
+            let off = here.iter().filter(|j| j.class.is_off()).count();
+            let headline = format!(
+                "{off} of {} judged off; the first two views show channel 0 in grey from {} (dark) to {} (white), black where nothing is judged",
+                here.len(),
+                range[0],
+                range[1]
+            );
+            let suffix = if self.samples > 1 {
+                format!("-{s}")
+            } else {
+                String::new()
+            };
+            let data = self.view_data(picture, s, &classes, range, number, inputs);
+            let block = view_block(&suffix, &headline, &data);
+            if self.samples > 1 {
+                let _ = writeln!(
+                    out,
+                    "<details class=\"sample\" id=\"sample-{s}\"{}><summary><h2 style=\"display: inline\">Sample {s}: {}</h2></summary>\n{block}</details>",
+                    if off > 0 { " open" } else { "" },
+                    match off {
+                        0 => "nothing off".to_string(),
+                        1 => "1 value off".to_string(),
+                        n => format!("{n} values off"),
+                    }
+                );
+            } else {
+                out.push_str(&block);
+            }
+        }
+        out
+    }
+
+    /// Sample index `sample`'s block's data: per pixel the exact value's first channel and theirs (`null`
+    /// where not judged), the class's palette index (0 not judged, 1 + its place among the
+    /// classes present), and each listed pixel's explanation.
+    fn view_data(
+        &self,
+        picture: &ValuePicture,
+        sample: usize,
+        classes: &[ValueClass],
+        range: [f32; 2],
+        number: impl Fn(TheirValue) -> Option<f32>,
+        inputs: &HtmlInputs<'_>,
+    ) -> Value {
+        let n = usize::try_from(u64::from(picture.width) * u64::from(picture.height)).unwrap_or(0);
+        let index = |x: u32, y: u32| usize::try_from(u64::from(y) * u64::from(picture.width) + u64::from(x)).ok();
+        let mut ours: Vec<Option<f32>> = vec![None; n];
+        let mut theirs: Vec<Option<f32>> = vec![None; n];
+        let mut diff = vec![0u8; n];
+        for j in picture.judged.iter().filter(|j| j.sample == sample) {
+            let Some(i) = index(j.x, j.y).filter(|&i| i < n) else {
+                continue;
+            };
+            ours[i] = j.exact.filter(|f| f.is_finite());
+            theirs[i] = j.theirs.and_then(&number).filter(|f| f.is_finite());
+            let place = classes.iter().position(|&c| c == j.class).unwrap_or(0);
+            diff[i] = u8::try_from(1 + place).unwrap_or(u8::MAX);
+        }
+        let mut explain = serde_json::Map::new();
+        for p in self.pixels.iter().filter(|p| p.sample == sample) {
+            let samples = if self.samples > 1 {
+                format!(" --samples {}", self.samples)
+            } else {
+                String::new()
+            };
+            let text = format!(
+                "{}\n\n{}: {}.\nIts derivation: rasterproof explain {} {},{} --as values {}{samples} (with the options of the comparison).",
+                self.pixel_text(p),
+                p.class.name(),
+                p.class.meaning(),
+                inputs.scene,
+                p.x,
+                p.y,
+                inputs.theirs
+            );
+            explain.insert(format!("{},{}", p.x, p.y), Value::String(text));
+        }
+        let palette: Vec<String> = std::iter::once(EMPTY_COLOUR)
+            .chain(classes.iter().map(|&c| value_colour(c)))
+            .map(hex)
+            .collect();
+        let kinds: Vec<&str> = std::iter::once("not judged")
+            .chain(classes.iter().map(|c| c.name()))
+            .collect();
+        json!({
+            "width": picture.width,
+            "height": picture.height,
+            "range": range,
+            "ours": ours,
+            "theirs": theirs,
+            "diff": diff,
+            "palette": palette,
+            "kinds": kinds,
             "explain": explain,
         })
     }

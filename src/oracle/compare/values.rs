@@ -78,6 +78,9 @@ pub struct ValueOptions {
     /// The sample pattern of their image, when it has several samples per pixel: one
     /// values image per sample index, stacked (`None`: one sample per pixel).
     pub pattern: Option<SamplePattern>,
+    /// Keep every judged sample's class and first channel in the report
+    /// ([`ValueReport::picture`]: what its HTML page draws, `compare --html`).
+    pub picture: bool,
 }
 
 impl ValueOptions {
@@ -114,7 +117,15 @@ impl ValueOptions {
             varying,
             unorm,
             pattern: None,
+            picture: false,
         })
+    }
+
+    /// These options keeping (or not) every judged sample in the report
+    /// ([`ValueReport::picture`]).
+    pub fn with_picture(mut self, picture: bool) -> ValueOptions {
+        self.picture = picture;
+        self
     }
 
     /// These options for their image under `pattern` (`None`, or a pattern of one sample
@@ -260,14 +271,16 @@ pub enum TheirValue {
 }
 
 impl TheirValue {
-    fn text(self) -> String {
+    /// For people: the float in scientific notation, or `level L`.
+    pub(crate) fn text(self) -> String {
         match self {
             TheirValue::F32(f) => format!("{f:e}"),
             TheirValue::Level(l) => format!("level {l}"),
         }
     }
 
-    fn json(self) -> Value {
+    /// For programs: the float (a string when not finite) or the level.
+    pub(crate) fn json(self) -> Value {
         match self {
             TheirValue::F32(f) if f.is_finite() => json!(f),
             TheirValue::F32(f) => json!(f.to_string()),
@@ -323,10 +336,47 @@ pub struct ValueReport {
     /// The largest distance in f32 steps among the pixels inside the envelope (`f32`,
     /// `far-anchor`; not `centroid-range`, another point's value).
     pub max_ulps_inside: u64,
+    /// Every judged sample, when the options asked for it ([`ValueOptions::picture`]).
+    pub picture: Option<ValuePicture>,
+}
+
+/// Every judged sample of a [`ValueReport`]: what its HTML page draws.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ValuePicture {
+    /// The canvas's width.
+    pub width: u32,
+    /// The canvas's height (their image is `samples` times as tall).
+    pub height: u32,
+    /// The judged samples, row by row, then by sample index.
+    pub judged: Vec<JudgedValue>,
+}
+
+/// One judged sample: where, its class, and the first channel of both answers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct JudgedValue {
+    /// Column.
+    pub x: u32,
+    /// Row.
+    pub y: u32,
+    /// The sample index (0 with one sample per pixel).
+    pub sample: usize,
+    /// Its class.
+    pub class: ValueClass,
+    /// The exact value of the first channel rounded to the nearest f32 (`None` beyond
+    /// f32's range).
+    pub exact: Option<f32>,
+    /// Their first channel.
+    pub theirs: Option<TheirValue>,
 }
 
 /// Distance in f32 steps between two finite floats (by their order as integers).
 pub(crate) fn f32_steps(a: f32, b: f32) -> u64 {
+    f32_signed_steps(a, b).unsigned_abs()
+}
+
+/// The signed distance in f32 steps from `b` to `a` (positive when `a` is above), both
+/// finite: their order as integers, `-0` and `0` the same.
+pub(crate) fn f32_signed_steps(a: f32, b: f32) -> i64 {
     let ord = |f: f32| {
         let bits = i64::from(f.to_bits() & 0x7fff_ffff);
         if f.is_sign_negative() {
@@ -335,7 +385,7 @@ pub(crate) fn f32_steps(a: f32, b: f32) -> u64 {
             bits
         }
     };
-    (ord(a) - ord(b)).unsigned_abs()
+    ord(a) - ord(b)
 }
 
 /// Whether their channel `t` is `v` up to `bound` (f32: correctly rounded or within the
@@ -387,12 +437,22 @@ pub fn compare_values(
     theirs: &Theirs,
     options: &ValueOptions,
 ) -> Result<ValueReport, CompareError> {
+    compare_values_where(primitives, target, theirs, options, |_, _| true)
+}
+
+/// [`compare_values`] judging only the pixels `(x, y)` for which `keep(x, y)` holds (the
+/// counts count those): one pixel for `explain`.
+pub(crate) fn compare_values_where(
+    primitives: &Primitives,
+    target: &Target,
+    theirs: &Theirs,
+    options: &ValueOptions,
+    keep: impl Fn(u32, u32) -> bool,
+) -> Result<ValueReport, CompareError> {
     let (image, varying, range) = their_values(target, theirs, options)?;
-    let judged = judged_samples(primitives, target, options, varying.sampling)?;
-    let (bits, read_as) = match &image.samples {
-        ValueSamples::F32(_) => (0, "float32".to_string()),
-        ValueSamples::Unorm { bits, .. } => (*bits, format!("unorm{bits} ({} rule)", options.unorm.name())),
-    };
+    let mut judged = judged_samples(primitives, target, options, varying.sampling)?;
+    judged.retain(|j| keep(j.x, j.y));
+    let (bits, read_as) = read_as(image, options.unorm);
     let mut report = ValueReport {
         varying: varying.name.clone(),
         interpolation: varying.interpolation,
@@ -404,6 +464,11 @@ pub fn compare_values(
         counts: Vec::new(),
         pixels: Vec::new(),
         max_ulps_inside: 0,
+        picture: options.picture.then(|| ValuePicture {
+            width: target.width,
+            height: target.height,
+            judged: Vec::new(),
+        }),
     };
     let mut counts = [0usize; ValueClass::ALL.len()];
     let mut plans = Plans::new(options, range.clone(), target);
@@ -458,6 +523,16 @@ pub fn compare_values(
         });
         counts[ValueClass::ALL.iter().position(|&c| c == class).expect("listed")] += 1;
         report.judged += 1;
+        if let Some(picture) = &mut report.picture {
+            picture.judged.push(JudgedValue {
+                x,
+                y,
+                sample: j.sample,
+                class,
+                exact: nearest.first().copied().flatten(),
+                theirs: theirs_here.first().copied(),
+            });
+        }
         let ulps: Vec<Option<u64>> = theirs_here
             .iter()
             .zip(&nearest)
@@ -491,6 +566,15 @@ pub fn compare_values(
         .map(|(&c, n)| (c, n))
         .collect();
     Ok(report)
+}
+
+/// The bits of their image's levels (0 for float32) and how it was read: `float32`, or
+/// `unorm8`/`unorm16` with the `rule` its levels are judged under.
+pub(crate) fn read_as(image: &ValueImage, rule: UnormRule) -> (u32, String) {
+    match &image.samples {
+        ValueSamples::F32(_) => (0, "float32".to_string()),
+        ValueSamples::Unorm { bits, .. } => (*bits, format!("unorm{bits} ({} rule)", rule.name())),
+    }
 }
 
 /// Their values image, checked against the canvas (stacked once per sample under a
@@ -952,7 +1036,7 @@ fn classify(
 /// convex region lie at the region's vertices. `None` for a flat varying, a segment, a
 /// triangle with a vertex at `w <= 0`, a degenerate one, or an empty region.
 #[allow(clippy::type_complexity)]
-fn centroid_range(
+pub(crate) fn centroid_range(
     setup: &ValueSetup,
     interpolation: Interpolation,
     centre: &Point,
@@ -1186,11 +1270,52 @@ impl ValueReport {
     pub fn off(&self) -> usize {
         self.counts.iter().filter(|(c, _)| c.is_off()).map(|(_, n)| n).sum()
     }
+
+    /// The listed pixels in the text report's order: every one off, then those inside.
+    pub fn listed(&self) -> Vec<&ValuePixel> {
+        let mut listed: Vec<&ValuePixel> = self.pixels.iter().filter(|p| p.class.is_off()).collect();
+        listed.extend(self.pixels.iter().filter(|p| !p.class.is_off()));
+        listed
+    }
+
+    /// A listed pixel's line of the text report: `(X, Y) [sample S] primitive ID: CLASS;
+    /// exact [...], theirs [...] (N f32 steps)`.
+    pub fn pixel_text(&self, p: &ValuePixel) -> String {
+        let exact: Vec<String> = p.exact.iter().map(exact_text).collect();
+        let theirs: Vec<String> = p.theirs.iter().map(|t| t.text()).collect();
+        let sample = if self.samples > 1 {
+            format!(" sample {}", p.sample)
+        } else {
+            String::new()
+        };
+        let mut s = format!(
+            "({}, {}){sample} primitive {}: {}; exact [{}], theirs [{}]",
+            p.x,
+            p.y,
+            p.id,
+            p.class.name(),
+            exact.join(", "),
+            theirs.join(", ")
+        );
+        if p.ulps.iter().any(Option::is_some) {
+            let ulps: Vec<String> = p
+                .ulps
+                .iter()
+                .map(|u| u.map_or("-".to_string(), |u| u.to_string()))
+                .collect();
+            let _ = write!(s, " ({} f32 steps)", ulps.join(", "));
+        }
+        s
+    }
 }
 
 impl Comparison for ValueReport {
     fn identical(&self) -> bool {
         self.off() == 0
+    }
+
+    fn to_html(&self, page: &super::HtmlInputs<'_>) -> Option<String> {
+        Some(ValueReport::to_html(self, page))
     }
 
     fn counts(&self) -> Vec<(String, usize)> {
@@ -1236,35 +1361,8 @@ impl Comparison for ValueReport {
         for (class, n) in &self.counts {
             let _ = writeln!(s, "  {:>8}  {:<18} {}", n, class.name(), class.meaning());
         }
-        let mut listed: Vec<&ValuePixel> = self.pixels.iter().filter(|p| p.class.is_off()).collect();
-        listed.extend(self.pixels.iter().filter(|p| !p.class.is_off()));
-        for p in listed.into_iter().take(limit) {
-            let exact: Vec<String> = p.exact.iter().map(exact_text).collect();
-            let theirs: Vec<String> = p.theirs.iter().map(|t| t.text()).collect();
-            let sample = if self.samples > 1 {
-                format!(" sample {}", p.sample)
-            } else {
-                String::new()
-            };
-            let _ = write!(
-                s,
-                "  ({}, {}){sample} primitive {}: {}; exact [{}], theirs [{}]",
-                p.x,
-                p.y,
-                p.id,
-                p.class.name(),
-                exact.join(", "),
-                theirs.join(", ")
-            );
-            if p.ulps.iter().any(Option::is_some) {
-                let ulps: Vec<String> = p
-                    .ulps
-                    .iter()
-                    .map(|u| u.map_or("-".to_string(), |u| u.to_string()))
-                    .collect();
-                let _ = write!(s, " ({} f32 steps)", ulps.join(", "));
-            }
-            s.push('\n');
+        for p in self.listed().into_iter().take(limit) {
+            let _ = writeln!(s, "  {}", self.pixel_text(p));
         }
         s
     }

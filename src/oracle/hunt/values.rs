@@ -182,6 +182,7 @@ pub fn judge_values(scene: &Scene, theirs: Result<Theirs, RenderFailure>, model:
         varying: 0,
         unorm: crate::num::unorm::UnormRule::Nearest,
         pattern: None,
+        picture: false,
     }
     .with_pattern(scene.samples.clone(), &target.convention);
     match compare_values(&scene.primitives(), &target, &theirs, &options) {

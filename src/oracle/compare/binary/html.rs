@@ -138,7 +138,8 @@ impl CompareReport {
 /// by row), `diff` (an index into `palette` and `kinds` per pixel) and `explain` (`"X,Y"`
 /// to its text); and, to read the values: `ours_several`/`theirs_several` (pixels with
 /// several owners) for owner ids + 1, or `levels` (the top level) for grey levels, or
-/// `ours_labels`/`theirs_labels` (a word per value).
+/// `ours_labels`/`theirs_labels` (a word per value), or `range` (`[least, greatest]`:
+/// values, `null` where there is none, drawn in grey on that scale).
 pub fn view_block(suffix: &str, headline: &str, data: &Value) -> String {
     let data = data.to_string().replace("</", "<\\/"); // "</" would end the <script>
     let mut out = format!("<div class=\"compare\" data-suffix=\"{suffix}\">\n");
@@ -204,6 +205,13 @@ canvas { image-rendering: pixelated; image-rendering: crisp-edges; display: bloc
 .pixel { border: 1px solid #bbb; background: #fff; padding: 0.5em 1em; margin: 0.5em 0; }
 pre { white-space: pre-wrap; font: 12px ui-monospace, monospace; }
 .hint { color: #666; font-size: 0.9em; }
+table { border-collapse: collapse; margin: 0.8em 0; background: #fff; }
+caption { text-align: left; font-weight: 600; padding: 0.3em 0; }
+th, td { border: 1px solid #ccc; padding: 2px 8px; text-align: left; vertical-align: top; }
+td i { display: inline-block; width: 0.9em; height: 0.9em; border: 1px solid #666; vertical-align: middle; }
+td.num { font: 12px ui-monospace, monospace; white-space: nowrap; }
+td.exact { font: 12px ui-monospace, monospace; word-break: break-all; max-width: 40em; }
+tr.off td.class { color: #b00; font-weight: 600; }
 "#;
 
 const SCRIPT: &str = r#"
@@ -233,8 +241,9 @@ function setup(block) {
     ctx.putImageData(img, 0, 0);
   }
   const palette = D.palette.map(hex);
-  const top = D.levels;
-  const colourOf = top ? (v => { const g = Math.round(v * 255 / top); return [g, g, g]; }) : idColour;
+  const top = D.levels, range = D.range;
+  const scaled = v => { const g = Math.round(48 + 207 * Math.min(1, Math.max(0, (v - range[0]) / ((range[1] - range[0]) || 1)))); return [g, g, g]; };
+  const colourOf = range ? (v => v === null ? [0, 0, 0] : scaled(v)) : top ? (v => { const g = Math.round(v * 255 / top); return [g, g, g]; }) : idColour;
   const oursSeveral = D.ours_several || [], theirsSeveral = D.theirs_several || [];
   paint(views[0], i => colourOf(D.ours[i]), oursSeveral);
   paint(views[1], i => colourOf(D.theirs[i]), theirsSeveral);
@@ -246,7 +255,7 @@ function setup(block) {
     span.append(swatch, k);
     role("legend").append(span);
   });
-  if (!top && !D.ours_labels) {
+  if (!top && !range && !D.ours_labels) {
     const several = document.createElement("span");
     several.textContent = "(white in the first two views: two or more owners)";
     role("legend").append(several);
@@ -293,7 +302,10 @@ function setup(block) {
     return (x >= 0 && y >= 0 && x < W && y < H) ? [x, y] : null;
   }
   function owners(v, several) { return v === 0 ? "none" : v === 4294967295 ? "covered" : "id " + (v - 1) + (several ? " and more" : ""); }
-  function value(v, several, labels) { return labels ? labels[v] : top ? "level " + v : owners(v, several); }
+  function value(v, several, labels) {
+    if (range) return v === null ? "not judged" : String(v);
+    return labels ? labels[v] : top ? "level " + v : owners(v, several);
+  }
   function describe(x, y) {
     const i = y * W + x;
     return "(" + x + ", " + y + ") " + D.kinds[D.diff[i]] + ": oracle " + value(D.ours[i], oursSeveral.includes(i), D.ours_labels) +
