@@ -17,14 +17,17 @@
 //! - `f32-barycentric`: the three edge functions at the centre, `sum E_i f_i / w_i / sum E_i
 //!   / w_i` in f32;
 //! - `planned-exact`: the exact value rounded to the nearest f32, from
-//!   `interp::planned`'s f64 filter (`FastPlan`) with the exact ratio (`PlannedValue`, set
-//!   up in rationals on first need) where the filter cannot decide;
+//!   `interp::planned`'s f64 filter (`FastPlan`): its uniform bound four pixels at a time
+//!   (`nearest_f32_x4`), the bound at the pixel where that leaves a pixel, the exact
+//!   inputs' sign at an f32 midpoint (`nearest_f32_exact`), and the exact ratio
+//!   (`PlannedValue`, set up in rationals on first need) where none of those decides;
 //! - `rasterize-exact-snapped`: for scale, what finding those pixels costs (the exact
 //!   integer rasterizer, one thread), which a renderer adds to any interpolator;
 //! - `plain-exact`: the readable definition (`ValueSetup::value`) in rationals, on the
 //!   first 500 triangles only (per pixel its cost does not depend on the mesh size).
 //!
-//! `cargo bench --features bench --bench values`
+//! `cargo bench --features bench --bench values`; `VALUES_BENCH_RAW=1` adds a quick
+//! reading of the two contenders the issue compares (the least of 40 runs each) and stops.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use num_rational::BigRational;
@@ -199,8 +202,72 @@ fn f32_barycentric(items: &[Item]) -> u64 {
     sum
 }
 
-fn planned_exact(items: &[Item]) -> (u64, u64) {
-    let (mut sum, mut exact) = (0u64, 0u64);
+/// How many channel values each tier of the planned path decided.
+#[derive(Debug, Default, Clone, Copy, PartialEq)]
+struct Tiers {
+    /// The uniform bound, four pixels at a time.
+    uniform: u64,
+    /// The bound at the pixel.
+    pixel: u64,
+    /// The sign of the exact inputs at an f32 midpoint.
+    sign: u64,
+    /// The exact ratio.
+    ratio: u64,
+}
+
+/// The planned path as a renderer would run it: each triangle's pixels four at a time
+/// under the uniform bound, a pixel it leaves under the bound at the pixel, a value that
+/// leaves at an f32 midpoint by the exact inputs' sign, and what that leaves by the exact
+/// ratio.
+fn planned_exact(items: &[Item]) -> (u64, Tiers) {
+    let mut sum = 0u64;
+    let mut tiers = Tiers::default();
+    let half = BigRational::new(1.into(), 2.into());
+    let mut four = [[0.0f32; 4]; 4];
+    let mut out = [None; 3];
+    for item in items {
+        let fast = FastPlan::new(&item.f64_in, Interpolation::Smooth, ProvokingVertex::First, (0.5, 0.5));
+        let mut slow: Option<Vec<PlannedValue>> = None;
+        for chunk in item.pixels.chunks(4) {
+            // A short last chunk repeats its last pixel.
+            let at = |i: usize| chunk[i.min(chunk.len() - 1)];
+            let (xs, ys) = ([0, 1, 2, 3].map(|i| at(i).0), [0, 1, 2, 3].map(|i| at(i).1));
+            let undecided = fast.nearest_f32_x4(xs, ys, &mut four);
+            for (i, &(px, py)) in chunk.iter().enumerate() {
+                if undecided & (1 << i) == 0 {
+                    tiers.uniform += 3;
+                    for channel in &four[..3] {
+                        sum = sum.wrapping_add(u64::from(channel[i].to_bits()));
+                    }
+                    continue;
+                }
+                fast.nearest_f32(px, py, &mut out);
+                for (c, o) in out.iter().enumerate() {
+                    let f = if let Some(f) = o {
+                        tiers.pixel += 1;
+                        *f
+                    } else if let Some(f) = fast.nearest_f32_exact(&item.setup, 0, px, py, c) {
+                        tiers.sign += 1;
+                        f
+                    } else {
+                        tiers.ratio += 1;
+                        let plans = slow.get_or_insert_with(|| {
+                            PlannedValue::channels(&item.setup, Interpolation::Smooth, ProvokingVertex::First, 0..3, &half)
+                        });
+                        plans[c].nearest_f32(px, py).unwrap().unwrap()
+                    };
+                    sum = sum.wrapping_add(u64::from(f.to_bits()));
+                }
+            }
+        }
+    }
+    (sum, tiers)
+}
+
+/// Each pixel's values from the exact ratio alone (`PlannedValue`, which the tests prove
+/// equal to the plain definition): what the planned path must equal on the whole mesh.
+fn ratio_exact(items: &[Item]) -> u64 {
+    let mut sum = 0u64;
     let half = BigRational::new(1.into(), 2.into());
     for item in items {
         let fast = FastPlan::new(&item.f64_in, Interpolation::Smooth, ProvokingVertex::First, (0.5, 0.5));
@@ -209,27 +276,19 @@ fn planned_exact(items: &[Item]) -> (u64, u64) {
         for &(px, py) in &item.pixels {
             fast.nearest_f32(px, py, &mut out);
             for (c, o) in out.iter().enumerate() {
-                let f = match o {
-                    Some(f) => *f,
-                    None => {
-                        exact += 1;
-                        let plans = slow.get_or_insert_with(|| {
-                            PlannedValue::channels(
-                                &item.setup,
-                                Interpolation::Smooth,
-                                ProvokingVertex::First,
-                                0..3,
-                                &half,
-                            )
-                        });
-                        plans[c].nearest_f32(px, py).unwrap().unwrap()
-                    }
-                };
+                // The bound at the pixel where it decides (proven with the ratio in the
+                // tests), the ratio itself everywhere else.
+                let f = o.unwrap_or_else(|| {
+                    let plans = slow.get_or_insert_with(|| {
+                        PlannedValue::channels(&item.setup, Interpolation::Smooth, ProvokingVertex::First, 0..3, &half)
+                    });
+                    plans[c].nearest_f32(px, py).unwrap().unwrap()
+                });
                 sum = sum.wrapping_add(u64::from(f.to_bits()));
             }
         }
     }
-    (sum, exact)
+    sum
 }
 
 fn plain_exact(items: &[Item]) -> u64 {
@@ -257,17 +316,38 @@ fn bench(c: &mut Criterion) {
     let (items, pixels, geometry) = mesh();
     let subset = &items[..500];
     let subset_pixels: u64 = subset.iter().map(|i| i.pixels.len() as u64).sum();
-    // The planned values are the plain ones (checked here once, outside the timing), and
-    // how often the exact ratio decided.
-    let (planned_sum, slow) = planned_exact(subset);
+    // The planned values are the plain ones (checked here once, outside the timing): on
+    // a 500-triangle prefix against the definition, on the whole mesh against the exact
+    // ratio; and how often each tier decided.
+    let (planned_sum, _) = planned_exact(subset);
     assert_eq!(planned_sum, plain_exact(subset), "planned and plain values differ");
-    let (_, slow_all) = planned_exact(&items);
+    let (planned_all, tiers) = planned_exact(&items);
+    assert_eq!(planned_all, ratio_exact(&items), "planned values and the exact ratio's differ");
     eprintln!(
-        "mesh: {} triangles, {pixels} covered pixels ({:.1} a triangle); the exact ratio decided {slow_all} of {} channel values ({slow} in the 500-triangle prefix)",
+        "mesh: {} triangles, {pixels} covered pixels ({:.1} a triangle), {} channel values decided by: the uniform bound {}, the bound at the pixel {}, the exact inputs' sign {}, the exact ratio {}",
         items.len(),
         pixels as f64 / items.len() as f64,
-        3 * pixels
+        3 * pixels,
+        tiers.uniform,
+        tiers.pixel,
+        tiers.sign,
+        tiers.ratio,
     );
+    if std::env::var_os("VALUES_BENCH_RAW").is_some() {
+        // A quick reading without criterion: the least of 40 runs of each, alternating.
+        let least = |f: &dyn Fn() -> u64| {
+            (0..40)
+                .map(|_| {
+                    let t = std::time::Instant::now();
+                    std::hint::black_box(f());
+                    t.elapsed().as_secs_f64() * 1e3
+                })
+                .fold(f64::INFINITY, f64::min)
+        };
+        let (a, b) = (least(&|| f32_origin_plane(&items)), least(&|| planned_exact(&items).0));
+        eprintln!("least of 40: f32-origin-plane {a:.2} ms, planned-exact {b:.2} ms, planned at {:.2}x its speed", a / b);
+        return;
+    }
     let mut group = c.benchmark_group("values-1080p-100k");
     group.sample_size(10);
     group.throughput(Throughput::Elements(pixels));

@@ -281,38 +281,40 @@ fn case_08_triangle() -> (
 }
 
 /// Every float model the envelope bounds, at pixel `pixel` of a 160 px canvas (centre
-/// 1/2), noperspective, lands within the envelope's far bound of the exact value in both
-/// channels; gives the models checked.
+/// 1/2), noperspective with the first vertex provoking, lands within the envelope's far
+/// bound of the exact value in both channels; gives the models checked.
 fn enveloped_models_inside_far(
     setup: &rasterproof::interp::values::ValueSetup,
     tri: &rasterproof::interp::float::FloatTriangle,
     pixel: (u32, u32),
 ) -> Vec<rasterproof::interp::float::FloatInterpolator> {
+    use rasterproof::interp::values::{Interpolation, ProvokingVertex};
+    enveloped_models_inside_far_as(setup, tri, pixel, Interpolation::NoPerspective, ProvokingVertex::First)
+}
+
+/// [`enveloped_models_inside_far`] under `interpolation`, with `provoking` the provoking
+/// vertex (which moves a reordering model's anchor).
+fn enveloped_models_inside_far_as(
+    setup: &rasterproof::interp::values::ValueSetup,
+    tri: &rasterproof::interp::float::FloatTriangle,
+    pixel: (u32, u32),
+    interpolation: rasterproof::interp::values::Interpolation,
+    provoking: rasterproof::interp::values::ProvokingVertex,
+) -> Vec<rasterproof::interp::float::FloatInterpolator> {
     use rasterproof::geom::Point;
     use rasterproof::interp::envelope::value_envelope;
     use rasterproof::interp::float::FloatInterpolator;
-    use rasterproof::interp::values::{Interpolation, ProvokingVertex};
     let centre = |c: u32| num_rational::BigRational::new((2 * i64::from(c) + 1).into(), 2.into());
     let p = Point::new(centre(pixel.0), centre(pixel.1));
-    let exact = setup
-        .value(Interpolation::NoPerspective, ProvokingVertex::First, 0..2, &p)
-        .unwrap();
-    let bounds = value_envelope(setup, Interpolation::NoPerspective, 0..2, &p, 160);
+    let exact = setup.value(interpolation, provoking, 0..2, &p).unwrap();
+    let bounds = value_envelope(setup, interpolation, 0..2, &p, 160);
     let models: Vec<FloatInterpolator> = FloatInterpolator::all()
         .into_iter()
         .filter(FloatInterpolator::enveloped)
         .collect();
     for model in &models {
         for ch in 0..2 {
-            let v = model.value(
-                tri,
-                Interpolation::NoPerspective,
-                ProvokingVertex::First,
-                ch,
-                pixel,
-                160,
-                0.5,
-            );
+            let v = model.value(tri, interpolation, provoking, ch, pixel, 160, 0.5);
             let d = distance(v, &exact[ch]).unwrap();
             let bound = bounds[ch].far.unwrap();
             assert!(d <= bound, "{} channel {ch}: {d} beyond {bound}", model.name());
@@ -439,4 +441,29 @@ fn fuzz_case_11_the_f64_filter_on_a_triangle_without_area() {
     let mut out = [Some(0.0); 2];
     fast.nearest_f32(0, 0, &mut out);
     assert_eq!(out, [None, None]);
+}
+
+/// Found by values_invariants: a sliver on a 160 px canvas, two vertices 0.4 px apart on
+/// y = 0 ((0.43, 0) and (0.03, 0)) and the third at (128, 128), w 1/4 each, smooth, the
+/// last vertex provoking, at pixel (0, 0) just outside it. llvmpipe's reordering of a
+/// clockwise triangle with the last vertex provoking, `(v1, v0, v2)`, sets the plane up
+/// from the far vertex, where the differences are 128 px long and the area (about 51 px^2)
+/// cancels from products of 16384: `origin-plane fma ccw rcp f32 y-down` gave 1.2573242
+/// against 8483081/6684468 (1.2691), 0.0117 away, and the envelope, which summed the
+/// gradient's absolute values from vertex 0 only (0.4 px differences there), allowed
+/// 0.0074. The envelope now takes the largest sums over the three vertices a renderer may
+/// set the gradient up from.
+#[test]
+fn fuzz_case_12_a_sliver_set_up_from_its_far_vertex() {
+    use rasterproof::interp::values::{Interpolation, ProvokingVertex};
+    let (setup, tri) = values_case(
+        [(110, 0), (32767, 32767), (8, 0)],
+        [(1, 4), (1, 4), (1, 4)],
+        [[0, 2821], [2049, -2267], [2, 0]],
+    );
+    let checked = enveloped_models_inside_far_as(&setup, &tri, (0, 0), Interpolation::Smooth, ProvokingVertex::Last);
+    assert!(
+        checked.iter().any(|m| m.name() == "origin-plane fma ccw rcp f32 y-down"),
+        "the reordering model is among those checked"
+    );
 }

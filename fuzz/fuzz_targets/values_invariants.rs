@@ -5,7 +5,8 @@
 //! 1. The invariants of `check::values` hold for the exact definition: hull, rotation,
 //!    translation (by any offset of the 1/256 grid), a shared edge, flat copies.
 //! 2. The planned value (`PlannedValue`) at the pixel's centre is the plain one, and so is
-//!    its nearest f32; so is the f64 filter's (`FastPlan`) wherever it decides one.
+//!    its nearest f32; so is the f64 filter's (`FastPlan`) wherever it decides one (a
+//!    pixel at a time, four at a time, and by the exact inputs' sign).
 //! 3. Every float model of `interp::float` lands within the envelope's `far` bound.
 //!
 //! `Debug` is the input struct (Rust).
@@ -84,12 +85,21 @@ fuzz_target!(|input: Input| {
         assert_eq!(planned.nearest_f32(px, py), plain.clone().map(|v| nearest_f32(&v)));
     }
     if let Some(t64) = TriangleF64::of(&setup, 0..2) {
+        let fast = FastPlan::new(&t64, interpolation, provoking, (0.5, 0.5));
         let mut out = [None; 2];
-        FastPlan::new(&t64, interpolation, provoking, (0.5, 0.5)).nearest_f32(px, py, &mut out);
+        fast.nearest_f32(px, py, &mut out);
+        let mut four = [[0.0f32; 4]; 4];
+        let undecided = fast.nearest_f32_x4([px; 4], [py; 4], &mut four);
         for (c, decided) in out.iter().enumerate() {
+            let plain = || setup.value(interpolation, provoking, c..c + 1, &p).map(|v| nearest_f32(&v[0]));
             if let Some(f) = decided {
-                let plain = setup.value(interpolation, provoking, c..c + 1, &p).map(|v| nearest_f32(&v[0]));
-                assert_eq!(plain, Ok(Some(*f)), "channel {c}");
+                assert_eq!(plain(), Ok(Some(*f)), "channel {c}");
+            }
+            if undecided & 1 == 0 {
+                assert_eq!(plain(), Ok(Some(four[c][0])), "channel {c}, four at once");
+            }
+            if let Some(f) = fast.nearest_f32_exact(&setup, 0, px, py, c) {
+                assert_eq!(plain(), Ok(Some(f)), "channel {c}, the exact inputs' sign");
             }
         }
     }

@@ -132,33 +132,45 @@ struct Gradient {
 }
 
 impl Plane {
+    /// The plane of `g` over the triangle `(x, y)`. A renderer sets the gradient up from
+    /// the differences to any one vertex (llvmpipe from vertex 0 after its reordering,
+    /// which may make it the scene's vertex 1 or 2), and their absolute-value sums differ
+    /// with the choice (a sliver with two close vertices cancels far more from the third
+    /// one), so the sums are the largest over the three.
     fn new(x: [Input; 3], y: [Input; 3], g: [f64; 3], height: f64) -> Plane {
         let gradient = (|| {
-            let (dx1, ax1) = diff(x[1], x[0]);
-            let (dx2, ax2) = diff(x[2], x[0]);
-            let (dy1, ay1) = diff(y[1], y[0]);
-            let (dy2, ay2) = diff(y[2], y[0]);
-            let area = dx1 * dy2 - dx2 * dy1;
+            let from = |b: usize| {
+                let (j, k) = ((b + 1) % 3, (b + 2) % 3);
+                let (dx1, ax1) = diff(x[j], x[b]);
+                let (dx2, ax2) = diff(x[k], x[b]);
+                let (dy1, ay1) = diff(y[j], y[b]);
+                let (dy2, ay2) = diff(y[k], y[b]);
+                let area = dx1 * dy2 - dx2 * dy1;
+                let area_abs = ax1 * ay2 + ax2 * ay1;
+                let (dg1, ag1) = (g[j] - g[b], g[j].abs() + g[b].abs());
+                let (dg2, ag2) = (g[k] - g[b], g[k].abs() + g[b].abs());
+                let nx = dg1 * dy2 - dg2 * dy1;
+                let ny = dx1 * dg2 - dx2 * dg1;
+                (area, area_abs, nx, ny, (ag1 * ay2 + ag2 * ay1), (ax1 * ag2 + ax2 * ag1))
+            };
+            // The gradient itself from vertex 0 (the same plane from any vertex).
+            let (area, _, nx, ny, _, _) = from(0);
             if area == 0.0 || !area.is_finite() {
                 return None;
             }
-            let area_abs = ax1 * ay2 + ax2 * ay1;
-            // An area f32 cannot tell from zero: a plane's gradient may be infinite.
-            if gamma() * area_abs >= area.abs() {
-                return None;
-            }
-            let (dg1, ag1) = (g[1] - g[0], g[1].abs() + g[0].abs());
-            let (dg2, ag2) = (g[2] - g[0], g[2].abs() + g[0].abs());
-            let nx = dg1 * dy2 - dg2 * dy1;
-            let ny = dx1 * dg2 - dx2 * dg1;
             let (gx, gy) = (nx / area, ny / area);
-            Some(Gradient {
-                area,
-                gx,
-                gy,
-                sx: (ag1 * ay2 + ag2 * ay1 + gx.abs() * area_abs) / area.abs(),
-                sy: (ax1 * ag2 + ax2 * ag1 + gy.abs() * area_abs) / area.abs(),
-            })
+            let (mut sx, mut sy) = (0.0f64, 0.0f64);
+            for b in 0..3 {
+                let (_, area_abs, _, _, nx_abs, ny_abs) = from(b);
+                // An area f32 cannot tell from zero: a plane's gradient may be infinite.
+                if gamma() * area_abs >= area.abs() {
+                    return None;
+                }
+                // The gradient's absolute-value sums, the denominator's error included.
+                sx = sx.max((nx_abs + gx.abs() * area_abs) / area.abs());
+                sy = sy.max((ny_abs + gy.abs() * area_abs) / area.abs());
+            }
+            Some(Gradient { area, gx, gy, sx, sy })
         })();
         Plane {
             x,

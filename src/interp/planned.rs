@@ -637,13 +637,17 @@ impl FastPlan {
             y,
             smooth,
         };
-        for c in 0..channels {
+        // Every lane, the unused ones' values 0 (a fixed count the compiler can unroll).
+        for c in 0..FAST_CHANNELS {
             let f = [t.values[0][c], t.values[1][c], t.values[2][c]];
             let g = [f[0] * r[0], f[1] * r[1], f[2] * r[2]];
             ratio.n[c] = combine(&g);
             let e_n = scale * (g[0].abs() + g[1].abs() + g[2].abs());
             ratio.e_n[c] = e_n;
             let most = 2.0 * f[0].abs().max(f[1].abs()).max(f[2].abs());
+            // Beyond f32's range the uniform bound decides nothing (the bound at the pixel
+            // still may).
+            let most = if most <= f64::from(f32::MAX) / 2.0 { most } else { 0.0 };
             ratio.most[c] = most;
             ratio.uniform[c] = ((e_n + most * e_d) * q_most + 8.0 * U * most) * (1.0 + 8.0 * U) * (1.0 + 16.0 * U);
         }
@@ -736,7 +740,9 @@ impl FastPlan {
                 let v = (n[0] * xf[i] + n[1] * yf[i] + n[2]) * inv[i];
                 #[allow(clippy::cast_possible_truncation)] // rounding to f32 is the point
                 let (lo, hi) = ((v - u) as f32, (v + u) as f32);
-                ok[i] &= (lo.to_bits() == hi.to_bits()) & (v.abs() <= most) & lo.is_finite();
+                // |v| <= most <= f32::MAX: both ends finite (most is 0 for a value f32
+                // cannot hold), and a NaN fails the comparison.
+                ok[i] &= (lo.to_bits() == hi.to_bits()) & (v.abs() <= most);
                 out[c][i] = lo;
             }
         }
