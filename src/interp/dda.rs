@@ -152,15 +152,21 @@ pub struct FixedPlane {
     pub dy: i64,
 }
 
+/// The snapped vertices' bounding box in pixels: the walk's first pixel (`left`, `top`)
+/// and its last column and row.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct PixelBox {
+    left: i64,
+    top: i64,
+    right: i64,
+    bottom: i64,
+}
+
 /// A triangle's varying set up for the walk (module docs).
 #[derive(Debug, Clone, PartialEq)]
 pub struct GouraudDda {
-    /// The walk's first pixel, the top-left of the snapped bounding box.
-    left: i64,
-    top: i64,
-    /// The bounding box's last pixel column and row.
-    right: i64,
-    bottom: i64,
+    /// The walk's box.
+    pixels: PixelBox,
     /// Per channel, the plane walked: the value (`noperspective`, `flat`) or the value over
     /// `w` (`smooth`).
     planes: [FixedPlane; DDA_CHANNELS],
@@ -299,10 +305,7 @@ struct Frame {
     /// The first pixel's sample relative to vertex 0, subpixels.
     sample: (i128, i128),
     /// The bounding box in pixels.
-    left: i64,
-    top: i64,
-    right: i64,
-    bottom: i64,
+    pixels: PixelBox,
 }
 
 impl Frame {
@@ -328,10 +331,12 @@ impl Frame {
             area2: area2.abs(),
             sign: area2.signum(),
             sample: (i128::from(left) * one + c - xs[0], i128::from(top) * one + c - ys[0]),
-            left,
-            top,
-            right,
-            bottom,
+            pixels: PixelBox {
+                left,
+                top,
+                right,
+                bottom,
+            },
         })
     }
 
@@ -359,7 +364,8 @@ impl Frame {
         }
         let (sx, sy) = self.sample;
         let start = v0 + round_quotient(a * sx + b * sy, per_pixel, Rounding::NearestEven);
-        let (w, h) = (i128::from(self.right - self.left), i128::from(self.bottom - self.top));
+        let p = &self.pixels;
+        let (w, h) = (i128::from(p.right - p.left), i128::from(p.bottom - p.top));
         if start.abs() + a.abs() * w + b.abs() * h >= bound {
             return walk;
         }
@@ -413,10 +419,7 @@ impl GouraudDda {
             None => None,
         };
         Ok(GouraudDda {
-            left: frame.left,
-            top: frame.top,
-            right: frame.right,
-            bottom: frame.bottom,
+            pixels: frame.pixels,
             planes,
             channels: t.channels,
             w,
@@ -435,7 +438,7 @@ impl GouraudDda {
 
     /// The walk's first pixel (the snapped bounding box's top-left).
     pub fn first_pixel(&self) -> (i64, i64) {
-        (self.left, self.top)
+        (self.pixels.left, self.pixels.top)
     }
 
     /// The walk at pixel `(x, y)`: the first pixel's values stepped down `y - top` rows and
@@ -443,11 +446,12 @@ impl GouraudDda {
     /// `None` outside the bounding box.
     pub fn span(&self, x: u32, y: u32) -> Option<Span<'_>> {
         let (x, y) = (i64::from(x), i64::from(y));
-        if !(self.left..=self.right).contains(&x) || !(self.top..=self.bottom).contains(&y) {
+        let b = &self.pixels;
+        if !(b.left..=b.right).contains(&x) || !(b.top..=b.bottom).contains(&y) {
             return None;
         }
         // Inside the envelope: every value the walk reaches in the box is below 2^62.
-        let at = |p: &FixedPlane| p.start + (x - self.left) * p.dx + (y - self.top) * p.dy;
+        let at = |p: &FixedPlane| p.start + (x - b.left) * p.dx + (y - b.top) * p.dy;
         let mut n = [0; DDA_CHANNELS];
         for (n, p) in n.iter_mut().zip(self.planes()) {
             *n = at(p);

@@ -6,7 +6,7 @@
 use plotters::coord::ranged1d::ValueFormatter;
 use plotters::prelude::*;
 
-use super::{colour, err, legend, legend_entries, Area, SANS};
+use super::{colour, err, frame, legend, legend_entries, Area, SANS};
 use crate::trade::report::{Axis, Outcome, SpeedOutcome, TradeReport, WorkloadReport};
 use crate::trade::{Family, Magnitude};
 
@@ -85,24 +85,14 @@ fn headline_name(w: &WorkloadReport) -> &'static str {
 
 /// Picture (a): the binary models' workloads, or (`area`) the area family's.
 pub(super) fn speed_error<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport, area: bool) -> Result<(), String> {
-    root.fill(&WHITE).map_err(err)?;
     let m = speed_error_magnitude(r);
     let workloads = workloads_of(r, area);
-    let (_, h) = root.dim_in_pixel();
-    let (top, rest) = root.split_vertically(56);
     let what = if area { "Area coverage: speed" } else { "Speed" };
-    top.titled(
-        &format!(
-            "{what} against error at {m} px from the origin, per workload: each contender a point; ringed and \
-             joined in black: the Pareto front"
-        ),
-        (SANS, 26),
-    )
-    .map_err(err)?;
-    let (grid, bottom) = rest.split_vertically(h - 56 - 150);
-    let n = workloads.len();
-    let (rows, cols) = grid_shape(n);
-    let panels = grid.split_evenly((rows, cols));
+    let title = format!(
+        "{what} against error at {m} px from the origin, per workload: each contender a point; ringed and joined \
+         in black: the Pareto front"
+    );
+    let (panels, bottom) = frame(root, &title, 26, grid_shape(workloads.len()))?;
     for (panel, w) in panels.iter().zip(workloads.iter().copied()) {
         speed_error_panel(panel, w, m, &YAxis::headline(headline_name(w)))?;
     }
@@ -409,18 +399,13 @@ pub(super) fn magnitude_panel<DB: DrawingBackend>(
 
 /// Picture (b): the binary models' workloads, one panel each on the headline rate.
 pub(super) fn error_magnitude<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport) -> Result<(), String> {
-    root.fill(&WHITE).map_err(err)?;
     let workloads = workloads_of(r, false);
-    let (_, h) = root.dim_in_pixel();
-    let (top, rest) = root.split_vertically(56);
-    top.titled(
+    let (panels, bottom) = frame(
+        root,
         "Error against coordinate magnitude (the window at M px from the origin), one line per contender",
-        (SANS, 26),
-    )
-    .map_err(err)?;
-    let (grid, bottom) = rest.split_vertically(h - 56 - 150);
-    let (rows, cols) = grid_shape(workloads.len());
-    let panels = grid.split_evenly((rows, cols));
+        26,
+        grid_shape(workloads.len()),
+    )?;
     for (panel, w) in panels.iter().zip(workloads.iter().copied()) {
         magnitude_panel(panel, w, &YAxis::headline(headline_name(w)))?;
     }
@@ -437,19 +422,15 @@ pub(super) fn error_magnitude<DB: DrawingBackend>(root: &Area<DB>, r: &TradeRepo
 /// pixels off by more than half a quantum per million above, the largest coverage error
 /// in quanta of 1/255 below.
 pub(super) fn area_error_magnitude<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport) -> Result<(), String> {
-    root.fill(&WHITE).map_err(err)?;
     let workloads = workloads_of(r, true);
-    let (_, h) = root.dim_in_pixel();
-    let (top, rest) = root.split_vertically(56);
-    top.titled(
+    let cols = workloads.len().max(1);
+    let (panels, bottom) = frame(
+        root,
         "Area coverage: error against coordinate magnitude (the window at M px from the origin), one line per \
          contender",
-        (SANS, 26),
-    )
-    .map_err(err)?;
-    let (grid, bottom) = rest.split_vertically(h - 56 - 150);
-    let cols = workloads.len().max(1);
-    let panels = grid.split_evenly((2, cols));
+        26,
+        (2, cols),
+    )?;
     let quanta = YAxis {
         value: max_quanta,
         bottom: 3e-8,

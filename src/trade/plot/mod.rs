@@ -125,6 +125,22 @@ fn contenders(workloads: &[&WorkloadReport]) -> Vec<(String, bool)> {
     out
 }
 
+/// A picture's frame, filled white: `title` (at `size` points) across the top, a grid of
+/// `rows` x `cols` panels, and the bottom 150 px, for the legend.
+fn frame<DB: DrawingBackend>(
+    root: &Area<DB>,
+    title: &str,
+    size: u32,
+    (rows, cols): (usize, usize),
+) -> Result<(Vec<Area<DB>>, Area<DB>), String> {
+    root.fill(&WHITE).map_err(err)?;
+    let (_, h) = root.dim_in_pixel();
+    let (top, rest) = root.split_vertically(56);
+    top.titled(title, (SANS, size)).map_err(err)?;
+    let (grid, bottom) = rest.split_vertically(h - 56 - 150);
+    Ok((grid.split_evenly((rows, cols)), bottom))
+}
+
 /// Draws a legend: one marker and name per entry, in rows of `per_row`.
 fn legend<DB: DrawingBackend>(
     area: &Area<DB>,

@@ -6,7 +6,7 @@
 use plotters::prelude::*;
 
 use super::charts::{magnitude_panel, speed_error_panel, YAxis};
-use super::{err, legend, legend_entries, Area, SANS};
+use super::{frame, legend, legend_entries, Area};
 use crate::trade::report::{Axis, SpeedOutcome, TradeReport, WorkloadReport};
 use crate::trade::values::{ULPS, WRONG_UNORM};
 use crate::trade::{Family, Magnitude, Metric};
@@ -86,18 +86,13 @@ fn axes() -> [YAxis; 3] {
 /// Error against the magnitudes of `axis`: one column per workload, the largest ulps, the
 /// 99th percentile and the wrong UNORM8 levels in three rows.
 pub(super) fn error_by<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport, axis: Axis) -> Result<(), String> {
-    root.fill(&WHITE).map_err(err)?;
     let workloads = workloads_on(r, axis);
-    let (_, h) = root.dim_in_pixel();
-    let (top, rest) = root.split_vertically(56);
     let title = match axis {
         Axis::Offset => "Interpolated values: error against canvas offset (every coordinate moved by (M, M)), one line per contender",
         Axis::AttributeScale => "Interpolated values: error against attribute scale (every value times 2^k, the window at the origin)",
     };
-    top.titled(title, (SANS, 26)).map_err(err)?;
-    let (grid, bottom) = rest.split_vertically(h - 56 - 150);
     let cols = workloads.len().max(1);
-    let panels = grid.split_evenly((3, cols));
+    let (panels, bottom) = frame(root, title, 26, (3, cols))?;
     for (row, y) in axes().iter().enumerate() {
         for (k, w) in workloads.iter().enumerate() {
             magnitude_panel(&panels[row * cols + k], w, y)?;
@@ -124,19 +119,15 @@ pub(super) fn error_by<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport, axi
 /// Speed against the largest error in ulps, per offset workload at the origin (top row)
 /// and at the largest offset (bottom row), the Pareto front ringed and joined.
 pub(super) fn speed_error<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport) -> Result<(), String> {
-    root.fill(&WHITE).map_err(err)?;
     let workloads = workloads_on(r, Axis::Offset);
-    let (_, h) = root.dim_in_pixel();
-    let (top, rest) = root.split_vertically(56);
-    top.titled(
+    let cols = workloads.len().max(1);
+    let (panels, bottom) = frame(
+        root,
         "Interpolated values: speed against the largest error, at the origin (above) and at the largest offset \
          (below); ringed and joined in black: the Pareto front",
-        (SANS, 24),
-    )
-    .map_err(err)?;
-    let (grid, bottom) = rest.split_vertically(h - 56 - 150);
-    let cols = workloads.len().max(1);
-    let panels = grid.split_evenly((2, cols));
+        24,
+        (2, cols),
+    )?;
     let y = ulps_axis(max_ulps, "largest:");
     // The plain definition (thousands of pixels a second, on a subset) left out, so that
     // the others, within a factor of a few of each other, separate.
