@@ -7,8 +7,11 @@
 //! - Gouraud colour `c = λ0 c0 + λ1 c1 + λ2 c2`, and the plane equation of Luebke's slides
 //!   `c = A x + B y + C` from a 3x3 solve, equal to it in exact arithmetic;
 //! - [`values`]: a scene's declared varyings, exactly, at any point of a triangle
-//!   (`smooth`, `noperspective`, `flat`; window-space or clip-space vertices).
+//!   (`smooth`, `noperspective`, `flat`; window-space or clip-space vertices); [`planned`]
+//!   the same at float speed, [`float`] the float interpolators renderers build,
+//!   [`envelope`] their error bound, [`dda`] a fixed-point Gouraud DDA.
 
+pub mod dda;
 pub mod envelope;
 pub mod float;
 pub mod planned;

@@ -117,6 +117,8 @@ mod stay_alive;
 mod suite;
 #[path = "trade.rs"]
 mod trade;
+#[path = "trade_values.rs"]
+mod trade_values;
 #[path = "values.rs"]
 mod values;
 mod values_compare;

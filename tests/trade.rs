@@ -22,7 +22,7 @@ use crate::tempdir;
 /// whole run, and the report is theirs in family order. (The other tests of this file wait
 /// for it on their test threads: run on one thread, it left a core idle for half a minute.
 /// Its speeds, measured side by side here, are asserted nowhere.)
-fn quick() -> &'static TradeReport {
+pub(crate) fn quick() -> &'static TradeReport {
     static REPORT: OnceLock<TradeReport> = OnceLock::new();
     REPORT.get_or_init(|| {
         let config = Config::quick();
@@ -160,6 +160,10 @@ fn check_schema(j: &Value) {
         for k in ["name", "family", "description", "unit", "baseline"] {
             has(w, k, Value::is_string);
         }
+        has(w, "axis", |v| {
+            ["canvas offset", "attribute scale"].contains(&v.as_str().unwrap_or(""))
+        });
+        has(w, "magnitudes", |v| v.as_array().is_some_and(|a| !a.is_empty()));
         has(w, "primitives", Value::is_u64);
         has(w, "on_grid", Value::is_boolean);
         has(w, "plans", Value::is_array);
@@ -201,6 +205,11 @@ fn check_schema(j: &Value) {
                                 has(m, "max", Value::is_number);
                                 has(m, "samples", Value::is_u64);
                             }
+                            "ulp-tail" => {
+                                has(m, "p99", Value::is_number);
+                                has(m, "max", Value::is_number);
+                                has(m, "samples", Value::is_u64);
+                            }
                             "quanta" => {
                                 has(m, "max", Value::is_number);
                                 has(m, "mean", Value::is_number);
@@ -225,9 +234,15 @@ fn the_json_has_the_documented_schema_and_every_contender_at_every_magnitude() {
     let r = quick();
     let j = r.to_json();
     check_schema(&j);
-    let mags = Magnitude::DEFAULT.len();
     for w in j["workloads"].as_array().unwrap() {
         let contenders = w["contenders"].as_array().unwrap().len();
+        // Every family at the run's magnitudes, the values family at its own.
+        let mags = if w["family"] == "values" {
+            w["magnitudes"].as_array().unwrap().len()
+        } else {
+            assert_eq!(w["magnitudes"].as_array().unwrap().len(), Magnitude::DEFAULT.len());
+            Magnitude::DEFAULT.len()
+        };
         assert_eq!(
             w["errors"].as_array().unwrap().len(),
             contenders * mags,
@@ -241,7 +256,7 @@ fn the_json_has_the_documented_schema_and_every_contender_at_every_magnitude() {
         .iter()
         .map(|w| w["family"].as_str().unwrap())
         .collect();
-    for f in ["triangles", "lines", "polygons", "clipping", "area"] {
+    for f in ["triangles", "lines", "polygons", "clipping", "area", "values"] {
         assert!(families.contains(&f), "{f}");
     }
     let md = r.to_markdown();
@@ -260,6 +275,9 @@ fn the_pictures_decode() {
         "error-vs-magnitude",
         "area-speed-vs-error",
         "area-error-vs-magnitude",
+        "values-error-vs-offset",
+        "values-error-vs-scale",
+        "values-speed-vs-error",
         "predicate-map",
     ] {
         for ext in ["png", "svg"] {
@@ -320,6 +338,12 @@ fn the_command_writes_every_file_and_prints_the_json() {
             "speed-vs-error.svg",
             "trade.json",
             "trade.md",
+            "values-error-vs-offset.png",
+            "values-error-vs-offset.svg",
+            "values-error-vs-scale.png",
+            "values-error-vs-scale.svg",
+            "values-speed-vs-error.png",
+            "values-speed-vs-error.svg",
         ]
     );
     let written: Value = serde_json::from_slice(&std::fs::read(out.join("trade.json")).unwrap()).unwrap();

@@ -15,20 +15,22 @@ pub struct Options {
     /// Small workloads (128 px canvas) and 3 repetitions: well under a minute; what CI runs.
     #[arg(long)]
     quick: bool,
-    /// Only these families: triangles, lines, polygons, clipping, area (repeat the option
-    /// or separate with commas; default: all).
+    /// Only these families: triangles, lines, polygons, clipping, area, values (repeat the
+    /// option or separate with commas; default: all).
     #[arg(long = "family", value_name = "F", value_delimiter = ',', num_args = 1..)]
     families: Vec<String>,
     /// The window's distance from the origin, px, comma-separated: 0, 2^k (k <= 40) or a
-    /// number of pixels.
+    /// number of pixels (the values family has its own: 0, 2^4, ..., 2^24, and attribute
+    /// scales 2^0 to 2^32).
     #[arg(long, value_name = "LIST", default_value = "0,2^10,2^16,2^20,2^23,2^24,2^30")]
     magnitudes: String,
     /// The workloads' seed.
     #[arg(long, default_value_t = 1)]
     seed: u64,
     /// Write trade.json, trade.md and the pictures (speed-vs-error, error-vs-magnitude,
-    /// predicate-map, area-speed-vs-error, area-error-vs-magnitude; PNG and SVG) into DIR, created if missing. All or nothing: a
-    /// failing run leaves none of them behind.
+    /// predicate-map, area-speed-vs-error, area-error-vs-magnitude, values-error-vs-offset,
+    /// values-error-vs-scale, values-speed-vs-error; PNG and SVG) into DIR, created if
+    /// missing. All or nothing: a failing run leaves none of them behind.
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
     /// Output format on stdout.

@@ -53,9 +53,10 @@
 //! bits of that ratio), so these models are not bounded by [`crate::interp::envelope`]'s
 //! error bound ([`FloatInterpolator::enveloped`]).
 
-use std::ops::{Add, Div, Mul, Sub};
+use std::ops::{Add, Div, Mul, Range, Sub};
 
-use crate::interp::values::{Interpolation, ProvokingVertex};
+use crate::interp::values::{Interpolation, ProvokingVertex, ValueSetup};
+use crate::num::exact::nearest_f32;
 
 /// How the value at a pixel is formed (module docs).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -127,8 +128,35 @@ pub struct FloatTriangle {
     pub values: [Vec<f32>; 3],
 }
 
+impl FloatTriangle {
+    /// `setup`'s triangle as a renderer holds it: each position, `w` and value rounded to
+    /// the nearest f32, and `1 / w` the f32 reciprocal of the rounded `w`; `None` when an
+    /// input is not a finite f32, or for a segment.
+    pub fn of(setup: &ValueSetup) -> Option<FloatTriangle> {
+        let ValueSetup::Triangle(t) = setup else {
+            return None;
+        };
+        let w: Vec<f32> = t.h.iter().map(|h| nearest_f32(&h[2])).collect::<Option<_>>()?;
+        let coord = |i: usize, c: usize| nearest_f32(&(&t.h[i][c] / &t.h[i][2]));
+        let x = [coord(0, 0)?, coord(1, 0)?, coord(2, 0)?];
+        let y = [coord(0, 1)?, coord(1, 1)?, coord(2, 1)?];
+        let values = [0, 1, 2].map(|i| t.values[i].iter().map(nearest_f32).collect::<Option<Vec<f32>>>());
+        let [Some(a), Some(b), Some(c)] = values else {
+            return None;
+        };
+        Some(FloatTriangle {
+            x,
+            y,
+            inv_w: [1.0 / w[0], 1.0 / w[1], 1.0 / w[2]],
+            values: [a, b, c],
+        })
+    }
+}
+
 /// The arithmetic a model runs in.
-trait Real: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self> {
+trait Real:
+    Copy + std::fmt::Debug + PartialEq + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
+{
     fn of(v: f32) -> Self;
     fn fused(self, b: Self, c: Self) -> Self;
     fn out(self) -> f32;
@@ -267,98 +295,96 @@ impl FloatInterpolator {
         if interpolation == Interpolation::Flat {
             return t.values[provoking.vertex(3)][channel];
         }
-        if self.f64 {
-            self.eval::<f64>(t, interpolation, provoking, channel, (px, py), height, centre)
-        } else {
-            self.eval::<f32>(t, interpolation, provoking, channel, (px, py), height, centre)
+        if let Form::Homogeneous(k) = self.form {
+            return self.homogeneous_value(t, interpolation, channel, (px, py), k, centre);
         }
+        let mut out = [0.0];
+        self.setup(t, interpolation, provoking, channel..channel + 1, height, centre)
+            .values((px, py), &mut out);
+        out[0]
     }
 
-    #[allow(clippy::too_many_arguments, clippy::cast_precision_loss)]
-    fn eval<R: Real>(
+    /// The model set up once for triangle `t`'s channels `channels` (at most
+    /// [`SETUP_CHANNELS`]) under `interpolation`, on a canvas of height `height` with pixel
+    /// centres at `+ centre`: the vertex order, the gradients and the plane's anchor
+    /// computed once, as a renderer computes them per primitive, so that
+    /// [`FloatSetup::values`] runs only the per-pixel operations.
+    /// [`FloatInterpolator::value`] is this setup's value at one pixel, bit for bit (the
+    /// same code; euc's homogeneous forms set up per pixel, as euc does).
+    ///
+    /// ```
+    /// use rasterproof::interp::float::{FloatInterpolator, FloatTriangle};
+    /// use rasterproof::interp::values::{Interpolation, ProvokingVertex};
+    /// let t = FloatTriangle {
+    ///     x: [0.0, 8.0, 0.0],
+    ///     y: [0.0, 0.0, 8.0],
+    ///     inv_w: [1.0, 0.5, 0.25],
+    ///     values: [vec![0.0, 1.0], vec![8.0, 3.0], vec![0.0, 5.0]],
+    /// };
+    /// let m = FloatInterpolator::all()[0];
+    /// let setup = m.setup(&t, Interpolation::Smooth, ProvokingVertex::First, 0..2, 8, 0.5);
+    /// let mut out = [0.0; 2];
+    /// setup.values((1, 3), &mut out);
+    /// for c in 0..2 {
+    ///     let one = m.value(&t, Interpolation::Smooth, ProvokingVertex::First, c, (1, 3), 8, 0.5);
+    ///     assert_eq!(out[c].to_bits(), one.to_bits());
+    /// }
+    /// ```
+    ///
+    /// # Panics
+    /// When `channels` holds more than [`SETUP_CHANNELS`] channels, or channels a vertex
+    /// does not have.
+    pub fn setup(
         &self,
         t: &FloatTriangle,
         interpolation: Interpolation,
         provoking: ProvokingVertex,
-        channel: usize,
-        (px, py): (u32, u32),
+        channels: Range<usize>,
         height: u32,
         centre: f32,
-    ) -> f32 {
-        if let Form::Homogeneous(k) = self.form {
-            return self.homogeneous::<R>(t, interpolation, channel, (px, py), k, centre);
-        }
-        let flip = |y: f32| if self.y_up { height as f32 - y } else { y };
-        let row = if self.y_up { height - 1 - py } else { py };
-        let (x, y) = (t.x.map(R::of), t.y.map(|v| R::of(flip(v))));
-        let mut order = [0, 1, 2];
-        if self.order == VertexOrder::CounterClockwise {
-            let area = (x[0] - x[1]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[0] - y[1]);
-            if area.out() < 0.0 {
-                order = match provoking {
-                    ProvokingVertex::First => [0, 2, 1],
-                    ProvokingVertex::Last => [1, 0, 2],
-                };
+    ) -> FloatSetup {
+        assert!(
+            channels.len() <= SETUP_CHANNELS,
+            "a float setup holds at most {SETUP_CHANNELS} channels, not {}",
+            channels.len()
+        );
+        let kind = if interpolation == Interpolation::Flat {
+            let mut each = [0.0; SETUP_CHANNELS];
+            for (e, c) in each.iter_mut().zip(channels.clone()) {
+                *e = t.values[provoking.vertex(3)][c];
             }
-        } else if self.order == VertexOrder::Reversed {
-            let area = (x[0] - x[1]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[0] - y[1]);
-            if area.out() < 0.0 {
-                order = [2, 1, 0];
+            Kind::Flat(each, channels.len())
+        } else if let Form::Homogeneous(k) = self.form {
+            Kind::Homogeneous {
+                model: *self,
+                triangle: t.clone(),
+                interpolation,
+                channels,
+                k,
+                centre,
             }
-        }
-        let x = order.map(|i| x[i]);
-        let y = order.map(|i| y[i]);
-        let perspective = interpolation == Interpolation::Smooth;
-        let inv_w = order.map(|i| R::of(t.inv_w[i]));
-        let a = order.map(|i| {
-            let v = R::of(t.values[i][channel]);
-            if perspective {
-                v * R::of(t.inv_w[i])
-            } else {
-                v
-            }
-        });
-        let pixel = (R::of(px as f32), R::of(row as f32));
-        let c = R::of(centre);
-        let at = (pixel.0 + c, pixel.1 + c);
-        let plane = |g: [R; 3]| -> R {
-            match self.form {
-                Form::Barycentric => {
-                    let e = |j: usize, k: usize| (x[j] - at.0) * (y[k] - at.1) - (x[k] - at.0) * (y[j] - at.1);
-                    let (e0, e1, e2) = (e(1, 2), e(2, 0), e(0, 1));
-                    (e0 * g[0] + e1 * g[1] + e2 * g[2]) / (e0 + e1 + e2)
-                }
-                Form::Homogeneous(_) => unreachable!("set up by FloatInterpolator::homogeneous"),
-                Form::OriginPlane | Form::VertexPlane => {
-                    let (dx01, dy01) = (x[0] - x[1], y[0] - y[1]);
-                    let (dx20, dy20) = (x[2] - x[0], y[2] - y[0]);
-                    let ooa = R::of(1.0) / (dx01 * dy20 - dy01 * dx20);
-                    let (dx20o, dy20o, dx01o, dy01o) = (dx20 * ooa, dy20 * ooa, dx01 * ooa, dy01 * ooa);
-                    let (da01, da20) = (g[0] - g[1], g[2] - g[0]);
-                    let dadx = da01 * dy20o - da20 * dy01o;
-                    let dady = da20 * dx01o - da01 * dx20o;
-                    let (base, ex, ey) = if self.form == Form::OriginPlane {
-                        let a0 = g[0] - (dadx * (x[0] - c) + dady * (y[0] - c));
-                        (a0, pixel.0, pixel.1)
-                    } else {
-                        (g[0], at.0 - x[0], at.1 - y[0])
-                    };
-                    if self.fma {
-                        dady.fused(ey, dadx.fused(ex, base))
-                    } else {
-                        base + dadx * ex + dady * ey
-                    }
-                }
-            }
+        } else if self.f64 {
+            Kind::F64(Planes::new(self, t, interpolation, provoking, channels, height, centre))
+        } else {
+            Kind::F32(Planes::new(self, t, interpolation, provoking, channels, height, centre))
         };
-        let value = plane(a);
-        if !perspective {
-            return value.out();
-        }
-        let w = plane(inv_w);
-        match self.divide {
-            Divide::Reciprocal => (value * (R::of(1.0) / w)).out(),
-            Divide::Quotient => (value / w).out(),
+        FloatSetup { kind }
+    }
+
+    /// euc's value, in the model's arithmetic.
+    fn homogeneous_value(
+        &self,
+        t: &FloatTriangle,
+        interpolation: Interpolation,
+        channel: usize,
+        pixel: (u32, u32),
+        k: u8,
+        centre: f32,
+    ) -> f32 {
+        if self.f64 {
+            self.homogeneous::<f64>(t, interpolation, channel, pixel, k, centre)
+        } else {
+            self.homogeneous::<f32>(t, interpolation, channel, pixel, k, centre)
         }
     }
 
@@ -439,6 +465,227 @@ impl FloatInterpolator {
     }
 }
 
+/// The channels a [`FloatSetup`] holds at most (a vec4's).
+pub const SETUP_CHANNELS: usize = 4;
+
+/// A model set up for one triangle ([`FloatInterpolator::setup`]): its values at pixels.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FloatSetup {
+    kind: Kind,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+enum Kind {
+    /// The provoking vertex's values.
+    Flat([f32; SETUP_CHANNELS], usize),
+    F32(Planes<f32>),
+    F64(Planes<f64>),
+    /// euc's forms, set up per pixel.
+    Homogeneous {
+        model: FloatInterpolator,
+        triangle: FloatTriangle,
+        interpolation: Interpolation,
+        channels: Range<usize>,
+        k: u8,
+        centre: f32,
+    },
+}
+
+impl FloatSetup {
+    /// How many channels it evaluates.
+    pub fn channels(&self) -> usize {
+        match &self.kind {
+            Kind::Flat(_, n) => *n,
+            Kind::F32(p) => p.channels,
+            Kind::F64(p) => p.channels,
+            Kind::Homogeneous { channels, .. } => channels.len(),
+        }
+    }
+
+    /// Every channel's value at pixel `(px, py)`, into `out` (one per channel).
+    ///
+    /// # Panics
+    /// When `out` is shorter than [`FloatSetup::channels`].
+    #[inline]
+    pub fn values(&self, pixel: (u32, u32), out: &mut [f32]) {
+        match &self.kind {
+            Kind::Flat(each, n) => out[..*n].copy_from_slice(&each[..*n]),
+            Kind::F32(p) => p.values(pixel, out),
+            Kind::F64(p) => p.values(pixel, out),
+            Kind::Homogeneous {
+                model,
+                triangle,
+                interpolation,
+                channels,
+                k,
+                centre,
+            } => {
+                let out = &mut out[..channels.len()];
+                for (o, c) in out.iter_mut().zip(channels.clone()) {
+                    *o = model.homogeneous_value(triangle, *interpolation, c, pixel, *k, *centre);
+                }
+            }
+        }
+    }
+}
+
+/// What a plane or barycentric model evaluates per pixel: `base + dadx e_x + dady e_y`, or
+/// the vertices' own values weighted by the edge functions.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Weights<R> {
+    /// `[base, dadx, dady]`.
+    Plane([R; 3]),
+    /// The vertices' values (premultiplied by `1 / w` for a smooth value).
+    Vertices([R; 3]),
+}
+
+/// A plane or barycentric model set up for one triangle (the module docs' choices).
+#[derive(Debug, Clone, PartialEq)]
+struct Planes<R> {
+    form: Form,
+    fma: bool,
+    divide: Divide,
+    y_up: bool,
+    height: u32,
+    centre: R,
+    /// The vertices in the setup's order (y flipped for a y-up setup).
+    x: [R; 3],
+    y: [R; 3],
+    /// `1 / w`'s weights, for a smooth value.
+    w: Option<Weights<R>>,
+    values: [Weights<R>; SETUP_CHANNELS],
+    channels: usize,
+}
+
+impl<R: Real> Planes<R> {
+    #[allow(clippy::cast_precision_loss)] // the model's own conversion of the canvas height
+    fn new(
+        m: &FloatInterpolator,
+        t: &FloatTriangle,
+        interpolation: Interpolation,
+        provoking: ProvokingVertex,
+        channels: Range<usize>,
+        height: u32,
+        centre: f32,
+    ) -> Planes<R> {
+        let flip = |y: f32| if m.y_up { height as f32 - y } else { y };
+        let (x, y) = (t.x.map(R::of), t.y.map(|v| R::of(flip(v))));
+        let mut order = [0, 1, 2];
+        if m.order == VertexOrder::CounterClockwise {
+            let area = (x[0] - x[1]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[0] - y[1]);
+            if area.out() < 0.0 {
+                order = match provoking {
+                    ProvokingVertex::First => [0, 2, 1],
+                    ProvokingVertex::Last => [1, 0, 2],
+                };
+            }
+        } else if m.order == VertexOrder::Reversed {
+            let area = (x[0] - x[1]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[0] - y[1]);
+            if area.out() < 0.0 {
+                order = [2, 1, 0];
+            }
+        }
+        let x = order.map(|i| x[i]);
+        let y = order.map(|i| y[i]);
+        let perspective = interpolation == Interpolation::Smooth;
+        let c = R::of(centre);
+        let weights = |g: [R; 3]| -> Weights<R> {
+            if m.form == Form::Barycentric {
+                return Weights::Vertices(g);
+            }
+            let (dx01, dy01) = (x[0] - x[1], y[0] - y[1]);
+            let (dx20, dy20) = (x[2] - x[0], y[2] - y[0]);
+            let ooa = R::of(1.0) / (dx01 * dy20 - dy01 * dx20);
+            let (dx20o, dy20o, dx01o, dy01o) = (dx20 * ooa, dy20 * ooa, dx01 * ooa, dy01 * ooa);
+            let (da01, da20) = (g[0] - g[1], g[2] - g[0]);
+            let dadx = da01 * dy20o - da20 * dy01o;
+            let dady = da20 * dx01o - da01 * dx20o;
+            let base = if m.form == Form::OriginPlane {
+                g[0] - (dadx * (x[0] - c) + dady * (y[0] - c))
+            } else {
+                g[0]
+            };
+            Weights::Plane([base, dadx, dady])
+        };
+        let mut values = [Weights::Vertices([R::of(0.0); 3]); SETUP_CHANNELS];
+        for (out, channel) in values.iter_mut().zip(channels.clone()) {
+            let a = order.map(|i| {
+                let v = R::of(t.values[i][channel]);
+                if perspective {
+                    v * R::of(t.inv_w[i])
+                } else {
+                    v
+                }
+            });
+            *out = weights(a);
+        }
+        Planes {
+            form: m.form,
+            fma: m.fma,
+            divide: m.divide,
+            y_up: m.y_up,
+            height,
+            centre: c,
+            x,
+            y,
+            w: perspective.then(|| weights(order.map(|i| R::of(t.inv_w[i])))),
+            values,
+            channels: channels.len(),
+        }
+    }
+
+    /// Every channel at pixel `(px, py)`: the plane at the pixel (the origin plane at its
+    /// integer coordinates, the vertex plane at its centre's offset from vertex 0), or the
+    /// edge functions at its centre, then the smooth quotient.
+    #[allow(clippy::cast_precision_loss)] // the model's own conversion of the pixel's coordinates
+    #[inline]
+    fn values(&self, (px, py): (u32, u32), out: &mut [f32]) {
+        let row = if self.y_up { self.height - 1 - py } else { py };
+        let pixel = (R::of(px as f32), R::of(row as f32));
+        let at = (pixel.0 + self.centre, pixel.1 + self.centre);
+        let (x, y) = (&self.x, &self.y);
+        let (ex, ey) = if self.form == Form::OriginPlane {
+            pixel
+        } else {
+            (at.0 - x[0], at.1 - y[0])
+        };
+        let edges = if self.form == Form::Barycentric {
+            let e = |j: usize, k: usize| (x[j] - at.0) * (y[k] - at.1) - (x[k] - at.0) * (y[j] - at.1);
+            [e(1, 2), e(2, 0), e(0, 1)]
+        } else {
+            [R::of(0.0); 3]
+        };
+        let eval = |g: &Weights<R>| -> R {
+            match *g {
+                Weights::Plane([base, dadx, dady]) => {
+                    if self.fma {
+                        dady.fused(ey, dadx.fused(ex, base))
+                    } else {
+                        base + dadx * ex + dady * ey
+                    }
+                }
+                Weights::Vertices(g) => {
+                    let [e0, e1, e2] = edges;
+                    (e0 * g[0] + e1 * g[1] + e2 * g[2]) / (e0 + e1 + e2)
+                }
+            }
+        };
+        let w = self.w.as_ref().map(eval);
+        let reciprocal = match (w, self.divide) {
+            (Some(w), Divide::Reciprocal) => Some(R::of(1.0) / w),
+            _ => None,
+        };
+        for (o, g) in out[..self.channels].iter_mut().zip(&self.values) {
+            let value = eval(g);
+            *o = match (w, reciprocal) {
+                (_, Some(r)) => (value * r).out(),
+                (Some(w), None) => (value / w).out(),
+                (None, None) => value.out(),
+            };
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -481,6 +728,35 @@ mod tests {
         assert_eq!(v.to_bits(), (7.0 * wa + (5.0 * wb + 3.0 * wc)).to_bits());
         // The exact value is (7 * 7 + 5 * 6 + 3 * 12) / 25 = 4.6; euc is within a step.
         assert!((v - 4.6).abs() <= 2.0 * f32::EPSILON * 4.6, "{v}");
+    }
+
+    /// One setup of three channels gives, channel by channel, each one-channel value of
+    /// every model (the `1 / w` plane and the edge functions computed once per pixel for
+    /// all of them), bit for bit, for every interpolation and provoking vertex.
+    #[test]
+    fn a_setup_of_several_channels_gives_each_channels_value() {
+        let t = FloatTriangle {
+            x: [3.25, 97.5, 11.0],
+            y: [5.5, 17.75, 80.125],
+            inv_w: [1.0, 0.3, 0.7],
+            values: [vec![0.1, 5.0, -2.0], vec![0.7, 1.0, 3.5], vec![0.3, 9.0, 0.25]],
+        };
+        for m in FloatInterpolator::all() {
+            for interpolation in Interpolation::ALL {
+                for provoking in [ProvokingVertex::First, ProvokingVertex::Last] {
+                    let setup = m.setup(&t, interpolation, provoking, 0..3, 100, 0.5);
+                    assert_eq!(setup.channels(), 3);
+                    for pixel in [(10, 20), (40, 30), (0, 99)] {
+                        let mut out = [0.0; 3];
+                        setup.values(pixel, &mut out);
+                        for (c, v) in out.iter().enumerate() {
+                            let one = m.value(&t, interpolation, provoking, c, pixel, 100, 0.5);
+                            assert_eq!(v.to_bits(), one.to_bits(), "{} {interpolation} {pixel:?} {c}", m.name());
+                        }
+                    }
+                }
+            }
+        }
     }
 
     #[test]

@@ -62,7 +62,7 @@ use crate::pattern::SamplePattern;
 use crate::strategy::{triangle, TriangleScale};
 
 use super::metric::Metric;
-use super::report::{Cell, Outcome, Placement, PlanSummary, SpeedEntry, WorkloadReport};
+use super::report::{Axis, Cell, Outcome, Placement, PlanSummary, SpeedEntry, WorkloadReport};
 use super::speed::{entries, Contender, Job};
 use super::workloads::{draw_n, mesh, runner};
 use super::{Config, Family, Magnitude, Sizes};
@@ -460,6 +460,7 @@ fn measure(w: &Workload, config: &Config, sizes: &Sizes) -> WorkloadReport {
         plans: vec![plan(w, &config.magnitudes)],
         speed,
         cells,
+        axis: Axis::Offset,
     }
 }
 

@@ -21,7 +21,7 @@ use crate::strategy::tie_heavy_coordinate;
 
 use super::measure::CLIP_OUTSIDE;
 use super::metric::Metric;
-use super::report::{Cell, Outcome, Placement, SpeedEntry, WorkloadReport};
+use super::report::{Axis, Cell, Outcome, Placement, SpeedEntry, WorkloadReport};
 use super::speed::{entries, Contender, Job};
 use super::workloads::{draw, place_point, place_window, runner};
 use super::{Config, Family, Magnitude, Sizes};
@@ -232,6 +232,7 @@ fn segments(config: &Config, sizes: &Sizes) -> WorkloadReport {
         plans: Vec::new(),
         speed,
         cells,
+        axis: Axis::Offset,
     }
 }
 
@@ -333,5 +334,6 @@ fn polygons(config: &Config, sizes: &Sizes) -> WorkloadReport {
         plans: Vec::new(),
         speed,
         cells,
+        axis: Axis::Offset,
     }
 }

@@ -9,7 +9,7 @@ use crate::model::plan::plan_scene;
 use crate::model::{prepare, Model, Primitives};
 
 use super::measure::{corner_subset, departure_metrics, departures, Pairs};
-use super::report::{Cell, Outcome, Placement, PlanSummary, WorkloadReport};
+use super::report::{Axis, Cell, Outcome, Placement, PlanSummary, WorkloadReport};
 use super::speed::{entries, model_jobs, refusal, Contender};
 use super::triangles::SUBSET_SIDE;
 use super::{Config, Family, Sizes};
@@ -151,5 +151,6 @@ pub(crate) fn measure(spec: &Spec<'_>, config: &Config, sizes: &Sizes) -> Worklo
         plans,
         speed,
         cells,
+        axis: Axis::Offset,
     }
 }

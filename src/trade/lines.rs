@@ -16,7 +16,7 @@ use crate::strategy::{diamond_line, pixel_line};
 use super::exact_only::{self, Spec};
 use super::measure::{LINE_HALF_PIXEL, LINE_REFERENCE};
 use super::metric::Metric;
-use super::report::{Cell, Outcome, Placement, WorkloadReport};
+use super::report::{Axis, Cell, Outcome, Placement, WorkloadReport};
 use super::speed::{entries, model_jobs, Contender};
 use super::workloads::{draw_n, place_lines, runner};
 use super::{Config, Family, Sizes};
@@ -177,6 +177,7 @@ fn bresenham_lines(config: &Config, sizes: &Sizes) -> WorkloadReport {
         plans: Vec::new(),
         speed,
         cells,
+        axis: Axis::Offset,
     }
 }
 

@@ -1,6 +1,7 @@
-//! One measured error ([`Metric`]): a rate of events, or a distribution in ulps; each
-//! kind knows its own unit. Shared by the measurements (`measure`, the families) that
-//! build metrics and by the report that prints them, so that neither imports the other.
+//! One measured error ([`Metric`]): a rate of events, or a distribution in ulps, f32 steps
+//! or quanta; each kind knows its own unit. Shared by the measurements (`measure`, the
+//! families) that build metrics and by the report that prints them, so that neither
+//! imports the other.
 
 /// One measured error.
 #[derive(Debug, Clone, PartialEq)]
@@ -25,6 +26,20 @@ pub enum Metric {
         /// How many samples.
         samples: u64,
     },
+    /// The tail of a distribution of distances in f32 steps (units in the last place):
+    /// interpolated values, each the count of f32 values from the exact value's nearest f32
+    /// to the model's (0: the model gave the correctly rounded value).
+    UlpTail {
+        /// What is measured.
+        name: &'static str,
+        /// The 99th percentile (the smallest distance at least 99 % of the values are
+        /// within).
+        p99: f64,
+        /// The largest.
+        max: f64,
+        /// How many values.
+        samples: u64,
+    },
     /// A distribution of absolute coverage errors, in quanta of 1/255 (area coverage).
     Quanta {
         /// What is measured.
@@ -42,13 +57,17 @@ impl Metric {
     /// The metric's name.
     pub fn name(&self) -> &'static str {
         match self {
-            Metric::Rate { name, .. } | Metric::Ulps { name, .. } | Metric::Quanta { name, .. } => name,
+            Metric::Rate { name, .. }
+            | Metric::Ulps { name, .. }
+            | Metric::UlpTail { name, .. }
+            | Metric::Quanta { name, .. } => name,
         }
     }
 
     /// The unit its [cells](Metric::cell) are written in, as a table's header says it:
     /// `per million` for a rate, `ulps median/max` for a distribution in ulps,
-    /// `1/255 max/mean` for coverage errors in quanta.
+    /// `ulps p99/max` for the tail of f32 steps, `1/255 max/mean` for coverage errors in
+    /// quanta.
     ///
     /// ```
     /// use rasterproof::trade::Metric;
@@ -57,11 +76,14 @@ impl Metric {
     /// assert_eq!(ulps.unit(), "ulps median/max");
     /// let q = Metric::Quanta { name: "coverage error", max: 1.5, mean: 0.25, pixels: 9 };
     /// assert_eq!((q.unit(), q.cell().as_str()), ("1/255 max/mean", "1.5/0.25"));
+    /// let tail = Metric::UlpTail { name: "ulps", p99: 2.0, max: 130.0, samples: 9 };
+    /// assert_eq!((tail.unit(), tail.cell().as_str()), ("ulps p99/max", "2/130"));
     /// ```
     pub fn unit(&self) -> &'static str {
         match self {
             Metric::Rate { .. } => "per million",
             Metric::Ulps { .. } => "ulps median/max",
+            Metric::UlpTail { .. } => "ulps p99/max",
             Metric::Quanta { .. } => "1/255 max/mean",
         }
     }
@@ -70,7 +92,7 @@ impl Metric {
     pub fn is_zero(&self) -> bool {
         match self {
             Metric::Rate { count, .. } => *count == 0,
-            Metric::Ulps { max, .. } | Metric::Quanta { max, .. } => *max == 0.0,
+            Metric::Ulps { max, .. } | Metric::UlpTail { max, .. } | Metric::Quanta { max, .. } => *max == 0.0,
         }
     }
 
@@ -82,8 +104,8 @@ impl Metric {
         }
     }
 
-    /// A short cell: `123.4` per million (`0` exactly), `median/max` ulps, or `max/mean`
-    /// quanta.
+    /// A short cell: `123.4` per million (`0` exactly), `median/max` ulps, `p99/max` f32
+    /// steps, or `max/mean` quanta.
     pub fn cell(&self) -> String {
         match self {
             Metric::Rate { count: 0, .. } => "0".into(),
@@ -91,6 +113,7 @@ impl Metric {
             Metric::Ulps {
                 median, max, samples, ..
             } => format!("{}/{} (n={samples})", short(*median), short(*max)),
+            Metric::UlpTail { p99, max, .. } => format!("{}/{}", short(*p99), short(*max)),
             Metric::Quanta { max, mean, .. } => format!("{}/{}", short(*max), short(*mean)),
         }
     }

@@ -45,6 +45,13 @@
 //! 9 to 200 px per em, an abutting mesh and slivers; the planned exact engine against
 //! f32 accumulation, FreeType's 24.8 integers and 4 x 4 supersampling; per pixel the
 //! absolute coverage error against the exact value.
+//!
+//! The family `values` ([`values`]) trades interpolated attribute values at covered pixel
+//! centres: the plain definition and the planned path against f32 plane equations
+//! anchored at the origin or at vertex 0, f32 barycentrics, an f64 plane and a fixed-point
+//! Gouraud DDA, at canvas offsets 0 to 2^24 px and attribute scales 2^0 to 2^32 (its own
+//! magnitudes, [`Axis`]); per value the f32 steps from the correctly rounded value and
+//! the wrong UNORM8 levels.
 
 pub mod area;
 mod clipping;
@@ -59,6 +66,7 @@ mod predicate_map;
 mod report;
 mod speed;
 mod triangles;
+pub mod values;
 mod workloads;
 
 use std::fmt;
@@ -66,7 +74,9 @@ use std::fmt;
 pub use metric::Metric;
 pub use plot::Picture;
 pub use predicate_map::{Decision, MapPanel, PredicateMap};
-pub use report::{Cell, Onset, Outcome, Placement, PlanSummary, SpeedEntry, SpeedOutcome, TradeReport, WorkloadReport};
+pub use report::{
+    Axis, Cell, Onset, Outcome, Placement, PlanSummary, SpeedEntry, SpeedOutcome, TradeReport, WorkloadReport,
+};
 
 /// A family of workloads (`--family`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -81,16 +91,20 @@ pub enum Family {
     Clipping,
     /// Anti-aliased area coverage: glyphs, an abutting mesh, slivers ([`area`]).
     Area,
+    /// Interpolated attribute values at covered pixel centres: exact, planned, float and
+    /// fixed-point interpolators ([`values`]).
+    Values,
 }
 
 impl Family {
     /// Every family, in report order.
-    pub const ALL: [Family; 5] = [
+    pub const ALL: [Family; 6] = [
         Family::Triangles,
         Family::Lines,
         Family::Polygons,
         Family::Clipping,
         Family::Area,
+        Family::Values,
     ];
 
     /// The name on the command line and in the report.
@@ -101,6 +115,7 @@ impl Family {
             Family::Polygons => "polygons",
             Family::Clipping => "clipping",
             Family::Area => "area",
+            Family::Values => "values",
         }
     }
 
@@ -311,6 +326,7 @@ pub fn run(config: &Config, progress: &mut dyn FnMut(&str)) -> TradeReport {
             Family::Polygons => polygons::run(config, &sizes, progress),
             Family::Clipping => clipping::run(config, &sizes, progress),
             Family::Area => area::run(config, &sizes, progress),
+            Family::Values => values::run(config, &sizes, progress),
         };
         workloads.extend(reports);
     }

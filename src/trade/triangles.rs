@@ -21,7 +21,7 @@ use super::measure::{
     BARYCENTRIC_ULPS, GOURAUD,
 };
 use super::metric::Metric;
-use super::report::{Cell, Outcome, Placement, PlanSummary, SpeedEntry, WorkloadReport};
+use super::report::{Axis, Cell, Outcome, Placement, PlanSummary, SpeedEntry, WorkloadReport};
 use super::speed::{entries, model_jobs, refusal, Contender};
 use super::workloads::{colours, draw_n, mesh, place_triangles, runner};
 use super::{Config, Family, Sizes};
@@ -248,6 +248,7 @@ fn measure(w: &Workload, config: &Config, sizes: &Sizes) -> WorkloadReport {
         plans,
         speed,
         cells,
+        axis: Axis::Offset,
     }
 }
 

@@ -3,10 +3,11 @@
 //! binary models' workloads and again for the area family's (whose picture (b) also shows
 //! the largest coverage error in quanta).
 
+use plotters::coord::ranged1d::ValueFormatter;
 use plotters::prelude::*;
 
-use super::{colour, err, legend, legend_entries, Area, SANS};
-use crate::trade::report::{Outcome, SpeedOutcome, TradeReport, WorkloadReport};
+use super::{colour, err, frame, legend, legend_entries, Area, SANS};
+use crate::trade::report::{Axis, Outcome, SpeedOutcome, TradeReport, WorkloadReport};
 use crate::trade::{Family, Magnitude};
 
 /// A rate of 0 is drawn here, on the tick labelled `0`.
@@ -17,20 +18,8 @@ const SMALLEST: f64 = 0.2;
 const BOTTOM: f64 = 0.06;
 const TOP: f64 = 4e6;
 
-fn rate_label(v: f64) -> String {
-    if (v - ZERO).abs() < 1e-9 {
-        "0".into()
-    } else if v < ZERO {
-        String::new()
-    } else if v >= 1.0 {
-        format!("{v:.0}")
-    } else {
-        format!("{v}")
-    }
-}
-
 fn speed_label(v: f64) -> String {
-    if v >= 1.0 {
+    if v >= 1.0 || v == 0.0 {
         format!("{v:.0}")
     } else {
         format!("{v:.1e}")
@@ -73,36 +62,39 @@ fn grid_shape(n: usize) -> (usize, usize) {
     (n.div_ceil(cols).max(1), cols)
 }
 
-/// The workloads of the area family (`area`) or of the others.
+/// The workloads of the area family (`area`) or of the binary families (every family but
+/// `area` and `values`, which draw their own).
 pub(super) fn workloads_of(r: &TradeReport, area: bool) -> Vec<&WorkloadReport> {
     r.workloads
         .iter()
-        .filter(|w| (w.family == Family::Area) == area)
+        .filter(|w| match w.family {
+            Family::Area => area,
+            Family::Values => false,
+            _ => !area,
+        })
         .collect()
+}
+
+/// The name of a workload's headline metric (its first).
+fn headline_name(w: &WorkloadReport) -> &'static str {
+    w.cells
+        .iter()
+        .find_map(|c| c.outcome.headline().map(|h| h.name()))
+        .unwrap_or("errors")
 }
 
 /// Picture (a): the binary models' workloads, or (`area`) the area family's.
 pub(super) fn speed_error<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport, area: bool) -> Result<(), String> {
-    root.fill(&WHITE).map_err(err)?;
     let m = speed_error_magnitude(r);
     let workloads = workloads_of(r, area);
-    let (_, h) = root.dim_in_pixel();
-    let (top, rest) = root.split_vertically(56);
     let what = if area { "Area coverage: speed" } else { "Speed" };
-    top.titled(
-        &format!(
-            "{what} against error at {m} px from the origin, per workload: each contender a point; ringed and \
-             joined in black: the Pareto front"
-        ),
-        (SANS, 26),
-    )
-    .map_err(err)?;
-    let (grid, bottom) = rest.split_vertically(h - 56 - 150);
-    let n = workloads.len();
-    let (rows, cols) = grid_shape(n);
-    let panels = grid.split_evenly((rows, cols));
+    let title = format!(
+        "{what} against error at {m} px from the origin, per workload: each contender a point; ringed and joined \
+         in black: the Pareto front"
+    );
+    let (panels, bottom) = frame(root, &title, 26, grid_shape(workloads.len()))?;
     for (panel, w) in panels.iter().zip(workloads.iter().copied()) {
-        speed_error_panel(panel, w, m)?;
+        speed_error_panel(panel, w, m, &YAxis::headline(headline_name(w)))?;
     }
     let note = if area {
         "Circles: exact models; triangles: the contenders. Speed: each model's own function at the origin, median of \
@@ -116,15 +108,22 @@ pub(super) fn speed_error<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport, 
     legend(&bottom, &legend_entries(&workloads), 6, note)
 }
 
-/// One workload's panel of picture (a): each contender's speed against its headline error
-/// at magnitude `m`, the Pareto front ringed and joined.
-fn speed_error_panel<DB: DrawingBackend>(panel: &Area<DB>, w: &WorkloadReport, m: Magnitude) -> Result<(), String> {
+/// One workload's panel of picture (a): each contender's speed against its error on `axis`
+/// at magnitude `m`, the Pareto front ringed and joined (a values workload's caption
+/// names `m`).
+pub(super) fn speed_error_panel<DB: DrawingBackend>(
+    panel: &Area<DB>,
+    w: &WorkloadReport,
+    m: Magnitude,
+    axis: &YAxis,
+) -> Result<(), String> {
+    let error = |contender: &str| (axis.value)(w, contender, m);
     let points: Vec<(String, f64, f64, bool)> = w
         .speed
         .iter()
         .filter_map(|s| match s.outcome {
             SpeedOutcome::Measured { median, .. } if median > 0.0 => {
-                Some((s.contender.clone(), median, headline(w, &s.contender, m)?, s.exact))
+                Some((s.contender.clone(), median, error(&s.contender)?, s.exact))
             }
             _ => None,
         })
@@ -132,48 +131,72 @@ fn speed_error_panel<DB: DrawingBackend>(panel: &Area<DB>, w: &WorkloadReport, m
     let refused: Vec<&str> = w
         .speed
         .iter()
-        .filter(|s| headline(w, &s.contender, m).is_none())
+        .filter(|s| error(&s.contender).is_none())
         .map(|s| s.contender.as_str())
         .collect();
     let lo = points.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
     let hi = points.iter().map(|p| p.1).fold(0.0, f64::max);
-    let (lo, hi) = if lo.is_finite() && hi > 0.0 {
-        (lo / 3.0, hi * 3.0)
-    } else {
-        (1e-3, 1e3)
+    let name = match w.axis {
+        Axis::Offset if w.family == Family::Values => format!("{} at {m} px", w.name),
+        _ => w.name.clone(),
     };
     let caption = if refused.is_empty() {
-        w.name.clone()
+        name
     } else {
-        format!("{} (refused: {})", w.name, refused.join(", "))
+        format!("{name} (refused: {})", refused.join(", "))
     };
-    let mut chart = ChartBuilder::on(panel)
-        .caption(caption, (SANS, 16))
-        .margin(10)
-        .x_label_area_size(44)
-        .y_label_area_size(64)
-        .build_cartesian_2d((lo..hi).log_scale(), (BOTTOM..TOP).log_scale())
-        .map_err(err)?;
-    let x_desc = format!("speed, {} (log)", w.unit);
-    let first = w
-        .cells
-        .iter()
-        .find_map(|c| c.outcome.headline().map(|h| h.name()))
-        .unwrap_or("errors");
-    let y_desc = format!("{first} per million");
+    let builder = |panel| {
+        let mut b = ChartBuilder::on(panel);
+        b.caption(caption.clone(), (SANS, 16))
+            .margin(10)
+            .x_label_area_size(44)
+            .y_label_area_size(64);
+        b
+    };
+    let y = (axis.bottom..axis.top).log_scale();
+    if lo.is_finite() && hi > 0.0 && hi <= 10.0 * lo {
+        // Speeds within a factor of 10 of each other: a linear axis from 0, where they
+        // spread over the panel and their ratios read as lengths.
+        let chart = builder(panel).build_cartesian_2d(0.0..hi * 1.15, y).map_err(err)?;
+        speed_error_points(chart, &points, axis, &format!("speed, {}", w.unit))
+    } else {
+        let (lo, hi) = if lo.is_finite() && hi > 0.0 {
+            (lo / 3.0, hi * 3.0)
+        } else {
+            (1e-3, 1e3)
+        };
+        let chart = builder(panel)
+            .build_cartesian_2d((lo..hi).log_scale(), y)
+            .map_err(err)?;
+        speed_error_points(chart, &points, axis, &format!("speed, {} (log)", w.unit))
+    }
+}
+
+/// Picture (a)'s panel on its axes: the mesh, the Pareto front ringed and joined, and
+/// each contender's point.
+fn speed_error_points<DB: DrawingBackend, X>(
+    mut chart: ChartContext<'_, DB, Cartesian2d<X, LogCoord<f64>>>,
+    points: &[(String, f64, f64, bool)],
+    axis: &YAxis,
+    x_desc: &str,
+) -> Result<(), String>
+where
+    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    let zero = axis.zero;
     chart
         .configure_mesh()
         .x_desc(x_desc)
-        .y_desc(y_desc)
+        .y_desc(axis.desc.clone())
         .x_labels(5)
         .y_labels(8)
         .x_label_formatter(&|v| speed_label(*v))
-        .y_label_formatter(&|v| rate_label(*v))
+        .y_label_formatter(&|v| axis_label(*v, zero))
         .axis_desc_style((SANS, 14))
         .label_style((SANS, 12))
         .draw()
         .map_err(err)?;
-    let front = pareto_front(&points);
+    let front = pareto_front(points);
     let mut steps = Vec::new();
     for (k, &(s, e)) in front.iter().enumerate() {
         if k > 0 {
@@ -189,7 +212,7 @@ fn speed_error_panel<DB: DrawingBackend>(panel: &Area<DB>, w: &WorkloadReport, m
             .draw_series(std::iter::once(Circle::new((s, e), 11, BLACK.stroke_width(2))))
             .map_err(err)?;
     }
-    for (name, s, e, exact) in &points {
+    for (name, s, e, exact) in points {
         let c = colour(name);
         if *exact {
             chart.draw_series(std::iter::once(Circle::new((*s, *e), 6, c.filled())))
@@ -237,7 +260,7 @@ pub(super) struct YAxis {
 
 impl YAxis {
     /// The headline rate per million, as the binary workloads' panels show it.
-    fn headline(first: &str) -> YAxis {
+    pub(super) fn headline(first: &str) -> YAxis {
         YAxis {
             value: headline,
             bottom: BOTTOM,
@@ -268,13 +291,30 @@ pub(super) fn max_quanta(w: &WorkloadReport, contender: &str, m: Magnitude) -> O
 pub(super) const QUANTA_ZERO: f64 = 1e-7;
 const QUANTA_SMALLEST: f64 = 2e-7;
 
-/// One panel of picture (b): `w`'s contenders over the magnitudes on `axis`.
-fn magnitude_panel<DB: DrawingBackend>(
+/// A y axis's tick: `0` at `zero`, nothing below it, whole numbers from 1 (`1e5` and up as
+/// powers of ten), one significant digit below 1.
+fn axis_label(v: f64, zero: f64) -> String {
+    if (v / zero - 1.0).abs() < 1e-6 {
+        "0".into()
+    } else if v < zero {
+        String::new()
+    } else if v >= 1e5 {
+        format!("{v:.0e}")
+    } else if v >= 1.0 {
+        format!("{v:.0}")
+    } else {
+        format!("{v:.0e}")
+    }
+}
+
+/// One panel of picture (b): `w`'s contenders over the magnitudes it was measured at, on
+/// `axis`.
+pub(super) fn magnitude_panel<DB: DrawingBackend>(
     panel: &Area<DB>,
     w: &WorkloadReport,
-    mags: &[Magnitude],
     axis: &YAxis,
 ) -> Result<(), String> {
+    let mags = &w.magnitudes();
     let labels: Vec<String> = mags.iter().map(|m| m.label()).collect();
     let n = mags.len();
     let last = u32::try_from(n.saturating_sub(1)).map_err(err)?;
@@ -293,24 +333,18 @@ fn magnitude_panel<DB: DrawingBackend>(
         SegmentValue::Last => String::new(),
     };
     let zero = axis.zero;
+    let x_desc = match w.axis {
+        Axis::Offset => "magnitude M, px (2^k)",
+        Axis::AttributeScale => "attribute scale: every value times 2^k",
+    };
     chart
         .configure_mesh()
-        .x_desc("magnitude M, px (2^k)")
+        .x_desc(x_desc)
         .y_desc(axis.desc.clone())
         .x_labels(n)
         .y_labels(8)
         .x_label_formatter(&label_of)
-        .y_label_formatter(&|v| {
-            if (v / zero - 1.0).abs() < 1e-6 {
-                "0".into()
-            } else if *v < zero {
-                String::new()
-            } else if *v >= 1.0 {
-                format!("{v:.0}")
-            } else {
-                format!("{v:.0e}")
-            }
-        })
+        .y_label_formatter(&|v| axis_label(*v, zero))
         .axis_desc_style((SANS, 14))
         .label_style((SANS, 12))
         .draw()
@@ -365,25 +399,15 @@ fn magnitude_panel<DB: DrawingBackend>(
 
 /// Picture (b): the binary models' workloads, one panel each on the headline rate.
 pub(super) fn error_magnitude<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport) -> Result<(), String> {
-    root.fill(&WHITE).map_err(err)?;
     let workloads = workloads_of(r, false);
-    let (_, h) = root.dim_in_pixel();
-    let (top, rest) = root.split_vertically(56);
-    top.titled(
+    let (panels, bottom) = frame(
+        root,
         "Error against coordinate magnitude (the window at M px from the origin), one line per contender",
-        (SANS, 26),
-    )
-    .map_err(err)?;
-    let (grid, bottom) = rest.split_vertically(h - 56 - 150);
-    let (rows, cols) = grid_shape(workloads.len());
-    let panels = grid.split_evenly((rows, cols));
+        26,
+        grid_shape(workloads.len()),
+    )?;
     for (panel, w) in panels.iter().zip(workloads.iter().copied()) {
-        let first = w
-            .cells
-            .iter()
-            .find_map(|c| c.outcome.headline().map(|h| h.name()))
-            .unwrap_or("errors");
-        magnitude_panel(panel, w, &r.config.magnitudes, &YAxis::headline(first))?;
+        magnitude_panel(panel, w, &YAxis::headline(headline_name(w)))?;
     }
     legend(
         &bottom,
@@ -398,19 +422,15 @@ pub(super) fn error_magnitude<DB: DrawingBackend>(root: &Area<DB>, r: &TradeRepo
 /// pixels off by more than half a quantum per million above, the largest coverage error
 /// in quanta of 1/255 below.
 pub(super) fn area_error_magnitude<DB: DrawingBackend>(root: &Area<DB>, r: &TradeReport) -> Result<(), String> {
-    root.fill(&WHITE).map_err(err)?;
     let workloads = workloads_of(r, true);
-    let (_, h) = root.dim_in_pixel();
-    let (top, rest) = root.split_vertically(56);
-    top.titled(
+    let cols = workloads.len().max(1);
+    let (panels, bottom) = frame(
+        root,
         "Area coverage: error against coordinate magnitude (the window at M px from the origin), one line per \
          contender",
-        (SANS, 26),
-    )
-    .map_err(err)?;
-    let (grid, bottom) = rest.split_vertically(h - 56 - 150);
-    let cols = workloads.len().max(1);
-    let panels = grid.split_evenly((2, cols));
+        26,
+        (2, cols),
+    )?;
     let quanta = YAxis {
         value: max_quanta,
         bottom: 3e-8,
@@ -421,8 +441,8 @@ pub(super) fn area_error_magnitude<DB: DrawingBackend>(root: &Area<DB>, r: &Trad
     };
     for (k, w) in workloads.iter().enumerate() {
         let rate = YAxis::headline(crate::trade::area::OFF_HALF_QUANTUM);
-        magnitude_panel(&panels[k], w, &r.config.magnitudes, &rate)?;
-        magnitude_panel(&panels[cols + k], w, &r.config.magnitudes, &quanta)?;
+        magnitude_panel(&panels[k], w, &rate)?;
+        magnitude_panel(&panels[cols + k], w, &quanta)?;
     }
     legend(
         &bottom,

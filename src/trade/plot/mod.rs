@@ -1,19 +1,21 @@
 //! The trade's pictures, drawn with plotters as PNG and SVG: (a) speed against error per
 //! workload with the Pareto front, (b) error against coordinate magnitude, one line per
 //! contender, each for the binary models' workloads and again for the area family's (all
-//! in `charts`), (c) the predicate map (`map`). Text is drawn with DejaVu
+//! in `charts`), and for the values family against canvas offset and attribute scale
+//! (`values`), (c) the predicate map (`map`). Text is drawn with DejaVu
 //! Sans, compiled in from `assets/fonts/` (its licence beside it), so no system font
 //! library is needed. [`TradeReport::pictures`] draws them all.
 
 mod charts;
 mod map;
+mod values;
 
 use std::sync::OnceLock;
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::report::{TradeReport, WorkloadReport};
+use super::report::{Axis, TradeReport, WorkloadReport};
 
 /// DejaVu Sans 2.37 (Debian's fonts-dejavu-core; licence: assets/fonts/LICENSE-DejaVu.txt).
 static FONT: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
@@ -76,7 +78,8 @@ fn svg(w: u32, h: u32, f: impl FnOnce(&Area<SVGBackend<'_>>) -> Result<(), Strin
 /// The colour of a contender, the same in every picture: blues for the exact models,
 /// oranges and browns for the integer ones, red for f32, purple for f64 (lighter:
 /// naive); the area contenders alike (`ftgrays` orange, supersampling purple, tiny-skia
-/// pink).
+/// pink); the values contenders alike (the vertex plane teal, barycentrics pink, the
+/// fixed-point DDA brown).
 fn colour(name: &str) -> RGBColor {
     match name {
         "exact-plain" => RGBColor(8, 48, 107),
@@ -99,6 +102,12 @@ fn colour(name: &str) -> RGBColor {
         "msaa-4x" => RGBColor(161, 217, 155),
         "msaa-8x" => RGBColor(65, 171, 93),
         "msaa-16x" => RGBColor(0, 90, 50),
+        "planned" => RGBColor(33, 113, 181),
+        "f32-origin-plane" => RGBColor(215, 25, 28),
+        "f32-vertex-plane" => RGBColor(0, 139, 139),
+        "f32-barycentric" => RGBColor(247, 129, 191),
+        "f64-origin-plane" => RGBColor(117, 50, 160),
+        "dda-q32.32" => RGBColor(140, 81, 10),
         _ => RGBColor(0, 0, 0),
     }
 }
@@ -114,6 +123,22 @@ fn contenders(workloads: &[&WorkloadReport]) -> Vec<(String, bool)> {
         }
     }
     out
+}
+
+/// A picture's frame, filled white: `title` (at `size` points) across the top, a grid of
+/// `rows` x `cols` panels, and the bottom 150 px, for the legend.
+fn frame<DB: DrawingBackend>(
+    root: &Area<DB>,
+    title: &str,
+    size: u32,
+    (rows, cols): (usize, usize),
+) -> Result<(Vec<Area<DB>>, Area<DB>), String> {
+    root.fill(&WHITE).map_err(err)?;
+    let (_, h) = root.dim_in_pixel();
+    let (top, rest) = root.split_vertically(56);
+    top.titled(title, (SANS, size)).map_err(err)?;
+    let (grid, bottom) = rest.split_vertically(h - 56 - 150);
+    Ok((grid.split_evenly((rows, cols)), bottom))
 }
 
 /// Draws a legend: one marker and name per entry, in rows of `per_row`.
@@ -157,7 +182,9 @@ fn legend_entries(workloads: &[&WorkloadReport]) -> Vec<(String, RGBColor, bool)
 impl TradeReport {
     /// The pictures, PNG and SVG: `speed-vs-error`, `error-vs-magnitude` (the binary
     /// models' workloads), `area-speed-vs-error`, `area-error-vs-magnitude` (the area
-    /// family's), `predicate-map` (see the module docs of [`crate::trade`]).
+    /// family's), `values-error-vs-offset`, `values-error-vs-scale`,
+    /// `values-speed-vs-error` (the values family's), `predicate-map` (see the module docs
+    /// of [`crate::trade`]).
     ///
     /// # Errors
     /// Drawing fails (the compiled-in font unreadable, an encoder error).
@@ -203,6 +230,31 @@ impl TradeReport {
         push(
             "area-error-vs-magnitude.svg",
             svg(aw, ah, |a| charts::area_error_magnitude(a, self))?,
+        );
+        let (vw, vh) = (2400, 1700);
+        push(
+            "values-error-vs-offset.png",
+            png(vw, vh, |a| values::error_by(a, self, Axis::Offset))?,
+        );
+        push(
+            "values-error-vs-offset.svg",
+            svg(vw, vh, |a| values::error_by(a, self, Axis::Offset))?,
+        );
+        push(
+            "values-error-vs-scale.png",
+            png(1800, vh, |a| values::error_by(a, self, Axis::AttributeScale))?,
+        );
+        push(
+            "values-error-vs-scale.svg",
+            svg(1800, vh, |a| values::error_by(a, self, Axis::AttributeScale))?,
+        );
+        push(
+            "values-speed-vs-error.png",
+            png(vw, 1300, |a| values::speed_error(a, self))?,
+        );
+        push(
+            "values-speed-vs-error.svg",
+            svg(vw, 1300, |a| values::speed_error(a, self))?,
         );
         let (mw, mh) = (1300, 1360);
         push(

@@ -4,7 +4,6 @@ use serde_json::{json, Value};
 
 use super::{Outcome, SpeedOutcome, TradeReport, WorkloadReport};
 use crate::trade::metric::Metric;
-use crate::trade::Config;
 
 /// The JSON schema version.
 pub const SCHEMA_VERSION: u64 = 1;
@@ -15,9 +14,14 @@ impl TradeReport {
     /// ```text
     /// {"format": "rasterproof trade report", "version": 1, "rasterproof": "0.1.0",
     ///  "quick": bool, "seed": u64, "canvas": side px, "repetitions": n,
-    ///  "families": ["triangles", ..., "area"], "magnitudes": [{"label": "2^24", "px": 16777216}, ...],
+    ///  "families": ["triangles", ..., "area", "values"], "magnitudes": [{"label": "2^24", "px": 16777216}, ...],
     ///  "workloads": [{
-    ///     "name", "family", "description", "primitives", "unit" ("Mpix/s" | "Mprim/s"),
+    ///     "name", "family", "description",
+    ///     "axis" ("canvas offset" | "attribute scale": what its magnitudes measure),
+    ///     "magnitudes": [{"label", "px"}] (the magnitudes its errors were measured at: the
+    ///                   run's, or the values family's own; on the attribute-scale axis
+    ///                   "px" is the factor, not pixels),
+    ///     "primitives", "unit" ("Mpix/s" | "Mprim/s"),
     ///     "baseline" (the contender ratios divide by), "on_grid" (snapping moves nothing),
     ///     "plans": [{"model", "by_width": {"i32": n, ...}, "summary"}],
     ///     "contenders": [{"name", "exact" (exact or integer), "reference",
@@ -48,8 +52,12 @@ impl TradeReport {
     /// "pixels"}` (family `area`: `coverage error`, the absolute error of a pixel's
     /// coverage in quanta of 1/255, largest and mean over the pixels where the exact value
     /// or the model's is not zero). Area rates: `pixels off by > 1/2 quantum` and (ftgrays)
-    /// `levels off its quantization of the exact value`, of those pixels. The first metric
-    /// is the family's headline.
+    /// `levels off its quantization of the exact value`, of those pixels. Family `values`:
+    /// `{"metric", "kind": "ulp-tail", "p99", "max", "samples"}` (`error in f32 steps`: per
+    /// channel value at a covered pixel centre, the f32 steps from the exact value's
+    /// nearest f32 to the model's, its 99th percentile and largest; a NaN counts 2^32) and
+    /// the rate `wrong UNORM8 levels` of the same values. The first metric is the family's
+    /// headline.
     pub fn to_json(&self) -> Value {
         let magnitudes: Vec<Value> = self
             .config
@@ -57,7 +65,7 @@ impl TradeReport {
             .iter()
             .map(|m| json!({"label": m.label(), "px": m.px()}))
             .collect();
-        let workloads: Vec<Value> = self.workloads.iter().map(|w| workload_json(w, &self.config)).collect();
+        let workloads: Vec<Value> = self.workloads.iter().map(workload_json).collect();
         let onsets: Vec<Value> = self
             .onsets()
             .iter()
@@ -84,7 +92,7 @@ impl TradeReport {
     }
 }
 
-fn workload_json(w: &WorkloadReport, config: &Config) -> Value {
+fn workload_json(w: &WorkloadReport) -> Value {
     let contenders: Vec<Value> = w
         .speed
         .iter()
@@ -137,24 +145,31 @@ fn workload_json(w: &WorkloadReport, config: &Config) -> Value {
             json!({"model": p.model, "by_width": by_width, "summary": p.summary})
         })
         .collect();
-    let cheapest: Vec<Value> = config
-        .magnitudes
+    let cheapest: Vec<Value> = w
+        .magnitudes()
         .iter()
         .map(|&m| {
             let c = w.cheapest_exact(m);
             json!({"magnitude": m.label(), "contender": c.map(|c| c.0), "median": c.map(|c| c.1)})
         })
         .collect();
+    let points: Vec<Value> = w
+        .magnitudes()
+        .iter()
+        .map(|m| json!({"label": m.label(), "px": m.px()}))
+        .collect();
     json!({
         "name": w.name, "family": w.family.name(), "description": w.description,
+        "axis": w.axis.name(), "magnitudes": points,
         "primitives": w.primitives, "unit": w.unit, "baseline": w.baseline, "on_grid": w.on_grid,
         "plans": plans, "contenders": contenders, "errors": errors, "cheapest_exact": cheapest,
     })
 }
 
 /// One metric as JSON: `{"metric", "kind": "rate", "count", "of", "per_million"}`,
-/// `{"metric", "kind": "ulps", "median", "max", "samples"}` or `{"metric", "kind":
-/// "quanta", "max", "mean", "pixels"}`.
+/// `{"metric", "kind": "ulps", "median", "max", "samples"}`, `{"metric", "kind":
+/// "ulp-tail", "p99", "max", "samples"}` or `{"metric", "kind": "quanta", "max", "mean",
+/// "pixels"}`.
 fn metric_json(m: &Metric) -> Value {
     match m {
         Metric::Rate { name, count, of } => json!({
@@ -167,6 +182,12 @@ fn metric_json(m: &Metric) -> Value {
             max,
             samples,
         } => json!({"metric": name, "kind": "ulps", "median": median, "max": max, "samples": samples}),
+        Metric::UlpTail {
+            name,
+            p99,
+            max,
+            samples,
+        } => json!({"metric": name, "kind": "ulp-tail", "p99": p99, "max": max, "samples": samples}),
         Metric::Quanta {
             name,
             max,

@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 
 use super::{Onset, Outcome, SpeedOutcome, TradeReport, WorkloadReport};
 use crate::trade::metric::{short, Metric};
-use crate::trade::Magnitude;
+use crate::trade::Family;
 
 impl TradeReport {
     /// The tables in Markdown: per workload the speed (median, min-max, ratio to the
@@ -14,7 +14,6 @@ impl TradeReport {
     /// and the headlines.
     pub fn to_markdown(&self) -> String {
         let mut s = String::new();
-        let mags = &self.config.magnitudes;
         let _ = writeln!(
             s,
             "# The trade\n\n{} run, seed {}, canvas {}x{} px (the window at each magnitude), {} timed repetitions \
@@ -31,15 +30,19 @@ impl TradeReport {
         for h in self.headlines() {
             let _ = writeln!(s, "- {h}");
         }
-        for w in &self.workloads {
-            workload_markdown(&mut s, w, mags);
+        if self.workloads.iter().any(|w| w.family == Family::Values) {
+            let _ = writeln!(s, "\n{}", crate::trade::values::TABLES_NOTE);
         }
-        onsets_markdown(&mut s, &self.onsets(), mags);
+        for w in &self.workloads {
+            workload_markdown(&mut s, w);
+        }
+        onsets_markdown(&mut s, &self.onsets());
         s
     }
 }
 
-fn workload_markdown(s: &mut String, w: &WorkloadReport, mags: &[Magnitude]) {
+fn workload_markdown(s: &mut String, w: &WorkloadReport) {
+    let mags = &w.magnitudes();
     let _ = writeln!(
         s,
         "\n## {} ({})\n\n{} {} primitives.",
@@ -96,7 +99,7 @@ fn workload_markdown(s: &mut String, w: &WorkloadReport, mags: &[Magnitude]) {
         let _ = writeln!(
             s,
             "\n| {name} ({unit}) | {} |",
-            mags.iter().map(|m| format!("{m} px")).collect::<Vec<_>>().join(" | ")
+            mags.iter().map(|&m| w.axis.label(m)).collect::<Vec<_>>().join(" | ")
         );
         let _ = writeln!(s, "|---|{}", "---|".repeat(mags.len()));
         for e in &w.speed {
@@ -105,7 +108,7 @@ fn workload_markdown(s: &mut String, w: &WorkloadReport, mags: &[Magnitude]) {
                 .map(|&m| match w.cell(&e.contender, m).map(|c| &c.outcome) {
                     None => String::new(),
                     Some(Outcome::Refused(reason)) => {
-                        let note = format!("`{}` at {m} px: {reason}", e.contender);
+                        let note = format!("`{}` at {}: {reason}", e.contender, w.axis.label(m));
                         if !refusals.contains(&note) {
                             refusals.push(note);
                         }
@@ -133,24 +136,23 @@ fn workload_markdown(s: &mut String, w: &WorkloadReport, mags: &[Magnitude]) {
     let cheapest: Vec<String> = mags
         .iter()
         .map(|&m| match w.cheapest_exact(m) {
-            Some((name, v)) => format!("{m} px: `{name}` {} {}", short(v), w.unit),
-            None => format!("{m} px: none"),
+            Some((name, v)) => format!("{}: `{name}` {} {}", w.axis.label(m), short(v), w.unit),
+            None => format!("{}: none", w.axis.label(m)),
         })
         .collect();
     let _ = writeln!(s, "\nCheapest exact answer: {}.", cheapest.join("; "));
 }
 
-fn onsets_markdown(s: &mut String, onsets: &[Onset], mags: &[Magnitude]) {
+fn onsets_markdown(s: &mut String, onsets: &[Onset]) {
     let _ = writeln!(
         s,
-        "\n## Where the inexact contenders start to fail\n\nThe first magnitude (px from the origin) with a \
-         non-zero count; `never` up to {} px.\n",
-        mags.last().map(|m| m.label()).unwrap_or_default()
+        "\n## Where the inexact contenders start to fail\n\nThe first magnitude (px from the origin, or the \
+         attribute scale) with a non-zero count; `never`: none at the magnitudes its workload was run at.\n"
     );
     let _ = writeln!(s, "| workload | contender | metric | first fails at |");
     let _ = writeln!(s, "|---|---|---|---|");
     for o in onsets {
-        let first = o.first.map_or_else(|| "never".to_string(), |m| format!("{m} px"));
+        let first = o.first.map_or_else(|| "never".to_string(), |m| o.axis.label(m));
         let _ = writeln!(s, "| {} | `{}` | {} | {first} |", o.workload, o.contender, o.metric);
     }
 }

@@ -34,6 +34,34 @@ impl Placement {
     }
 }
 
+/// What a workload's magnitudes measure: the x axis of its tables and pictures.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Axis {
+    /// The window's distance from the origin, px: every coordinate moved by `(M, M)`.
+    Offset,
+    /// The factor every attribute value is multiplied by (exactly: a power of two), the
+    /// window at the origin (the values family's attribute sweep).
+    AttributeScale,
+}
+
+impl Axis {
+    /// The name in the report: `canvas offset` or `attribute scale`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Axis::Offset => "canvas offset",
+            Axis::AttributeScale => "attribute scale",
+        }
+    }
+
+    /// A magnitude on this axis as a table's header writes it: `2^24 px`, or `x 2^8`.
+    pub fn label(self, m: Magnitude) -> String {
+        match self {
+            Axis::Offset => format!("{m} px"),
+            Axis::AttributeScale => format!("x {m}"),
+        }
+    }
+}
+
 /// What one contender did at one magnitude.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Outcome {
@@ -148,9 +176,20 @@ pub struct WorkloadReport {
     pub speed: Vec<SpeedEntry>,
     /// Every contender at every magnitude.
     pub cells: Vec<Cell>,
+    /// What the cells' magnitudes measure.
+    pub axis: Axis,
 }
 
 impl WorkloadReport {
+    /// The magnitudes its cells were measured at, ascending (the run's for every family but
+    /// `values`, which has its own: [`crate::trade::values`]).
+    pub fn magnitudes(&self) -> Vec<Magnitude> {
+        let mut out: Vec<Magnitude> = self.cells.iter().map(|c| c.magnitude).collect();
+        out.sort_unstable();
+        out.dedup();
+        out
+    }
+
     /// The median speed of `contender`, when measured.
     pub fn median(&self, contender: &str) -> Option<f64> {
         self.speed
@@ -254,6 +293,7 @@ impl TradeReport {
                         contender: s.contender.clone(),
                         metric: name,
                         first,
+                        axis: w.axis,
                     });
                 }
             }
@@ -261,14 +301,14 @@ impl TradeReport {
         out
     }
 
-    /// One sentence per workload at the largest magnitude run: each float contender's
-    /// headline error there, and the cheapest exact answer.
+    /// One sentence per workload at the largest magnitude it was run at: each float
+    /// contender's headline error there, and the cheapest exact answer.
     pub fn headlines(&self) -> Vec<String> {
-        let Some(&m) = self.config.magnitudes.last() else {
-            return Vec::new();
-        };
         let mut out = Vec::new();
         for w in &self.workloads {
+            let Some(&m) = w.magnitudes().last() else {
+                continue;
+            };
             let floats: Vec<String> = w
                 .speed
                 .iter()
@@ -277,10 +317,15 @@ impl TradeReport {
                     let c = w.cell(&s.contender, m)?;
                     Some(match &c.outcome {
                         Outcome::Refused(_) => format!("{} refuses it", s.contender),
-                        Outcome::Measured { metrics, .. } => {
-                            let h = metrics.first()?;
-                            format!("{} has {} {} per million", s.contender, h.cell(), h.name())
-                        }
+                        Outcome::Measured { metrics, .. } => match metrics.first()? {
+                            h @ Metric::Rate { .. } => {
+                                format!("{} has {} {} per million", s.contender, h.cell(), h.name())
+                            }
+                            h @ Metric::UlpTail { .. } => {
+                                format!("{} is off by {} {}", s.contender, h.cell(), h.unit())
+                            }
+                            h => format!("{} shows {} {} ({})", s.contender, h.name(), h.cell(), h.unit()),
+                        },
                     })
                 })
                 .collect();
@@ -301,7 +346,7 @@ impl TradeReport {
             } else {
                 floats.join(", ")
             };
-            out.push(format!("{} at {} px: {floats}; {exact}.", w.name, m));
+            out.push(format!("{} at {}: {floats}; {exact}.", w.name, w.axis.label(m)));
         }
         out
     }
@@ -318,6 +363,8 @@ pub struct Onset {
     pub metric: &'static str,
     /// The first magnitude with a non-zero count; `None` when none had one.
     pub first: Option<Magnitude>,
+    /// What the magnitude measures.
+    pub axis: Axis,
 }
 
 /// `1990 i32, 10 i64`.

@@ -15,9 +15,7 @@ use super::super::values::{covered_owners, their_channels, their_values, Plans, 
 use super::super::{CompareError, Comparison};
 use crate::convention::Target;
 use crate::interp::float::{FloatInterpolator, FloatTriangle};
-use crate::interp::values::ValueSetup;
 use crate::model::Primitives;
-use crate::num::exact::nearest_f32;
 use crate::oracle::theirs::{Theirs, ValueSamples};
 
 /// One model's agreement with their values.
@@ -50,28 +48,6 @@ impl ValueFitReport {
     pub fn exact(&self) -> Vec<&ModelFit> {
         self.models.iter().filter(|m| m.differing == 0).collect()
     }
-}
-
-/// The triangle as the models' renderer held it; `None` when an input is not a finite f32
-/// or the setup is a segment.
-fn float_triangle(setup: &ValueSetup) -> Option<FloatTriangle> {
-    let ValueSetup::Triangle(t) = setup else {
-        return None;
-    };
-    let w: Vec<f32> = t.h.iter().map(|h| nearest_f32(&h[2])).collect::<Option<_>>()?;
-    let coord = |i: usize, c: usize| nearest_f32(&(&t.h[i][c] / &t.h[i][2]));
-    let x = [coord(0, 0)?, coord(1, 0)?, coord(2, 0)?];
-    let y = [coord(0, 1)?, coord(1, 1)?, coord(2, 1)?];
-    let values = [0, 1, 2].map(|i| t.values[i].iter().map(nearest_f32).collect::<Option<Vec<f32>>>());
-    let [Some(a), Some(b), Some(c)] = values else {
-        return None;
-    };
-    Some(FloatTriangle {
-        x,
-        y,
-        inv_w: [1.0 / w[0], 1.0 / w[1], 1.0 / w[2]],
-        values: [a, b, c],
-    })
 }
 
 /// Which float models reproduce their float32 values of `options.varying` (module docs).
@@ -121,7 +97,7 @@ pub fn fit_values(
         }
         let id = id as usize;
         let triangle = triangles[id]
-            .get_or_insert_with(|| options.setups[id].as_ref().and_then(float_triangle))
+            .get_or_insert_with(|| options.setups[id].as_ref().and_then(FloatTriangle::of))
             .as_ref();
         let Some(triangle) = triangle else {
             skipped += 1;
