@@ -252,7 +252,13 @@ fn planned_exact(items: &[Item]) -> (u64, Tiers) {
                     } else {
                         tiers.ratio += 1;
                         let plans = slow.get_or_insert_with(|| {
-                            PlannedValue::channels(&item.setup, Interpolation::Smooth, ProvokingVertex::First, 0..3, &half)
+                            PlannedValue::channels(
+                                &item.setup,
+                                Interpolation::Smooth,
+                                ProvokingVertex::First,
+                                0..3,
+                                &half,
+                            )
                         });
                         plans[c].nearest_f32(px, py).unwrap().unwrap()
                     };
@@ -322,7 +328,11 @@ fn bench(c: &mut Criterion) {
     let (planned_sum, _) = planned_exact(subset);
     assert_eq!(planned_sum, plain_exact(subset), "planned and plain values differ");
     let (planned_all, tiers) = planned_exact(&items);
-    assert_eq!(planned_all, ratio_exact(&items), "planned values and the exact ratio's differ");
+    assert_eq!(
+        planned_all,
+        ratio_exact(&items),
+        "planned values and the exact ratio's differ"
+    );
     eprintln!(
         "mesh: {} triangles, {pixels} covered pixels ({:.1} a triangle), {} channel values decided by: the uniform bound {}, the bound at the pixel {}, the exact inputs' sign {}, the exact ratio {}",
         items.len(),
@@ -345,7 +355,10 @@ fn bench(c: &mut Criterion) {
                 .fold(f64::INFINITY, f64::min)
         };
         let (a, b) = (least(&|| f32_origin_plane(&items)), least(&|| planned_exact(&items).0));
-        eprintln!("least of 40: f32-origin-plane {a:.2} ms, planned-exact {b:.2} ms, planned at {:.2}x its speed", a / b);
+        eprintln!(
+            "least of 40: f32-origin-plane {a:.2} ms, planned-exact {b:.2} ms, planned at {:.2}x its speed",
+            a / b
+        );
         return;
     }
     let mut group = c.benchmark_group("values-1080p-100k");

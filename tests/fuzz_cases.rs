@@ -463,7 +463,9 @@ fn fuzz_case_12_a_sliver_set_up_from_its_far_vertex() {
     );
     let checked = enveloped_models_inside_far_as(&setup, &tri, (0, 0), Interpolation::Smooth, ProvokingVertex::Last);
     assert!(
-        checked.iter().any(|m| m.name() == "origin-plane fma ccw rcp f32 y-down"),
+        checked
+            .iter()
+            .any(|m| m.name() == "origin-plane fma ccw rcp f32 y-down"),
         "the reordering model is among those checked"
     );
 }

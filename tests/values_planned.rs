@@ -215,7 +215,11 @@ fn the_f64_filter_decides_plain_values_and_leaves_midpoints() {
         assert_eq!(fast.nearest_f32_x4([2, 3, 4, 5], [3, 3, 3, 3], &mut four), 0b1111);
         // The exact inputs' sign decides: the midpoint itself ties to even (1), the value
         // 2^-70 above it rounds up.
-        let expected = if v == q((1 << 24) + 1, 1 << 24) { 1.0 } else { 1.0 + f32::EPSILON };
+        let expected = if v == q((1 << 24) + 1, 1 << 24) {
+            1.0
+        } else {
+            1.0 + f32::EPSILON
+        };
         assert_eq!(fast.nearest_f32_exact(&s, 0, 2, 3, 0), Some(expected));
     }
     let s = setup([q(1, 3), q(-7, 3), q(100, 3)], [q(1, 1), q(3, 1), q(1, 4)]);

@@ -186,12 +186,7 @@ impl Plane {
     fn abs_sum(&self, p: (Input, Input)) -> Option<(f64, f64, f64)> {
         let (x, y, g) = (&self.x, &self.y, &self.g);
         let Gradient {
-            area,
-            gx,
-            gy,
-            sx,
-            sy,
-            ..
+            area, gx, gy, sx, sy, ..
         } = self.gradient?;
         let value = g[0] + gx * (p.0.v - x[0].v) + gy * (p.1.v - y[0].v);
         // A plane anchored at vertex j: g_j + g_x (p_x - x_j) + g_y (p_y - y_j).

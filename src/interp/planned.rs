@@ -464,6 +464,7 @@ pub struct FastPlan {
 }
 
 #[derive(Debug, Clone, PartialEq)]
+#[allow(clippy::large_enum_variant)] // boxing the ratio costs an allocation per triangle
 enum FastForm {
     /// Nothing decided: the exact values decide every channel.
     Undecided(usize),
@@ -734,8 +735,8 @@ impl FastPlan {
             ok[i] = (dv >= r.floor) & (xf[i].abs() <= self.limit.0) & (yf[i].abs() <= self.limit.1);
             inv[i] = 1.0 / dv;
         }
-        for c in 0..r.channels.min(FAST_CHANNELS) {
-            let (n, u, most) = (r.n[c], r.uniform[c], r.most[c]);
+        let lanes = out.iter_mut().zip(&r.n).zip(r.uniform.iter().zip(&r.most));
+        for ((out_c, n), (&u, &most)) in lanes.take(r.channels) {
             for i in 0..4 {
                 let v = (n[0] * xf[i] + n[1] * yf[i] + n[2]) * inv[i];
                 #[allow(clippy::cast_possible_truncation)] // rounding to f32 is the point
@@ -743,7 +744,7 @@ impl FastPlan {
                 // |v| <= most <= f32::MAX: both ends finite (most is 0 for a value f32
                 // cannot hold), and a NaN fails the comparison.
                 ok[i] &= (lo.to_bits() == hi.to_bits()) & (v.abs() <= most);
-                out[c][i] = lo;
+                out_c[i] = lo;
             }
         }
         u8::from(!ok[0]) | u8::from(!ok[1]) << 1 | u8::from(!ok[2]) << 2 | u8::from(!ok[3]) << 3
@@ -765,7 +766,11 @@ impl FastPlan {
         let t = f64::from(t);
         let (to_lo, to_hi) = ((t - lo).abs(), (t - hi).abs());
         let farthest = to_lo.max(to_hi) * (1.0 + 2.0 * U);
-        let nearest = if lo <= t && t <= hi { 0.0 } else { to_lo.min(to_hi) * (1.0 - 2.0 * U) };
+        let nearest = if lo <= t && t <= hi {
+            0.0
+        } else {
+            to_lo.min(to_hi) * (1.0 - 2.0 * U)
+        };
         if !farthest.is_finite() {
             None
         } else if farthest <= bound {
