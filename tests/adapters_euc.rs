@@ -23,6 +23,7 @@ use std::process::Command;
 
 use serde_json::{json, Value};
 
+use crate::cli_json::{compare, fit_exact};
 use crate::rng::Rng;
 use crate::tempdir;
 
@@ -104,22 +105,6 @@ fn draw(adapter: &Path, dir: &tempdir::Dir, name: &str, scene: &Value) -> (i32, 
     )
 }
 
-/// `compare SCENE THEIRS --format json ARGS`: the exit code and the report.
-fn compare(scene: &Path, theirs: &Path, args: &[&str]) -> (i32, Value) {
-    let output = assert_cmd::Command::cargo_bin("rasterproof")
-        .unwrap()
-        .arg("compare")
-        .arg(scene)
-        .arg(theirs)
-        .args(["--format", "json"])
-        .args(args)
-        .output()
-        .unwrap();
-    let code = output.status.code().unwrap();
-    assert!(code <= 1, "{}", String::from_utf8_lossy(&output.stderr));
-    (code, serde_json::from_slice(&output.stdout).unwrap())
-}
-
 /// Two triangles on pixel centres sharing their hypotenuse: samples on a left, a top, a
 /// right and a bottom edge, and on the shared edge.
 fn tie_scene() -> Value {
@@ -186,12 +171,7 @@ fn euc_values_are_one_float_model_bit_for_bit() {
         let (code, fit) = compare(&scene, &tiff, &["--as", "values", "--fit"]);
         assert_eq!(code, 0, "{name}: {fit}");
         assert!(fit["judged"].as_u64().unwrap() > 1000, "{name}: {fit}");
-        let exact: Vec<&str> = fit["exact"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|m| m.as_str().unwrap())
-            .collect();
+        let exact = fit_exact(&fit);
         assert_eq!(exact, [EUC_64], "{name}: {fit}");
         // The plain comparison: nothing off, nothing gross.
         let (code, report) = compare(&scene, &tiff, &["--as", "values"]);

@@ -20,6 +20,7 @@ use std::process::Command;
 
 use serde_json::Value;
 
+use crate::cli_json::{compare, fit_exact};
 use crate::tempdir;
 
 /// The llvmpipe model: what `--fit` must name.
@@ -73,22 +74,6 @@ fn draw(dir: &tempdir::Dir, scene: &Path) -> PathBuf {
     out
 }
 
-/// `compare SCENE THEIRS --format json ARGS`: the exit code and the report.
-fn compare(scene: &Path, theirs: &Path, args: &[&str]) -> (i32, Value) {
-    let output = assert_cmd::Command::cargo_bin("rasterproof")
-        .unwrap()
-        .arg("compare")
-        .arg(scene)
-        .arg(theirs)
-        .args(["--format", "json"])
-        .args(args)
-        .output()
-        .unwrap();
-    let code = output.status.code().unwrap();
-    assert!(code <= 1, "{}", String::from_utf8_lossy(&output.stderr));
-    (code, serde_json::from_slice(&output.stdout).unwrap())
-}
-
 /// The scene `name` with `edit` applied to its JSON, written into `dir` as `as_name`.
 fn edited(dir: &tempdir::Dir, name: &str, as_name: &str, edit: impl Fn(&mut Value)) -> PathBuf {
     let mut v: Value = serde_json::from_str(&std::fs::read_to_string(scene(name)).unwrap()).unwrap();
@@ -113,12 +98,7 @@ fn llvmpipe_values_are_one_float_model_bit_for_bit() {
         let theirs = draw(&dir, &path);
         let (code, fit) = compare(&path, &theirs, &["--fit"]);
         assert_eq!(code, 0, "{name}: {fit}");
-        let exact: Vec<&str> = fit["exact"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|m| m.as_str().unwrap())
-            .collect();
+        let exact = fit_exact(&fit);
         assert!(exact.contains(&LLVMPIPE), "{name}: {exact:?}");
         assert!(fit["judged"].as_u64().unwrap() > 1000, "{name}: {fit}");
         // A smooth scene with the last vertex provoking tells the reordering and the

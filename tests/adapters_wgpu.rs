@@ -27,6 +27,7 @@ use std::process::{Command, Output};
 
 use serde_json::Value;
 
+use crate::cli_json::{self, fit_exact};
 use crate::tempdir;
 
 /// A 3x3 grid of squares of side 3 on a 10x10 canvas, vertices on pixel centres (every
@@ -107,18 +108,8 @@ fn compare(scene: &Path, theirs: &Path, args: &[&str]) -> (i32, Value) {
 /// `rasterproof compare SCENE THEIRS --as AS --format json ARGS`: (exit code, report);
 /// asserts it exited 0 or 1.
 fn compare_as(format: &str, scene: &Path, theirs: &Path, args: &[&str]) -> (i32, Value) {
-    let output = assert_cmd::Command::cargo_bin("rasterproof")
-        .unwrap()
-        .arg("compare")
-        .arg(scene)
-        .arg(theirs)
-        .args(["--as", format, "--format", "json"])
-        .args(args)
-        .output()
-        .unwrap();
-    let code = output.status.code().expect("compare exits");
-    assert!(code == 0 || code == 1, "compare {args:?}:\n{}", text(&output));
-    (code, serde_json::from_slice(&output.stdout).expect("compare's JSON"))
+    let with_format: Vec<&str> = ["--as", format].into_iter().chain(args.iter().copied()).collect();
+    cli_json::compare(scene, theirs, &with_format)
 }
 
 /// One sample per pixel: every scene identical to the oracle under `--preset vulkan`.
@@ -585,12 +576,7 @@ fn lavapipe_values_are_one_float_model_bit_for_bit() {
         let theirs = draw_values(&adapter, &[], &scene);
         let (code, fit) = compare_values(&scene, &theirs, &["--fit"]);
         assert_eq!(code, 0, "{name}: {fit}");
-        let exact: Vec<&str> = fit["exact"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|m| m.as_str().unwrap())
-            .collect();
+        let exact = fit_exact(&fit);
         assert!(exact.contains(&LAVAPIPE), "{name}: {exact:?}");
         assert!(fit["judged"].as_u64().unwrap() > 500, "{name}: {fit}");
         // Smooth, provoking last: the one model whose anchor is vertex 0 whatever the

@@ -7,6 +7,8 @@
 
 // The helpers every file shares, declared once (a file names them `crate::common`,
 // `crate::rng`, ...).
+#[path = "common/cli_json.rs"]
+mod cli_json;
 mod common;
 #[path = "common/mat4.rs"]
 mod mat4;
